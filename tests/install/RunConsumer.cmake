@@ -1,0 +1,20 @@
+file(REMOVE_RECURSE ${WORK_DIR})
+set(prefix ${WORK_DIR}/prefix)
+function(run)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "failed (${rc}): ${ARGN}\n${out}\n${err}")
+  endif()
+endfunction()
+run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
+run(${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/build -DCMAKE_PREFIX_PATH=${prefix})
+run(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
+run(${WORK_DIR}/build/consumer)
+# pkg-config finds the same library.
+execute_process(COMMAND ${CMAKE_COMMAND} -E env
+    PKG_CONFIG_PATH=${prefix}/lib/pkgconfig pkg-config --libs anari
+  RESULT_VARIABLE rc OUTPUT_VARIABLE libs)
+if(NOT rc EQUAL 0 OR NOT libs MATCHES "-lanari")
+  message(FATAL_ERROR "pkg-config did not find anari: ${libs}")
+endif()
+message(STATUS "consumer built and ran against ${prefix}")
