@@ -1,8 +1,32 @@
 #!/usr/bin/env bash
-# The whole test suite: install what is missing, build, run every test.
+# The whole test suite: install what is missing, build, run every test, then
+# rerun the unit and API tests under AddressSanitizer+UBSan and the frame and
+# threading tests under ThreadSanitizer (PRISM_SKIP_SANITIZERS=1 skips those).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+jobs=$(nproc)
 "$root/scripts/install-deps.sh"
+
+run_suite() { # build-dir, extra ctest arguments...
+  local dir=$1
+  shift
+  (cd "$dir" && ctest --output-on-failure -j"$jobs" "$@")
+}
+
 "$root/scripts/build.sh"
-cd "$root/build"
-ctest --output-on-failure -j"$(nproc)"
+run_suite "$root/build"
+
+if [ "${PRISM_SKIP_SANITIZERS:-0}" != 1 ]; then
+  export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
+  export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+  PRISM_BUILD_DIR="$root/build-asan" "$root/scripts/build.sh" \
+    -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPRISM_SANITIZE=address,undefined \
+    -DPRISM_BUILD_TOOLS=OFF
+  run_suite "$root/build-asan" -L "unit|api" -LE slow
+
+  export TSAN_OPTIONS="halt_on_error=1 suppressions=$root/tests/tsan.supp"
+  PRISM_BUILD_DIR="$root/build-tsan" "$root/scripts/build.sh" \
+    -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPRISM_SANITIZE=thread \
+    -DPRISM_BUILD_TOOLS=OFF
+  run_suite "$root/build-tsan" -R "Device::DeviceFrame|FrontEnd"
+fi

@@ -3,11 +3,11 @@
 
 #pragma once
 
-#include <stdint.h>
 #include <stddef.h>
+#include <stdint.h>
 
-#include "frontend/anari_sdk_version.h"
 #include "frontend/anari_enums.h"
+#include "frontend/anari_sdk_version.h"
 
 #define ANARI_INVALID_HANDLE NULL
 
@@ -29,68 +29,47 @@
 namespace anari {
 namespace api {
 struct Library
-{
-};
+{};
 struct Object
-{
-};
+{};
 struct Device : public Object
-{
-};
+{};
 struct Camera : public Object
-{
-};
+{};
 struct Array : public Object
-{
-};
+{};
 struct Array1D : public Array
-{
-};
+{};
 struct Array2D : public Array
-{
-};
+{};
 struct Array3D : public Array
-{
-};
+{};
 struct Frame : public Object
-{
-};
+{};
 struct Future : public Object
-{
-};
+{};
 struct Geometry : public Object
-{
-};
+{};
 struct Group : public Object
-{
-};
+{};
 struct Instance : public Object
-{
-};
+{};
 struct Light : public Object
-{
-};
+{};
 struct Material : public Object
-{
-};
+{};
 struct Sampler : public Object
-{
-};
+{};
 struct Surface : public Object
-{
-};
+{};
 struct Renderer : public Object
-{
-};
+{};
 struct SpatialField : public Object
-{
-};
+{};
 struct Volume : public Object
-{
-};
+{};
 struct World : public Object
-{
-};
+{};
 } // namespace api
 } // namespace anari
 typedef anari::api::Library *ANARILibrary;
@@ -144,66 +123,155 @@ extern "C" {
 
 typedef struct
 {
-  const char* name;
+  const char *name;
   ANARIDataType type;
 } ANARIParameter;
 
 typedef struct
 {
-  const char* name;
+  const char *name;
   ANARIDataType type;
-  const void* value;
+  const void *value;
 } ANARIParameterValue;
 
-typedef void (*ANARIMemoryDeleter)(const void* userPtr, const void* appMemory);
-typedef void (*ANARIStatusCallback)(const void* userPtr, ANARIDevice device, ANARIObject source, ANARIDataType sourceType, ANARIStatusSeverity severity, ANARIStatusCode code, const char* message);
-typedef void (*ANARIFrameCompletionCallback)(const void* userPtr, ANARIDevice device, ANARIFrame frame);
+typedef void (*ANARIMemoryDeleter)(const void *userPtr, const void *appMemory);
+typedef void (*ANARIStatusCallback)(const void *userPtr,
+    ANARIDevice device,
+    ANARIObject source,
+    ANARIDataType sourceType,
+    ANARIStatusSeverity severity,
+    ANARIStatusCode code,
+    const char *message);
+typedef void (*ANARIFrameCompletionCallback)(
+    const void *userPtr, ANARIDevice device, ANARIFrame frame);
 
-ANARI_INTERFACE ANARILibrary anariLoadLibrary(const char* name, ANARIStatusCallback statusCallback ANARI_DEFAULT_VAL(0), const void* statusCallbackUserData ANARI_DEFAULT_VAL(0));
+ANARI_INTERFACE ANARILibrary anariLoadLibrary(const char *name,
+    ANARIStatusCallback statusCallback ANARI_DEFAULT_VAL(0),
+    const void *statusCallbackUserData ANARI_DEFAULT_VAL(0));
 ANARI_INTERFACE void anariUnloadLibrary(ANARILibrary module);
-ANARI_INTERFACE void anariLoadModule(ANARILibrary library, const char* name);
-ANARI_INTERFACE void anariUnloadModule(ANARILibrary library, const char* name);
-ANARI_INTERFACE ANARIDevice anariNewDevice(ANARILibrary library, const char* type ANARI_DEFAULT_VAL("default"));
-ANARI_INTERFACE ANARIDevice anariNewInitializedDevice(ANARILibrary library, const char* type, ANARIParameterValue* initializers);
-ANARI_INTERFACE ANARIArray1D anariNewArray1D(ANARIDevice device, const void* appMemory, ANARIMemoryDeleter deleter, const void* userData, ANARIDataType dataType, uint64_t numElements1);
-ANARI_INTERFACE ANARIArray2D anariNewArray2D(ANARIDevice device, const void* appMemory, ANARIMemoryDeleter deleter, const void* userData, ANARIDataType dataType, uint64_t numElements1, uint64_t numElements2);
-ANARI_INTERFACE ANARIArray3D anariNewArray3D(ANARIDevice device, const void* appMemory, ANARIMemoryDeleter deleter, const void* userData, ANARIDataType dataType, uint64_t numElements1, uint64_t numElements2, uint64_t numElements3);
-ANARI_INTERFACE void* anariMapArray(ANARIDevice device, ANARIArray array);
+ANARI_INTERFACE void anariLoadModule(ANARILibrary library, const char *name);
+ANARI_INTERFACE void anariUnloadModule(ANARILibrary library, const char *name);
+ANARI_INTERFACE ANARIDevice anariNewDevice(
+    ANARILibrary library, const char *type ANARI_DEFAULT_VAL("default"));
+ANARI_INTERFACE ANARIDevice anariNewInitializedDevice(
+    ANARILibrary library, const char *type, ANARIParameterValue *initializers);
+ANARI_INTERFACE ANARIArray1D anariNewArray1D(ANARIDevice device,
+    const void *appMemory,
+    ANARIMemoryDeleter deleter,
+    const void *userData,
+    ANARIDataType dataType,
+    uint64_t numElements1);
+ANARI_INTERFACE ANARIArray2D anariNewArray2D(ANARIDevice device,
+    const void *appMemory,
+    ANARIMemoryDeleter deleter,
+    const void *userData,
+    ANARIDataType dataType,
+    uint64_t numElements1,
+    uint64_t numElements2);
+ANARI_INTERFACE ANARIArray3D anariNewArray3D(ANARIDevice device,
+    const void *appMemory,
+    ANARIMemoryDeleter deleter,
+    const void *userData,
+    ANARIDataType dataType,
+    uint64_t numElements1,
+    uint64_t numElements2,
+    uint64_t numElements3);
+ANARI_INTERFACE void *anariMapArray(ANARIDevice device, ANARIArray array);
 ANARI_INTERFACE void anariUnmapArray(ANARIDevice device, ANARIArray array);
-ANARI_INTERFACE ANARILight anariNewLight(ANARIDevice device, const char* type);
-ANARI_INTERFACE ANARICamera anariNewCamera(ANARIDevice device, const char* type);
-ANARI_INTERFACE ANARIGeometry anariNewGeometry(ANARIDevice device, const char* type);
-ANARI_INTERFACE ANARISpatialField anariNewSpatialField(ANARIDevice device, const char* type);
-ANARI_INTERFACE ANARIVolume anariNewVolume(ANARIDevice device, const char* type);
+ANARI_INTERFACE ANARILight anariNewLight(ANARIDevice device, const char *type);
+ANARI_INTERFACE ANARICamera anariNewCamera(
+    ANARIDevice device, const char *type);
+ANARI_INTERFACE ANARIGeometry anariNewGeometry(
+    ANARIDevice device, const char *type);
+ANARI_INTERFACE ANARISpatialField anariNewSpatialField(
+    ANARIDevice device, const char *type);
+ANARI_INTERFACE ANARIVolume anariNewVolume(
+    ANARIDevice device, const char *type);
 ANARI_INTERFACE ANARISurface anariNewSurface(ANARIDevice device);
-ANARI_INTERFACE ANARIMaterial anariNewMaterial(ANARIDevice device, const char* type);
-ANARI_INTERFACE ANARISampler anariNewSampler(ANARIDevice device, const char* type);
+ANARI_INTERFACE ANARIMaterial anariNewMaterial(
+    ANARIDevice device, const char *type);
+ANARI_INTERFACE ANARISampler anariNewSampler(
+    ANARIDevice device, const char *type);
 ANARI_INTERFACE ANARIGroup anariNewGroup(ANARIDevice device);
-ANARI_INTERFACE ANARIInstance anariNewInstance(ANARIDevice device, const char* type);
+ANARI_INTERFACE ANARIInstance anariNewInstance(
+    ANARIDevice device, const char *type);
 ANARI_INTERFACE ANARIWorld anariNewWorld(ANARIDevice device);
-ANARI_INTERFACE ANARIObject anariNewObject(ANARIDevice device, const char* objectType, const char* type);
-ANARI_INTERFACE void anariSetParameter(ANARIDevice device, ANARIObject object, const char* name, ANARIDataType dataType, const void* mem);
-ANARI_INTERFACE void anariUnsetParameter(ANARIDevice device, ANARIObject object, const char* name);
-ANARI_INTERFACE void anariUnsetAllParameters(ANARIDevice device, ANARIObject object);
-ANARI_INTERFACE void* anariMapParameterArray1D(ANARIDevice device, ANARIObject object, const char* name, ANARIDataType dataType, uint64_t numElements1, uint64_t* elementStride);
-ANARI_INTERFACE void* anariMapParameterArray2D(ANARIDevice device, ANARIObject object, const char* name, ANARIDataType dataType, uint64_t numElements1, uint64_t numElements2, uint64_t* elementStride);
-ANARI_INTERFACE void* anariMapParameterArray3D(ANARIDevice device, ANARIObject object, const char* name, ANARIDataType dataType, uint64_t numElements1, uint64_t numElements2, uint64_t numElements3, uint64_t* elementStride);
-ANARI_INTERFACE void anariUnmapParameterArray(ANARIDevice device, ANARIObject object, const char* name);
-ANARI_INTERFACE void anariCommitParameters(ANARIDevice device, ANARIObject object);
+ANARI_INTERFACE ANARIObject anariNewObject(
+    ANARIDevice device, const char *objectType, const char *type);
+ANARI_INTERFACE void anariSetParameter(ANARIDevice device,
+    ANARIObject object,
+    const char *name,
+    ANARIDataType dataType,
+    const void *mem);
+ANARI_INTERFACE void anariUnsetParameter(
+    ANARIDevice device, ANARIObject object, const char *name);
+ANARI_INTERFACE void anariUnsetAllParameters(
+    ANARIDevice device, ANARIObject object);
+ANARI_INTERFACE void *anariMapParameterArray1D(ANARIDevice device,
+    ANARIObject object,
+    const char *name,
+    ANARIDataType dataType,
+    uint64_t numElements1,
+    uint64_t *elementStride);
+ANARI_INTERFACE void *anariMapParameterArray2D(ANARIDevice device,
+    ANARIObject object,
+    const char *name,
+    ANARIDataType dataType,
+    uint64_t numElements1,
+    uint64_t numElements2,
+    uint64_t *elementStride);
+ANARI_INTERFACE void *anariMapParameterArray3D(ANARIDevice device,
+    ANARIObject object,
+    const char *name,
+    ANARIDataType dataType,
+    uint64_t numElements1,
+    uint64_t numElements2,
+    uint64_t numElements3,
+    uint64_t *elementStride);
+ANARI_INTERFACE void anariUnmapParameterArray(
+    ANARIDevice device, ANARIObject object, const char *name);
+ANARI_INTERFACE void anariCommitParameters(
+    ANARIDevice device, ANARIObject object);
 ANARI_INTERFACE void anariRelease(ANARIDevice device, ANARIObject object);
 ANARI_INTERFACE void anariRetain(ANARIDevice device, ANARIObject object);
-ANARI_INTERFACE const char ** anariGetDeviceSubtypes(ANARILibrary library);
-ANARI_INTERFACE const char ** anariGetDeviceExtensions(ANARILibrary library, const char* deviceSubtype);
-ANARI_INTERFACE const char ** anariGetObjectSubtypes(ANARIDevice device, ANARIDataType objectType);
-ANARI_INTERFACE const void* anariGetObjectInfo(ANARIDevice device, ANARIDataType objectType, const char* objectSubtype, const char* infoName, ANARIDataType infoType);
-ANARI_INTERFACE const void* anariGetParameterInfo(ANARIDevice device, ANARIDataType objectType, const char* objectSubtype, const char* parameterName, ANARIDataType parameterType, const char* infoName, ANARIDataType infoType);
-ANARI_INTERFACE int anariGetProperty(ANARIDevice device, ANARIObject object, const char* name, ANARIDataType type, void* mem, uint64_t size, ANARIWaitMask mask);
+ANARI_INTERFACE const char **anariGetDeviceSubtypes(ANARILibrary library);
+ANARI_INTERFACE const char **anariGetDeviceExtensions(
+    ANARILibrary library, const char *deviceSubtype);
+ANARI_INTERFACE const char **anariGetObjectSubtypes(
+    ANARIDevice device, ANARIDataType objectType);
+ANARI_INTERFACE const void *anariGetObjectInfo(ANARIDevice device,
+    ANARIDataType objectType,
+    const char *objectSubtype,
+    const char *infoName,
+    ANARIDataType infoType);
+ANARI_INTERFACE const void *anariGetParameterInfo(ANARIDevice device,
+    ANARIDataType objectType,
+    const char *objectSubtype,
+    const char *parameterName,
+    ANARIDataType parameterType,
+    const char *infoName,
+    ANARIDataType infoType);
+ANARI_INTERFACE int anariGetProperty(ANARIDevice device,
+    ANARIObject object,
+    const char *name,
+    ANARIDataType type,
+    void *mem,
+    uint64_t size,
+    ANARIWaitMask mask);
 ANARI_INTERFACE ANARIFrame anariNewFrame(ANARIDevice device);
-ANARI_INTERFACE const void* anariMapFrame(ANARIDevice device, ANARIFrame frame, const char* channel, uint32_t* width, uint32_t* height, ANARIDataType* pixelType);
-ANARI_INTERFACE void anariUnmapFrame(ANARIDevice device, ANARIFrame frame, const char* channel);
-ANARI_INTERFACE ANARIRenderer anariNewRenderer(ANARIDevice device, const char* type);
+ANARI_INTERFACE const void *anariMapFrame(ANARIDevice device,
+    ANARIFrame frame,
+    const char *channel,
+    uint32_t *width,
+    uint32_t *height,
+    ANARIDataType *pixelType);
+ANARI_INTERFACE void anariUnmapFrame(
+    ANARIDevice device, ANARIFrame frame, const char *channel);
+ANARI_INTERFACE ANARIRenderer anariNewRenderer(
+    ANARIDevice device, const char *type);
 ANARI_INTERFACE void anariRenderFrame(ANARIDevice device, ANARIFrame frame);
-ANARI_INTERFACE int anariFrameReady(ANARIDevice device, ANARIFrame frame, ANARIWaitMask mask);
+ANARI_INTERFACE int anariFrameReady(
+    ANARIDevice device, ANARIFrame frame, ANARIWaitMask mask);
 ANARI_INTERFACE void anariDiscardFrame(ANARIDevice device, ANARIFrame frame);
 
 /* Looks up a device's extension function by name (NULL if it has none). */

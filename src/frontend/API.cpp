@@ -113,8 +113,10 @@ R onLibrary(ANARILibrary handle, const char *function, R neutral, F &&call)
 }
 
 // Strings the API requires (parameter, property and channel names).
-bool requireString(
-    ANARIDevice device, const char *function, const char *value, const char *what)
+bool requireString(ANARIDevice device,
+    const char *function,
+    const char *value,
+    const char *what)
 {
   if (value)
     return true;
@@ -126,8 +128,10 @@ bool requireString(
   return false;
 }
 
-ANARIDevice registerDevice(
-    ANARIDevice device, LibraryImpl &library, const char *function, const char *subtype)
+ANARIDevice registerDevice(ANARIDevice device,
+    LibraryImpl &library,
+    const char *function,
+    const char *subtype)
 {
   if (device) {
     HandleRegistry::instance().addDevice((DeviceImpl *)device, &library);
@@ -203,9 +207,8 @@ ANARI_EXPORT ANARIDevice anariNewDevice(ANARILibrary library, const char *type)
       });
 }
 
-ANARI_EXPORT ANARIDevice anariNewInitializedDevice(ANARILibrary library,
-    const char *type,
-    ANARIParameterValue *initializers)
+ANARI_EXPORT ANARIDevice anariNewInitializedDevice(
+    ANARILibrary library, const char *type, ANARIParameterValue *initializers)
 {
   return onLibrary(library,
       "anariNewInitializedDevice",
@@ -249,7 +252,8 @@ ANARI_EXPORT ANARIArray1D anariNewArray1D(ANARIDevice device,
 {
   return onDevice(
       device, "anariNewArray1D", ANARIArray1D(nullptr), [&](DeviceImpl &d) {
-        return d.newArray1D(appMemory, deleter, userData, dataType, numElements1);
+        return d.newArray1D(
+            appMemory, deleter, userData, dataType, numElements1);
       });
 }
 
@@ -290,12 +294,12 @@ ANARI_EXPORT ANARIArray3D anariNewArray3D(ANARIDevice device,
 }
 
 // One creation function per subtyped object category.
-#define PRISM_NEW_SUBTYPED(Function, Handle, Method)                          \
-  ANARI_EXPORT Handle Function(ANARIDevice device, const char *type)          \
-  {                                                                           \
-    return onDevice(device, #Function, Handle(nullptr), [&](DeviceImpl &d) {  \
-      return d.Method(type);                                                  \
-    });                                                                       \
+#define PRISM_NEW_SUBTYPED(Function, Handle, Method)                         \
+  ANARI_EXPORT Handle Function(ANARIDevice device, const char *type)         \
+  {                                                                          \
+    return onDevice(device, #Function, Handle(nullptr), [&](DeviceImpl &d) { \
+      return d.Method(type);                                                 \
+    });                                                                      \
   }
 
 PRISM_NEW_SUBTYPED(anariNewLight, ANARILight, newLight)
@@ -309,12 +313,12 @@ PRISM_NEW_SUBTYPED(anariNewInstance, ANARIInstance, newInstance)
 PRISM_NEW_SUBTYPED(anariNewRenderer, ANARIRenderer, newRenderer)
 #undef PRISM_NEW_SUBTYPED
 
-#define PRISM_NEW_PLAIN(Function, Handle, Method)                             \
-  ANARI_EXPORT Handle Function(ANARIDevice device)                            \
-  {                                                                           \
-    return onDevice(device, #Function, Handle(nullptr), [&](DeviceImpl &d) {  \
-      return d.Method();                                                      \
-    });                                                                       \
+#define PRISM_NEW_PLAIN(Function, Handle, Method)                            \
+  ANARI_EXPORT Handle Function(ANARIDevice device)                           \
+  {                                                                          \
+    return onDevice(device, #Function, Handle(nullptr), [&](DeviceImpl &d) { \
+      return d.Method();                                                     \
+    });                                                                      \
   }
 
 PRISM_NEW_PLAIN(anariNewSurface, ANARISurface, newSurface)
@@ -329,8 +333,8 @@ ANARI_EXPORT ANARIObject anariNewObject(
   return onDevice(
       device, "anariNewObject", ANARIObject(nullptr), [&](DeviceImpl &d) {
         return requireString(device, "anariNewObject", objectType, "objectType")
-            ? d.newObject(objectType, type)
-            : nullptr;
+                   ? d.newObject(objectType, type)
+                   : nullptr;
       });
 }
 
@@ -345,7 +349,8 @@ ANARI_EXPORT void *anariMapArray(ANARIDevice device, ANARIArray array)
 
 ANARI_EXPORT void anariUnmapArray(ANARIDevice device, ANARIArray array)
 {
-  onDevice(device, "anariUnmapArray", [&](DeviceImpl &d) { d.unmapArray(array); });
+  onDevice(
+      device, "anariUnmapArray", [&](DeviceImpl &d) { d.unmapArray(array); });
 }
 
 // Parameters ////////////////////////////////////////////////////////////////
@@ -371,7 +376,8 @@ ANARI_EXPORT void anariUnsetParameter(
   });
 }
 
-ANARI_EXPORT void anariUnsetAllParameters(ANARIDevice device, ANARIObject object)
+ANARI_EXPORT void anariUnsetAllParameters(
+    ANARIDevice device, ANARIObject object)
 {
   onDevice(device, "anariUnsetAllParameters", [&](DeviceImpl &d) {
     d.unsetAllParameters(object);
@@ -389,9 +395,9 @@ ANARI_EXPORT void *anariMapParameterArray1D(ANARIDevice device,
       device, "anariMapParameterArray1D", (void *)nullptr, [&](DeviceImpl &d) {
         return requireString(
                    device, "anariMapParameterArray1D", name, "parameter name")
-            ? d.mapParameterArray1D(
-                object, name, dataType, numElements1, elementStride)
-            : nullptr;
+                   ? d.mapParameterArray1D(
+                       object, name, dataType, numElements1, elementStride)
+                   : nullptr;
       });
 }
 
@@ -407,13 +413,13 @@ ANARI_EXPORT void *anariMapParameterArray2D(ANARIDevice device,
       device, "anariMapParameterArray2D", (void *)nullptr, [&](DeviceImpl &d) {
         return requireString(
                    device, "anariMapParameterArray2D", name, "parameter name")
-            ? d.mapParameterArray2D(object,
-                name,
-                dataType,
-                numElements1,
-                numElements2,
-                elementStride)
-            : nullptr;
+                   ? d.mapParameterArray2D(object,
+                       name,
+                       dataType,
+                       numElements1,
+                       numElements2,
+                       elementStride)
+                   : nullptr;
       });
 }
 
@@ -430,14 +436,14 @@ ANARI_EXPORT void *anariMapParameterArray3D(ANARIDevice device,
       device, "anariMapParameterArray3D", (void *)nullptr, [&](DeviceImpl &d) {
         return requireString(
                    device, "anariMapParameterArray3D", name, "parameter name")
-            ? d.mapParameterArray3D(object,
-                name,
-                dataType,
-                numElements1,
-                numElements2,
-                numElements3,
-                elementStride)
-            : nullptr;
+                   ? d.mapParameterArray3D(object,
+                       name,
+                       dataType,
+                       numElements1,
+                       numElements2,
+                       numElements3,
+                       elementStride)
+                   : nullptr;
       });
 }
 
@@ -445,7 +451,8 @@ ANARI_EXPORT void anariUnmapParameterArray(
     ANARIDevice device, ANARIObject object, const char *name)
 {
   onDevice(device, "anariUnmapParameterArray", [&](DeviceImpl &d) {
-    if (requireString(device, "anariUnmapParameterArray", name, "parameter name"))
+    if (requireString(
+            device, "anariUnmapParameterArray", name, "parameter name"))
       d.unmapParameterArray(object, name);
   });
 }
@@ -501,8 +508,9 @@ ANARI_EXPORT const void *anariGetObjectInfo(ANARIDevice device,
   return onDevice(
       device, "anariGetObjectInfo", (const void *)nullptr, [&](DeviceImpl &d) {
         return requireString(device, "anariGetObjectInfo", infoName, "infoName")
-            ? d.getObjectInfo(objectType, objectSubtype, infoName, infoType)
-            : nullptr;
+                   ? d.getObjectInfo(
+                       objectType, objectSubtype, infoName, infoType)
+                   : nullptr;
       });
 }
 
@@ -518,17 +526,21 @@ ANARI_EXPORT const void *anariGetParameterInfo(ANARIDevice device,
       "anariGetParameterInfo",
       (const void *)nullptr,
       [&](DeviceImpl &d) {
-        return requireString(
-                   device, "anariGetParameterInfo", parameterName, "parameterName")
-                && requireString(
-                    device, "anariGetParameterInfo", infoName, "infoName")
-            ? d.getParameterInfo(objectType,
-                objectSubtype,
-                parameterName,
-                parameterType,
-                infoName,
-                infoType)
-            : nullptr;
+        return requireString(device,
+                   "anariGetParameterInfo",
+                   parameterName,
+                   "parameterName")
+                       && requireString(device,
+                           "anariGetParameterInfo",
+                           infoName,
+                           "infoName")
+                   ? d.getParameterInfo(objectType,
+                       objectSubtype,
+                       parameterName,
+                       parameterType,
+                       infoName,
+                       infoType)
+                   : nullptr;
       });
 }
 
@@ -542,8 +554,8 @@ ANARI_EXPORT int anariGetProperty(ANARIDevice device,
 {
   return onDevice(device, "anariGetProperty", 0, [&](DeviceImpl &d) {
     return requireString(device, "anariGetProperty", name, "property name")
-        ? d.getProperty(object, name, type, mem, size, mask)
-        : 0;
+               ? d.getProperty(object, name, type, mem, size, mask)
+               : 0;
   });
 }
 
@@ -582,7 +594,8 @@ ANARI_EXPORT void anariUnmapFrame(
 
 ANARI_EXPORT void anariRenderFrame(ANARIDevice device, ANARIFrame frame)
 {
-  onDevice(device, "anariRenderFrame", [&](DeviceImpl &d) { d.renderFrame(frame); });
+  onDevice(
+      device, "anariRenderFrame", [&](DeviceImpl &d) { d.renderFrame(frame); });
 }
 
 ANARI_EXPORT int anariFrameReady(
@@ -595,7 +608,9 @@ ANARI_EXPORT int anariFrameReady(
 
 ANARI_EXPORT void anariDiscardFrame(ANARIDevice device, ANARIFrame frame)
 {
-  onDevice(device, "anariDiscardFrame", [&](DeviceImpl &d) { d.discardFrame(frame); });
+  onDevice(device, "anariDiscardFrame", [&](DeviceImpl &d) {
+    d.discardFrame(frame);
+  });
 }
 
 ANARI_EXPORT ANARIFunctionPointer anariDeviceGetProcAddress(
@@ -606,7 +621,7 @@ ANARI_EXPORT ANARIFunctionPointer anariDeviceGetProcAddress(
       ANARIFunctionPointer(nullptr),
       [&](DeviceImpl &d) {
         return requireString(device, "anariDeviceGetProcAddress", name, "name")
-            ? d.getProcAddress(name)
-            : nullptr;
+                   ? d.getProcAddress(name)
+                   : nullptr;
       });
 }

@@ -100,8 +100,8 @@ anari::LibraryImpl *loadLibrary(const char *name, StatusSink sink)
     return nullptr;
   }
 
-  auto *library = (anari::LibraryImpl *)entry(
-      dlHandle, sink.callback, sink.userPtr);
+  auto *library =
+      (anari::LibraryImpl *)entry(dlHandle, sink.callback, sink.userPtr);
   if (!library) {
     reportLoadError(sink,
         "anariLoadLibrary: library '" + libName

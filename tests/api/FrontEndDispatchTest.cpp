@@ -85,7 +85,8 @@ TEST_F(FrontEndDispatch, ObjectCreationPassesSubtypes)
   EXPECT_EQ(anariNewSpatialField(m_device, "structuredRegular"),
       (ANARISpatialField)0x1008);
   EXPECT_EQ(last(), "newSpatialField(structuredRegular)");
-  EXPECT_EQ(anariNewVolume(m_device, "transferFunction1D"), (ANARIVolume)0x1009);
+  EXPECT_EQ(
+      anariNewVolume(m_device, "transferFunction1D"), (ANARIVolume)0x1009);
   EXPECT_EQ(last(), "newVolume(transferFunction1D)");
   EXPECT_EQ(anariNewLight(m_device, "point"), (ANARILight)0x100a);
   EXPECT_EQ(last(), "newLight(point)");
@@ -131,14 +132,18 @@ TEST_F(FrontEndDispatch, MappedParameterArrays)
   auto o = (ANARIObject)0x99;
   uint64_t stride = 0;
   auto s = ptr(&stride);
-  EXPECT_NE(anariMapParameterArray1D(
-                m_device, o, "vertex.position", ANARI_FLOAT32_VEC3, 10, &stride),
+  EXPECT_NE(
+      anariMapParameterArray1D(
+          m_device, o, "vertex.position", ANARI_FLOAT32_VEC3, 10, &stride),
       nullptr);
-  EXPECT_EQ(last(), "mapParameterArray1D(0x99, vertex.position, 1070, 10, " + s + ")");
+  EXPECT_EQ(last(),
+      "mapParameterArray1D(0x99, vertex.position, 1070, 10, " + s + ")");
   anariMapParameterArray2D(m_device, o, "image", ANARI_UFIXED8, 6, 7, &stride);
   EXPECT_EQ(last(), "mapParameterArray2D(0x99, image, 1036, 6, 7, " + s + ")");
-  anariMapParameterArray3D(m_device, o, "data", ANARI_FLOAT32, 2, 3, 4, &stride);
-  EXPECT_EQ(last(), "mapParameterArray3D(0x99, data, 1068, 2, 3, 4, " + s + ")");
+  anariMapParameterArray3D(
+      m_device, o, "data", ANARI_FLOAT32, 2, 3, 4, &stride);
+  EXPECT_EQ(
+      last(), "mapParameterArray3D(0x99, data, 1068, 2, 3, 4, " + s + ")");
   anariUnmapParameterArray(m_device, o, "data");
   EXPECT_EQ(last(), "unmapParameterArray(0x99, data)");
 }
@@ -154,14 +159,15 @@ TEST_F(FrontEndDispatch, PropertiesAndIntrospection)
                 sizeof(out),
                 ANARI_WAIT),
       7);
-  EXPECT_EQ(last(),
-      "getProperty(0x55, version, 1016, " + ptr(&out) + ", 4, 1)");
+  EXPECT_EQ(
+      last(), "getProperty(0x55, version, 1016, " + ptr(&out) + ", 4, 1)");
   const char **subtypes = anariGetObjectSubtypes(m_device, ANARI_GEOMETRY);
   ASSERT_NE(subtypes, nullptr);
   EXPECT_STREQ(subtypes[0], "recorded");
   EXPECT_EQ(last(), "getObjectSubtypes(509)");
-  EXPECT_NE(anariGetObjectInfo(
-                m_device, ANARI_GEOMETRY, "sphere", "description", ANARI_STRING),
+  EXPECT_NE(
+      anariGetObjectInfo(
+          m_device, ANARI_GEOMETRY, "sphere", "description", ANARI_STRING),
       nullptr);
   EXPECT_EQ(last(), "getObjectInfo(509, sphere, description, 101)");
   anariGetParameterInfo(m_device,
@@ -171,7 +177,8 @@ TEST_F(FrontEndDispatch, PropertiesAndIntrospection)
       ANARI_FLOAT32,
       "default",
       ANARI_FLOAT32);
-  EXPECT_EQ(last(), "getParameterInfo(509, sphere, radius, 1068, default, 1068)");
+  EXPECT_EQ(
+      last(), "getParameterInfo(509, sphere, radius, 1068, default, 1068)");
 }
 
 TEST_F(FrontEndDispatch, Frames)
@@ -179,13 +186,15 @@ TEST_F(FrontEndDispatch, Frames)
   auto f = (ANARIFrame)0x123;
   uint32_t w = 0, h = 0;
   ANARIDataType type = ANARI_UNKNOWN;
-  EXPECT_NE(anariMapFrame(m_device, f, "channel.color", &w, &h, &type), nullptr);
+  EXPECT_NE(
+      anariMapFrame(m_device, f, "channel.color", &w, &h, &type), nullptr);
   EXPECT_EQ(last(), "frameBufferMap(0x123, channel.color)");
   EXPECT_EQ(w, 4u);
   EXPECT_EQ(h, 2u);
   EXPECT_EQ(type, ANARI_UFIXED8_RGBA_SRGB);
   // NULL outputs are tolerated (the device writes to scratch space).
-  EXPECT_NE(anariMapFrame(m_device, f, "channel.depth", nullptr, nullptr, nullptr),
+  EXPECT_NE(
+      anariMapFrame(m_device, f, "channel.depth", nullptr, nullptr, nullptr),
       nullptr);
   anariUnmapFrame(m_device, f, "channel.color");
   EXPECT_EQ(last(), "frameBufferUnmap(0x123, channel.color)");
@@ -219,8 +228,8 @@ TEST_F(FrontEndDispatch, InitializedDeviceAndDeviceRefcount)
   ANARIParameterValue none[] = {{nullptr, ANARI_UNKNOWN, nullptr}};
   ANARIDevice second = anariNewInitializedDevice(m_library, "second", none);
   ASSERT_NE(second, nullptr);
-  auto liveDevices = (int (*)(void))anariDeviceGetProcAddress(
-      second, "recordingLiveDevices");
+  auto liveDevices =
+      (int (*)(void))anariDeviceGetProcAddress(second, "recordingLiveDevices");
   ASSERT_NE(liveDevices, nullptr);
   EXPECT_EQ(liveDevices(), 2);
   anariRetain(second, second);

@@ -48,8 +48,8 @@ TEST(FrontEndLoading, MissingLibraryReportsDlerror)
 TEST(FrontEndLoading, MissingEntryPointIsReported)
 {
   StatusRecorder status;
-  EXPECT_EQ(anariLoadLibrary("noentry", StatusRecorder::callback, &status),
-      nullptr);
+  EXPECT_EQ(
+      anariLoadLibrary("noentry", StatusRecorder::callback, &status), nullptr);
   EXPECT_TRUE(status.tookOne(ANARI_SEVERITY_ERROR,
       ANARI_STATUS_INVALID_OPERATION,
       "has no entry point 'anari_library_noentry_new_library'"));
@@ -94,7 +94,8 @@ TEST(FrontEndLoading, EnvironmentNamesTheLibrary)
 TEST(FrontEndLoading, NullOrEmptyNameIsReported)
 {
   StatusRecorder status;
-  EXPECT_EQ(anariLoadLibrary(nullptr, StatusRecorder::callback, &status), nullptr);
+  EXPECT_EQ(
+      anariLoadLibrary(nullptr, StatusRecorder::callback, &status), nullptr);
   EXPECT_TRUE(status.tookOne(
       ANARI_SEVERITY_ERROR, ANARI_STATUS_INVALID_OPERATION, "NULL or empty"));
   EXPECT_EQ(anariLoadLibrary("", StatusRecorder::callback, &status), nullptr);
@@ -158,7 +159,8 @@ TEST_F(FrontEndBadHandles, NullDeviceHandleOnEveryEntryPoint)
   ANARIDataType t;
   uint64_t stride;
   int value = 0;
-  EXPECT_EQ(anariNewArray1D(d, nullptr, nullptr, nullptr, ANARI_FLOAT32, 1), nullptr);
+  EXPECT_EQ(
+      anariNewArray1D(d, nullptr, nullptr, nullptr, ANARI_FLOAT32, 1), nullptr);
   EXPECT_EQ(anariNewArray2D(d, nullptr, nullptr, nullptr, ANARI_FLOAT32, 1, 1),
       nullptr);
   EXPECT_EQ(
@@ -181,20 +183,22 @@ TEST_F(FrontEndBadHandles, NullDeviceHandleOnEveryEntryPoint)
   anariSetParameter(d, nullptr, "x", ANARI_INT32, &value);
   anariUnsetParameter(d, nullptr, "x");
   anariUnsetAllParameters(d, nullptr);
-  EXPECT_EQ(anariMapParameterArray1D(d, nullptr, "x", ANARI_FLOAT32, 1, &stride),
+  EXPECT_EQ(
+      anariMapParameterArray1D(d, nullptr, "x", ANARI_FLOAT32, 1, &stride),
       nullptr);
   EXPECT_EQ(
       anariMapParameterArray2D(d, nullptr, "x", ANARI_FLOAT32, 1, 1, &stride),
       nullptr);
-  EXPECT_EQ(
-      anariMapParameterArray3D(d, nullptr, "x", ANARI_FLOAT32, 1, 1, 1, &stride),
+  EXPECT_EQ(anariMapParameterArray3D(
+                d, nullptr, "x", ANARI_FLOAT32, 1, 1, 1, &stride),
       nullptr);
   anariUnmapParameterArray(d, nullptr, "x");
   anariCommitParameters(d, nullptr);
   anariRelease(d, nullptr);
   anariRetain(d, nullptr);
   EXPECT_EQ(anariGetObjectSubtypes(d, ANARI_GEOMETRY), nullptr);
-  EXPECT_EQ(anariGetObjectInfo(d, ANARI_GEOMETRY, "sphere", "description", ANARI_STRING),
+  EXPECT_EQ(anariGetObjectInfo(
+                d, ANARI_GEOMETRY, "sphere", "description", ANARI_STRING),
       nullptr);
   EXPECT_EQ(anariGetParameterInfo(d,
                 ANARI_GEOMETRY,
@@ -204,7 +208,8 @@ TEST_F(FrontEndBadHandles, NullDeviceHandleOnEveryEntryPoint)
                 "default",
                 ANARI_FLOAT32),
       nullptr);
-  EXPECT_EQ(anariGetProperty(d, nullptr, "version", ANARI_INT32, &value, 4, ANARI_WAIT),
+  EXPECT_EQ(anariGetProperty(
+                d, nullptr, "version", ANARI_INT32, &value, 4, ANARI_WAIT),
       0);
   EXPECT_EQ(anariNewFrame(d), nullptr);
   EXPECT_EQ(anariMapFrame(d, nullptr, "channel.color", &w, &h, &t), nullptr);
@@ -220,7 +225,8 @@ TEST_F(FrontEndBadHandles, NullDeviceHandleOnEveryEntryPoint)
   for (auto &m : messages) {
     EXPECT_EQ(m.severity, ANARI_SEVERITY_ERROR);
     EXPECT_EQ(m.code, ANARI_STATUS_INVALID_ARGUMENT);
-    EXPECT_NE(m.text.find("device handle is NULL"), std::string::npos) << m.text;
+    EXPECT_NE(m.text.find("device handle is NULL"), std::string::npos)
+        << m.text;
   }
 }
 

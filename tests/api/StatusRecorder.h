@@ -46,8 +46,8 @@ class StatusRecorder
   {
     auto messages = take();
     return messages.size() == 1 && messages[0].severity == severity
-        && messages[0].code == code
-        && messages[0].text.find(fragment) != std::string::npos;
+           && messages[0].code == code
+           && messages[0].text.find(fragment) != std::string::npos;
   }
 
  private:

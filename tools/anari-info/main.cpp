@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <cstring>
+#include <string>
 
 namespace {
 
@@ -53,7 +54,7 @@ void describeDevice(ANARILibrary library, const char *subtype)
   if (!device)
     return;
   int32_t version = 0;
-  const char *name = nullptr;
+  uint64_t nameSize = 0;
   if (anariGetProperty(device,
           device,
           "version",
@@ -62,14 +63,25 @@ void describeDevice(ANARILibrary library, const char *subtype)
           sizeof(version),
           ANARI_WAIT))
     std::printf("  version: %d\n", version);
+  // String properties are copied out; ".size" gives the length with its NUL.
   if (anariGetProperty(device,
           device,
-          "version.name",
-          ANARI_STRING,
-          &name,
-          sizeof(name),
-          ANARI_WAIT))
-    std::printf("  version name: %s\n", name);
+          "version.name.size",
+          ANARI_UINT64,
+          &nameSize,
+          sizeof(nameSize),
+          ANARI_WAIT)
+      && nameSize > 0) {
+    std::string name(nameSize, '\0');
+    if (anariGetProperty(device,
+            device,
+            "version.name",
+            ANARI_STRING,
+            name.data(),
+            nameSize,
+            ANARI_WAIT))
+      std::printf("  version name: %s\n", name.c_str());
+  }
   for (const auto &object : kSubtypedObjects) {
     std::printf("  %s subtypes:\n", object.name);
     printList("    ", anariGetObjectSubtypes(device, object.type));

@@ -5,6 +5,9 @@ introspection tables are all derived from the same reading of the JSON.
 """
 import json
 import os
+import shutil
+import subprocess
+import sys
 
 
 class Api:
@@ -51,3 +54,19 @@ class Api:
 def handle_class_name(opaque_name):
     """ANARIArray1D -> Array1D (the C++ tag struct in anari::api)."""
     return opaque_name[len("ANARI"):]
+
+
+def write_source(root, relative_path, text):
+    """Writes a generated file, formatted with the repository's clang-format
+    style when clang-format is available, so regenerating is byte-stable."""
+    path = os.path.join(root, relative_path)
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as f:
+        f.write(text)
+    clang_format = shutil.which("clang-format")
+    if clang_format:
+        subprocess.run([clang_format, "-i", "--style=file", path], cwd=root,
+                       check=True)
+    else:
+        print("clang-format not found: %s left unformatted" % relative_path,
+              file=sys.stderr)

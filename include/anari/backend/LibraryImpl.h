@@ -62,7 +62,7 @@ struct ANARI_BACKEND_INTERFACE LibraryImpl
 
 // Declares a library's entry point, the C symbol the front-end looks up as
 // anari_library_<name>_new_library.
-#define ANARI_DEFINE_LIBRARY_ENTRYPOINT(libname, handle, scb, scbPtr)         \
-  extern "C" __attribute__((visibility("default"))) ANARILibrary              \
-      anari_library_##libname##_new_library(                                 \
-          void *handle, ANARIStatusCallback scb, const void *scbPtr)
+#define ANARI_DEFINE_LIBRARY_ENTRYPOINT(libname, handle, scb, scbPtr) \
+  extern "C" __attribute__((visibility("default")))                   \
+  ANARILibrary anari_library_##libname##_new_library(                 \
+      void *handle, ANARIStatusCallback scb, const void *scbPtr)

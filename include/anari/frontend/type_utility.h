@@ -15,141 +15,276 @@ namespace anari {
 constexpr size_t sizeOf(ANARIDataType type)
 {
   switch (int(type)) {
-  case 0: return 0;
-  case 100: return sizeof(int32_t) * 1;
-  case 101: return sizeof(void *);
-  case 102: return sizeof(void *);
-  case 103: return sizeof(int8_t) * 1;
-  case 150: return sizeof(void *);
-  case 151: return sizeof(void *);
-  case 152: return sizeof(void *);
-  case 200: return sizeof(void *);
-  case 201: return sizeof(void *);
-  case 202: return sizeof(void *);
-  case 500: return sizeof(void *);
-  case 501: return sizeof(void *);
-  case 502: return sizeof(void *);
-  case 503: return sizeof(void *);
-  case 504: return sizeof(void *);
-  case 505: return sizeof(void *);
-  case 506: return sizeof(void *);
-  case 507: return sizeof(void *);
-  case 508: return sizeof(void *);
-  case 509: return sizeof(void *);
-  case 510: return sizeof(void *);
-  case 511: return sizeof(void *);
-  case 512: return sizeof(void *);
-  case 513: return sizeof(void *);
-  case 514: return sizeof(void *);
-  case 515: return sizeof(void *);
-  case 516: return sizeof(void *);
-  case 517: return sizeof(void *);
-  case 518: return sizeof(void *);
-  case 519: return sizeof(void *);
-  case 1000: return sizeof(int8_t) * 1;
-  case 1001: return sizeof(int8_t) * 2;
-  case 1002: return sizeof(int8_t) * 3;
-  case 1003: return sizeof(int8_t) * 4;
-  case 1004: return sizeof(uint8_t) * 1;
-  case 1005: return sizeof(uint8_t) * 2;
-  case 1006: return sizeof(uint8_t) * 3;
-  case 1007: return sizeof(uint8_t) * 4;
-  case 1008: return sizeof(int16_t) * 1;
-  case 1009: return sizeof(int16_t) * 2;
-  case 1010: return sizeof(int16_t) * 3;
-  case 1011: return sizeof(int16_t) * 4;
-  case 1012: return sizeof(uint16_t) * 1;
-  case 1013: return sizeof(uint16_t) * 2;
-  case 1014: return sizeof(uint16_t) * 3;
-  case 1015: return sizeof(uint16_t) * 4;
-  case 1016: return sizeof(int32_t) * 1;
-  case 1017: return sizeof(int32_t) * 2;
-  case 1018: return sizeof(int32_t) * 3;
-  case 1019: return sizeof(int32_t) * 4;
-  case 1020: return sizeof(uint32_t) * 1;
-  case 1021: return sizeof(uint32_t) * 2;
-  case 1022: return sizeof(uint32_t) * 3;
-  case 1023: return sizeof(uint32_t) * 4;
-  case 1024: return sizeof(int64_t) * 1;
-  case 1025: return sizeof(int64_t) * 2;
-  case 1026: return sizeof(int64_t) * 3;
-  case 1027: return sizeof(int64_t) * 4;
-  case 1028: return sizeof(uint64_t) * 1;
-  case 1029: return sizeof(uint64_t) * 2;
-  case 1030: return sizeof(uint64_t) * 3;
-  case 1031: return sizeof(uint64_t) * 4;
-  case 1032: return sizeof(int8_t) * 1;
-  case 1033: return sizeof(int8_t) * 2;
-  case 1034: return sizeof(int8_t) * 3;
-  case 1035: return sizeof(int8_t) * 4;
-  case 1036: return sizeof(uint8_t) * 1;
-  case 1037: return sizeof(uint8_t) * 2;
-  case 1038: return sizeof(uint8_t) * 3;
-  case 1039: return sizeof(uint8_t) * 4;
-  case 1040: return sizeof(int16_t) * 1;
-  case 1041: return sizeof(int16_t) * 2;
-  case 1042: return sizeof(int16_t) * 3;
-  case 1043: return sizeof(int16_t) * 4;
-  case 1044: return sizeof(uint16_t) * 1;
-  case 1045: return sizeof(uint16_t) * 2;
-  case 1046: return sizeof(uint16_t) * 3;
-  case 1047: return sizeof(uint16_t) * 4;
-  case 1048: return sizeof(int32_t) * 1;
-  case 1049: return sizeof(int32_t) * 2;
-  case 1050: return sizeof(int32_t) * 3;
-  case 1051: return sizeof(int32_t) * 4;
-  case 1052: return sizeof(uint32_t) * 1;
-  case 1053: return sizeof(uint32_t) * 2;
-  case 1054: return sizeof(uint32_t) * 3;
-  case 1055: return sizeof(uint32_t) * 4;
-  case 1056: return sizeof(int64_t) * 1;
-  case 1057: return sizeof(int64_t) * 2;
-  case 1058: return sizeof(int64_t) * 3;
-  case 1059: return sizeof(int64_t) * 4;
-  case 1060: return sizeof(uint64_t) * 1;
-  case 1061: return sizeof(uint64_t) * 2;
-  case 1062: return sizeof(uint64_t) * 3;
-  case 1063: return sizeof(uint64_t) * 4;
-  case 1064: return sizeof(uint16_t) * 1;
-  case 1065: return sizeof(uint16_t) * 2;
-  case 1066: return sizeof(uint16_t) * 3;
-  case 1067: return sizeof(uint16_t) * 4;
-  case 1068: return sizeof(float) * 1;
-  case 1069: return sizeof(float) * 2;
-  case 1070: return sizeof(float) * 3;
-  case 1071: return sizeof(float) * 4;
-  case 1072: return sizeof(double) * 1;
-  case 1073: return sizeof(double) * 2;
-  case 1074: return sizeof(double) * 3;
-  case 1075: return sizeof(double) * 4;
-  case 2003: return sizeof(uint8_t) * 4;
-  case 2002: return sizeof(uint8_t) * 3;
-  case 2001: return sizeof(uint8_t) * 2;
-  case 2000: return sizeof(uint8_t) * 1;
-  case 2004: return sizeof(int32_t) * 2;
-  case 2005: return sizeof(int32_t) * 4;
-  case 2006: return sizeof(int32_t) * 6;
-  case 2007: return sizeof(int32_t) * 8;
-  case 2008: return sizeof(float) * 2;
-  case 2009: return sizeof(float) * 4;
-  case 2010: return sizeof(float) * 6;
-  case 2011: return sizeof(float) * 8;
-  case 2208: return sizeof(double) * 2;
-  case 2209: return sizeof(double) * 4;
-  case 2210: return sizeof(double) * 6;
-  case 2211: return sizeof(double) * 8;
-  case 2104: return sizeof(uint64_t) * 2;
-  case 2105: return sizeof(uint64_t) * 4;
-  case 2106: return sizeof(uint64_t) * 6;
-  case 2107: return sizeof(uint64_t) * 8;
-  case 2012: return sizeof(float) * 4;
-  case 2013: return sizeof(float) * 9;
-  case 2014: return sizeof(float) * 16;
-  case 2015: return sizeof(float) * 6;
-  case 2016: return sizeof(float) * 12;
-  case 2017: return sizeof(float) * 4;
-  case 203: return sizeof(void *);
-  default: return 0;
+  case 0:
+    return 0;
+  case 100:
+    return sizeof(int32_t) * 1;
+  case 101:
+    return sizeof(void *);
+  case 102:
+    return sizeof(void *);
+  case 103:
+    return sizeof(int8_t) * 1;
+  case 150:
+    return sizeof(void *);
+  case 151:
+    return sizeof(void *);
+  case 152:
+    return sizeof(void *);
+  case 200:
+    return sizeof(void *);
+  case 201:
+    return sizeof(void *);
+  case 202:
+    return sizeof(void *);
+  case 500:
+    return sizeof(void *);
+  case 501:
+    return sizeof(void *);
+  case 502:
+    return sizeof(void *);
+  case 503:
+    return sizeof(void *);
+  case 504:
+    return sizeof(void *);
+  case 505:
+    return sizeof(void *);
+  case 506:
+    return sizeof(void *);
+  case 507:
+    return sizeof(void *);
+  case 508:
+    return sizeof(void *);
+  case 509:
+    return sizeof(void *);
+  case 510:
+    return sizeof(void *);
+  case 511:
+    return sizeof(void *);
+  case 512:
+    return sizeof(void *);
+  case 513:
+    return sizeof(void *);
+  case 514:
+    return sizeof(void *);
+  case 515:
+    return sizeof(void *);
+  case 516:
+    return sizeof(void *);
+  case 517:
+    return sizeof(void *);
+  case 518:
+    return sizeof(void *);
+  case 519:
+    return sizeof(void *);
+  case 1000:
+    return sizeof(int8_t) * 1;
+  case 1001:
+    return sizeof(int8_t) * 2;
+  case 1002:
+    return sizeof(int8_t) * 3;
+  case 1003:
+    return sizeof(int8_t) * 4;
+  case 1004:
+    return sizeof(uint8_t) * 1;
+  case 1005:
+    return sizeof(uint8_t) * 2;
+  case 1006:
+    return sizeof(uint8_t) * 3;
+  case 1007:
+    return sizeof(uint8_t) * 4;
+  case 1008:
+    return sizeof(int16_t) * 1;
+  case 1009:
+    return sizeof(int16_t) * 2;
+  case 1010:
+    return sizeof(int16_t) * 3;
+  case 1011:
+    return sizeof(int16_t) * 4;
+  case 1012:
+    return sizeof(uint16_t) * 1;
+  case 1013:
+    return sizeof(uint16_t) * 2;
+  case 1014:
+    return sizeof(uint16_t) * 3;
+  case 1015:
+    return sizeof(uint16_t) * 4;
+  case 1016:
+    return sizeof(int32_t) * 1;
+  case 1017:
+    return sizeof(int32_t) * 2;
+  case 1018:
+    return sizeof(int32_t) * 3;
+  case 1019:
+    return sizeof(int32_t) * 4;
+  case 1020:
+    return sizeof(uint32_t) * 1;
+  case 1021:
+    return sizeof(uint32_t) * 2;
+  case 1022:
+    return sizeof(uint32_t) * 3;
+  case 1023:
+    return sizeof(uint32_t) * 4;
+  case 1024:
+    return sizeof(int64_t) * 1;
+  case 1025:
+    return sizeof(int64_t) * 2;
+  case 1026:
+    return sizeof(int64_t) * 3;
+  case 1027:
+    return sizeof(int64_t) * 4;
+  case 1028:
+    return sizeof(uint64_t) * 1;
+  case 1029:
+    return sizeof(uint64_t) * 2;
+  case 1030:
+    return sizeof(uint64_t) * 3;
+  case 1031:
+    return sizeof(uint64_t) * 4;
+  case 1032:
+    return sizeof(int8_t) * 1;
+  case 1033:
+    return sizeof(int8_t) * 2;
+  case 1034:
+    return sizeof(int8_t) * 3;
+  case 1035:
+    return sizeof(int8_t) * 4;
+  case 1036:
+    return sizeof(uint8_t) * 1;
+  case 1037:
+    return sizeof(uint8_t) * 2;
+  case 1038:
+    return sizeof(uint8_t) * 3;
+  case 1039:
+    return sizeof(uint8_t) * 4;
+  case 1040:
+    return sizeof(int16_t) * 1;
+  case 1041:
+    return sizeof(int16_t) * 2;
+  case 1042:
+    return sizeof(int16_t) * 3;
+  case 1043:
+    return sizeof(int16_t) * 4;
+  case 1044:
+    return sizeof(uint16_t) * 1;
+  case 1045:
+    return sizeof(uint16_t) * 2;
+  case 1046:
+    return sizeof(uint16_t) * 3;
+  case 1047:
+    return sizeof(uint16_t) * 4;
+  case 1048:
+    return sizeof(int32_t) * 1;
+  case 1049:
+    return sizeof(int32_t) * 2;
+  case 1050:
+    return sizeof(int32_t) * 3;
+  case 1051:
+    return sizeof(int32_t) * 4;
+  case 1052:
+    return sizeof(uint32_t) * 1;
+  case 1053:
+    return sizeof(uint32_t) * 2;
+  case 1054:
+    return sizeof(uint32_t) * 3;
+  case 1055:
+    return sizeof(uint32_t) * 4;
+  case 1056:
+    return sizeof(int64_t) * 1;
+  case 1057:
+    return sizeof(int64_t) * 2;
+  case 1058:
+    return sizeof(int64_t) * 3;
+  case 1059:
+    return sizeof(int64_t) * 4;
+  case 1060:
+    return sizeof(uint64_t) * 1;
+  case 1061:
+    return sizeof(uint64_t) * 2;
+  case 1062:
+    return sizeof(uint64_t) * 3;
+  case 1063:
+    return sizeof(uint64_t) * 4;
+  case 1064:
+    return sizeof(uint16_t) * 1;
+  case 1065:
+    return sizeof(uint16_t) * 2;
+  case 1066:
+    return sizeof(uint16_t) * 3;
+  case 1067:
+    return sizeof(uint16_t) * 4;
+  case 1068:
+    return sizeof(float) * 1;
+  case 1069:
+    return sizeof(float) * 2;
+  case 1070:
+    return sizeof(float) * 3;
+  case 1071:
+    return sizeof(float) * 4;
+  case 1072:
+    return sizeof(double) * 1;
+  case 1073:
+    return sizeof(double) * 2;
+  case 1074:
+    return sizeof(double) * 3;
+  case 1075:
+    return sizeof(double) * 4;
+  case 2003:
+    return sizeof(uint8_t) * 4;
+  case 2002:
+    return sizeof(uint8_t) * 3;
+  case 2001:
+    return sizeof(uint8_t) * 2;
+  case 2000:
+    return sizeof(uint8_t) * 1;
+  case 2004:
+    return sizeof(int32_t) * 2;
+  case 2005:
+    return sizeof(int32_t) * 4;
+  case 2006:
+    return sizeof(int32_t) * 6;
+  case 2007:
+    return sizeof(int32_t) * 8;
+  case 2008:
+    return sizeof(float) * 2;
+  case 2009:
+    return sizeof(float) * 4;
+  case 2010:
+    return sizeof(float) * 6;
+  case 2011:
+    return sizeof(float) * 8;
+  case 2208:
+    return sizeof(double) * 2;
+  case 2209:
+    return sizeof(double) * 4;
+  case 2210:
+    return sizeof(double) * 6;
+  case 2211:
+    return sizeof(double) * 8;
+  case 2104:
+    return sizeof(uint64_t) * 2;
+  case 2105:
+    return sizeof(uint64_t) * 4;
+  case 2106:
+    return sizeof(uint64_t) * 6;
+  case 2107:
+    return sizeof(uint64_t) * 8;
+  case 2012:
+    return sizeof(float) * 4;
+  case 2013:
+    return sizeof(float) * 9;
+  case 2014:
+    return sizeof(float) * 16;
+  case 2015:
+    return sizeof(float) * 6;
+  case 2016:
+    return sizeof(float) * 12;
+  case 2017:
+    return sizeof(float) * 4;
+  case 203:
+    return sizeof(void *);
+  default:
+    return 0;
   }
 }
 
@@ -157,140 +292,274 @@ constexpr size_t sizeOf(ANARIDataType type)
 constexpr int componentsOf(ANARIDataType type)
 {
   switch (int(type)) {
-  case 100: return 1;
-  case 101: return 1;
-  case 102: return 1;
-  case 103: return 1;
-  case 150: return 1;
-  case 151: return 1;
-  case 152: return 1;
-  case 200: return 1;
-  case 201: return 1;
-  case 202: return 1;
-  case 500: return 1;
-  case 501: return 1;
-  case 502: return 1;
-  case 503: return 1;
-  case 504: return 1;
-  case 505: return 1;
-  case 506: return 1;
-  case 507: return 1;
-  case 508: return 1;
-  case 509: return 1;
-  case 510: return 1;
-  case 511: return 1;
-  case 512: return 1;
-  case 513: return 1;
-  case 514: return 1;
-  case 515: return 1;
-  case 516: return 1;
-  case 517: return 1;
-  case 518: return 1;
-  case 519: return 1;
-  case 1000: return 1;
-  case 1001: return 2;
-  case 1002: return 3;
-  case 1003: return 4;
-  case 1004: return 1;
-  case 1005: return 2;
-  case 1006: return 3;
-  case 1007: return 4;
-  case 1008: return 1;
-  case 1009: return 2;
-  case 1010: return 3;
-  case 1011: return 4;
-  case 1012: return 1;
-  case 1013: return 2;
-  case 1014: return 3;
-  case 1015: return 4;
-  case 1016: return 1;
-  case 1017: return 2;
-  case 1018: return 3;
-  case 1019: return 4;
-  case 1020: return 1;
-  case 1021: return 2;
-  case 1022: return 3;
-  case 1023: return 4;
-  case 1024: return 1;
-  case 1025: return 2;
-  case 1026: return 3;
-  case 1027: return 4;
-  case 1028: return 1;
-  case 1029: return 2;
-  case 1030: return 3;
-  case 1031: return 4;
-  case 1032: return 1;
-  case 1033: return 2;
-  case 1034: return 3;
-  case 1035: return 4;
-  case 1036: return 1;
-  case 1037: return 2;
-  case 1038: return 3;
-  case 1039: return 4;
-  case 1040: return 1;
-  case 1041: return 2;
-  case 1042: return 3;
-  case 1043: return 4;
-  case 1044: return 1;
-  case 1045: return 2;
-  case 1046: return 3;
-  case 1047: return 4;
-  case 1048: return 1;
-  case 1049: return 2;
-  case 1050: return 3;
-  case 1051: return 4;
-  case 1052: return 1;
-  case 1053: return 2;
-  case 1054: return 3;
-  case 1055: return 4;
-  case 1056: return 1;
-  case 1057: return 2;
-  case 1058: return 3;
-  case 1059: return 4;
-  case 1060: return 1;
-  case 1061: return 2;
-  case 1062: return 3;
-  case 1063: return 4;
-  case 1064: return 1;
-  case 1065: return 2;
-  case 1066: return 3;
-  case 1067: return 4;
-  case 1068: return 1;
-  case 1069: return 2;
-  case 1070: return 3;
-  case 1071: return 4;
-  case 1072: return 1;
-  case 1073: return 2;
-  case 1074: return 3;
-  case 1075: return 4;
-  case 2003: return 4;
-  case 2002: return 3;
-  case 2001: return 2;
-  case 2000: return 1;
-  case 2004: return 2;
-  case 2005: return 4;
-  case 2006: return 6;
-  case 2007: return 8;
-  case 2008: return 2;
-  case 2009: return 4;
-  case 2010: return 6;
-  case 2011: return 8;
-  case 2208: return 2;
-  case 2209: return 4;
-  case 2210: return 6;
-  case 2211: return 8;
-  case 2104: return 2;
-  case 2105: return 4;
-  case 2106: return 6;
-  case 2107: return 8;
-  case 2012: return 4;
-  case 2013: return 9;
-  case 2014: return 16;
-  case 2015: return 6;
-  case 2016: return 12;
-  case 2017: return 4;
-  case 203: return 1;
-  default: return 0;
+  case 100:
+    return 1;
+  case 101:
+    return 1;
+  case 102:
+    return 1;
+  case 103:
+    return 1;
+  case 150:
+    return 1;
+  case 151:
+    return 1;
+  case 152:
+    return 1;
+  case 200:
+    return 1;
+  case 201:
+    return 1;
+  case 202:
+    return 1;
+  case 500:
+    return 1;
+  case 501:
+    return 1;
+  case 502:
+    return 1;
+  case 503:
+    return 1;
+  case 504:
+    return 1;
+  case 505:
+    return 1;
+  case 506:
+    return 1;
+  case 507:
+    return 1;
+  case 508:
+    return 1;
+  case 509:
+    return 1;
+  case 510:
+    return 1;
+  case 511:
+    return 1;
+  case 512:
+    return 1;
+  case 513:
+    return 1;
+  case 514:
+    return 1;
+  case 515:
+    return 1;
+  case 516:
+    return 1;
+  case 517:
+    return 1;
+  case 518:
+    return 1;
+  case 519:
+    return 1;
+  case 1000:
+    return 1;
+  case 1001:
+    return 2;
+  case 1002:
+    return 3;
+  case 1003:
+    return 4;
+  case 1004:
+    return 1;
+  case 1005:
+    return 2;
+  case 1006:
+    return 3;
+  case 1007:
+    return 4;
+  case 1008:
+    return 1;
+  case 1009:
+    return 2;
+  case 1010:
+    return 3;
+  case 1011:
+    return 4;
+  case 1012:
+    return 1;
+  case 1013:
+    return 2;
+  case 1014:
+    return 3;
+  case 1015:
+    return 4;
+  case 1016:
+    return 1;
+  case 1017:
+    return 2;
+  case 1018:
+    return 3;
+  case 1019:
+    return 4;
+  case 1020:
+    return 1;
+  case 1021:
+    return 2;
+  case 1022:
+    return 3;
+  case 1023:
+    return 4;
+  case 1024:
+    return 1;
+  case 1025:
+    return 2;
+  case 1026:
+    return 3;
+  case 1027:
+    return 4;
+  case 1028:
+    return 1;
+  case 1029:
+    return 2;
+  case 1030:
+    return 3;
+  case 1031:
+    return 4;
+  case 1032:
+    return 1;
+  case 1033:
+    return 2;
+  case 1034:
+    return 3;
+  case 1035:
+    return 4;
+  case 1036:
+    return 1;
+  case 1037:
+    return 2;
+  case 1038:
+    return 3;
+  case 1039:
+    return 4;
+  case 1040:
+    return 1;
+  case 1041:
+    return 2;
+  case 1042:
+    return 3;
+  case 1043:
+    return 4;
+  case 1044:
+    return 1;
+  case 1045:
+    return 2;
+  case 1046:
+    return 3;
+  case 1047:
+    return 4;
+  case 1048:
+    return 1;
+  case 1049:
+    return 2;
+  case 1050:
+    return 3;
+  case 1051:
+    return 4;
+  case 1052:
+    return 1;
+  case 1053:
+    return 2;
+  case 1054:
+    return 3;
+  case 1055:
+    return 4;
+  case 1056:
+    return 1;
+  case 1057:
+    return 2;
+  case 1058:
+    return 3;
+  case 1059:
+    return 4;
+  case 1060:
+    return 1;
+  case 1061:
+    return 2;
+  case 1062:
+    return 3;
+  case 1063:
+    return 4;
+  case 1064:
+    return 1;
+  case 1065:
+    return 2;
+  case 1066:
+    return 3;
+  case 1067:
+    return 4;
+  case 1068:
+    return 1;
+  case 1069:
+    return 2;
+  case 1070:
+    return 3;
+  case 1071:
+    return 4;
+  case 1072:
+    return 1;
+  case 1073:
+    return 2;
+  case 1074:
+    return 3;
+  case 1075:
+    return 4;
+  case 2003:
+    return 4;
+  case 2002:
+    return 3;
+  case 2001:
+    return 2;
+  case 2000:
+    return 1;
+  case 2004:
+    return 2;
+  case 2005:
+    return 4;
+  case 2006:
+    return 6;
+  case 2007:
+    return 8;
+  case 2008:
+    return 2;
+  case 2009:
+    return 4;
+  case 2010:
+    return 6;
+  case 2011:
+    return 8;
+  case 2208:
+    return 2;
+  case 2209:
+    return 4;
+  case 2210:
+    return 6;
+  case 2211:
+    return 8;
+  case 2104:
+    return 2;
+  case 2105:
+    return 4;
+  case 2106:
+    return 6;
+  case 2107:
+    return 8;
+  case 2012:
+    return 4;
+  case 2013:
+    return 9;
+  case 2014:
+    return 16;
+  case 2015:
+    return 6;
+  case 2016:
+    return 12;
+  case 2017:
+    return 4;
+  case 203:
+    return 1;
+  default:
+    return 0;
   }
 }
 
@@ -335,14 +604,15 @@ constexpr bool isNormalized(ANARIDataType type)
   case 2001:
   case 2000:
     return true;
-  default: return false;
+  default:
+    return false;
   }
 }
 
 // Whether `type` names an object handle (ANARI_DEVICE .. ANARI_WORLD).
 constexpr bool isObject(ANARIDataType type)
 {
-  return int(type) >= 500 && int(type) <= 519;
+  return int(type) >= 501 && int(type) <= 519;
 }
 
 // Whether `type` names one of the array handle types.
@@ -490,7 +760,8 @@ constexpr bool isValidDataType(ANARIDataType type)
   case 2017:
   case 203:
     return true;
-  default: return false;
+  default:
+    return false;
   }
 }
 
@@ -498,141 +769,276 @@ constexpr bool isValidDataType(ANARIDataType type)
 constexpr const char *toString(ANARIDataType type)
 {
   switch (int(type)) {
-  case 0: return "ANARI_UNKNOWN";
-  case 100: return "ANARI_DATA_TYPE";
-  case 101: return "ANARI_STRING";
-  case 102: return "ANARI_VOID_POINTER";
-  case 103: return "ANARI_BOOL";
-  case 150: return "ANARI_STRING_LIST";
-  case 151: return "ANARI_DATA_TYPE_LIST";
-  case 152: return "ANARI_PARAMETER_LIST";
-  case 200: return "ANARI_FUNCTION_POINTER";
-  case 201: return "ANARI_MEMORY_DELETER";
-  case 202: return "ANARI_STATUS_CALLBACK";
-  case 500: return "ANARI_LIBRARY";
-  case 501: return "ANARI_DEVICE";
-  case 502: return "ANARI_OBJECT";
-  case 503: return "ANARI_ARRAY";
-  case 504: return "ANARI_ARRAY1D";
-  case 505: return "ANARI_ARRAY2D";
-  case 506: return "ANARI_ARRAY3D";
-  case 507: return "ANARI_CAMERA";
-  case 508: return "ANARI_FRAME";
-  case 509: return "ANARI_GEOMETRY";
-  case 510: return "ANARI_GROUP";
-  case 511: return "ANARI_INSTANCE";
-  case 512: return "ANARI_LIGHT";
-  case 513: return "ANARI_MATERIAL";
-  case 514: return "ANARI_RENDERER";
-  case 515: return "ANARI_SURFACE";
-  case 516: return "ANARI_SAMPLER";
-  case 517: return "ANARI_SPATIAL_FIELD";
-  case 518: return "ANARI_VOLUME";
-  case 519: return "ANARI_WORLD";
-  case 1000: return "ANARI_INT8";
-  case 1001: return "ANARI_INT8_VEC2";
-  case 1002: return "ANARI_INT8_VEC3";
-  case 1003: return "ANARI_INT8_VEC4";
-  case 1004: return "ANARI_UINT8";
-  case 1005: return "ANARI_UINT8_VEC2";
-  case 1006: return "ANARI_UINT8_VEC3";
-  case 1007: return "ANARI_UINT8_VEC4";
-  case 1008: return "ANARI_INT16";
-  case 1009: return "ANARI_INT16_VEC2";
-  case 1010: return "ANARI_INT16_VEC3";
-  case 1011: return "ANARI_INT16_VEC4";
-  case 1012: return "ANARI_UINT16";
-  case 1013: return "ANARI_UINT16_VEC2";
-  case 1014: return "ANARI_UINT16_VEC3";
-  case 1015: return "ANARI_UINT16_VEC4";
-  case 1016: return "ANARI_INT32";
-  case 1017: return "ANARI_INT32_VEC2";
-  case 1018: return "ANARI_INT32_VEC3";
-  case 1019: return "ANARI_INT32_VEC4";
-  case 1020: return "ANARI_UINT32";
-  case 1021: return "ANARI_UINT32_VEC2";
-  case 1022: return "ANARI_UINT32_VEC3";
-  case 1023: return "ANARI_UINT32_VEC4";
-  case 1024: return "ANARI_INT64";
-  case 1025: return "ANARI_INT64_VEC2";
-  case 1026: return "ANARI_INT64_VEC3";
-  case 1027: return "ANARI_INT64_VEC4";
-  case 1028: return "ANARI_UINT64";
-  case 1029: return "ANARI_UINT64_VEC2";
-  case 1030: return "ANARI_UINT64_VEC3";
-  case 1031: return "ANARI_UINT64_VEC4";
-  case 1032: return "ANARI_FIXED8";
-  case 1033: return "ANARI_FIXED8_VEC2";
-  case 1034: return "ANARI_FIXED8_VEC3";
-  case 1035: return "ANARI_FIXED8_VEC4";
-  case 1036: return "ANARI_UFIXED8";
-  case 1037: return "ANARI_UFIXED8_VEC2";
-  case 1038: return "ANARI_UFIXED8_VEC3";
-  case 1039: return "ANARI_UFIXED8_VEC4";
-  case 1040: return "ANARI_FIXED16";
-  case 1041: return "ANARI_FIXED16_VEC2";
-  case 1042: return "ANARI_FIXED16_VEC3";
-  case 1043: return "ANARI_FIXED16_VEC4";
-  case 1044: return "ANARI_UFIXED16";
-  case 1045: return "ANARI_UFIXED16_VEC2";
-  case 1046: return "ANARI_UFIXED16_VEC3";
-  case 1047: return "ANARI_UFIXED16_VEC4";
-  case 1048: return "ANARI_FIXED32";
-  case 1049: return "ANARI_FIXED32_VEC2";
-  case 1050: return "ANARI_FIXED32_VEC3";
-  case 1051: return "ANARI_FIXED32_VEC4";
-  case 1052: return "ANARI_UFIXED32";
-  case 1053: return "ANARI_UFIXED32_VEC2";
-  case 1054: return "ANARI_UFIXED32_VEC3";
-  case 1055: return "ANARI_UFIXED32_VEC4";
-  case 1056: return "ANARI_FIXED64";
-  case 1057: return "ANARI_FIXED64_VEC2";
-  case 1058: return "ANARI_FIXED64_VEC3";
-  case 1059: return "ANARI_FIXED64_VEC4";
-  case 1060: return "ANARI_UFIXED64";
-  case 1061: return "ANARI_UFIXED64_VEC2";
-  case 1062: return "ANARI_UFIXED64_VEC3";
-  case 1063: return "ANARI_UFIXED64_VEC4";
-  case 1064: return "ANARI_FLOAT16";
-  case 1065: return "ANARI_FLOAT16_VEC2";
-  case 1066: return "ANARI_FLOAT16_VEC3";
-  case 1067: return "ANARI_FLOAT16_VEC4";
-  case 1068: return "ANARI_FLOAT32";
-  case 1069: return "ANARI_FLOAT32_VEC2";
-  case 1070: return "ANARI_FLOAT32_VEC3";
-  case 1071: return "ANARI_FLOAT32_VEC4";
-  case 1072: return "ANARI_FLOAT64";
-  case 1073: return "ANARI_FLOAT64_VEC2";
-  case 1074: return "ANARI_FLOAT64_VEC3";
-  case 1075: return "ANARI_FLOAT64_VEC4";
-  case 2003: return "ANARI_UFIXED8_RGBA_SRGB";
-  case 2002: return "ANARI_UFIXED8_RGB_SRGB";
-  case 2001: return "ANARI_UFIXED8_RA_SRGB";
-  case 2000: return "ANARI_UFIXED8_R_SRGB";
-  case 2004: return "ANARI_INT32_BOX1";
-  case 2005: return "ANARI_INT32_BOX2";
-  case 2006: return "ANARI_INT32_BOX3";
-  case 2007: return "ANARI_INT32_BOX4";
-  case 2008: return "ANARI_FLOAT32_BOX1";
-  case 2009: return "ANARI_FLOAT32_BOX2";
-  case 2010: return "ANARI_FLOAT32_BOX3";
-  case 2011: return "ANARI_FLOAT32_BOX4";
-  case 2208: return "ANARI_FLOAT64_BOX1";
-  case 2209: return "ANARI_FLOAT64_BOX2";
-  case 2210: return "ANARI_FLOAT64_BOX3";
-  case 2211: return "ANARI_FLOAT64_BOX4";
-  case 2104: return "ANARI_UINT64_REGION1";
-  case 2105: return "ANARI_UINT64_REGION2";
-  case 2106: return "ANARI_UINT64_REGION3";
-  case 2107: return "ANARI_UINT64_REGION4";
-  case 2012: return "ANARI_FLOAT32_MAT2";
-  case 2013: return "ANARI_FLOAT32_MAT3";
-  case 2014: return "ANARI_FLOAT32_MAT4";
-  case 2015: return "ANARI_FLOAT32_MAT2x3";
-  case 2016: return "ANARI_FLOAT32_MAT3x4";
-  case 2017: return "ANARI_FLOAT32_QUAT_IJKW";
-  case 203: return "ANARI_FRAME_COMPLETION_CALLBACK";
-  default: return "ANARI_UNKNOWN";
+  case 0:
+    return "ANARI_UNKNOWN";
+  case 100:
+    return "ANARI_DATA_TYPE";
+  case 101:
+    return "ANARI_STRING";
+  case 102:
+    return "ANARI_VOID_POINTER";
+  case 103:
+    return "ANARI_BOOL";
+  case 150:
+    return "ANARI_STRING_LIST";
+  case 151:
+    return "ANARI_DATA_TYPE_LIST";
+  case 152:
+    return "ANARI_PARAMETER_LIST";
+  case 200:
+    return "ANARI_FUNCTION_POINTER";
+  case 201:
+    return "ANARI_MEMORY_DELETER";
+  case 202:
+    return "ANARI_STATUS_CALLBACK";
+  case 500:
+    return "ANARI_LIBRARY";
+  case 501:
+    return "ANARI_DEVICE";
+  case 502:
+    return "ANARI_OBJECT";
+  case 503:
+    return "ANARI_ARRAY";
+  case 504:
+    return "ANARI_ARRAY1D";
+  case 505:
+    return "ANARI_ARRAY2D";
+  case 506:
+    return "ANARI_ARRAY3D";
+  case 507:
+    return "ANARI_CAMERA";
+  case 508:
+    return "ANARI_FRAME";
+  case 509:
+    return "ANARI_GEOMETRY";
+  case 510:
+    return "ANARI_GROUP";
+  case 511:
+    return "ANARI_INSTANCE";
+  case 512:
+    return "ANARI_LIGHT";
+  case 513:
+    return "ANARI_MATERIAL";
+  case 514:
+    return "ANARI_RENDERER";
+  case 515:
+    return "ANARI_SURFACE";
+  case 516:
+    return "ANARI_SAMPLER";
+  case 517:
+    return "ANARI_SPATIAL_FIELD";
+  case 518:
+    return "ANARI_VOLUME";
+  case 519:
+    return "ANARI_WORLD";
+  case 1000:
+    return "ANARI_INT8";
+  case 1001:
+    return "ANARI_INT8_VEC2";
+  case 1002:
+    return "ANARI_INT8_VEC3";
+  case 1003:
+    return "ANARI_INT8_VEC4";
+  case 1004:
+    return "ANARI_UINT8";
+  case 1005:
+    return "ANARI_UINT8_VEC2";
+  case 1006:
+    return "ANARI_UINT8_VEC3";
+  case 1007:
+    return "ANARI_UINT8_VEC4";
+  case 1008:
+    return "ANARI_INT16";
+  case 1009:
+    return "ANARI_INT16_VEC2";
+  case 1010:
+    return "ANARI_INT16_VEC3";
+  case 1011:
+    return "ANARI_INT16_VEC4";
+  case 1012:
+    return "ANARI_UINT16";
+  case 1013:
+    return "ANARI_UINT16_VEC2";
+  case 1014:
+    return "ANARI_UINT16_VEC3";
+  case 1015:
+    return "ANARI_UINT16_VEC4";
+  case 1016:
+    return "ANARI_INT32";
+  case 1017:
+    return "ANARI_INT32_VEC2";
+  case 1018:
+    return "ANARI_INT32_VEC3";
+  case 1019:
+    return "ANARI_INT32_VEC4";
+  case 1020:
+    return "ANARI_UINT32";
+  case 1021:
+    return "ANARI_UINT32_VEC2";
+  case 1022:
+    return "ANARI_UINT32_VEC3";
+  case 1023:
+    return "ANARI_UINT32_VEC4";
+  case 1024:
+    return "ANARI_INT64";
+  case 1025:
+    return "ANARI_INT64_VEC2";
+  case 1026:
+    return "ANARI_INT64_VEC3";
+  case 1027:
+    return "ANARI_INT64_VEC4";
+  case 1028:
+    return "ANARI_UINT64";
+  case 1029:
+    return "ANARI_UINT64_VEC2";
+  case 1030:
+    return "ANARI_UINT64_VEC3";
+  case 1031:
+    return "ANARI_UINT64_VEC4";
+  case 1032:
+    return "ANARI_FIXED8";
+  case 1033:
+    return "ANARI_FIXED8_VEC2";
+  case 1034:
+    return "ANARI_FIXED8_VEC3";
+  case 1035:
+    return "ANARI_FIXED8_VEC4";
+  case 1036:
+    return "ANARI_UFIXED8";
+  case 1037:
+    return "ANARI_UFIXED8_VEC2";
+  case 1038:
+    return "ANARI_UFIXED8_VEC3";
+  case 1039:
+    return "ANARI_UFIXED8_VEC4";
+  case 1040:
+    return "ANARI_FIXED16";
+  case 1041:
+    return "ANARI_FIXED16_VEC2";
+  case 1042:
+    return "ANARI_FIXED16_VEC3";
+  case 1043:
+    return "ANARI_FIXED16_VEC4";
+  case 1044:
+    return "ANARI_UFIXED16";
+  case 1045:
+    return "ANARI_UFIXED16_VEC2";
+  case 1046:
+    return "ANARI_UFIXED16_VEC3";
+  case 1047:
+    return "ANARI_UFIXED16_VEC4";
+  case 1048:
+    return "ANARI_FIXED32";
+  case 1049:
+    return "ANARI_FIXED32_VEC2";
+  case 1050:
+    return "ANARI_FIXED32_VEC3";
+  case 1051:
+    return "ANARI_FIXED32_VEC4";
+  case 1052:
+    return "ANARI_UFIXED32";
+  case 1053:
+    return "ANARI_UFIXED32_VEC2";
+  case 1054:
+    return "ANARI_UFIXED32_VEC3";
+  case 1055:
+    return "ANARI_UFIXED32_VEC4";
+  case 1056:
+    return "ANARI_FIXED64";
+  case 1057:
+    return "ANARI_FIXED64_VEC2";
+  case 1058:
+    return "ANARI_FIXED64_VEC3";
+  case 1059:
+    return "ANARI_FIXED64_VEC4";
+  case 1060:
+    return "ANARI_UFIXED64";
+  case 1061:
+    return "ANARI_UFIXED64_VEC2";
+  case 1062:
+    return "ANARI_UFIXED64_VEC3";
+  case 1063:
+    return "ANARI_UFIXED64_VEC4";
+  case 1064:
+    return "ANARI_FLOAT16";
+  case 1065:
+    return "ANARI_FLOAT16_VEC2";
+  case 1066:
+    return "ANARI_FLOAT16_VEC3";
+  case 1067:
+    return "ANARI_FLOAT16_VEC4";
+  case 1068:
+    return "ANARI_FLOAT32";
+  case 1069:
+    return "ANARI_FLOAT32_VEC2";
+  case 1070:
+    return "ANARI_FLOAT32_VEC3";
+  case 1071:
+    return "ANARI_FLOAT32_VEC4";
+  case 1072:
+    return "ANARI_FLOAT64";
+  case 1073:
+    return "ANARI_FLOAT64_VEC2";
+  case 1074:
+    return "ANARI_FLOAT64_VEC3";
+  case 1075:
+    return "ANARI_FLOAT64_VEC4";
+  case 2003:
+    return "ANARI_UFIXED8_RGBA_SRGB";
+  case 2002:
+    return "ANARI_UFIXED8_RGB_SRGB";
+  case 2001:
+    return "ANARI_UFIXED8_RA_SRGB";
+  case 2000:
+    return "ANARI_UFIXED8_R_SRGB";
+  case 2004:
+    return "ANARI_INT32_BOX1";
+  case 2005:
+    return "ANARI_INT32_BOX2";
+  case 2006:
+    return "ANARI_INT32_BOX3";
+  case 2007:
+    return "ANARI_INT32_BOX4";
+  case 2008:
+    return "ANARI_FLOAT32_BOX1";
+  case 2009:
+    return "ANARI_FLOAT32_BOX2";
+  case 2010:
+    return "ANARI_FLOAT32_BOX3";
+  case 2011:
+    return "ANARI_FLOAT32_BOX4";
+  case 2208:
+    return "ANARI_FLOAT64_BOX1";
+  case 2209:
+    return "ANARI_FLOAT64_BOX2";
+  case 2210:
+    return "ANARI_FLOAT64_BOX3";
+  case 2211:
+    return "ANARI_FLOAT64_BOX4";
+  case 2104:
+    return "ANARI_UINT64_REGION1";
+  case 2105:
+    return "ANARI_UINT64_REGION2";
+  case 2106:
+    return "ANARI_UINT64_REGION3";
+  case 2107:
+    return "ANARI_UINT64_REGION4";
+  case 2012:
+    return "ANARI_FLOAT32_MAT2";
+  case 2013:
+    return "ANARI_FLOAT32_MAT3";
+  case 2014:
+    return "ANARI_FLOAT32_MAT4";
+  case 2015:
+    return "ANARI_FLOAT32_MAT2x3";
+  case 2016:
+    return "ANARI_FLOAT32_MAT3x4";
+  case 2017:
+    return "ANARI_FLOAT32_QUAT_IJKW";
+  case 203:
+    return "ANARI_FRAME_COMPLETION_CALLBACK";
+  default:
+    return "ANARI_UNKNOWN";
   }
 }
 

@@ -215,52 +215,141 @@ static const AnyFunction kEveryFunction[] = {
     (AnyFunction)anariDeviceGetProcAddress,
 };
 
-static ANARILibrary (*const k_anariLoadLibrary)(const char*, ANARIStatusCallback, const void*) = anariLoadLibrary;
+static ANARILibrary (*const k_anariLoadLibrary)(
+    const char *, ANARIStatusCallback, const void *) = anariLoadLibrary;
 static void (*const k_anariUnloadLibrary)(ANARILibrary) = anariUnloadLibrary;
-static void (*const k_anariLoadModule)(ANARILibrary, const char*) = anariLoadModule;
-static void (*const k_anariUnloadModule)(ANARILibrary, const char*) = anariUnloadModule;
-static ANARIDevice (*const k_anariNewDevice)(ANARILibrary, const char*) = anariNewDevice;
-static ANARIDevice (*const k_anariNewInitializedDevice)(ANARILibrary, const char*, ANARIParameterValue*) = anariNewInitializedDevice;
-static ANARIArray1D (*const k_anariNewArray1D)(ANARIDevice, const void*, ANARIMemoryDeleter, const void*, ANARIDataType, uint64_t) = anariNewArray1D;
-static ANARIArray2D (*const k_anariNewArray2D)(ANARIDevice, const void*, ANARIMemoryDeleter, const void*, ANARIDataType, uint64_t, uint64_t) = anariNewArray2D;
-static ANARIArray3D (*const k_anariNewArray3D)(ANARIDevice, const void*, ANARIMemoryDeleter, const void*, ANARIDataType, uint64_t, uint64_t, uint64_t) = anariNewArray3D;
-static void* (*const k_anariMapArray)(ANARIDevice, ANARIArray) = anariMapArray;
-static void (*const k_anariUnmapArray)(ANARIDevice, ANARIArray) = anariUnmapArray;
-static ANARILight (*const k_anariNewLight)(ANARIDevice, const char*) = anariNewLight;
-static ANARICamera (*const k_anariNewCamera)(ANARIDevice, const char*) = anariNewCamera;
-static ANARIGeometry (*const k_anariNewGeometry)(ANARIDevice, const char*) = anariNewGeometry;
-static ANARISpatialField (*const k_anariNewSpatialField)(ANARIDevice, const char*) = anariNewSpatialField;
-static ANARIVolume (*const k_anariNewVolume)(ANARIDevice, const char*) = anariNewVolume;
+static void (*const k_anariLoadModule)(
+    ANARILibrary, const char *) = anariLoadModule;
+static void (*const k_anariUnloadModule)(
+    ANARILibrary, const char *) = anariUnloadModule;
+static ANARIDevice (*const k_anariNewDevice)(
+    ANARILibrary, const char *) = anariNewDevice;
+static ANARIDevice (*const k_anariNewInitializedDevice)(ANARILibrary,
+    const char *,
+    ANARIParameterValue *) = anariNewInitializedDevice;
+static ANARIArray1D (*const k_anariNewArray1D)(ANARIDevice,
+    const void *,
+    ANARIMemoryDeleter,
+    const void *,
+    ANARIDataType,
+    uint64_t) = anariNewArray1D;
+static ANARIArray2D (*const k_anariNewArray2D)(ANARIDevice,
+    const void *,
+    ANARIMemoryDeleter,
+    const void *,
+    ANARIDataType,
+    uint64_t,
+    uint64_t) = anariNewArray2D;
+static ANARIArray3D (*const k_anariNewArray3D)(ANARIDevice,
+    const void *,
+    ANARIMemoryDeleter,
+    const void *,
+    ANARIDataType,
+    uint64_t,
+    uint64_t,
+    uint64_t) = anariNewArray3D;
+static void *(*const k_anariMapArray)(ANARIDevice, ANARIArray) = anariMapArray;
+static void (*const k_anariUnmapArray)(
+    ANARIDevice, ANARIArray) = anariUnmapArray;
+static ANARILight (*const k_anariNewLight)(
+    ANARIDevice, const char *) = anariNewLight;
+static ANARICamera (*const k_anariNewCamera)(
+    ANARIDevice, const char *) = anariNewCamera;
+static ANARIGeometry (*const k_anariNewGeometry)(
+    ANARIDevice, const char *) = anariNewGeometry;
+static ANARISpatialField (*const k_anariNewSpatialField)(
+    ANARIDevice, const char *) = anariNewSpatialField;
+static ANARIVolume (*const k_anariNewVolume)(
+    ANARIDevice, const char *) = anariNewVolume;
 static ANARISurface (*const k_anariNewSurface)(ANARIDevice) = anariNewSurface;
-static ANARIMaterial (*const k_anariNewMaterial)(ANARIDevice, const char*) = anariNewMaterial;
-static ANARISampler (*const k_anariNewSampler)(ANARIDevice, const char*) = anariNewSampler;
+static ANARIMaterial (*const k_anariNewMaterial)(
+    ANARIDevice, const char *) = anariNewMaterial;
+static ANARISampler (*const k_anariNewSampler)(
+    ANARIDevice, const char *) = anariNewSampler;
 static ANARIGroup (*const k_anariNewGroup)(ANARIDevice) = anariNewGroup;
-static ANARIInstance (*const k_anariNewInstance)(ANARIDevice, const char*) = anariNewInstance;
+static ANARIInstance (*const k_anariNewInstance)(
+    ANARIDevice, const char *) = anariNewInstance;
 static ANARIWorld (*const k_anariNewWorld)(ANARIDevice) = anariNewWorld;
-static ANARIObject (*const k_anariNewObject)(ANARIDevice, const char*, const char*) = anariNewObject;
-static void (*const k_anariSetParameter)(ANARIDevice, ANARIObject, const char*, ANARIDataType, const void*) = anariSetParameter;
-static void (*const k_anariUnsetParameter)(ANARIDevice, ANARIObject, const char*) = anariUnsetParameter;
-static void (*const k_anariUnsetAllParameters)(ANARIDevice, ANARIObject) = anariUnsetAllParameters;
-static void* (*const k_anariMapParameterArray1D)(ANARIDevice, ANARIObject, const char*, ANARIDataType, uint64_t, uint64_t*) = anariMapParameterArray1D;
-static void* (*const k_anariMapParameterArray2D)(ANARIDevice, ANARIObject, const char*, ANARIDataType, uint64_t, uint64_t, uint64_t*) = anariMapParameterArray2D;
-static void* (*const k_anariMapParameterArray3D)(ANARIDevice, ANARIObject, const char*, ANARIDataType, uint64_t, uint64_t, uint64_t, uint64_t*) = anariMapParameterArray3D;
-static void (*const k_anariUnmapParameterArray)(ANARIDevice, ANARIObject, const char*) = anariUnmapParameterArray;
-static void (*const k_anariCommitParameters)(ANARIDevice, ANARIObject) = anariCommitParameters;
+static ANARIObject (*const k_anariNewObject)(
+    ANARIDevice, const char *, const char *) = anariNewObject;
+static void (*const k_anariSetParameter)(ANARIDevice,
+    ANARIObject,
+    const char *,
+    ANARIDataType,
+    const void *) = anariSetParameter;
+static void (*const k_anariUnsetParameter)(
+    ANARIDevice, ANARIObject, const char *) = anariUnsetParameter;
+static void (*const k_anariUnsetAllParameters)(
+    ANARIDevice, ANARIObject) = anariUnsetAllParameters;
+static void *(*const k_anariMapParameterArray1D)(ANARIDevice,
+    ANARIObject,
+    const char *,
+    ANARIDataType,
+    uint64_t,
+    uint64_t *) = anariMapParameterArray1D;
+static void *(*const k_anariMapParameterArray2D)(ANARIDevice,
+    ANARIObject,
+    const char *,
+    ANARIDataType,
+    uint64_t,
+    uint64_t,
+    uint64_t *) = anariMapParameterArray2D;
+static void *(*const k_anariMapParameterArray3D)(ANARIDevice,
+    ANARIObject,
+    const char *,
+    ANARIDataType,
+    uint64_t,
+    uint64_t,
+    uint64_t,
+    uint64_t *) = anariMapParameterArray3D;
+static void (*const k_anariUnmapParameterArray)(
+    ANARIDevice, ANARIObject, const char *) = anariUnmapParameterArray;
+static void (*const k_anariCommitParameters)(
+    ANARIDevice, ANARIObject) = anariCommitParameters;
 static void (*const k_anariRelease)(ANARIDevice, ANARIObject) = anariRelease;
 static void (*const k_anariRetain)(ANARIDevice, ANARIObject) = anariRetain;
-static const char ** (*const k_anariGetDeviceSubtypes)(ANARILibrary) = anariGetDeviceSubtypes;
-static const char ** (*const k_anariGetDeviceExtensions)(ANARILibrary, const char*) = anariGetDeviceExtensions;
-static const char ** (*const k_anariGetObjectSubtypes)(ANARIDevice, ANARIDataType) = anariGetObjectSubtypes;
-static const void* (*const k_anariGetObjectInfo)(ANARIDevice, ANARIDataType, const char*, const char*, ANARIDataType) = anariGetObjectInfo;
-static const void* (*const k_anariGetParameterInfo)(ANARIDevice, ANARIDataType, const char*, const char*, ANARIDataType, const char*, ANARIDataType) = anariGetParameterInfo;
-static int (*const k_anariGetProperty)(ANARIDevice, ANARIObject, const char*, ANARIDataType, void*, uint64_t, ANARIWaitMask) = anariGetProperty;
+static const char **(*const k_anariGetDeviceSubtypes)(
+    ANARILibrary) = anariGetDeviceSubtypes;
+static const char **(*const k_anariGetDeviceExtensions)(
+    ANARILibrary, const char *) = anariGetDeviceExtensions;
+static const char **(*const k_anariGetObjectSubtypes)(
+    ANARIDevice, ANARIDataType) = anariGetObjectSubtypes;
+static const void *(*const k_anariGetObjectInfo)(ANARIDevice,
+    ANARIDataType,
+    const char *,
+    const char *,
+    ANARIDataType) = anariGetObjectInfo;
+static const void *(*const k_anariGetParameterInfo)(ANARIDevice,
+    ANARIDataType,
+    const char *,
+    const char *,
+    ANARIDataType,
+    const char *,
+    ANARIDataType) = anariGetParameterInfo;
+static int (*const k_anariGetProperty)(ANARIDevice,
+    ANARIObject,
+    const char *,
+    ANARIDataType,
+    void *,
+    uint64_t,
+    ANARIWaitMask) = anariGetProperty;
 static ANARIFrame (*const k_anariNewFrame)(ANARIDevice) = anariNewFrame;
-static const void* (*const k_anariMapFrame)(ANARIDevice, ANARIFrame, const char*, uint32_t*, uint32_t*, ANARIDataType*) = anariMapFrame;
-static void (*const k_anariUnmapFrame)(ANARIDevice, ANARIFrame, const char*) = anariUnmapFrame;
-static ANARIRenderer (*const k_anariNewRenderer)(ANARIDevice, const char*) = anariNewRenderer;
-static void (*const k_anariRenderFrame)(ANARIDevice, ANARIFrame) = anariRenderFrame;
-static int (*const k_anariFrameReady)(ANARIDevice, ANARIFrame, ANARIWaitMask) = anariFrameReady;
-static void (*const k_anariDiscardFrame)(ANARIDevice, ANARIFrame) = anariDiscardFrame;
+static const void *(*const k_anariMapFrame)(ANARIDevice,
+    ANARIFrame,
+    const char *,
+    uint32_t *,
+    uint32_t *,
+    ANARIDataType *) = anariMapFrame;
+static void (*const k_anariUnmapFrame)(
+    ANARIDevice, ANARIFrame, const char *) = anariUnmapFrame;
+static ANARIRenderer (*const k_anariNewRenderer)(
+    ANARIDevice, const char *) = anariNewRenderer;
+static void (*const k_anariRenderFrame)(
+    ANARIDevice, ANARIFrame) = anariRenderFrame;
+static int (*const k_anariFrameReady)(
+    ANARIDevice, ANARIFrame, ANARIWaitMask) = anariFrameReady;
+static void (*const k_anariDiscardFrame)(
+    ANARIDevice, ANARIFrame) = anariDiscardFrame;
 
 int main(void)
 {
@@ -271,52 +360,98 @@ int main(void)
       return 1;
     }
   }
-  if (!k_anariLoadLibrary) return 1;
-  if (!k_anariUnloadLibrary) return 1;
-  if (!k_anariLoadModule) return 1;
-  if (!k_anariUnloadModule) return 1;
-  if (!k_anariNewDevice) return 1;
-  if (!k_anariNewInitializedDevice) return 1;
-  if (!k_anariNewArray1D) return 1;
-  if (!k_anariNewArray2D) return 1;
-  if (!k_anariNewArray3D) return 1;
-  if (!k_anariMapArray) return 1;
-  if (!k_anariUnmapArray) return 1;
-  if (!k_anariNewLight) return 1;
-  if (!k_anariNewCamera) return 1;
-  if (!k_anariNewGeometry) return 1;
-  if (!k_anariNewSpatialField) return 1;
-  if (!k_anariNewVolume) return 1;
-  if (!k_anariNewSurface) return 1;
-  if (!k_anariNewMaterial) return 1;
-  if (!k_anariNewSampler) return 1;
-  if (!k_anariNewGroup) return 1;
-  if (!k_anariNewInstance) return 1;
-  if (!k_anariNewWorld) return 1;
-  if (!k_anariNewObject) return 1;
-  if (!k_anariSetParameter) return 1;
-  if (!k_anariUnsetParameter) return 1;
-  if (!k_anariUnsetAllParameters) return 1;
-  if (!k_anariMapParameterArray1D) return 1;
-  if (!k_anariMapParameterArray2D) return 1;
-  if (!k_anariMapParameterArray3D) return 1;
-  if (!k_anariUnmapParameterArray) return 1;
-  if (!k_anariCommitParameters) return 1;
-  if (!k_anariRelease) return 1;
-  if (!k_anariRetain) return 1;
-  if (!k_anariGetDeviceSubtypes) return 1;
-  if (!k_anariGetDeviceExtensions) return 1;
-  if (!k_anariGetObjectSubtypes) return 1;
-  if (!k_anariGetObjectInfo) return 1;
-  if (!k_anariGetParameterInfo) return 1;
-  if (!k_anariGetProperty) return 1;
-  if (!k_anariNewFrame) return 1;
-  if (!k_anariMapFrame) return 1;
-  if (!k_anariUnmapFrame) return 1;
-  if (!k_anariNewRenderer) return 1;
-  if (!k_anariRenderFrame) return 1;
-  if (!k_anariFrameReady) return 1;
-  if (!k_anariDiscardFrame) return 1;
+  if (!k_anariLoadLibrary)
+    return 1;
+  if (!k_anariUnloadLibrary)
+    return 1;
+  if (!k_anariLoadModule)
+    return 1;
+  if (!k_anariUnloadModule)
+    return 1;
+  if (!k_anariNewDevice)
+    return 1;
+  if (!k_anariNewInitializedDevice)
+    return 1;
+  if (!k_anariNewArray1D)
+    return 1;
+  if (!k_anariNewArray2D)
+    return 1;
+  if (!k_anariNewArray3D)
+    return 1;
+  if (!k_anariMapArray)
+    return 1;
+  if (!k_anariUnmapArray)
+    return 1;
+  if (!k_anariNewLight)
+    return 1;
+  if (!k_anariNewCamera)
+    return 1;
+  if (!k_anariNewGeometry)
+    return 1;
+  if (!k_anariNewSpatialField)
+    return 1;
+  if (!k_anariNewVolume)
+    return 1;
+  if (!k_anariNewSurface)
+    return 1;
+  if (!k_anariNewMaterial)
+    return 1;
+  if (!k_anariNewSampler)
+    return 1;
+  if (!k_anariNewGroup)
+    return 1;
+  if (!k_anariNewInstance)
+    return 1;
+  if (!k_anariNewWorld)
+    return 1;
+  if (!k_anariNewObject)
+    return 1;
+  if (!k_anariSetParameter)
+    return 1;
+  if (!k_anariUnsetParameter)
+    return 1;
+  if (!k_anariUnsetAllParameters)
+    return 1;
+  if (!k_anariMapParameterArray1D)
+    return 1;
+  if (!k_anariMapParameterArray2D)
+    return 1;
+  if (!k_anariMapParameterArray3D)
+    return 1;
+  if (!k_anariUnmapParameterArray)
+    return 1;
+  if (!k_anariCommitParameters)
+    return 1;
+  if (!k_anariRelease)
+    return 1;
+  if (!k_anariRetain)
+    return 1;
+  if (!k_anariGetDeviceSubtypes)
+    return 1;
+  if (!k_anariGetDeviceExtensions)
+    return 1;
+  if (!k_anariGetObjectSubtypes)
+    return 1;
+  if (!k_anariGetObjectInfo)
+    return 1;
+  if (!k_anariGetParameterInfo)
+    return 1;
+  if (!k_anariGetProperty)
+    return 1;
+  if (!k_anariNewFrame)
+    return 1;
+  if (!k_anariMapFrame)
+    return 1;
+  if (!k_anariUnmapFrame)
+    return 1;
+  if (!k_anariNewRenderer)
+    return 1;
+  if (!k_anariRenderFrame)
+    return 1;
+  if (!k_anariFrameReady)
+    return 1;
+  if (!k_anariDiscardFrame)
+    return 1;
   printf("%u functions linked, 154 enum values pinned\n", count);
   return 0;
 }

@@ -14,7 +14,8 @@ static void onStatus(const void *user,
     const char *message)
 {
   (void)user, (void)device, (void)source, (void)type, (void)message;
-  if (severity == ANARI_SEVERITY_ERROR && code == ANARI_STATUS_INVALID_OPERATION)
+  if (severity == ANARI_SEVERITY_ERROR
+      && code == ANARI_STATUS_INVALID_OPERATION)
     g_reported = 1;
 }
 

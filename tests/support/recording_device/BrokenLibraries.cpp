@@ -9,8 +9,8 @@ anari_library_nulldevice_new_library(void *, ANARIStatusCallback, const void *)
   return nullptr;
 }
 #else
-extern "C" __attribute__((visibility("default"))) int
-not_an_anari_entry_point(void)
+extern "C" __attribute__((visibility("default"))) int not_an_anari_entry_point(
+    void)
 {
   return 0;
 }

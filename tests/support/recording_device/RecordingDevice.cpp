@@ -5,11 +5,11 @@
 #include "anari/backend/DeviceImpl.h"
 
 #include <atomic>
-#include <stdexcept>
 #include <cinttypes>
 #include <cstdarg>
 #include <cstdio>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 
 namespace {
@@ -190,7 +190,8 @@ struct RecordingDevice : public anari::DeviceImpl
           int(type),
           double(*(const float *)mem));
     } else {
-      record("setParameter(%p, %s, %d, %p)", (void *)o, str(name), int(type), mem);
+      record(
+          "setParameter(%p, %s, %d, %p)", (void *)o, str(name), int(type), mem);
     }
   }
   void unsetParameter(ANARIObject o, const char *name) override

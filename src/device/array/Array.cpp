@@ -1,0 +1,171 @@
+#include "Array.h"
+
+#include "../Device.h"
+
+#include "anari/frontend/type_utility.h"
+
+#include <algorithm>
+#include <cstring>
+#include <limits>
+
+namespace prism {
+namespace {
+
+ANARIDataType arrayTypeOf(int dimensions)
+{
+  return dimensions == 1   ? ANARI_ARRAY1D
+         : dimensions == 2 ? ANARI_ARRAY2D
+                           : ANARI_ARRAY3D;
+}
+
+// Element types an array may hold: data of fixed size and object handles.
+bool isArrayElementType(ANARIDataType type)
+{
+  const int t = int(type);
+  if (anari::isObject(type))
+    return t != ANARI_DEVICE && t != ANARI_OBJECT;
+  return t >= 1000 && anari::sizeOf(type) > 0;
+}
+
+} // namespace
+
+const char *Array::whyNotCreatable(const Shape &shape)
+{
+  if (!isArrayElementType(shape.elementType))
+    return "element type is not a valid array element type";
+  uint64_t elements = 1;
+  for (int i = 0; i < shape.dimensions; i++) {
+    if (shape.size[i] == 0)
+      return "array size is zero (arrays must have at least one element)";
+    if (elements > std::numeric_limits<uint64_t>::max() / shape.size[i])
+      return "array size overflows";
+    elements *= shape.size[i];
+  }
+  if (elements > (std::numeric_limits<uint64_t>::max() >> 8)
+                     / anari::sizeOf(shape.elementType))
+    return "array size overflows";
+  return nullptr;
+}
+
+Array::Array(Device &device,
+    const void *appMemory,
+    ANARIMemoryDeleter deleter,
+    const void *deleterUserPtr,
+    const Shape &shape)
+    : Object(device, arrayTypeOf(shape.dimensions), ""),
+      m_shape(shape),
+      m_elementSize(anari::sizeOf(shape.elementType)),
+      m_appMemory(appMemory),
+      m_deleter(deleter),
+      m_deleterUserPtr(deleterUserPtr),
+      m_isObjectArray(anari::isObject(shape.elementType))
+{
+  if (!m_appMemory) {
+    // Zeroed so object arrays start as NULL handles, never garbage.
+    m_managed.reset(new unsigned char[capacity() * m_elementSize]());
+  }
+  m_regionEnd = capacity();
+  if (m_isObjectArray)
+    refreshObjectReferences();
+}
+
+Array::~Array()
+{
+  releaseObjectReferences();
+  // NOTE: the deleter runs exactly once, when no object uses the memory.
+  if (m_appMemory && m_deleter)
+    m_deleter(m_deleterUserPtr, m_appMemory);
+}
+
+void *Array::storage()
+{
+  return m_appMemory ? const_cast<void *>(m_appMemory) : m_managed.get();
+}
+
+const void *Array::begin() const
+{
+  auto *base =
+      (const unsigned char *)(m_appMemory ? m_appMemory : m_managed.get());
+  return base + m_regionBegin * m_elementSize;
+}
+
+void *Array::map()
+{
+  m_mapped = true;
+  return storage();
+}
+
+void Array::unmap()
+{
+  m_mapped = false;
+  if (m_isObjectArray)
+    refreshObjectReferences();
+  markChanged();
+}
+
+std::vector<Object *> Array::objects() const
+{
+  if (!m_isObjectArray)
+    return {};
+  return std::vector<Object *>(m_heldObjects.begin() + m_regionBegin,
+      m_heldObjects.begin() + m_regionEnd);
+}
+
+void Array::refreshObjectReferences()
+{
+  // Take the new references before dropping the old ones, so an object in
+  // both sets never reaches a count of zero in between.
+  std::vector<Object *> fresh(capacity(), nullptr);
+  auto *handles = (const ANARIObject *)storage();
+  for (uint64_t i = 0; i < capacity(); i++) {
+    Object *object = device().lookup(handles[i]);
+    if (object) {
+      object->retainInternal();
+      fresh[i] = object;
+    }
+  }
+  releaseObjectReferences();
+  m_heldObjects = std::move(fresh);
+}
+
+void Array::releaseObjectReferences()
+{
+  auto held = std::move(m_heldObjects);
+  m_heldObjects.clear();
+  for (Object *object : held) {
+    if (object)
+      object->releaseInternal();
+  }
+}
+
+void Array::dropReferences()
+{
+  Object::dropReferences();
+  releaseObjectReferences();
+  m_heldObjects.assign(capacity(), nullptr);
+}
+
+void Array::commitParameters()
+{
+  m_regionBegin = 0;
+  m_regionEnd = capacity();
+  if (m_shape.dimensions != 1)
+    return;
+  struct Region
+  {
+    uint64_t lower, upper;
+  };
+  if (!isSet("region")) {
+    readAny("region");
+    return;
+  }
+  auto region = read<Region>("region", ANARI_UINT64_REGION1, {0, capacity()});
+  // The spec's clamping: always a valid range of at least one element.
+  region.upper = std::max(region.upper, region.lower + 1);
+  region.upper = std::min(region.upper, capacity());
+  region.lower = std::min(region.lower, region.upper - 1);
+  m_regionBegin = region.lower;
+  m_regionEnd = region.upper;
+}
+
+} // namespace prism

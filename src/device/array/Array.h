@@ -1,0 +1,102 @@
+// ANARIArray1D/2D/3D: shared (application memory, deleter called once when
+// the device lets go), managed (device memory written through map), and
+// arrays of object handles, which hold internal references (spec 3.9).
+#pragma once
+
+#include "../object/Object.h"
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace prism {
+
+class Array : public Object
+{
+ public:
+  struct Shape
+  {
+    ANARIDataType elementType{ANARI_UNKNOWN};
+    uint64_t size[3]{1, 1, 1};
+    int dimensions{1};
+  };
+
+  // `appMemory` NULL makes a managed array. Validate with isCreatable first.
+  Array(Device &device,
+      const void *appMemory,
+      ANARIMemoryDeleter deleter,
+      const void *deleterUserPtr,
+      const Shape &shape);
+  ~Array() override;
+
+  // Why an array of `shape` cannot be created, or NULL if it can.
+  static const char *whyNotCreatable(const Shape &shape);
+
+  ANARIDataType elementType() const
+  {
+    return m_shape.elementType;
+  }
+  int dimensions() const
+  {
+    return m_shape.dimensions;
+  }
+  uint64_t size(int dimension) const
+  {
+    return m_shape.size[dimension];
+  }
+  uint64_t capacity() const
+  {
+    return m_shape.size[0] * m_shape.size[1] * m_shape.size[2];
+  }
+  size_t elementSize() const
+  {
+    return m_elementSize;
+  }
+  // First element in use and how many are in use (KHR_ARRAY1D_REGION).
+  const void *begin() const;
+  uint64_t count() const
+  {
+    return m_regionEnd - m_regionBegin;
+  }
+  bool isShared() const
+  {
+    return m_appMemory != nullptr;
+  }
+  bool isObjectArray() const
+  {
+    return m_isObjectArray;
+  }
+  // The objects in use of an object array (entries may be NULL).
+  std::vector<Object *> objects() const;
+
+  void *map();
+  void unmap();
+  bool isMapped() const
+  {
+    return m_mapped;
+  }
+
+  void dropReferences() override;
+
+ protected:
+  void commitParameters() override;
+
+ private:
+  void *storage();
+  void refreshObjectReferences();
+  void releaseObjectReferences();
+
+  Shape m_shape;
+  size_t m_elementSize{0};
+  const void *m_appMemory{nullptr};
+  ANARIMemoryDeleter m_deleter{nullptr};
+  const void *m_deleterUserPtr{nullptr};
+  std::unique_ptr<unsigned char[]> m_managed;
+  bool m_mapped{false};
+  bool m_isObjectArray{false};
+  uint64_t m_regionBegin{0};
+  uint64_t m_regionEnd{0};
+  std::vector<Object *> m_heldObjects; // internal references, per element
+};
+
+} // namespace prism

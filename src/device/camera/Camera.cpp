@@ -1,0 +1,199 @@
+#include "Camera.h"
+
+#include <cmath>
+
+namespace prism {
+
+namespace {
+
+// Shirley-Chiu concentric map of [0,1)^2 onto the unit disk: keeps strata
+// compact and maps (0.5, 0.5) to the centre.
+float2 concentricDisk(float2 u)
+{
+  const float2 p{2.f * u.x - 1.f, 2.f * u.y - 1.f};
+  if (p.x == 0.f && p.y == 0.f)
+    return {0.f, 0.f};
+  constexpr float kQuarterPi = float(M_PI / 4.0);
+  float radius, angle;
+  if (std::abs(p.x) > std::abs(p.y)) {
+    radius = p.x;
+    angle = kQuarterPi * (p.y / p.x);
+  } else {
+    radius = p.y;
+    angle = 2.f * kQuarterPi - kQuarterPi * (p.x / p.y);
+  }
+  return {radius * std::cos(angle), radius * std::sin(angle)};
+}
+
+} // namespace
+
+Camera::Camera(Device &device, const std::string &subtype)
+    : Object(device, ANARI_CAMERA, subtype)
+{}
+
+void Camera::commitParameters()
+{
+  m_position = read<float3>("position", ANARI_FLOAT32_VEC3, {0, 0, 0});
+  float3 direction = read<float3>("direction", ANARI_FLOAT32_VEC3, {0, 0, -1});
+  float3 up = read<float3>("up", ANARI_FLOAT32_VEC3, {0, 1, 0});
+  struct Box2
+  {
+    float2 lower, upper;
+  };
+  const auto region =
+      read<Box2>("imageRegion", ANARI_FLOAT32_BOX2, {{0, 0}, {1, 1}});
+  m_regionLower = region.lower;
+  m_regionUpper = region.upper;
+
+  if (length(direction) == 0.f) {
+    report(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "'direction' is zero; using (0, 0, -1)");
+    direction = {0, 0, -1};
+  }
+  m_direction = normalize(direction);
+  m_right = cross(m_direction, up);
+  if (length(m_right) < 1e-12f) {
+    report(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "'up' is parallel to 'direction'; choosing another up vector");
+    m_right = cross(m_direction,
+        std::abs(m_direction.y) < 0.9f ? float3{0, 1, 0} : float3{1, 0, 0});
+  }
+  m_right = normalize(m_right);
+  m_up = cross(m_right, m_direction);
+
+  m_apertureRadius = read<float>("apertureRadius", ANARI_FLOAT32, 0.f);
+  if (!(m_apertureRadius >= 0.f && std::isfinite(m_apertureRadius))) {
+    report(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "'apertureRadius' (%g) must be >= 0; using 0",
+        m_apertureRadius);
+    m_apertureRadius = 0.f;
+  }
+  m_focusDistance = read<float>("focusDistance", ANARI_FLOAT32, 1.f);
+  if (!(m_focusDistance > 0.f && std::isfinite(m_focusDistance))) {
+    report(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "'focusDistance' (%g) must be > 0; using 1",
+        m_focusDistance);
+    m_focusDistance = 1.f;
+  }
+
+  const std::string stereoMode = readString("stereoMode", "none");
+  m_stereoMode = StereoMode::kNone;
+  if (stereoMode == "left")
+    m_stereoMode = StereoMode::kLeft;
+  else if (stereoMode == "right")
+    m_stereoMode = StereoMode::kRight;
+  else if (stereoMode == "sideBySide")
+    m_stereoMode = StereoMode::kSideBySide;
+  else if (stereoMode == "topBottom")
+    m_stereoMode = StereoMode::kTopBottom;
+  else if (stereoMode != "none") {
+    report(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "unknown 'stereoMode' '%s'; using 'none'",
+        stereoMode.c_str());
+  }
+  // 'aspect' describes the whole frame, so each eye's half keeps square
+  // pixels only with half (side by side) or twice (stacked) the ratio.
+  m_eyeAspectScale = m_stereoMode == StereoMode::kSideBySide  ? 0.5f
+                     : m_stereoMode == StereoMode::kTopBottom ? 2.f
+                                                              : 1.f;
+  m_interpupillaryDistance =
+      read<float>("interpupillaryDistance", ANARI_FLOAT32, 0.0635f);
+  if (!(m_interpupillaryDistance >= 0.f
+          && std::isfinite(m_interpupillaryDistance))) {
+    report(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "'interpupillaryDistance' (%g) must be >= 0; using 0.0635",
+        m_interpupillaryDistance);
+    m_interpupillaryDistance = 0.0635f;
+  }
+
+  // FLOAT32_BOX1 is (lower, upper); the spec clamps both to [0, 1].
+  m_shutter = read<float2>("shutter", ANARI_FLOAT32_BOX1, {0.5f, 0.5f});
+  m_shutter = clamp(m_shutter, 0.f, 1.f);
+  if (!(m_shutter.x <= m_shutter.y)) {
+    report(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "'shutter' opens (%g) after it closes (%g); using [0.5, 0.5]",
+        m_shutter.x,
+        m_shutter.y);
+    m_shutter = {0.5f, 0.5f};
+  }
+}
+
+void Camera::readNearFar(float &near, float &far)
+{
+  near = read<float>("near", ANARI_FLOAT32, 0.f);
+  far =
+      read<float>("far", ANARI_FLOAT32, std::numeric_limits<float>::infinity());
+  if (!(near >= 0.f && near < far)) {
+    report(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "'near' (%g) and 'far' (%g) must satisfy 0 <= near < far; ignored",
+        near,
+        far);
+    near = 0.f;
+    far = std::numeric_limits<float>::infinity();
+  }
+}
+
+Ray Camera::generateRay(float2 screen, float2 lensSample) const
+{
+  const float halfBaseline = 0.5f * m_interpupillaryDistance;
+  float eyeShift = 0.f;
+  switch (m_stereoMode) {
+  case StereoMode::kNone:
+    break;
+  case StereoMode::kLeft:
+    eyeShift = -halfBaseline;
+    break;
+  case StereoMode::kRight:
+    eyeShift = halfBaseline;
+    break;
+  case StereoMode::kSideBySide: {
+    const bool left = screen.x < 0.5f;
+    eyeShift = left ? -halfBaseline : halfBaseline;
+    screen.x = left ? 2.f * screen.x : 2.f * screen.x - 1.f;
+    break;
+  }
+  case StereoMode::kTopBottom: {
+    // Screen y grows upwards and the left eye is the top half.
+    const bool left = screen.y >= 0.5f;
+    eyeShift = left ? -halfBaseline : halfBaseline;
+    screen.y = left ? 2.f * screen.y - 1.f : 2.f * screen.y;
+    break;
+  }
+  }
+  const float2 sensor{
+      m_regionLower.x + screen.x * (m_regionUpper.x - m_regionLower.x),
+      m_regionLower.y + screen.y * (m_regionUpper.y - m_regionLower.y)};
+  return rayThroughSensor(sensor, eyeShift, lensSample);
+}
+
+Ray Camera::throughLens(float3 origin,
+    float3 direction,
+    float focusT,
+    float3 lensU,
+    float3 lensV,
+    float2 lensSample) const
+{
+  if (m_apertureRadius <= 0.f)
+    return {origin, direction};
+  const float2 disk = concentricDisk(lensSample) * m_apertureRadius;
+  const float3 lensPoint = origin + lensU * disk.x + lensV * disk.y;
+  const float3 focusPoint = origin + direction * focusT;
+  return {lensPoint, normalize(focusPoint - lensPoint)};
+}
+
+void Camera::clipAlongView(Ray &ray, float near, float far) const
+{
+  const float cosine = dot(ray.direction, m_direction);
+  ray.tMin = near / cosine;
+  ray.tMax = far / cosine;
+}
+
+} // namespace prism

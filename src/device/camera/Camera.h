@@ -1,0 +1,87 @@
+// ANARICamera: where rays start and where they go. Screen coordinates are
+// in [0,1]^2 over the frame (lower left origin); stereo splits them into
+// per-eye images, then imageRegion maps those onto the sensor (spec 5.2).
+#pragma once
+
+#include "../math/Vec.h"
+#include "../object/Object.h"
+
+#include <limits>
+
+namespace prism {
+
+// A ray in world space; hits count for t in [tMin, tMax]. The direction is
+// a unit vector, so t is the Euclidean distance from the origin.
+struct Ray
+{
+  float3 origin;
+  float3 direction;
+  float tMin{0.f};
+  float tMax{std::numeric_limits<float>::infinity()};
+};
+
+class Camera : public Object
+{
+ public:
+  Camera(Device &device, const std::string &subtype);
+
+  // The ray through `screen` ([0,1]^2 over the frame) and `lensSample`
+  // (uniform in [0,1)^2, (0.5, 0.5) is the lens centre).
+  Ray generateRay(float2 screen, float2 lensSample) const;
+  // The ray through the lens centre (a pinhole camera).
+  Ray generateRay(float2 screen) const
+  {
+    return generateRay(screen, {0.5f, 0.5f});
+  }
+  // [open, close] of the shutter within the frame's time span, in [0,1]
+  // (KHR_CAMERA_SHUTTER); stored for motion blur.
+  float2 shutter() const
+  {
+    return m_shutter;
+  }
+  // Whether rays depend on the lens sample (KHR_CAMERA_DEPTH_OF_FIELD).
+  bool hasDepthOfField() const
+  {
+    return m_apertureRadius > 0.f;
+  }
+
+ protected:
+  enum class StereoMode { kNone, kLeft, kRight, kSideBySide, kTopBottom };
+
+  void commitParameters() override;
+  // The ray through a point of the sensor for an eye displaced by
+  // `eyeShift` (world units along the eye baseline, 0 without stereo).
+  virtual Ray rayThroughSensor(
+      float2 sensor, float eyeShift, float2 lensSample) const = 0;
+
+  // The thin-lens ray: a point of the disk of radius apertureRadius spanned
+  // by lensU and lensV around `origin`, aimed at the pinhole ray's point at
+  // distance `focusT`, so all lens samples agree there.
+  Ray throughLens(float3 origin,
+      float3 direction,
+      float focusT,
+      float3 lensU,
+      float3 lensV,
+      float2 lensSample) const;
+  // Clip distances along the view direction turned into the ray's
+  // [tMin, tMax] (they are farther along rays that leave at an angle).
+  void clipAlongView(Ray &ray, float near, float far) const;
+  // Reads and validates 'near' and 'far' (0 <= near < far).
+  void readNearFar(float &near, float &far);
+
+  float3 m_position{0, 0, 0};
+  float3 m_direction{0, 0, -1}; // normalised
+  float3 m_up{0, 1, 0};         // orthonormal to m_direction
+  float3 m_right{1, 0, 0};
+  float2 m_regionLower{0, 0};
+  float2 m_regionUpper{1, 1};
+  float m_apertureRadius{0.f};
+  float m_focusDistance{1.f};
+  StereoMode m_stereoMode{StereoMode::kNone};
+  float m_interpupillaryDistance{0.0635f};
+  // An eye's image is this fraction of the frame's width/height ratio.
+  float m_eyeAspectScale{1.f};
+  float2 m_shutter{0.5f, 0.5f};
+};
+
+} // namespace prism

@@ -1,0 +1,47 @@
+#include "Orthographic.h"
+
+#include <cmath>
+
+namespace prism {
+
+Orthographic::Orthographic(Device &device) : Camera(device, "orthographic") {}
+
+void Orthographic::commitParameters()
+{
+  Camera::commitParameters();
+  m_height = read<float>("height", ANARI_FLOAT32, 1.f);
+  if (!(m_height > 0.f && std::isfinite(m_height))) {
+    report(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "'height' (%g) must be > 0; using 1",
+        m_height);
+    m_height = 1.f;
+  }
+  float aspect = read<float>("aspect", ANARI_FLOAT32, 1.f);
+  if (!(aspect > 0.f && std::isfinite(aspect))) {
+    report(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "'aspect' (%g) must be > 0; using 1",
+        aspect);
+    aspect = 1.f;
+  }
+  m_aspect = aspect * m_eyeAspectScale;
+  readNearFar(m_near, m_far);
+}
+
+Ray Orthographic::rayThroughSensor(
+    float2 sensor, float eyeShift, float2 lensSample) const
+{
+  const float3 origin =
+      m_position
+      + m_right * ((sensor.x - 0.5f) * m_height * m_aspect + eyeShift)
+      + m_up * ((sensor.y - 0.5f) * m_height);
+  // The spec gives no orthographic lens; this one is telecentric: a lens
+  // disk around each sensor ray, all of it focused at focusDistance.
+  Ray ray = throughLens(
+      origin, m_direction, m_focusDistance, m_right, m_up, lensSample);
+  clipAlongView(ray, m_near, m_far);
+  return ray;
+}
+
+} // namespace prism

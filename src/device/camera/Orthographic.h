@@ -1,0 +1,25 @@
+// The parallel-projection camera (KHR_CAMERA_ORTHOGRAPHIC).
+#pragma once
+
+#include "Camera.h"
+
+namespace prism {
+
+class Orthographic : public Camera
+{
+ public:
+  explicit Orthographic(Device &device);
+
+ protected:
+  void commitParameters() override;
+  Ray rayThroughSensor(
+      float2 sensor, float eyeShift, float2 lensSample) const override;
+
+ private:
+  float m_height{1.f}; // world-space height of the image
+  float m_aspect{1.f}; // of one eye's image
+  float m_near{0.f};
+  float m_far{std::numeric_limits<float>::infinity()};
+};
+
+} // namespace prism

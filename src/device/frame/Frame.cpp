@@ -1,0 +1,282 @@
+#include "Frame.h"
+
+#include "../Device.h"
+#include "../camera/Camera.h"
+#include "../renderer/Renderer.h"
+#include "../world/World.h"
+#include "PixelFormat.h"
+
+#include "anari/frontend/type_utility.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cstring>
+
+namespace prism {
+namespace {
+
+constexpr uint32_t kTileSize = 32;
+
+// Mapped types each channel accepts (spec 5.1, table 10).
+const std::map<std::string, std::vector<ANARIDataType>> &channelFormats()
+{
+  static const std::map<std::string, std::vector<ANARIDataType>> formats = {
+      {"channel.color",
+          {ANARI_UFIXED8_VEC4, ANARI_UFIXED8_RGBA_SRGB, ANARI_FLOAT32_VEC4}},
+      {"channel.depth", {ANARI_FLOAT32}},
+      {"channel.normal", {ANARI_FIXED16_VEC3, ANARI_FLOAT32_VEC3}},
+      {"channel.albedo",
+          {ANARI_UFIXED8_VEC3, ANARI_UFIXED8_RGB_SRGB, ANARI_FLOAT32_VEC3}},
+      {"channel.primitiveId", {ANARI_UINT32}},
+      {"channel.objectId", {ANARI_UINT32}},
+      {"channel.instanceId", {ANARI_UINT32}},
+  };
+  return formats;
+}
+
+} // namespace
+
+Frame::Frame(Device &device) : Object(device, ANARI_FRAME, "") {}
+
+Frame::~Frame() = default;
+
+void Frame::commitParameters()
+{
+  // dynamic_cast: an object of an unknown subtype is inert, not a Camera.
+  m_world = dynamic_cast<World *>(readObject("world", {ANARI_WORLD}));
+  m_camera = dynamic_cast<Camera *>(readObject("camera", {ANARI_CAMERA}));
+  m_renderer =
+      dynamic_cast<Renderer *>(readObject("renderer", {ANARI_RENDERER}));
+  struct Size
+  {
+    uint32_t width, height;
+  };
+  const auto size = read<Size>("size", ANARI_UINT32_VEC2, {0, 0});
+  m_width = size.width;
+  m_height = size.height;
+  m_completionCallback = read<ANARIFrameCompletionCallback>(
+      "frameCompletionCallback", ANARI_FRAME_COMPLETION_CALLBACK, nullptr);
+  m_completionUserPtr = read<const void *>(
+      "frameCompletionCallbackUserData", ANARI_VOID_POINTER, nullptr);
+
+  std::map<std::string, Channel> channels;
+  for (const auto &[name, accepted] : channelFormats()) {
+    const Parameter *p = readAny(name.c_str());
+    if (!p)
+      continue;
+    if (p->type() != ANARI_DATA_TYPE) {
+      wrongType(name.c_str(), p->type(), {ANARI_DATA_TYPE});
+      continue;
+    }
+    const ANARIDataType format = p->as<int32_t>();
+    if (std::find(accepted.begin(), accepted.end(), format) == accepted.end()) {
+      std::string list;
+      for (ANARIDataType t : accepted)
+        list += std::string(list.empty() ? "" : ", ") + anari::toString(t);
+      report(ANARI_SEVERITY_WARNING,
+          ANARI_STATUS_INVALID_ARGUMENT,
+          "'%s' cannot be %s (accepted: %s); the channel is disabled",
+          name.c_str(),
+          anari::toString(format),
+          list.c_str());
+      continue;
+    }
+    channels[name].type = format;
+  }
+  m_channels = std::move(channels);
+}
+
+bool Frame::isValid() const
+{
+  return m_world && m_camera && m_renderer && m_width > 0 && m_height > 0
+         && m_world->isValid() && m_camera->isValid() && m_renderer->isValid();
+}
+
+void Frame::renderAsync()
+{
+  waitUntilDone();
+  if (!isValid()) {
+    std::string missing;
+    auto add = [&](bool ok, const char *what) {
+      if (!ok)
+        missing += std::string(missing.empty() ? "" : ", ") + what;
+    };
+    add(m_world && m_world->isValid(), "a valid 'world'");
+    add(m_camera && m_camera->isValid(), "a valid 'camera'");
+    add(m_renderer && m_renderer->isValid(), "a valid 'renderer'");
+    add(m_width > 0 && m_height > 0, "a positive 'size'");
+    report(ANARI_SEVERITY_ERROR,
+        ANARI_STATUS_INVALID_OPERATION,
+        "anariRenderFrame: frame not rendered; it needs %s",
+        missing.c_str());
+    return;
+  }
+  {
+    std::lock_guard lock(m_stateMutex);
+    m_rendering = true;
+  }
+  m_cancel = false;
+  m_tilesDone = 0;
+  m_start = std::chrono::steady_clock::now();
+  device().frameStarted();
+  device().taskPool().run([this] {
+    render();
+    finish();
+  });
+}
+
+void Frame::render()
+{
+  if (m_buffers.width != m_width || m_buffers.height != m_height)
+    m_buffers.resize(m_width, m_height);
+  const uint32_t tilesX = (m_width + kTileSize - 1) / kTileSize;
+  const uint32_t tilesY = (m_height + kTileSize - 1) / kTileSize;
+  m_tilesTotal = tilesX * tilesY;
+  RenderContext context{m_camera, m_world, m_width, m_height};
+  m_renderer->beginFrame(context);
+  tbb::parallel_for(uint32_t(0), m_tilesTotal, [&](uint32_t index) {
+    if (m_cancel)
+      return;
+    const uint32_t tx = index % tilesX, ty = index / tilesX;
+    Tile tile{tx * kTileSize,
+        ty * kTileSize,
+        std::min((tx + 1) * kTileSize, m_width),
+        std::min((ty + 1) * kTileSize, m_height)};
+    m_renderer->renderTile(context, tile, m_buffers, m_cancel);
+    m_tilesDone++;
+  });
+  resolveChannels();
+}
+
+void Frame::resolveChannels()
+{
+  const size_t pixels = size_t(m_width) * m_height;
+  for (auto &[name, channel] : m_channels)
+    channel.pixels.resize(pixels * anari::sizeOf(channel.type));
+  // Rows convert independently; the channels' formats are fixed per frame.
+  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, m_height, 16),
+      [&](const tbb::blocked_range<uint32_t> &rows) {
+        const size_t begin = size_t(rows.begin()) * m_width;
+        const size_t count = size_t(rows.size()) * m_width;
+        for (auto &[name, channel] : m_channels) {
+          unsigned char *out =
+              channel.pixels.data() + begin * anari::sizeOf(channel.type);
+          if (name == "channel.color") {
+            writeColorPixels(
+                channel.type, m_buffers.color.data() + begin, count, out);
+          } else if (name == "channel.depth") {
+            std::memcpy(
+                out, m_buffers.depth.data() + begin, count * sizeof(float));
+          } else if (name == "channel.normal") {
+            writeVec3Pixels(
+                channel.type, m_buffers.normal.data() + begin, count, out);
+          } else if (name == "channel.albedo") {
+            writeVec3Pixels(
+                channel.type, m_buffers.albedo.data() + begin, count, out);
+          } else {
+            const auto &ids =
+                name == "channel.primitiveId" ? m_buffers.primitiveId
+                : name == "channel.objectId"  ? m_buffers.objectId
+                                              : m_buffers.instanceId;
+            std::memcpy(out, ids.data() + begin, count * sizeof(uint32_t));
+          }
+        }
+      });
+}
+
+void Frame::finish()
+{
+  m_duration =
+      std::chrono::duration<float>(std::chrono::steady_clock::now() - m_start)
+          .count();
+  // NOTE: the device stops counting this frame before the continuation runs,
+  // so API calls made from the callback never wait on this frame.
+  device().frameFinished();
+  if (m_completionCallback)
+    m_completionCallback(
+        m_completionUserPtr, device().this_device(), (ANARIFrame)handle());
+  {
+    std::lock_guard lock(m_stateMutex);
+    m_rendering = false;
+  }
+  m_doneCondition.notify_all();
+}
+
+void Frame::waitUntilDone()
+{
+  std::unique_lock lock(m_stateMutex);
+  m_doneCondition.wait(lock, [&] { return !m_rendering; });
+}
+
+bool Frame::ready(ANARIWaitMask mask)
+{
+  if (mask & ANARI_WAIT) {
+    waitUntilDone();
+    return true;
+  }
+  std::lock_guard lock(m_stateMutex);
+  return !m_rendering;
+}
+
+void Frame::discard()
+{
+  m_cancel = true;
+}
+
+void Frame::abandon()
+{
+  discard();
+  waitUntilDone();
+}
+
+const void *Frame::map(const char *channel,
+    uint32_t &width,
+    uint32_t &height,
+    ANARIDataType &pixelType)
+{
+  waitUntilDone();
+  auto it = m_channels.find(channel);
+  if (it == m_channels.end() || it->second.pixels.empty()) {
+    report(ANARI_SEVERITY_ERROR,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "anariMapFrame: channel '%s' is %s",
+        channel,
+        it == m_channels.end() ? "not enabled on this frame"
+                               : "empty (the frame was never rendered)");
+    return nullptr;
+  }
+  width = m_width;
+  height = m_height;
+  pixelType = it->second.type;
+  return it->second.pixels.data();
+}
+
+void Frame::unmap(const char *) {}
+
+bool Frame::getProperty(const std::string &name,
+    ANARIDataType type,
+    void *mem,
+    uint64_t size,
+    ANARIWaitMask mask)
+{
+  if (type != ANARI_FLOAT32 || !mem || size < sizeof(float))
+    return false;
+  float value;
+  if (name == "duration") {
+    if (mask & ANARI_WAIT)
+      waitUntilDone();
+    value = m_duration;
+  } else if (name == "renderProgress") {
+    value = m_tilesTotal ? float(m_tilesDone) / float(m_tilesTotal) : 0.f;
+    if (ready(ANARI_NO_WAIT) && m_tilesTotal)
+      value = 1.f;
+  } else {
+    return false;
+  }
+  std::memcpy(mem, &value, sizeof(value));
+  return true;
+}
+
+} // namespace prism

@@ -1,0 +1,85 @@
+// ANARIFrame: size, channels, the world/camera/renderer to draw, and the
+// asynchronous render of them on the device's task pool (spec 5.1).
+#pragma once
+
+#include "../object/Object.h"
+#include "FrameBuffers.h"
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <map>
+#include <mutex>
+
+namespace prism {
+
+class Camera;
+class Renderer;
+class World;
+
+class Frame : public Object
+{
+ public:
+  explicit Frame(Device &device);
+  ~Frame() override;
+
+  bool isValid() const override;
+  // Starts rendering the committed scene; returns immediately.
+  void renderAsync();
+  // NO_WAIT: whether the last render finished; WAIT: blocks until it has.
+  bool ready(ANARIWaitMask mask);
+  // Asks the render in flight to stop as soon as possible.
+  void discard();
+  // Stops and waits for the render in flight; called before the frame's
+  // last public reference goes, since nothing else keeps a frame alive.
+  void abandon();
+  // The channel's pixels (waits for the render); NULL if not enabled.
+  const void *map(const char *channel,
+      uint32_t &width,
+      uint32_t &height,
+      ANARIDataType &pixelType);
+  void unmap(const char *channel);
+
+  bool getProperty(const std::string &name,
+      ANARIDataType type,
+      void *mem,
+      uint64_t size,
+      ANARIWaitMask mask) override;
+
+ protected:
+  void commitParameters() override;
+
+ private:
+  struct Channel
+  {
+    ANARIDataType type{ANARI_UNKNOWN};
+    std::vector<unsigned char> pixels;
+  };
+  void render();
+  void resolveChannels();
+  void finish();
+  void waitUntilDone();
+
+  // Committed state.
+  World *m_world{nullptr};
+  Camera *m_camera{nullptr};
+  Renderer *m_renderer{nullptr};
+  uint32_t m_width{0};
+  uint32_t m_height{0};
+  std::map<std::string, Channel> m_channels;
+  ANARIFrameCompletionCallback m_completionCallback{nullptr};
+  const void *m_completionUserPtr{nullptr};
+
+  FrameBuffers m_buffers;
+
+  std::mutex m_stateMutex;
+  std::condition_variable m_doneCondition;
+  bool m_rendering{false};
+  std::atomic<bool> m_cancel{false};
+  std::atomic<uint32_t> m_tilesDone{0};
+  uint32_t m_tilesTotal{0};
+  float m_duration{0.f};
+  std::chrono::steady_clock::time_point m_start;
+};
+
+} // namespace prism

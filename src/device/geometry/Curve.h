@@ -1,0 +1,24 @@
+// Curves of round linear segments (KHR_GEOMETRY_CURVE), traced as Embree's
+// native round linear curves.
+#pragma once
+
+#include "Geometry.h"
+
+namespace prism {
+
+class Curve : public Geometry
+{
+ public:
+  explicit Curve(Device &device) : Geometry(device, "curve") {}
+  void addTo(rt::Scene &scene, uint32_t id) const override;
+
+ protected:
+  void readShape() override;
+  Corners cornersAt(uint32_t primitive, float u, float v) const override;
+
+ private:
+  std::vector<uint32_t> m_segmentStarts;
+  std::vector<float4> m_positionRadius; // per vertex (+1 padding)
+};
+
+} // namespace prism

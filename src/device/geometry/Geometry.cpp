@@ -1,0 +1,352 @@
+#include "Geometry.h"
+
+#include "../DeviceInfo.h"
+#include "../array/Array.h"
+#include "../array/ElementConversion.h"
+
+#include "anari/frontend/type_utility.h"
+
+#include <cstdio>
+
+namespace prism {
+namespace {
+
+// The attributes the base reads, in AttributeData order.
+const char *const kAttributeNames[5] = {
+    "color", "attribute0", "attribute1", "attribute2", "attribute3"};
+
+const std::initializer_list<ANARIDataType> kColorTypes = {ANARI_UFIXED8,
+    ANARI_UFIXED8_VEC2,
+    ANARI_UFIXED8_VEC3,
+    ANARI_UFIXED8_VEC4,
+    ANARI_UFIXED8_R_SRGB,
+    ANARI_UFIXED8_RA_SRGB,
+    ANARI_UFIXED8_RGB_SRGB,
+    ANARI_UFIXED8_RGBA_SRGB,
+    ANARI_UFIXED16,
+    ANARI_UFIXED16_VEC2,
+    ANARI_UFIXED16_VEC3,
+    ANARI_UFIXED16_VEC4,
+    ANARI_UFIXED32,
+    ANARI_UFIXED32_VEC2,
+    ANARI_UFIXED32_VEC3,
+    ANARI_UFIXED32_VEC4,
+    ANARI_FLOAT32,
+    ANARI_FLOAT32_VEC2,
+    ANARI_FLOAT32_VEC3,
+    ANARI_FLOAT32_VEC4};
+const std::initializer_list<ANARIDataType> kAttributeTypes = {
+    ANARI_FLOAT32, ANARI_FLOAT32_VEC2, ANARI_FLOAT32_VEC3, ANARI_FLOAT32_VEC4};
+const std::initializer_list<ANARIDataType> kNormalTypes = {
+    ANARI_FIXED16_VEC3, ANARI_FLOAT32_VEC3};
+const std::initializer_list<ANARIDataType> kTangentTypes = {ANARI_FIXED16_VEC3,
+    ANARI_FIXED16_VEC4,
+    ANARI_FLOAT32_VEC3,
+    ANARI_FLOAT32_VEC4};
+
+std::vector<float4> toFloat4(const Array *array)
+{
+  std::vector<float4> out(array ? array->count() : 0);
+  if (array) {
+    convertToFloat4(array->elementType(),
+        array->begin(),
+        out.size(),
+        array->elementSize(),
+        out.data());
+  }
+  return out;
+}
+
+float4 interpolate(const std::vector<float4> &values,
+    const uint32_t *index,
+    const float *weight,
+    uint32_t count)
+{
+  float4 sum{0, 0, 0, 0};
+  for (uint32_t i = 0; i < count; i++)
+    sum = sum + values[index[i]] * weight[i];
+  return sum;
+}
+
+} // namespace
+
+Geometry::Geometry(Device &device, const std::string &subtype)
+    : Object(device, ANARI_GEOMETRY, subtype)
+{}
+
+void Geometry::invalidate(const char *format, ...)
+{
+  char buffer[512];
+  va_list args;
+  va_start(args, format);
+  std::vsnprintf(buffer, sizeof(buffer), format, args);
+  va_end(args);
+  if (m_valid)
+    report(ANARI_SEVERITY_ERROR,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "%s; the geometry will not render",
+        buffer);
+  m_valid = false;
+}
+
+void Geometry::commitParameters()
+{
+  m_valid = true;
+  m_primitiveCount = 0;
+  m_vertexCount = 0;
+  m_positions.clear();
+  readShape();
+  readAttributes();
+  if (m_valid)
+    checkAttributeSizes();
+  if (!m_valid)
+    m_primitiveCount = 0;
+}
+
+const Array *Geometry::readArray(const char *name,
+    std::initializer_list<ANARIDataType> elementTypes,
+    bool required)
+{
+  auto *array = (const Array *)readObject(name, {ANARI_ARRAY1D});
+  if (!array) {
+    if (required)
+      invalidate("required parameter '%s' is not set", name);
+    return nullptr;
+  }
+  for (ANARIDataType t : elementTypes) {
+    if (array->elementType() == t)
+      return array;
+  }
+  std::string list;
+  for (ANARIDataType t : elementTypes)
+    list += std::string(list.empty() ? "" : ", ") + anari::toString(t);
+  if (required) {
+    invalidate("'%s' has element type %s; accepted: %s",
+        name,
+        anari::toString(array->elementType()),
+        list.c_str());
+  } else {
+    report(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "'%s' has element type %s and is ignored; accepted: %s",
+        name,
+        anari::toString(array->elementType()),
+        list.c_str());
+  }
+  return nullptr;
+}
+
+bool Geometry::readPositions(size_t minimumCount)
+{
+  const Array *positions =
+      readArray("vertex.position", {ANARI_FLOAT32_VEC3}, true);
+  if (!positions)
+    return false;
+  m_vertexCount = positions->count();
+  if (m_vertexCount < minimumCount) {
+    invalidate("'vertex.position' has %zu elements; at least %zu are needed",
+        m_vertexCount,
+        minimumCount);
+    return false;
+  }
+  // One extra element: Embree reads 16 bytes for each 12-byte vertex.
+  m_positions.resize(m_vertexCount + 1);
+  convertToFloat3(ANARI_FLOAT32_VEC3,
+      positions->begin(),
+      m_vertexCount,
+      positions->elementSize(),
+      m_positions.data());
+  return true;
+}
+
+bool Geometry::readIndices(int components, std::vector<uint32_t> &indices)
+{
+  indices.clear();
+  const ANARIDataType u32[] = {
+      ANARI_UINT32, ANARI_UINT32_VEC2, ANARI_UINT32_VEC3, ANARI_UINT32_VEC4};
+  const ANARIDataType u64[] = {
+      ANARI_UINT64, ANARI_UINT64_VEC2, ANARI_UINT64_VEC3, ANARI_UINT64_VEC4};
+  const Array *array =
+      readArray("primitive.index", {u32[components - 1], u64[components - 1]});
+  if (!array)
+    return false;
+  const size_t count = array->count() * size_t(components);
+  if (array->elementType() == u64[components - 1]) {
+    std::vector<uint64_t> wide(count);
+    convertToUint64(array->elementType(),
+        array->begin(),
+        array->count(),
+        array->elementSize(),
+        wide.data());
+    indices.resize(count);
+    for (size_t i = 0; i < count; i++) {
+      if (wide[i] > kGeometryMaxIndex) {
+        invalidate(
+            "'primitive.index' element %zu is %llu, above "
+            "geometryMaxIndex",
+            i / size_t(components),
+            (unsigned long long)wide[i]);
+        return true;
+      }
+      indices[i] = uint32_t(wide[i]);
+    }
+  } else {
+    indices.resize(count);
+    convertToUint32(array->elementType(),
+        array->begin(),
+        array->count(),
+        array->elementSize(),
+        indices.data());
+  }
+  return true;
+}
+
+void Geometry::requireVertexIndicesBelow(
+    size_t vertexCount, const std::vector<uint32_t> &indices)
+{
+  for (size_t i = 0; i < indices.size(); i++) {
+    if (indices[i] >= vertexCount) {
+      invalidate(
+          "'primitive.index' refers to vertex %u but there are only %zu "
+          "vertices",
+          indices[i],
+          vertexCount);
+      return;
+    }
+  }
+}
+
+std::vector<float> Geometry::readFloats(const char *name)
+{
+  const Array *array = readArray(name, {ANARI_FLOAT32});
+  std::vector<float> out(array ? array->count() : 0);
+  if (array) {
+    convertToFloat(ANARI_FLOAT32,
+        array->begin(),
+        out.size(),
+        array->elementSize(),
+        out.data());
+  }
+  return out;
+}
+
+std::vector<float4> Geometry::readAttributeArray(const std::string &name)
+{
+  const bool isColor = name.find("color") != std::string::npos;
+  return toFloat4(
+      readArray(name.c_str(), isColor ? kColorTypes : kAttributeTypes));
+}
+
+void Geometry::readAttributes()
+{
+  const bool faceVarying = faceVaryingCorners() > 0;
+  for (int a = 0; a < 5; a++) {
+    AttributeData &data = m_attributes[a];
+    const std::string name = kAttributeNames[a];
+    data.hasUniform = isSet(name.c_str());
+    data.uniform = read<float4>(name.c_str(), ANARI_FLOAT32_VEC4, {0, 0, 0, 1});
+    data.perPrimitive = readAttributeArray("primitive." + name);
+    data.perVertex = readAttributeArray("vertex." + name);
+    data.perCorner = faceVarying ? readAttributeArray("faceVarying." + name)
+                                 : std::vector<float4>{};
+  }
+  m_vertexNormals.clear();
+  m_cornerNormals.clear();
+  if (faceVarying) {
+    auto normals = [&](const char *name) {
+      const Array *array = readArray(name, kNormalTypes);
+      std::vector<float3> out(array ? array->count() : 0);
+      if (array)
+        convertToFloat3(array->elementType(),
+            array->begin(),
+            out.size(),
+            array->elementSize(),
+            out.data());
+      return out;
+    };
+    m_vertexNormals = normals("vertex.normal");
+    m_cornerNormals = normals("faceVarying.normal");
+    // Tangents serve normal mapping in the path tracer; read and checked.
+    readArray("vertex.tangent", kTangentTypes);
+    readArray("faceVarying.tangent", kTangentTypes);
+  }
+}
+
+void Geometry::checkAttributeSizes()
+{
+  const size_t corners = size_t(faceVaryingCorners()) * m_primitiveCount;
+  auto check = [&](const std::string &name, size_t have, size_t need) {
+    if (have > 0 && have < need)
+      invalidate(
+          "'%s' has %zu elements but %zu are needed", name.c_str(), have, need);
+  };
+  for (int a = 0; a < 5; a++) {
+    const AttributeData &data = m_attributes[a];
+    const std::string name = kAttributeNames[a];
+    check("primitive." + name, data.perPrimitive.size(), m_primitiveCount);
+    check("vertex." + name, data.perVertex.size(), m_vertexCount);
+    check("faceVarying." + name, data.perCorner.size(), corners);
+  }
+  check("vertex.normal", m_vertexNormals.size(), m_vertexCount);
+  check("faceVarying.normal", m_cornerNormals.size(), corners);
+}
+
+float3 Geometry::surfaceNormal(const rt::Hit &hit, const float3 &) const
+{
+  return normalize(hit.geometricNormal);
+}
+
+float3 Geometry::attributesAt(const rt::Hit &hit,
+    const float3 &objectPosition,
+    AttributeValues &attributes) const
+{
+  const uint32_t primitive = hit.primitiveId;
+  const Corners corners = cornersAt(primitive, hit.u, hit.v);
+  const uint32_t perPrimitive = faceVaryingCorners();
+  // Face-varying corner indices follow the spec's formula n * primID + k;
+  // the corner order matches cornersAt's vertex order.
+  uint32_t cornerIndex[4];
+  float cornerWeight[4];
+  uint32_t cornerCount = 0;
+  if (perPrimitive > 0) {
+    cornerCount = corners.count;
+    for (uint32_t i = 0; i < corners.count; i++) {
+      cornerIndex[i] = perPrimitive * primitive + corners.slot[i];
+      cornerWeight[i] = corners.weight[i];
+    }
+  }
+  for (int a = 0; a < 5; a++) {
+    const AttributeData &data = m_attributes[a];
+    float4 &out = attributes.values[a];
+    if (!data.perCorner.empty())
+      out = interpolate(data.perCorner, cornerIndex, cornerWeight, cornerCount);
+    else if (!data.perVertex.empty())
+      out = interpolate(
+          data.perVertex, corners.vertex, corners.weight, corners.count);
+    else if (!data.perPrimitive.empty())
+      out = data.perPrimitive[primitive];
+    else if (data.hasUniform)
+      out = data.uniform;
+  }
+  attributes.primitiveId = primitive;
+  attributes[Attribute::PrimitiveId] = float4{float(primitive), 0.f, 0.f, 1.f};
+
+  float3 normal = surfaceNormal(hit, objectPosition);
+  float3 smooth{0, 0, 0};
+  if (!m_cornerNormals.empty()) {
+    for (uint32_t i = 0; i < cornerCount; i++)
+      smooth = smooth + m_cornerNormals[cornerIndex[i]] * cornerWeight[i];
+  } else if (!m_vertexNormals.empty()) {
+    for (uint32_t i = 0; i < corners.count; i++)
+      smooth = smooth + m_vertexNormals[corners.vertex[i]] * corners.weight[i];
+  }
+  if (length(smooth) > 0.f)
+    normal = normalize(smooth);
+  attributes[Attribute::ObjectPosition] =
+      float4{objectPosition.x, objectPosition.y, objectPosition.z, 1.f};
+  attributes[Attribute::ObjectNormal] =
+      float4{normal.x, normal.y, normal.z, 0.f};
+  return normal;
+}
+
+} // namespace prism

@@ -1,0 +1,112 @@
+// ANARIGeometry: the shape of a surface (spec 5.9). The base reads the
+// attribute arrays every subtype shares and resolves attributes at a hit
+// with the spec's precedence: faceVarying > vertex > primitive > uniform.
+#pragma once
+
+#include "../object/Object.h"
+#include "../rt/Hit.h"
+#include "Attributes.h"
+
+#include <vector>
+
+namespace prism {
+
+class Array;
+namespace rt {
+class Scene;
+}
+
+class Geometry : public Object
+{
+ public:
+  Geometry(Device &device, const std::string &subtype);
+
+  bool isValid() const override
+  {
+    return m_valid;
+  }
+  uint32_t primitiveCount() const
+  {
+    return m_primitiveCount;
+  }
+  // Adds the geometry to `scene` as Embree geometry `id`.
+  virtual void addTo(rt::Scene &scene, uint32_t id) const = 0;
+
+  // Fills the geometry's attributes at `hit` (object space), leaving those
+  // the geometry does not define untouched. Returns the object-space
+  // shading normal (normalised, facing as the geometry defines it).
+  float3 attributesAt(const rt::Hit &hit,
+      const float3 &objectPosition,
+      AttributeValues &attributes) const;
+
+ protected:
+  // Which vertices a hit interpolates, and how; `slot` is each vertex's
+  // corner number within its primitive (for faceVarying.* arrays).
+  struct Corners
+  {
+    uint32_t count{0};
+    uint32_t vertex[4]{};
+    uint32_t slot[4]{};
+    float weight[4]{};
+  };
+
+  void commitParameters() final;
+  // Reads the subtype's own parameters; calls invalidate() on bad input.
+  virtual void readShape() = 0;
+  virtual Corners cornersAt(uint32_t primitive, float u, float v) const = 0;
+  // Corners per primitive of faceVarying.* arrays (0: not supported).
+  virtual uint32_t faceVaryingCorners() const
+  {
+    return 0;
+  }
+  // The shading normal before vertex normals apply (default: Ng).
+  virtual float3 surfaceNormal(
+      const rt::Hit &hit, const float3 &objectPosition) const;
+
+  // Marks the geometry invalid with an error naming the problem.
+  void invalidate(const char *format, ...)
+      __attribute__((format(printf, 2, 3)));
+  // An ARRAY1D parameter with one of `elementTypes`, or NULL (reported).
+  const Array *readArray(const char *name,
+      std::initializer_list<ANARIDataType> elementTypes,
+      bool required = false);
+  // The primitive index array as `components` uint32 per primitive; false
+  // if unset. Out-of-range or over-wide indices invalidate the geometry.
+  bool readIndices(int components, std::vector<uint32_t> &indices);
+  // Positions (FLOAT32_VEC3) with Embree's read padding; false if missing.
+  bool readPositions(size_t minimumCount);
+  void setPrimitiveCount(uint32_t count)
+  {
+    m_primitiveCount = count;
+  }
+  // Every vertex index used must be below this (checked after readShape).
+  void requireVertexIndicesBelow(
+      size_t vertexCount, const std::vector<uint32_t> &indices);
+  // Radii per vertex (FLOAT32), or empty if unset.
+  std::vector<float> readFloats(const char *name);
+
+  std::vector<float3> m_positions; // plus one padding element
+  size_t m_vertexCount{0};
+
+ private:
+  struct AttributeData
+  {
+    bool hasUniform{false};
+    float4 uniform{0, 0, 0, 1};
+    std::vector<float4> perPrimitive, perVertex, perCorner;
+  };
+  void readAttributes();
+  std::vector<float4> readAttributeArray(const std::string &name);
+  void checkAttributeSizes();
+
+  bool m_valid{false};
+  uint32_t m_primitiveCount{0};
+  AttributeData m_attributes[5]; // color, attribute0..3
+  std::vector<float3> m_vertexNormals;
+  std::vector<float3> m_cornerNormals;
+};
+
+// The geometry of `subtype`, or NULL if the device does not implement it.
+Geometry *createGeometry(Device &device, const std::string &subtype);
+
+} // namespace prism

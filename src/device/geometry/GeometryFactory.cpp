@@ -1,0 +1,27 @@
+#include "Cone.h"
+#include "Curve.h"
+#include "Cylinder.h"
+#include "Quad.h"
+#include "Sphere.h"
+#include "Triangle.h"
+
+namespace prism {
+
+Geometry *createGeometry(Device &device, const std::string &subtype)
+{
+  if (subtype == "triangle")
+    return new Triangle(device);
+  if (subtype == "quad")
+    return new Quad(device);
+  if (subtype == "sphere")
+    return new Sphere(device);
+  if (subtype == "curve")
+    return new Curve(device);
+  if (subtype == "cone")
+    return new Cone(device);
+  if (subtype == "cylinder")
+    return new Cylinder(device);
+  return nullptr;
+}
+
+} // namespace prism

@@ -1,0 +1,40 @@
+#include "Quad.h"
+
+#include "../rt/Scene.h"
+
+namespace prism {
+
+void Quad::readShape()
+{
+  const bool indexed = readIndices(4, m_indices);
+  if (!readPositions(4))
+    return;
+  if (!indexed) {
+    m_indices.resize(m_vertexCount / 4 * 4);
+    for (size_t i = 0; i < m_indices.size(); i++)
+      m_indices[i] = uint32_t(i);
+  }
+  requireVertexIndicesBelow(m_vertexCount, m_indices);
+  setPrimitiveCount(uint32_t(m_indices.size() / 4));
+}
+
+void Quad::addTo(rt::Scene &scene, uint32_t id) const
+{
+  scene.addQuads(id,
+      m_positions.data(),
+      m_vertexCount,
+      m_indices.data(),
+      primitiveCount());
+}
+
+Geometry::Corners Quad::cornersAt(uint32_t primitive, float u, float v) const
+{
+  // Embree splits a quad into triangles (v0, v1, v3) and (v2, v3, v1) and
+  // reports (u, v) over the whole quad; interpolate exactly as it traced.
+  const uint32_t *q = &m_indices[4 * size_t(primitive)];
+  if (u + v <= 1.f)
+    return {3, {q[0], q[1], q[3]}, {0, 1, 3}, {1.f - u - v, u, v}};
+  return {3, {q[2], q[3], q[1]}, {2, 3, 1}, {u + v - 1.f, 1.f - u, 1.f - v}};
+}
+
+} // namespace prism

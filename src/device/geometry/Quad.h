@@ -1,0 +1,26 @@
+// Quad meshes, indexed or as a soup (KHR_GEOMETRY_QUAD).
+#pragma once
+
+#include "Geometry.h"
+
+namespace prism {
+
+class Quad : public Geometry
+{
+ public:
+  explicit Quad(Device &device) : Geometry(device, "quad") {}
+  void addTo(rt::Scene &scene, uint32_t id) const override;
+
+ protected:
+  void readShape() override;
+  Corners cornersAt(uint32_t primitive, float u, float v) const override;
+  uint32_t faceVaryingCorners() const override
+  {
+    return 4;
+  }
+
+ private:
+  std::vector<uint32_t> m_indices; // 4 per quad (generated for a soup)
+};
+
+} // namespace prism

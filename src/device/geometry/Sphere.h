@@ -1,0 +1,26 @@
+// Spheres, one per vertex or per index (KHR_GEOMETRY_SPHERE), traced as
+// Embree's native sphere points.
+#pragma once
+
+#include "Geometry.h"
+
+namespace prism {
+
+class Sphere : public Geometry
+{
+ public:
+  explicit Sphere(Device &device) : Geometry(device, "sphere") {}
+  void addTo(rt::Scene &scene, uint32_t id) const override;
+
+ protected:
+  void readShape() override;
+  Corners cornersAt(uint32_t primitive, float u, float v) const override;
+  float3 surfaceNormal(
+      const rt::Hit &hit, const float3 &objectPosition) const override;
+
+ private:
+  std::vector<uint32_t> m_vertexOf;   // sphere -> vertex
+  std::vector<float4> m_centerRadius; // per sphere, for Embree
+};
+
+} // namespace prism

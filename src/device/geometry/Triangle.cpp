@@ -1,0 +1,37 @@
+#include "Triangle.h"
+
+#include "../rt/Scene.h"
+
+namespace prism {
+
+void Triangle::readShape()
+{
+  const bool indexed = readIndices(3, m_indices);
+  if (!readPositions(3))
+    return;
+  if (!indexed) {
+    m_indices.resize(m_vertexCount / 3 * 3);
+    for (size_t i = 0; i < m_indices.size(); i++)
+      m_indices[i] = uint32_t(i);
+  }
+  requireVertexIndicesBelow(m_vertexCount, m_indices);
+  setPrimitiveCount(uint32_t(m_indices.size() / 3));
+}
+
+void Triangle::addTo(rt::Scene &scene, uint32_t id) const
+{
+  scene.addTriangles(id,
+      m_positions.data(),
+      m_vertexCount,
+      m_indices.data(),
+      primitiveCount());
+}
+
+Geometry::Corners Triangle::cornersAt(
+    uint32_t primitive, float u, float v) const
+{
+  const uint32_t *tri = &m_indices[3 * size_t(primitive)];
+  return {3, {tri[0], tri[1], tri[2]}, {0, 1, 2}, {1.f - u - v, u, v}};
+}
+
+} // namespace prism

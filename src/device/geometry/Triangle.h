@@ -1,0 +1,26 @@
+// Triangle meshes, indexed or as a soup (KHR_GEOMETRY_TRIANGLE).
+#pragma once
+
+#include "Geometry.h"
+
+namespace prism {
+
+class Triangle : public Geometry
+{
+ public:
+  explicit Triangle(Device &device) : Geometry(device, "triangle") {}
+  void addTo(rt::Scene &scene, uint32_t id) const override;
+
+ protected:
+  void readShape() override;
+  Corners cornersAt(uint32_t primitive, float u, float v) const override;
+  uint32_t faceVaryingCorners() const override
+  {
+    return 3;
+  }
+
+ private:
+  std::vector<uint32_t> m_indices; // 3 per triangle (generated for a soup)
+};
+
+} // namespace prism

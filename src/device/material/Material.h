@@ -1,0 +1,82 @@
+// ANARIMaterial: the appearance of a surface (spec 5.11). Every renderer
+// asks a material for its base color and opacity at a hit; physically based
+// shading (path tracer) adds its own queries in the subtypes.
+#pragma once
+
+#include "../geometry/Attributes.h"
+#include "../object/Object.h"
+
+namespace prism {
+
+template <typename T>
+class MaterialInput;
+
+enum class AlphaMode : uint8_t {
+  Opaque,
+  Blend,
+  Mask,
+};
+
+class Material : public Object
+{
+ public:
+  Material(Device &device, const std::string &subtype)
+      : Object(device, ANARI_MATERIAL, subtype)
+  {}
+
+  // Linear base color (rgb) and opacity (a) at a hit, before alphaMode.
+  virtual float4 baseColorAndOpacity(
+      const AttributeValues &attributes) const = 0;
+
+  // How much of the surface a ray sees: 1 for opaque, 0 or 1 for mask
+  // (opacity >= alphaCutoff), the opacity for blend.
+  float coverage(float opacity) const
+  {
+    switch (m_alphaMode) {
+    case AlphaMode::Opaque:
+      return 1.f;
+    case AlphaMode::Mask:
+      return opacity >= m_alphaCutoff ? 1.f : 0.f;
+    default:
+      return opacity;
+    }
+  }
+  AlphaMode alphaMode() const
+  {
+    return m_alphaMode;
+  }
+  float alphaCutoff() const
+  {
+    return m_alphaCutoff;
+  }
+
+ protected:
+  // Reads alphaMode and alphaCutoff, which every subtype understands; an
+  // unknown mode warns and falls back to opaque.
+  void readAlphaMode()
+  {
+    const std::string mode = readString("alphaMode", "opaque");
+    m_alphaMode = mode == "blend"  ? AlphaMode::Blend
+                  : mode == "mask" ? AlphaMode::Mask
+                                   : AlphaMode::Opaque;
+    if (mode != "opaque" && mode != "blend" && mode != "mask") {
+      report(ANARI_SEVERITY_WARNING,
+          ANARI_STATUS_INVALID_ARGUMENT,
+          "unknown 'alphaMode' \"%s\"; using opaque",
+          mode.c_str());
+    }
+    m_alphaCutoff = read<float>("alphaCutoff", ANARI_FLOAT32, 0.5f);
+  }
+
+  // MaterialInput::read() uses the protected parameter readers.
+  template <typename T>
+  friend class MaterialInput;
+
+  AlphaMode m_alphaMode{AlphaMode::Opaque};
+  float m_alphaCutoff{0.5f};
+};
+
+// The material of `subtype`, or NULL if the device does not implement it.
+Material *createMaterial(Device &device, const std::string &subtype);
+
+} // namespace prism

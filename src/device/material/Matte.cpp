@@ -1,0 +1,29 @@
+#include "Matte.h"
+
+namespace prism {
+
+Matte::Matte(Device &device) : Material(device, "matte") {}
+
+void Matte::commitParameters()
+{
+  m_color = MaterialInput<float3>::read(*this, "color", kDefaultColor);
+  m_opacity = MaterialInput<float>::read(*this, "opacity", 1.f);
+  readAlphaMode();
+}
+
+float4 Matte::baseColorAndOpacity(const AttributeValues &attributes) const
+{
+  const float4 color = m_color.evaluateFloat4(attributes);
+  // Spec 5.11.1: a sampled or attribute color's fourth component scales the
+  // opacity (a constant color's is 1).
+  return makeVec4(xyz(color), m_opacity.evaluate(attributes) * color.w);
+}
+
+void Matte::dropReferences()
+{
+  Material::dropReferences();
+  m_color = MaterialInput<float3>(kDefaultColor);
+  m_opacity = MaterialInput<float>(1.f);
+}
+
+} // namespace prism

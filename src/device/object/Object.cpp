@@ -1,0 +1,232 @@
+#include "Object.h"
+
+#include "../Device.h"
+
+#include "anari/frontend/type_utility.h"
+
+#include <cstdio>
+
+namespace prism {
+
+Object::Object(Device &device, ANARIDataType type, std::string subtype)
+    : m_device(device), m_type(type), m_subtype(std::move(subtype))
+{}
+
+Object::~Object() = default;
+
+void Object::retainPublic()
+{
+  m_publicRefs++;
+  m_totalRefs++;
+}
+
+uint32_t Object::dropPublicReference()
+{
+  return --m_publicRefs;
+}
+
+void Object::retainInternal()
+{
+  m_totalRefs++;
+}
+
+void Object::releaseInternal()
+{
+  if (--m_totalRefs == 0)
+    delete this;
+}
+
+void Object::stageParameter(const std::string &name, Parameter value)
+{
+  std::lock_guard lock(m_parameterMutex);
+  m_staged.set(name, std::move(value));
+}
+
+void Object::unstageParameter(const std::string &name)
+{
+  std::lock_guard lock(m_parameterMutex);
+  m_staged.unset(name);
+}
+
+void Object::unstageAllParameters()
+{
+  std::lock_guard lock(m_parameterMutex);
+  m_staged.unsetAll();
+}
+
+bool Object::hasStagedParameter(const std::string &name) const
+{
+  std::lock_guard lock(m_parameterMutex);
+  return m_staged.find(name) != nullptr;
+}
+
+void Object::snapshotForCommit()
+{
+  std::lock_guard lock(m_parameterMutex);
+  m_committed = m_staged;
+}
+
+void Object::applyCommit()
+{
+  std::lock_guard lock(m_parameterMutex);
+  m_readThisCommit.clear();
+  m_dependencies.clear();
+  m_name = readString("name", "");
+  commitParameters();
+  reportUnusedParameters();
+  m_epoch++;
+}
+
+void Object::dropReferences()
+{
+  std::lock_guard lock(m_parameterMutex);
+  m_staged.unsetAll();
+  m_committed.unsetAll();
+  m_dependencies.clear();
+}
+
+const Parameter *Object::readAny(const char *name)
+{
+  m_readThisCommit.insert(name);
+  return m_committed.find(name);
+}
+
+void Object::readAll()
+{
+  for (const auto &[name, value] : m_committed.all())
+    m_readThisCommit.insert(name);
+}
+
+bool Object::isSet(const char *name) const
+{
+  return m_committed.find(name) != nullptr;
+}
+
+bool Object::readBool(const char *name, bool fallback)
+{
+  const Parameter *p = readAny(name);
+  if (!p)
+    return fallback;
+  if (p->type() != ANARI_BOOL) {
+    wrongType(name, p->type(), {ANARI_BOOL});
+    return fallback;
+  }
+  return p->as<uint8_t>() != 0;
+}
+
+std::string Object::readString(const char *name, const std::string &fallback)
+{
+  const Parameter *p = readAny(name);
+  if (!p)
+    return fallback;
+  if (p->type() != ANARI_STRING) {
+    wrongType(name, p->type(), {ANARI_STRING});
+    return fallback;
+  }
+  return p->string();
+}
+
+Object *Object::readObject(
+    const char *name, std::initializer_list<ANARIDataType> accepted)
+{
+  const Parameter *p = readAny(name);
+  if (!p)
+    return nullptr;
+  for (ANARIDataType type : accepted) {
+    if (p->type() == type) {
+      dependOn(p->object());
+      return p->object();
+    }
+  }
+  wrongType(name, p->type(), accepted);
+  return nullptr;
+}
+
+void Object::dependOn(Object *object)
+{
+  if (object && object != this)
+    m_dependencies.emplace_back(object, object->epoch());
+}
+
+void Object::refresh(uint64_t generation)
+{
+  if (m_refreshedGeneration == generation)
+    return; // shared children and reference cycles are visited once
+  m_refreshedGeneration = generation;
+  bool changed = false;
+  for (auto &[object, epoch] : m_dependencies) {
+    object->refresh(generation);
+    changed |= object->epoch() != epoch;
+  }
+  if (changed) {
+    applyCommit();
+    finalize();
+  }
+}
+
+void Object::wrongType(const char *name,
+    ANARIDataType given,
+    const std::vector<ANARIDataType> &accepted)
+{
+  if (!m_warned.insert(std::string(name) + "@" + anari::toString(given)).second)
+    return;
+  std::string list;
+  for (ANARIDataType t : accepted)
+    list += std::string(list.empty() ? "" : ", ") + anari::toString(t);
+  report(ANARI_SEVERITY_WARNING,
+      ANARI_STATUS_INVALID_ARGUMENT,
+      "parameter '%s' set as %s is ignored; accepted types: %s",
+      name,
+      anari::toString(given),
+      list.c_str());
+}
+
+void Object::reportUnusedParameters()
+{
+  for (const auto &[name, value] : m_committed.all()) {
+    if (m_readThisCommit.count(name))
+      continue;
+    if (!m_warned.insert(name).second)
+      continue;
+    report(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "unknown parameter '%s' (%s) is ignored",
+        name.c_str(),
+        anari::toString(value.type()));
+  }
+}
+
+bool Object::getProperty(
+    const std::string &, ANARIDataType, void *, uint64_t, ANARIWaitMask)
+{
+  return false;
+}
+
+std::string Object::describe() const
+{
+  std::string text = anari::toString(m_type);
+  text = text.substr(6); // drop "ANARI_"
+  for (auto &c : text)
+    c = c == '_' ? ' ' : char(std::tolower(c));
+  if (!m_subtype.empty())
+    text += " '" + m_subtype + "'";
+  if (!m_name.empty())
+    text += " (" + m_name + ")";
+  return text;
+}
+
+void Object::report(ANARIStatusSeverity severity,
+    ANARIStatusCode code,
+    const char *format,
+    ...) const
+{
+  char buffer[1024];
+  va_list args;
+  va_start(args, format);
+  std::vsnprintf(buffer, sizeof(buffer), format, args);
+  va_end(args);
+  m_device.reportStatus(
+      m_handle, m_type, severity, code, describe() + ": " + buffer);
+}
+
+} // namespace prism

@@ -1,0 +1,166 @@
+// The base of every ANARI object: reference counts, staged and committed
+// parameters, the pull-model parameter readers, properties and status.
+#pragma once
+
+#include "Parameter.h"
+
+#include <atomic>
+#include <cstdarg>
+#include <mutex>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace prism {
+
+class Device;
+
+class Object
+{
+ public:
+  Object(Device &device, ANARIDataType type, std::string subtype);
+  virtual ~Object();
+  Object(const Object &) = delete;
+  Object &operator=(const Object &) = delete;
+
+  ANARIDataType type() const
+  {
+    return m_type;
+  }
+  const std::string &subtype() const
+  {
+    return m_subtype;
+  }
+  Device &device() const
+  {
+    return m_device;
+  }
+  // The C handle the application sees for this object.
+  ANARIObject handle() const
+  {
+    return m_handle;
+  }
+  void setHandle(ANARIObject handle)
+  {
+    m_handle = handle;
+  }
+
+  // Reference counts (spec 3.5): the object lives while either count is
+  // positive; the handle is valid while the public count is.
+  void retainPublic();
+  uint32_t dropPublicReference(); // returns the remaining public count
+  void retainInternal();
+  void releaseInternal();
+  uint32_t publicReferences() const
+  {
+    return m_publicRefs.load();
+  }
+
+  // Staging (any thread; never visible to rendering until committed).
+  void stageParameter(const std::string &name, Parameter value);
+  void unstageParameter(const std::string &name);
+  void unstageAllParameters();
+  bool hasStagedParameter(const std::string &name) const;
+  // anariCommitParameters: freezes the staged values for the next flush.
+  void snapshotForCommit();
+  // Runs commitParameters() on the frozen values, then warns about values
+  // that were set but never read or had a type the object does not accept.
+  void applyCommit();
+  // Builds derived state after every object of a flush has been committed.
+  virtual void finalize() {}
+  // Whether renderers may use this object.
+  virtual bool isValid() const
+  {
+    return true;
+  }
+  // Incremented on every commit; parents compare it to rebuild lazily.
+  uint64_t epoch() const
+  {
+    return m_epoch.load();
+  }
+  void markChanged()
+  {
+    m_epoch++;
+  }
+
+  // anariGetProperty; returns true when `mem` was written.
+  virtual bool getProperty(const std::string &name,
+      ANARIDataType type,
+      void *mem,
+      uint64_t size,
+      ANARIWaitMask mask);
+
+  // Drops every reference this object holds on others (device teardown).
+  virtual void dropReferences();
+
+  // Re-applies this object's commit when an object it read (an array that
+  // was unmapped, a child that was recommitted) changed since; children
+  // first. Runs at most once per `generation` (one per frame start).
+  void refresh(uint64_t generation);
+
+  // Reports a message naming this object, its type and subtype.
+  void report(ANARIStatusSeverity severity,
+      ANARIStatusCode code,
+      const char *format,
+      ...) const __attribute__((format(printf, 4, 5)));
+  // "geometry 'sphere' (name)" for messages.
+  std::string describe() const;
+
+ protected:
+  // Reads committed parameters; called once per commit.
+  virtual void commitParameters() {}
+
+  // Pull-model readers: each marks the parameter as read and checks its
+  // type; a mismatch is warned about once and the fallback returned.
+  template <typename T>
+  T read(const char *name, ANARIDataType expected, T fallback)
+  {
+    const Parameter *p = readAny(name);
+    if (!p)
+      return fallback;
+    if (p->type() != expected) {
+      wrongType(name, p->type(), {expected});
+      return fallback;
+    }
+    return p->template as<T>();
+  }
+  bool readBool(const char *name, bool fallback);
+  std::string readString(const char *name, const std::string &fallback);
+  // An object parameter of exactly one of `accepted` types, or NULL.
+  Object *readObject(
+      const char *name, std::initializer_list<ANARIDataType> accepted);
+  // The raw parameter (marked read, no type check), or NULL if unset.
+  const Parameter *readAny(const char *name);
+  bool isSet(const char *name) const;
+  // Marks every committed parameter as read (objects that accept anything).
+  void readAll();
+  // Makes refresh() re-commit this object when `object` changes (objects
+  // read with readObject() are recorded automatically).
+  void dependOn(Object *object);
+  // Records that `name` was set with an unsupported type.
+  void wrongType(const char *name,
+      ANARIDataType given,
+      const std::vector<ANARIDataType> &accepted);
+
+ private:
+  void reportUnusedParameters();
+
+  Device &m_device;
+  const ANARIDataType m_type;
+  const std::string m_subtype;
+  ANARIObject m_handle{nullptr};
+  std::atomic<uint32_t> m_publicRefs{1};
+  std::atomic<uint32_t> m_totalRefs{1};
+  std::atomic<uint64_t> m_epoch{0};
+
+  mutable std::mutex m_parameterMutex;
+  ParameterStore m_staged;
+  ParameterStore m_committed; // frozen at anariCommitParameters
+  std::set<std::string> m_readThisCommit;
+  std::set<std::string> m_warned;
+  std::vector<std::pair<Object *, uint64_t>> m_dependencies; // with epochs
+  uint64_t m_refreshedGeneration{0};
+  std::string m_name;
+};
+
+} // namespace prism

@@ -1,0 +1,157 @@
+#include "Debug.h"
+
+#include <algorithm>
+
+namespace prism {
+namespace {
+
+// A stable, well-spread color for an id (~0u, "no id", is dark grey).
+float3 idColor(uint32_t id)
+{
+  if (id == ~0u)
+    return {0.1f, 0.1f, 0.1f};
+  uint32_t h = id * 0x9e3779b1u;
+  h ^= h >> 15;
+  h *= 0x85ebca77u;
+  h ^= h >> 13;
+  return {float(h & 0xff) / 255.f,
+      float((h >> 8) & 0xff) / 255.f,
+      float((h >> 16) & 0xff) / 255.f};
+}
+
+float3 heat(float t)
+{
+  t = std::clamp(t, 0.f, 1.f);
+  return {t, 1.f - std::abs(2.f * t - 1.f), 1.f - t};
+}
+
+} // namespace
+
+void Debug::commitParameters()
+{
+  Renderer::commitParameters();
+  const std::string mode = readString("mode", "Ns");
+  m_attribute = attributeFromName(mode);
+  if (mode == "primitiveId")
+    m_mode = Mode::PrimitiveId;
+  else if (mode == "objectId")
+    m_mode = Mode::ObjectId;
+  else if (mode == "instanceId")
+    m_mode = Mode::InstanceId;
+  else if (mode == "Ng")
+    m_mode = Mode::GeometricNormal;
+  else if (mode == "Ns")
+    m_mode = Mode::ShadingNormal;
+  else if (mode == "uv")
+    m_mode = Mode::Uv;
+  else if (mode == "backface")
+    m_mode = Mode::Backface;
+  else if (mode == "opacityHeatmap")
+    m_mode = Mode::OpacityHeatmap;
+  else if (m_attribute != Attribute::None)
+    m_mode = Mode::Attribute;
+  else {
+    report(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "unknown 'mode' '%s'; using 'Ns'",
+        mode.c_str());
+    m_mode = Mode::ShadingNormal;
+  }
+}
+
+PixelSample Debug::shade(const RenderContext &context,
+    const Ray &ray,
+    const rt::Hit &firstHit,
+    uint32_t x,
+    uint32_t y) const
+{
+  PixelSample sample;
+  rt::Hit hit = firstHit;
+  SurfaceHit surface;
+  int layers = 0;
+  // Every mode looks at the first surface that is not fully see-through.
+  for (; hit.found() && layers < 64; layers++) {
+    if (resolveSurfaceHit(*context.world, ray, hit, surface)) {
+      const float4 base =
+          surface.material().baseColorAndOpacity(surface.attributes);
+      if (surface.material().coverage(base.w) >= 1.f)
+        break;
+      if (m_mode != Mode::OpacityHeatmap
+          && surface.material().coverage(base.w) > 0.f)
+        break;
+    }
+    hit = traceBeyond(*context.world, ray, hit);
+  }
+  if (!hit.found() || !surface.surface) {
+    sample.color = m_mode == Mode::OpacityHeatmap && layers > 0
+                       ? float4{heat(float(layers) / 8.f).x,
+                           heat(float(layers) / 8.f).y,
+                           heat(float(layers) / 8.f).z,
+                           1.f}
+                       : background(x, y, context.width, context.height);
+    return sample;
+  }
+  float3 c{0, 0, 0};
+  switch (m_mode) {
+  case Mode::PrimitiveId:
+    c = idColor(surface.attributes.primitiveId);
+    break;
+  case Mode::ObjectId:
+    c = idColor(surface.surface->id());
+    break;
+  case Mode::InstanceId:
+    c = idColor(surface.placement->instanceId);
+    break;
+  case Mode::GeometricNormal:
+    c = surface.geometricNormal * 0.5f + float3{0.5f, 0.5f, 0.5f};
+    break;
+  case Mode::ShadingNormal:
+    c = surface.shadingNormal * 0.5f + float3{0.5f, 0.5f, 0.5f};
+    break;
+  case Mode::Uv:
+    c = {hit.u, hit.v, 0.f};
+    break;
+  case Mode::Attribute: {
+    const float4 &a = surface.attributes[m_attribute];
+    c = {a.x, a.y, a.z};
+    break;
+  }
+  case Mode::Backface:
+    c = surface.backFacing ? float3{1, 0, 0} : float3{0, 1, 0};
+    break;
+  case Mode::OpacityHeatmap:
+    c = heat(float(layers) / 8.f);
+    break;
+  }
+  sample.color = float4{c.x, c.y, c.z, 1.f};
+  sample.depth = hit.t;
+  sample.normal = surface.shadingNormal;
+  sample.albedo = c;
+  sample.primitiveId = surface.attributes.primitiveId;
+  sample.objectId = surface.surface->id();
+  sample.instanceId = surface.placement->instanceId;
+  return sample;
+}
+
+void Debug::renderTile(const RenderContext &context,
+    const Tile &tile,
+    FrameBuffers &buffers,
+    const std::atomic<bool> &cancel) const
+{
+  Ray rays[rt::kPacketSize];
+  rt::Hit hits[rt::kPacketSize];
+  for (uint32_t y = tile.y0; y < tile.y1 && !cancel; y++) {
+    for (uint32_t x = tile.x0; x < tile.x1; x += rt::kPacketSize) {
+      const int count = int(std::min<uint32_t>(rt::kPacketSize, tile.x1 - x));
+      tracePrimary(context, x, y, count, rays, hits);
+      for (int i = 0; i < count; i++)
+        store(context,
+            buffers,
+            x + i,
+            y,
+            shade(context, rays[i], hits[i], x + i, y));
+    }
+  }
+}
+
+} // namespace prism

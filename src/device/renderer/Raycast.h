@@ -1,0 +1,35 @@
+// The fast preview and conformance renderer: one primary ray per pixel,
+// surface color shaded with an eye light, see-through surfaces blended
+// front to back. Lights and ambient light are ignored by design.
+#pragma once
+
+#include "Renderer.h"
+
+namespace prism {
+
+class Raycast : public Renderer
+{
+ public:
+  Raycast(Device &device, const std::string &subtype)
+      : Renderer(device, subtype)
+  {}
+
+  void renderTile(const RenderContext &context,
+      const Tile &tile,
+      FrameBuffers &buffers,
+      const std::atomic<bool> &cancel) const override;
+
+ protected:
+  void commitParameters() override;
+
+ private:
+  PixelSample shade(const RenderContext &context,
+      const Ray &ray,
+      rt::Hit hit,
+      uint32_t x,
+      uint32_t y) const;
+
+  float m_eyeLightBlendRatio{0.5f};
+};
+
+} // namespace prism

@@ -1,0 +1,150 @@
+#include "Renderer.h"
+
+#include "../Device.h"
+#include "../array/Array.h"
+#include "../array/ElementConversion.h"
+#include "../frame/ImageFilter.h"
+#include "../introspection/Introspection.h"
+
+#include "anari/frontend/type_utility.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace prism {
+
+Renderer::Renderer(Device &device, const std::string &subtype)
+    : Object(device, ANARI_RENDERER, subtype)
+{}
+
+void Renderer::commitParameters()
+{
+  m_backgroundColor = {0, 0, 0, 1};
+  m_backgroundImage.clear();
+  m_backgroundWidth = m_backgroundHeight = 0;
+  const Parameter *background = readAny("background");
+  if (!background)
+    return;
+  if (background->type() == ANARI_FLOAT32_VEC4) {
+    m_backgroundColor = background->as<float4>();
+  } else if (background->type() == ANARI_FLOAT32_VEC3) {
+    const auto rgb = background->as<float3>();
+    m_backgroundColor = {rgb.x, rgb.y, rgb.z, 1.f};
+  } else if (background->type() == ANARI_ARRAY2D) {
+    auto *image = (const Array *)background->object();
+    if (!canReadAsFloat4(image->elementType())) {
+      report(ANARI_SEVERITY_WARNING,
+          ANARI_STATUS_INVALID_ARGUMENT,
+          "'background' image of element type %s is not a color; ignored",
+          anari::toString(image->elementType()));
+      return;
+    }
+    m_backgroundWidth = uint32_t(image->size(0));
+    m_backgroundHeight = uint32_t(image->size(1));
+    m_backgroundImage.resize(size_t(m_backgroundWidth) * m_backgroundHeight);
+    convertToFloat4(image->elementType(),
+        image->begin(),
+        m_backgroundImage.size(),
+        image->elementSize(),
+        m_backgroundImage.data());
+  } else {
+    wrongType("background",
+        background->type(),
+        {ANARI_FLOAT32_VEC4, ANARI_FLOAT32_VEC3, ANARI_ARRAY2D});
+  }
+}
+
+float4 Renderer::background(
+    uint32_t x, uint32_t y, uint32_t width, uint32_t height) const
+{
+  if (m_backgroundImage.empty())
+    return m_backgroundColor;
+  return sampleBilinear(m_backgroundImage.data(),
+      m_backgroundWidth,
+      m_backgroundHeight,
+      (float(x) + 0.5f) / float(width),
+      (float(y) + 0.5f) / float(height));
+}
+
+void Renderer::renderTile(const RenderContext &context,
+    const Tile &tile,
+    FrameBuffers &buffers,
+    const std::atomic<bool> &cancel) const
+{
+  for (uint32_t y = tile.y0; y < tile.y1 && !cancel; y++) {
+    for (uint32_t x = tile.x0; x < tile.x1; x++) {
+      const size_t i = size_t(y) * context.width + x;
+      buffers.color[i] = background(x, y, context.width, context.height);
+    }
+  }
+}
+
+void Renderer::tracePrimary(const RenderContext &context,
+    uint32_t x0,
+    uint32_t y,
+    int count,
+    Ray rays[rt::kPacketSize],
+    rt::Hit hits[rt::kPacketSize]) const
+{
+  rt::RayPacket packet;
+  for (int i = 0; i < rt::kPacketSize; i++) {
+    const int lane = i < count ? i : count - 1; // idle lanes repeat a ray
+    const float2 screen{(float(x0 + lane) + 0.5f) / float(context.width),
+        (float(y) + 0.5f) / float(context.height)};
+    rays[i] = context.camera->generateRay(screen);
+    packet.originX[i] = rays[i].origin.x;
+    packet.originY[i] = rays[i].origin.y;
+    packet.originZ[i] = rays[i].origin.z;
+    packet.directionX[i] = rays[i].direction.x;
+    packet.directionY[i] = rays[i].direction.y;
+    packet.directionZ[i] = rays[i].direction.z;
+    packet.tMin[i] = rays[i].tMin;
+    packet.tMax[i] = rays[i].tMax;
+    packet.active[i] = i < count ? -1 : 0;
+  }
+  context.world->intersect(packet, hits);
+}
+
+rt::Hit Renderer::traceBeyond(
+    const World &world, const Ray &ray, const rt::Hit &previous)
+{
+  // Step past the previous hit by a relative epsilon so the same surface
+  // is not found again, however far from the origin it is.
+  const float tMin = previous.t + std::max(1e-4f, previous.t * 1e-5f);
+  rt::Hit next;
+  world.intersect(ray.origin, ray.direction, tMin, ray.tMax, next);
+  return next;
+}
+
+void Renderer::store(const RenderContext &context,
+    FrameBuffers &buffers,
+    uint32_t x,
+    uint32_t y,
+    const PixelSample &sample)
+{
+  const size_t i = size_t(y) * context.width + x;
+  buffers.color[i] = sample.color;
+  buffers.depth[i] = sample.depth;
+  buffers.normal[i] = sample.normal;
+  buffers.albedo[i] = sample.albedo;
+  buffers.primitiveId[i] = sample.primitiveId;
+  buffers.objectId[i] = sample.objectId;
+  buffers.instanceId[i] = sample.instanceId;
+}
+
+bool Renderer::getProperty(const std::string &name,
+    ANARIDataType type,
+    void *mem,
+    uint64_t size,
+    ANARIWaitMask mask)
+{
+  if (name == "extension" && type == ANARI_STRING_LIST && mem
+      && size >= sizeof(const char **)) {
+    const char **list = introspection::deviceExtensions();
+    std::memcpy(mem, &list, sizeof(list));
+    return true;
+  }
+  return Object::getProperty(name, type, mem, size, mask);
+}
+
+} // namespace prism

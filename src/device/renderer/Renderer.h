@@ -1,0 +1,78 @@
+// ANARIRenderer: how a frame turns the world into pixels. The base owns the
+// background (color or image, KHR_RENDERER_BACKGROUND_*) and the per-tile
+// entry point every renderer subtype implements.
+#pragma once
+
+#include "../camera/Camera.h"
+#include "../frame/FrameBuffers.h"
+#include "../object/Object.h"
+#include "../rt/Scene.h"
+#include "SurfaceHit.h"
+
+#include <atomic>
+
+namespace prism {
+
+class Camera;
+class World;
+
+// What one frame renders, fixed for the duration of the render.
+struct RenderContext
+{
+  const Camera *camera;
+  const World *world;
+  uint32_t width;
+  uint32_t height;
+};
+
+class Renderer : public Object
+{
+ public:
+  Renderer(Device &device, const std::string &subtype);
+
+  // Called once per frame before any tile.
+  virtual void beginFrame(const RenderContext &context) {}
+  // Renders the pixels of `tile`; returns early once `cancel` is set.
+  virtual void renderTile(const RenderContext &context,
+      const Tile &tile,
+      FrameBuffers &buffers,
+      const std::atomic<bool> &cancel) const;
+
+  // The background seen at pixel (x, y) of a width x height frame.
+  float4 background(
+      uint32_t x, uint32_t y, uint32_t width, uint32_t height) const;
+
+  bool getProperty(const std::string &name,
+      ANARIDataType type,
+      void *mem,
+      uint64_t size,
+      ANARIWaitMask mask) override;
+
+ protected:
+  void commitParameters() override;
+  // Traces the camera rays through `count` (<= rt::kPacketSize) pixels of
+  // row y starting at x0 together, as one coherent packet.
+  void tracePrimary(const RenderContext &context,
+      uint32_t x0,
+      uint32_t y,
+      int count,
+      Ray rays[rt::kPacketSize],
+      rt::Hit hits[rt::kPacketSize]) const;
+  // The next hit along `ray` beyond `previous` (for see-through surfaces).
+  static rt::Hit traceBeyond(
+      const World &world, const Ray &ray, const rt::Hit &previous);
+  // Writes one pixel's results into the frame's buffers.
+  static void store(const RenderContext &context,
+      FrameBuffers &buffers,
+      uint32_t x,
+      uint32_t y,
+      const PixelSample &sample);
+
+ private:
+  float4 m_backgroundColor{0, 0, 0, 1};
+  std::vector<float4> m_backgroundImage; // linear RGBA, row 0 at the bottom
+  uint32_t m_backgroundWidth{0};
+  uint32_t m_backgroundHeight{0};
+};
+
+} // namespace prism

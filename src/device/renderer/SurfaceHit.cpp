@@ -1,0 +1,44 @@
+#include "SurfaceHit.h"
+
+namespace prism {
+
+bool resolveSurfaceHit(
+    const World &world, const Ray &ray, const rt::Hit &hit, SurfaceHit &out)
+{
+  if (!hit.found())
+    return false;
+  const World::Placement &placement = world.placement(hit.instanceId);
+  const Surface *surface = placement.group->surface(hit.geometryId);
+  if (!surface)
+    return false;
+  out.surface = surface;
+  out.placement = &placement;
+  out.distance = hit.t;
+  out.position = ray.origin + ray.direction * hit.t;
+  out.attributes = AttributeValues{};
+  if (placement.instance)
+    placement.instance->applyAttributes(out.attributes);
+
+  const float3 objectPosition =
+      transformPoint(placement.objectFromWorld, out.position);
+  const float3 objectNormal =
+      surface->geometry()->attributesAt(hit, objectPosition, out.attributes);
+  float3 geometric = normalize(
+      transformNormal(placement.objectFromWorld, hit.geometricNormal));
+  float3 shading =
+      normalize(transformNormal(placement.objectFromWorld, objectNormal));
+  out.backFacing = dot(geometric, ray.direction) > 0.f;
+  if (out.backFacing)
+    geometric = geometric * -1.f;
+  if (dot(shading, geometric) < 0.f)
+    shading = shading * -1.f;
+  out.geometricNormal = geometric;
+  out.shadingNormal = shading;
+  out.attributes[Attribute::WorldPosition] =
+      float4{out.position.x, out.position.y, out.position.z, 1.f};
+  out.attributes[Attribute::WorldNormal] =
+      float4{shading.x, shading.y, shading.z, 0.f};
+  return true;
+}
+
+} // namespace prism

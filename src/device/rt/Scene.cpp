@@ -1,0 +1,329 @@
+#include "Scene.h"
+
+#include <embree3/rtcore.h>
+
+#include <cmath>
+
+namespace prism::rt {
+namespace {
+
+void userBounds(const RTCBoundsFunctionArguments *args)
+{
+  auto *geometry = (const UserGeometry *)args->geometryUserPtr;
+  const box3 b = geometry->primitiveBounds(args->primID);
+  *args->bounds_o = {b.lower.x,
+      b.lower.y,
+      b.lower.z,
+      0.f,
+      b.upper.x,
+      b.upper.y,
+      b.upper.z,
+      0.f};
+}
+
+void userIntersect(const RTCIntersectFunctionNArguments *args)
+{
+  auto *geometry = (const UserGeometry *)args->geometryUserPtr;
+  RTCRayHitN *rayHit = (RTCRayHitN *)args->rayhit;
+  RTCRayN *ray = RTCRayHitN_RayN(rayHit, args->N);
+  RTCHitN *hit = RTCRayHitN_HitN(rayHit, args->N);
+  for (unsigned i = 0; i < args->N; i++) {
+    if (!args->valid[i])
+      continue;
+    const float3 origin{RTCRayN_org_x(ray, args->N, i),
+        RTCRayN_org_y(ray, args->N, i),
+        RTCRayN_org_z(ray, args->N, i)};
+    const float3 direction{RTCRayN_dir_x(ray, args->N, i),
+        RTCRayN_dir_y(ray, args->N, i),
+        RTCRayN_dir_z(ray, args->N, i)};
+    float t, u, v;
+    float3 normal;
+    if (!geometry->intersectPrimitive(args->primID,
+            origin,
+            direction,
+            RTCRayN_tnear(ray, args->N, i),
+            RTCRayN_tfar(ray, args->N, i),
+            t,
+            u,
+            v,
+            normal))
+      continue;
+    RTCRayN_tfar(ray, args->N, i) = t;
+    RTCHitN_Ng_x(hit, args->N, i) = normal.x;
+    RTCHitN_Ng_y(hit, args->N, i) = normal.y;
+    RTCHitN_Ng_z(hit, args->N, i) = normal.z;
+    RTCHitN_u(hit, args->N, i) = u;
+    RTCHitN_v(hit, args->N, i) = v;
+    RTCHitN_primID(hit, args->N, i) = args->primID;
+    RTCHitN_geomID(hit, args->N, i) = args->geomID;
+    for (unsigned l = 0; l < RTC_MAX_INSTANCE_LEVEL_COUNT; l++)
+      RTCHitN_instID(hit, args->N, i, l) = args->context->instID[l];
+  }
+}
+
+void attach(RTCScene scene, RTCGeometry geometry, uint32_t id)
+{
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometryByID(scene, geometry, id);
+  rtcReleaseGeometry(geometry);
+}
+
+Hit toHit(const RTCRayHit &rh)
+{
+  Hit hit;
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID)
+    return hit;
+  hit.t = rh.ray.tfar;
+  hit.u = rh.hit.u;
+  hit.v = rh.hit.v;
+  hit.geometricNormal = {rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z};
+  hit.primitiveId = rh.hit.primID;
+  hit.geometryId = rh.hit.geomID;
+  hit.instanceId = rh.hit.instID[0];
+  return hit;
+}
+
+} // namespace
+
+Scene::Scene(const Context &context) : m_context(context)
+{
+  clear();
+}
+
+Scene::~Scene()
+{
+  if (m_scene)
+    rtcReleaseScene(m_scene);
+}
+
+void Scene::clear()
+{
+  if (m_scene)
+    rtcReleaseScene(m_scene);
+  m_scene = m_context.isValid() ? rtcNewScene(m_context.handle()) : nullptr;
+  if (m_scene)
+    rtcSetSceneBuildQuality(m_scene, RTC_BUILD_QUALITY_HIGH);
+}
+
+void Scene::addTriangles(uint32_t id,
+    const float3 *vertices,
+    size_t vertexCount,
+    const uint32_t *indices,
+    size_t triangleCount)
+{
+  if (!m_scene)
+    return;
+  RTCGeometry g =
+      rtcNewGeometry(m_context.handle(), RTC_GEOMETRY_TYPE_TRIANGLE);
+  rtcSetSharedGeometryBuffer(g,
+      RTC_BUFFER_TYPE_VERTEX,
+      0,
+      RTC_FORMAT_FLOAT3,
+      vertices,
+      0,
+      sizeof(float3),
+      vertexCount);
+  rtcSetSharedGeometryBuffer(g,
+      RTC_BUFFER_TYPE_INDEX,
+      0,
+      RTC_FORMAT_UINT3,
+      indices,
+      0,
+      3 * sizeof(uint32_t),
+      triangleCount);
+  attach(m_scene, g, id);
+}
+
+void Scene::addQuads(uint32_t id,
+    const float3 *vertices,
+    size_t vertexCount,
+    const uint32_t *indices,
+    size_t quadCount)
+{
+  if (!m_scene)
+    return;
+  RTCGeometry g = rtcNewGeometry(m_context.handle(), RTC_GEOMETRY_TYPE_QUAD);
+  rtcSetSharedGeometryBuffer(g,
+      RTC_BUFFER_TYPE_VERTEX,
+      0,
+      RTC_FORMAT_FLOAT3,
+      vertices,
+      0,
+      sizeof(float3),
+      vertexCount);
+  rtcSetSharedGeometryBuffer(g,
+      RTC_BUFFER_TYPE_INDEX,
+      0,
+      RTC_FORMAT_UINT4,
+      indices,
+      0,
+      4 * sizeof(uint32_t),
+      quadCount);
+  attach(m_scene, g, id);
+}
+
+void Scene::addSpheres(uint32_t id, const float4 *centerAndRadius, size_t count)
+{
+  if (!m_scene)
+    return;
+  RTCGeometry g =
+      rtcNewGeometry(m_context.handle(), RTC_GEOMETRY_TYPE_SPHERE_POINT);
+  rtcSetSharedGeometryBuffer(g,
+      RTC_BUFFER_TYPE_VERTEX,
+      0,
+      RTC_FORMAT_FLOAT4,
+      centerAndRadius,
+      0,
+      sizeof(float4),
+      count);
+  attach(m_scene, g, id);
+}
+
+void Scene::addRoundCurves(uint32_t id,
+    const float4 *positionAndRadius,
+    size_t vertexCount,
+    const uint32_t *segmentStarts,
+    size_t segmentCount)
+{
+  if (!m_scene)
+    return;
+  RTCGeometry g =
+      rtcNewGeometry(m_context.handle(), RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE);
+  rtcSetSharedGeometryBuffer(g,
+      RTC_BUFFER_TYPE_VERTEX,
+      0,
+      RTC_FORMAT_FLOAT4,
+      positionAndRadius,
+      0,
+      sizeof(float4),
+      vertexCount);
+  rtcSetSharedGeometryBuffer(g,
+      RTC_BUFFER_TYPE_INDEX,
+      0,
+      RTC_FORMAT_UINT,
+      segmentStarts,
+      0,
+      sizeof(uint32_t),
+      segmentCount);
+  attach(m_scene, g, id);
+}
+
+void Scene::addUser(uint32_t id, const UserGeometry *geometry, size_t count)
+{
+  if (!m_scene)
+    return;
+  RTCGeometry g = rtcNewGeometry(m_context.handle(), RTC_GEOMETRY_TYPE_USER);
+  rtcSetGeometryUserPrimitiveCount(g, unsigned(count));
+  rtcSetGeometryUserData(g, const_cast<UserGeometry *>(geometry));
+  rtcSetGeometryBoundsFunction(g, userBounds, nullptr);
+  rtcSetGeometryIntersectFunction(g, userIntersect);
+  attach(m_scene, g, id);
+}
+
+void Scene::addInstance(
+    uint32_t id, const Scene &child, const mat3x4 &worldFromObject)
+{
+  if (!m_scene || !child.m_scene)
+    return;
+  RTCGeometry g =
+      rtcNewGeometry(m_context.handle(), RTC_GEOMETRY_TYPE_INSTANCE);
+  rtcSetGeometryInstancedScene(g, child.m_scene);
+  rtcSetGeometryTransform(
+      g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, &worldFromObject);
+  attach(m_scene, g, id);
+}
+
+void Scene::commit()
+{
+  if (m_scene)
+    rtcCommitScene(m_scene);
+}
+
+box3 Scene::bounds() const
+{
+  if (!m_scene)
+    return emptyBox3();
+  RTCBounds b;
+  rtcGetSceneBounds(m_scene, &b);
+  if (!(b.lower_x <= b.upper_x))
+    return emptyBox3();
+  return {{b.lower_x, b.lower_y, b.lower_z}, {b.upper_x, b.upper_y, b.upper_z}};
+}
+
+bool Scene::intersect(const float3 &origin,
+    const float3 &direction,
+    float tMin,
+    float tMax,
+    Hit &hit) const
+{
+  hit = Hit{};
+  if (!m_scene)
+    return false;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rh;
+  rh.ray.org_x = origin.x;
+  rh.ray.org_y = origin.y;
+  rh.ray.org_z = origin.z;
+  rh.ray.dir_x = direction.x;
+  rh.ray.dir_y = direction.y;
+  rh.ray.dir_z = direction.z;
+  rh.ray.tnear = tMin;
+  rh.ray.tfar = tMax;
+  rh.ray.time = 0.5f;
+  rh.ray.mask = ~0u;
+  rh.ray.id = 0;
+  rh.ray.flags = 0;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(m_scene, &context, &rh);
+  hit = toHit(rh);
+  return hit.found();
+}
+
+void Scene::intersect(const RayPacket &packet, Hit hits[kPacketSize]) const
+{
+  for (int i = 0; i < kPacketSize; i++)
+    hits[i] = Hit{};
+  if (!m_scene)
+    return;
+  static_assert(kPacketSize == 8);
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  alignas(32) RTCRayHit8 rh;
+  for (int i = 0; i < 8; i++) {
+    rh.ray.org_x[i] = packet.originX[i];
+    rh.ray.org_y[i] = packet.originY[i];
+    rh.ray.org_z[i] = packet.originZ[i];
+    rh.ray.dir_x[i] = packet.directionX[i];
+    rh.ray.dir_y[i] = packet.directionY[i];
+    rh.ray.dir_z[i] = packet.directionZ[i];
+    rh.ray.tnear[i] = packet.tMin[i];
+    rh.ray.tfar[i] = packet.tMax[i];
+    rh.ray.time[i] = 0.5f;
+    rh.ray.mask[i] = ~0u;
+    rh.ray.id[i] = unsigned(i);
+    rh.ray.flags[i] = 0;
+    rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+  }
+  alignas(32) int valid[8];
+  for (int i = 0; i < 8; i++)
+    valid[i] = packet.active[i];
+  rtcIntersect8(valid, m_scene, &context, &rh);
+  for (int i = 0; i < 8; i++) {
+    if (!valid[i] || rh.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID)
+      continue;
+    Hit &hit = hits[i];
+    hit.t = rh.ray.tfar[i];
+    hit.u = rh.hit.u[i];
+    hit.v = rh.hit.v[i];
+    hit.geometricNormal = {rh.hit.Ng_x[i], rh.hit.Ng_y[i], rh.hit.Ng_z[i]};
+    hit.primitiveId = rh.hit.primID[i];
+    hit.geometryId = rh.hit.geomID[i];
+    hit.instanceId = rh.hit.instID[0][i];
+  }
+}
+
+} // namespace prism::rt

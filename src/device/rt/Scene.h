@@ -1,0 +1,82 @@
+// One Embree scene: the geometry of a group (ids = surface indices), or the
+// instances of a world (ids = instance indices). The only code, with
+// Context, that sees Embree types.
+#pragma once
+
+#include "Context.h"
+#include "Hit.h"
+#include "UserGeometry.h"
+
+#include <cstddef>
+#include <cstdint>
+
+struct RTCSceneTy;
+
+namespace prism::rt {
+
+// A bundle of coherent rays traced together (SoA, up to kPacketSize).
+constexpr int kPacketSize = 8;
+struct RayPacket
+{
+  float originX[kPacketSize], originY[kPacketSize], originZ[kPacketSize];
+  float directionX[kPacketSize], directionY[kPacketSize],
+      directionZ[kPacketSize];
+  float tMin[kPacketSize], tMax[kPacketSize];
+  int active[kPacketSize]; // -1 traces the lane, 0 skips it
+};
+
+class Scene
+{
+ public:
+  explicit Scene(const Context &context);
+  ~Scene();
+  Scene(const Scene &) = delete;
+  Scene &operator=(const Scene &) = delete;
+
+  // Starts over with no geometry (keeps the context).
+  void clear();
+
+  // Shared, not copied: the arrays must outlive the scene's next clear().
+  // Vertex arrays need 4 readable bytes after their last element (Embree
+  // reads 16 bytes per vertex).
+  void addTriangles(uint32_t id,
+      const float3 *vertices,
+      size_t vertexCount,
+      const uint32_t *indices,
+      size_t triangleCount);
+  void addQuads(uint32_t id,
+      const float3 *vertices,
+      size_t vertexCount,
+      const uint32_t *indices,
+      size_t quadCount);
+  void addSpheres(uint32_t id, const float4 *centerAndRadius, size_t count);
+  // Round linear segments from vertex i to i + 1 for every listed i.
+  void addRoundCurves(uint32_t id,
+      const float4 *positionAndRadius,
+      size_t vertexCount,
+      const uint32_t *segmentStarts,
+      size_t segmentCount);
+  void addUser(uint32_t id, const UserGeometry *geometry, size_t count);
+  // `child` placed by `worldFromObject`; `child` must be committed first.
+  void addInstance(
+      uint32_t id, const Scene &child, const mat3x4 &worldFromObject);
+
+  // Builds the BVH; call after adding everything.
+  void commit();
+  box3 bounds() const;
+
+  // The closest hit along the ray in (tMin, tMax); false if none.
+  bool intersect(const float3 &origin,
+      const float3 &direction,
+      float tMin,
+      float tMax,
+      Hit &hit) const;
+  // Traces the active lanes of `packet` (coherent rays); hits[i] per lane.
+  void intersect(const RayPacket &packet, Hit hits[kPacketSize]) const;
+
+ private:
+  const Context &m_context;
+  RTCSceneTy *m_scene{nullptr};
+};
+
+} // namespace prism::rt

@@ -1,0 +1,78 @@
+#include "Group.h"
+
+#include "../Device.h"
+#include "../array/Array.h"
+
+#include <cstring>
+
+namespace prism {
+
+Group::Group(Device &device)
+    : Object(device, ANARI_GROUP, ""),
+      m_scene(std::make_unique<rt::Scene>(device.rtContext())),
+      m_bounds(emptyBox3())
+{}
+
+std::vector<Object *> Group::readObjects(const char *name)
+{
+  auto *array = (const Array *)readObject(name, {ANARI_ARRAY1D});
+  if (!array)
+    return {};
+  auto objects = array->objects();
+  for (Object *object : objects)
+    dependOn(object);
+  return objects;
+}
+
+void Group::commitParameters()
+{
+  setSurfaces(readObjects("surface"));
+  m_volumes = readObjects("volume");
+  m_lights = readObjects("light");
+}
+
+void Group::setSurfaces(const std::vector<Object *> &surfaces)
+{
+  m_surfaces.clear();
+  for (Object *object : surfaces) {
+    auto *surface = dynamic_cast<const Surface *>(object);
+    if (object && !surface) {
+      report(ANARI_SEVERITY_WARNING,
+          ANARI_STATUS_INVALID_ARGUMENT,
+          "'surface' array holds a %s; it is skipped",
+          object->describe().c_str());
+    }
+    m_surfaces.push_back(surface);
+  }
+}
+
+void Group::finalize()
+{
+  m_scene->clear();
+  for (size_t i = 0; i < m_surfaces.size(); i++) {
+    const Surface *surface = m_surfaces[i];
+    if (!surface || !surface->isValid() || !surface->visible()) {
+      m_surfaces[i] = nullptr;
+      continue;
+    }
+    surface->geometry()->addTo(*m_scene, uint32_t(i));
+  }
+  m_scene->commit();
+  m_bounds = m_scene->bounds();
+}
+
+bool Group::getProperty(const std::string &name,
+    ANARIDataType type,
+    void *mem,
+    uint64_t size,
+    ANARIWaitMask mask)
+{
+  if (name == "bounds" && type == ANARI_FLOAT32_BOX3 && mem
+      && size >= sizeof(box3) && !isEmpty(m_bounds)) {
+    std::memcpy(mem, &m_bounds, sizeof(box3));
+    return true;
+  }
+  return Object::getProperty(name, type, mem, size, mask);
+}
+
+} // namespace prism

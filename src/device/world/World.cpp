@@ -1,0 +1,142 @@
+#include "World.h"
+
+#include "../Device.h"
+#include "../array/Array.h"
+
+#include <cstring>
+
+namespace prism {
+
+World::World(Device &device)
+    : Object(device, ANARI_WORLD, ""),
+      m_implicitGroup(new Group(device)),
+      m_scene(std::make_unique<rt::Scene>(device.rtContext())),
+      m_bounds(emptyBox3())
+{}
+
+World::~World()
+{
+  if (m_implicitGroup)
+    m_implicitGroup->releaseInternal();
+}
+
+void World::dropReferences()
+{
+  Object::dropReferences();
+  m_traced = nullptr;
+  m_instances.clear();
+  m_placements.clear();
+  if (m_implicitGroup)
+    m_implicitGroup->setSurfaces({});
+}
+
+std::vector<Object *> World::readObjects(const char *name)
+{
+  auto *array = (const Array *)readObject(name, {ANARI_ARRAY1D});
+  if (!array)
+    return {};
+  auto objects = array->objects();
+  for (Object *object : objects)
+    dependOn(object);
+  return objects;
+}
+
+void World::commitParameters()
+{
+  m_instances.clear();
+  for (Object *object : readObjects("instance")) {
+    auto *instance = dynamic_cast<const Instance *>(object);
+    if (object && !instance)
+      report(ANARI_SEVERITY_WARNING,
+          ANARI_STATUS_INVALID_ARGUMENT,
+          "'instance' array holds a %s; it is skipped",
+          object->describe().c_str());
+    if (instance)
+      m_instances.push_back(instance);
+  }
+  m_implicitGroup->setSurfaces(readObjects("surface"));
+  m_volumes = readObjects("volume");
+  m_lights = readObjects("light");
+}
+
+void World::finalize()
+{
+  m_implicitGroup->finalize();
+  m_placements.clear();
+  m_scene->clear();
+  auto place = [&](const Group *group,
+                   const Instance *instance,
+                   const mat3x4 &transform,
+                   uint32_t id) {
+    const auto embreeId = uint32_t(m_placements.size());
+    m_placements.push_back(
+        {group, instance, transform, inverse(transform), id});
+    m_scene->addInstance(embreeId, group->scene(), transform);
+  };
+  if (!isEmpty(m_implicitGroup->bounds()))
+    place(m_implicitGroup, nullptr, kIdentityMat3x4, ~0u);
+  for (const Instance *instance : m_instances) {
+    if (!instance->isValid() || isEmpty(instance->group()->bounds()))
+      continue;
+    for (size_t i = 0; i < instance->placementCount(); i++) {
+      place(instance->group(),
+          instance,
+          instance->worldFromObject(i),
+          instance->id(i));
+    }
+  }
+  m_scene->commit();
+  m_bounds = m_scene->bounds();
+  const bool single =
+      m_placements.size() == 1
+      && std::memcmp(
+             &m_placements[0].worldFromObject, &kIdentityMat3x4, sizeof(mat3x4))
+             == 0;
+  m_traced = single ? &m_placements[0].group->scene() : m_scene.get();
+}
+
+bool World::intersect(const float3 &origin,
+    const float3 &direction,
+    float tMin,
+    float tMax,
+    rt::Hit &hit) const
+{
+  if (!m_traced || !m_traced->intersect(origin, direction, tMin, tMax, hit))
+    return false;
+  if (m_traced != m_scene.get())
+    hit.instanceId = 0;
+  return true;
+}
+
+void World::intersect(
+    const rt::RayPacket &packet, rt::Hit hits[rt::kPacketSize]) const
+{
+  if (!m_traced) {
+    for (int i = 0; i < rt::kPacketSize; i++)
+      hits[i] = rt::Hit{};
+    return;
+  }
+  m_traced->intersect(packet, hits);
+  if (m_traced != m_scene.get()) {
+    for (int i = 0; i < rt::kPacketSize; i++) {
+      if (hits[i].found())
+        hits[i].instanceId = 0;
+    }
+  }
+}
+
+bool World::getProperty(const std::string &name,
+    ANARIDataType type,
+    void *mem,
+    uint64_t size,
+    ANARIWaitMask mask)
+{
+  if (name == "bounds" && type == ANARI_FLOAT32_BOX3 && mem
+      && size >= sizeof(box3) && !isEmpty(m_bounds)) {
+    std::memcpy(mem, &m_bounds, sizeof(box3));
+    return true;
+  }
+  return Object::getProperty(name, type, mem, size, mask);
+}
+
+} // namespace prism

@@ -1,0 +1,73 @@
+// ANARIWorld: everything a frame renders (spec 5.4). Its Embree scene holds
+// one Embree instance per placement of every instance, plus one identity
+// placement of an implicit group for surfaces placed in the world directly.
+#pragma once
+
+#include "../rt/Scene.h"
+#include "Group.h"
+#include "Instance.h"
+
+#include <memory>
+#include <vector>
+
+namespace prism {
+
+class World : public Object
+{
+ public:
+  explicit World(Device &device);
+  ~World() override;
+
+  // One placed group: what an Embree instance id stands for.
+  struct Placement
+  {
+    const Group *group;
+    const Instance *instance; // NULL for surfaces placed in the world
+    mat3x4 worldFromObject;
+    mat3x4 objectFromWorld;
+    uint32_t instanceId; // the user's id (~0u when unset)
+  };
+
+  const Placement &placement(uint32_t instanceId) const
+  {
+    return m_placements[instanceId];
+  }
+  // The closest hit; instanceId names the placement (see placement()).
+  bool intersect(const float3 &origin,
+      const float3 &direction,
+      float tMin,
+      float tMax,
+      rt::Hit &hit) const;
+  void intersect(
+      const rt::RayPacket &packet, rt::Hit hits[rt::kPacketSize]) const;
+  box3 bounds() const
+  {
+    return m_bounds;
+  }
+  void finalize() override;
+  void dropReferences() override;
+  bool getProperty(const std::string &name,
+      ANARIDataType type,
+      void *mem,
+      uint64_t size,
+      ANARIWaitMask mask) override;
+
+ protected:
+  void commitParameters() override;
+
+ private:
+  std::vector<Object *> readObjects(const char *name);
+
+  std::vector<const Instance *> m_instances;
+  Group *m_implicitGroup; // an internal object, never seen by the API
+  std::vector<Object *> m_lights;
+  std::vector<Object *> m_volumes;
+  std::vector<Placement> m_placements;
+  std::unique_ptr<rt::Scene> m_scene;
+  // A world of one untransformed placement traces its group's scene
+  // directly: no instance level, the most common case for simple scenes.
+  const rt::Scene *m_traced{nullptr};
+  box3 m_bounds;
+};
+
+} // namespace prism
