@@ -330,10 +330,13 @@ PrismResult prism(const Scene &s, const Camera &camera)
 int main(int argc, char **argv)
 {
   bool quick = false, prismOnly = false, embreeOnly = false;
+  const char *only = nullptr; // --only <scene subtype>: one scene (profiling)
   for (int i = 1; i < argc; i++) {
     quick |= std::strcmp(argv[i], "--quick") == 0; // small scenes (smoke run)
     prismOnly |= std::strcmp(argv[i], "--prism-only") == 0; // for profiling
     embreeOnly |= std::strcmp(argv[i], "--embree-only") == 0;
+    if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc)
+      only = argv[++i];
   }
   const Camera camera;
   std::printf(
@@ -354,6 +357,8 @@ int main(int argc, char **argv)
   Scene scenes[] = {
       makeMesh(quick ? 100 : 708), makeSpheres(quick ? 10000 : 1000000)};
   for (const Scene &s : scenes) {
+    if (only && std::strcmp(only, s.subtype) != 0)
+      continue;
     const RawResult raw =
         prismOnly ? RawResult{1, 1, 0, 0} : rawEmbree(s, camera);
     const PrismResult ours = embreeOnly ? PrismResult{1, 1} : prism(s, camera);

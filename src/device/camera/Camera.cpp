@@ -191,6 +191,12 @@ Ray Camera::throughLens(float3 origin,
 
 void Camera::clipAlongView(Ray &ray, float near, float far) const
 {
+  // The default, unclipped view needs no division per ray.
+  if (near == 0.f && std::isinf(far)) {
+    ray.tMin = 0.f;
+    ray.tMax = far;
+    return;
+  }
   const float cosine = dot(ray.direction, m_direction);
   ray.tMin = near / cosine;
   ray.tMax = far / cosine;

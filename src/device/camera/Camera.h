@@ -40,6 +40,18 @@ class Camera : public Object
     return m_shutter;
   }
   // Whether rays depend on the lens sample (KHR_CAMERA_DEPTH_OF_FIELD).
+  // A simple pinhole (no stereo, no lens, no clipping) lets renderers build
+  // primary rays in bulk: direction(x, y) = normalize(corner + x*dx + y*dy)
+  // for screen (x, y) in [0,1]^2, all from `origin`. False otherwise.
+  struct Pinhole
+  {
+    float3 origin, corner, dx, dy;
+  };
+  virtual bool pinhole(Pinhole &) const
+  {
+    return false;
+  }
+
   bool hasDepthOfField() const
   {
     return m_apertureRadius > 0.f;

@@ -40,11 +40,33 @@ Ray Perspective::rayThroughSensor(
   const float3 direction = normalize(onPlane);
   // Parallel eyes: the same view frustum, shifted along the baseline.
   const float3 eye = m_position + m_right * eyeShift;
-  // The focal plane lies focusDistance along the view direction.
-  const float focusT = m_focusDistance / dot(direction, m_direction);
-  Ray ray = throughLens(eye, direction, focusT, m_right, m_up, lensSample);
+  Ray ray{eye, direction};
+  if (hasDepthOfField()) {
+    // The focal plane lies focusDistance along the view direction.
+    const float focusT = m_focusDistance / dot(direction, m_direction);
+    ray = throughLens(eye, direction, focusT, m_right, m_up, lensSample);
+  }
   clipAlongView(ray, m_near, m_far);
   return ray;
+}
+
+bool Perspective::pinhole(Pinhole &out) const
+{
+  if (hasDepthOfField() || m_stereoMode != StereoMode::kNone || m_near != 0.f
+      || !std::isinf(m_far))
+    return false;
+  // The sensor point of screen (x, y) is regionLower + (x, y) * regionSize;
+  // rayThroughSensor maps sensor s to direction + right*(2s.x-1)*h*a + ...
+  const float w = 2.f * m_halfHeight * m_aspect, h = 2.f * m_halfHeight;
+  const float2 size = m_regionUpper - m_regionLower;
+  out.origin = m_position;
+  out.corner =
+      m_direction
+      + m_right * ((2.f * m_regionLower.x - 1.f) * m_halfHeight * m_aspect)
+      + m_up * ((2.f * m_regionLower.y - 1.f) * m_halfHeight);
+  out.dx = m_right * (w * size.x);
+  out.dy = m_up * (h * size.y);
+  return true;
 }
 
 } // namespace prism

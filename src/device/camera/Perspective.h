@@ -11,6 +11,9 @@ class Perspective : public Camera
  public:
   explicit Perspective(Device &device);
 
+ public:
+  bool pinhole(Pinhole &out) const override;
+
  protected:
   void commitParameters() override;
   Ray rayThroughSensor(

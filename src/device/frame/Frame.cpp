@@ -129,8 +129,15 @@ void Frame::renderAsync()
 
 void Frame::render()
 {
-  if (m_buffers.width != m_width || m_buffers.height != m_height)
-    m_buffers.resize(m_width, m_height);
+  const FrameBuffers::Needs needs{m_channels.count("channel.depth") > 0,
+      m_channels.count("channel.normal") > 0,
+      m_channels.count("channel.albedo") > 0,
+      m_channels.count("channel.primitiveId") > 0,
+      m_channels.count("channel.objectId") > 0,
+      m_channels.count("channel.instanceId") > 0};
+  if (m_buffers.width != m_width || m_buffers.height != m_height
+      || !(m_buffers.needs == needs))
+    m_buffers.resize(m_width, m_height, needs);
   const uint32_t tilesX = (m_width + kTileSize - 1) / kTileSize;
   const uint32_t tilesY = (m_height + kTileSize - 1) / kTileSize;
   m_tilesTotal = tilesX * tilesY;

@@ -25,19 +25,36 @@ struct FrameBuffers
   std::vector<uint32_t> objectId;
   std::vector<uint32_t> instanceId;
 
-  void resize(uint32_t w, uint32_t h)
+  // Which buffers besides color a frame needs (its enabled channels).
+  struct Needs
+  {
+    bool depth, normal, albedo, primitiveId, objectId, instanceId;
+    bool operator==(const Needs &) const = default;
+  };
+
+  // Allocates color and the needed buffers; the others stay empty, so
+  // renderers skip writing channels nobody maps.
+  void resize(uint32_t w, uint32_t h, const Needs &needs)
   {
     width = w;
     height = h;
     const size_t n = size_t(w) * h;
-    color.assign(n, float4{0, 0, 0, 0});
-    depth.assign(n, std::numeric_limits<float>::infinity());
-    normal.assign(n, float3{0, 0, 0});
-    albedo.assign(n, float3{0, 0, 0});
-    primitiveId.assign(n, kNoId);
-    objectId.assign(n, kNoId);
-    instanceId.assign(n, kNoId);
+    auto size = [n](auto &buffer, bool needed, auto value) {
+      buffer.clear();
+      if (needed)
+        buffer.assign(n, value);
+      buffer.shrink_to_fit();
+    };
+    size(color, true, float4{0, 0, 0, 0});
+    size(depth, needs.depth, std::numeric_limits<float>::infinity());
+    size(normal, needs.normal, float3{0, 0, 0});
+    size(albedo, needs.albedo, float3{0, 0, 0});
+    size(primitiveId, needs.primitiveId, kNoId);
+    size(objectId, needs.objectId, kNoId);
+    size(instanceId, needs.instanceId, kNoId);
+    this->needs = needs;
   }
+  Needs needs{};
 };
 
 // One pixel's worth of results, written by renderers.

@@ -61,17 +61,36 @@ struct SrgbThresholds
 };
 const SrgbThresholds kSrgb8Threshold;
 
+// kSrgb8Start[i]: the code of linear value i / 4096. A bucket spans at most
+// one threshold (the curve's steepest slope, 12.92, times 255 / 4096 < 1),
+// so one comparison finishes the exact encoding.
+struct SrgbBuckets
+{
+  uint8_t code[4097];
+  SrgbBuckets()
+  {
+    int c = 0;
+    for (int i = 0; i <= 4096; i++) {
+      const float linear = float(i) / 4096.f;
+      while (c < 255 && linear >= kSrgb8Threshold.value[c])
+        c++;
+      code[i] = uint8_t(c);
+    }
+  }
+};
+const SrgbBuckets kSrgb8Start;
+
 } // namespace
 
 uint8_t toSrgb8(float linear)
 {
-  // Branch-free binary search over the 255 thresholds (NaN maps to 0).
-  int code = 0;
-  for (int step = 128; step > 0; step >>= 1) {
-    if (code + step <= 255 && linear >= kSrgb8Threshold.value[code + step - 1])
-      code += step;
-  }
-  return uint8_t(code);
+  if (!(linear > 0.f)) // also NaN
+    return 0;
+  if (linear >= 1.f)
+    return 255;
+  const int code = kSrgb8Start.code[int(linear * 4096.f)];
+  return uint8_t(
+      code < 255 && linear >= kSrgb8Threshold.value[code] ? code + 1 : code);
 }
 
 void writeColorPixels(

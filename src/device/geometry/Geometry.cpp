@@ -57,7 +57,7 @@ std::vector<float4> toFloat4(const Array *array)
   return out;
 }
 
-float4 interpolate(const std::vector<float4> &values,
+float4 interpolateValues(const std::vector<float4> &values,
     const uint32_t *index,
     const float *weight,
     uint32_t count)
@@ -298,7 +298,8 @@ float3 Geometry::surfaceNormal(const rt::Hit &hit, const float3 &) const
 
 float3 Geometry::attributesAt(const rt::Hit &hit,
     const float3 &objectPosition,
-    AttributeValues &attributes) const
+    AttributeValues &attributes,
+    bool interpolate) const
 {
   const uint32_t primitive = hit.primitiveId;
   const Corners corners = cornersAt(primitive, hit.u, hit.v);
@@ -315,13 +316,14 @@ float3 Geometry::attributesAt(const rt::Hit &hit,
       cornerWeight[i] = corners.weight[i];
     }
   }
-  for (int a = 0; a < 5; a++) {
+  for (int a = 0; a < 5 && interpolate; a++) {
     const AttributeData &data = m_attributes[a];
     float4 &out = attributes.values[a];
     if (!data.perCorner.empty())
-      out = interpolate(data.perCorner, cornerIndex, cornerWeight, cornerCount);
+      out = interpolateValues(
+          data.perCorner, cornerIndex, cornerWeight, cornerCount);
     else if (!data.perVertex.empty())
-      out = interpolate(
+      out = interpolateValues(
           data.perVertex, corners.vertex, corners.weight, corners.count);
     else if (!data.perPrimitive.empty())
       out = data.perPrimitive[primitive];

@@ -33,11 +33,13 @@ class Geometry : public Object
   virtual void addTo(rt::Scene &scene, uint32_t id) const = 0;
 
   // Fills the geometry's attributes at `hit` (object space), leaving those
-  // the geometry does not define untouched. Returns the object-space
-  // shading normal (normalised, facing as the geometry defines it).
+  // the geometry does not define untouched; skips color and attribute0..3
+  // unless `interpolate`. Returns the object-space shading normal
+  // (normalised, facing as the geometry defines it).
   float3 attributesAt(const rt::Hit &hit,
       const float3 &objectPosition,
-      AttributeValues &attributes) const;
+      AttributeValues &attributes,
+      bool interpolate = true) const;
 
  protected:
   // Which vertices a hit interpolates, and how; `slot` is each vertex's

@@ -45,6 +45,12 @@ class Material : public Object
   {
     return m_alphaMode;
   }
+  // Whether baseColorAndOpacity() reads surface attributes (a sampler or an
+  // attribute input); when not, renderers skip interpolating them.
+  bool colorReadsAttributes() const
+  {
+    return m_colorReadsAttributes;
+  }
   float alphaCutoff() const
   {
     return m_alphaCutoff;
@@ -72,6 +78,7 @@ class Material : public Object
   template <typename T>
   friend class MaterialInput;
 
+  bool m_colorReadsAttributes{false};
   AlphaMode m_alphaMode{AlphaMode::Opaque};
   float m_alphaCutoff{0.5f};
 };

@@ -19,6 +19,8 @@ void PhysicallyBased::commitParameters()
   };
   input(in.baseColor, "baseColor");
   input(in.opacity, "opacity");
+  m_colorReadsAttributes =
+      !in.baseColor.isConstant() || !in.opacity.isConstant();
   input(in.metallic, "metallic");
   input(in.roughness, "roughness");
   input(in.normal, "normal", InputAccepts::SamplerOnly);

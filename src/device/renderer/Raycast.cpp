@@ -30,7 +30,8 @@ PixelSample Raycast::shade(const RenderContext &context,
   bool first = true;
   for (int layer = 0; layer < kMaxLayers && hit.found(); layer++) {
     SurfaceHit surface;
-    if (resolveSurfaceHit(*context.world, ray, hit, surface)) {
+    if (resolveSurfaceHit(
+            *context.world, ray, hit, surface, HitDetail::ForMaterial)) {
       const float4 base =
           surface.material().baseColorAndOpacity(surface.attributes);
       const float coverage = surface.material().coverage(base.w);

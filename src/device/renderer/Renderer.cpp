@@ -9,7 +9,9 @@
 #include "anari/frontend/type_utility.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <limits>
 
 namespace prism {
 
@@ -87,20 +89,47 @@ void Renderer::tracePrimary(const RenderContext &context,
     rt::Hit hits[rt::kPacketSize]) const
 {
   rt::RayPacket packet;
-  for (int i = 0; i < rt::kPacketSize; i++) {
-    const int lane = i < count ? i : count - 1; // idle lanes repeat a ray
-    const float2 screen{(float(x0 + lane) + 0.5f) / float(context.width),
-        (float(y) + 0.5f) / float(context.height)};
-    rays[i] = context.camera->generateRay(screen);
-    packet.originX[i] = rays[i].origin.x;
-    packet.originY[i] = rays[i].origin.y;
-    packet.originZ[i] = rays[i].origin.z;
-    packet.directionX[i] = rays[i].direction.x;
-    packet.directionY[i] = rays[i].direction.y;
-    packet.directionZ[i] = rays[i].direction.z;
-    packet.tMin[i] = rays[i].tMin;
-    packet.tMax[i] = rays[i].tMax;
-    packet.active[i] = i < count ? -1 : 0;
+  const float invWidth = 1.f / float(context.width);
+  const float sy = (float(y) + 0.5f) / float(context.height);
+  Camera::Pinhole pinhole;
+  if (context.camera->pinhole(pinhole)) {
+    // The common camera: directions in one straight, vectorisable loop.
+    const float3 row = pinhole.corner + pinhole.dy * sy;
+    for (int i = 0; i < rt::kPacketSize; i++) {
+      const float sx = (float(x0 + std::min(i, count - 1)) + 0.5f) * invWidth;
+      const float3 d = row + pinhole.dx * sx;
+      const float inv = 1.f / std::sqrt(dot(d, d));
+      packet.originX[i] = pinhole.origin.x;
+      packet.originY[i] = pinhole.origin.y;
+      packet.originZ[i] = pinhole.origin.z;
+      packet.directionX[i] = d.x * inv;
+      packet.directionY[i] = d.y * inv;
+      packet.directionZ[i] = d.z * inv;
+      packet.tMin[i] = 0.f;
+      packet.tMax[i] = std::numeric_limits<float>::infinity();
+      packet.active[i] = i < count ? -1 : 0;
+    }
+    for (int i = 0; i < count; i++) {
+      rays[i] = Ray{pinhole.origin,
+          {packet.directionX[i], packet.directionY[i], packet.directionZ[i]},
+          0.f,
+          std::numeric_limits<float>::infinity()};
+    }
+  } else {
+    for (int i = 0; i < rt::kPacketSize; i++) {
+      const int lane = i < count ? i : count - 1; // idle lanes repeat a ray
+      const float2 screen{(float(x0 + lane) + 0.5f) * invWidth, sy};
+      rays[i] = context.camera->generateRay(screen);
+      packet.originX[i] = rays[i].origin.x;
+      packet.originY[i] = rays[i].origin.y;
+      packet.originZ[i] = rays[i].origin.z;
+      packet.directionX[i] = rays[i].direction.x;
+      packet.directionY[i] = rays[i].direction.y;
+      packet.directionZ[i] = rays[i].direction.z;
+      packet.tMin[i] = rays[i].tMin;
+      packet.tMax[i] = rays[i].tMax;
+      packet.active[i] = i < count ? -1 : 0;
+    }
   }
   context.world->intersect(packet, hits);
 }
@@ -124,12 +153,19 @@ void Renderer::store(const RenderContext &context,
 {
   const size_t i = size_t(y) * context.width + x;
   buffers.color[i] = sample.color;
-  buffers.depth[i] = sample.depth;
-  buffers.normal[i] = sample.normal;
-  buffers.albedo[i] = sample.albedo;
-  buffers.primitiveId[i] = sample.primitiveId;
-  buffers.objectId[i] = sample.objectId;
-  buffers.instanceId[i] = sample.instanceId;
+  const FrameBuffers::Needs &needs = buffers.needs;
+  if (needs.depth)
+    buffers.depth[i] = sample.depth;
+  if (needs.normal)
+    buffers.normal[i] = sample.normal;
+  if (needs.albedo)
+    buffers.albedo[i] = sample.albedo;
+  if (needs.primitiveId)
+    buffers.primitiveId[i] = sample.primitiveId;
+  if (needs.objectId)
+    buffers.objectId[i] = sample.objectId;
+  if (needs.instanceId)
+    buffers.instanceId[i] = sample.instanceId;
 }
 
 bool Renderer::getProperty(const std::string &name,

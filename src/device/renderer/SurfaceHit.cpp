@@ -2,8 +2,11 @@
 
 namespace prism {
 
-bool resolveSurfaceHit(
-    const World &world, const Ray &ray, const rt::Hit &hit, SurfaceHit &out)
+bool resolveSurfaceHit(const World &world,
+    const Ray &ray,
+    const rt::Hit &hit,
+    SurfaceHit &out,
+    HitDetail detail)
 {
   if (!hit.found())
     return false;
@@ -15,14 +18,17 @@ bool resolveSurfaceHit(
   out.placement = &placement;
   out.distance = hit.t;
   out.position = ray.origin + ray.direction * hit.t;
-  out.attributes = AttributeValues{};
-  if (placement.instance)
-    placement.instance->applyAttributes(out.attributes);
-
+  const bool interpolate =
+      detail == HitDetail::Full || surface->material()->colorReadsAttributes();
+  if (interpolate) {
+    out.attributes = AttributeValues{};
+    if (placement.instance)
+      placement.instance->applyAttributes(out.attributes);
+  }
   const float3 objectPosition =
       transformPoint(placement.objectFromWorld, out.position);
-  const float3 objectNormal =
-      surface->geometry()->attributesAt(hit, objectPosition, out.attributes);
+  const float3 objectNormal = surface->geometry()->attributesAt(
+      hit, objectPosition, out.attributes, interpolate);
   float3 geometric = normalize(
       transformNormal(placement.objectFromWorld, hit.geometricNormal));
   float3 shading =

@@ -26,8 +26,17 @@ struct SurfaceHit
   }
 };
 
+// What resolveSurfaceHit() must compute beyond normals and ids.
+enum class HitDetail : uint8_t {
+  Full,        // every attribute (samplers, debug views, path tracing)
+  ForMaterial, // only what the material's base color needs
+};
+
 // Resolves `hit` of `ray` in `world`; false if it names no live surface.
-bool resolveSurfaceHit(
-    const World &world, const Ray &ray, const rt::Hit &hit, SurfaceHit &out);
+bool resolveSurfaceHit(const World &world,
+    const Ray &ray,
+    const rt::Hit &hit,
+    SurfaceHit &out,
+    HitDetail detail = HitDetail::Full);
 
 } // namespace prism

@@ -63,7 +63,7 @@ ObjectRef<Array> Sampler::readColorArray(
     const char *name, ANARIDataType arrayType, bool (*accepts)(ANARIDataType))
 {
   const bool set = isSet(name);
-  auto *array = (Array *)readObject(name, {arrayType});
+  auto *array = static_cast<Array *>(readObject(name, {arrayType}));
   if (!array) {
     // A wrong handle type was already reported by readObject().
     report(ANARI_SEVERITY_WARNING,

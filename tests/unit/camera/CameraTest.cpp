@@ -667,3 +667,36 @@ TEST_F(CameraTest, EveryExtensionParameterIsRead)
 
 } // namespace
 } // namespace prism
+
+namespace prism {
+namespace {
+
+// Renderers build primary rays from Camera::pinhole() in bulk; those rays
+// must be exactly the ones generateRay() gives.
+TEST_F(CameraTest, PinholeBasisMatchesGenerateRay)
+{
+  Perspective camera(m_device);
+  setVec3(camera, "position", {1, 2, 3});
+  setVec3(camera, "direction", {0.3f, -0.2f, -1.f});
+  setFloat(camera, "aspect", 1.5f);
+  setRegion(camera, {-0.2f, 0.1f}, {0.9f, 1.3f});
+  commit(camera);
+  Camera::Pinhole pinhole;
+  ASSERT_TRUE(camera.pinhole(pinhole));
+  for (float x : {0.f, 0.37f, 1.f}) {
+    for (float y : {0.f, 0.61f, 1.f}) {
+      const float3 d =
+          normalize(pinhole.corner + pinhole.dx * x + pinhole.dy * y);
+      const Ray ray = camera.generateRay({x, y});
+      expectNear(d, ray.direction);
+      expectNear(pinhole.origin, ray.origin);
+    }
+  }
+  // Stereo, depth of field and clipping need generateRay().
+  setString(camera, "stereoMode", "left");
+  commit(camera);
+  EXPECT_FALSE(camera.pinhole(pinhole));
+}
+
+} // namespace
+} // namespace prism
