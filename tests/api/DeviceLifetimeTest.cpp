@@ -61,6 +61,30 @@ TEST_F(DeviceLifetime, DeleterRunsOnceWhenTheLastUserLetsGo)
   EXPECT_TRUE(problems().empty());
 }
 
+TEST_F(DeviceLifetime, ReplacedValuesLiveUntilTheNextFrameStarts)
+{
+  ANARIArray2D image = newImage();
+  ANARIRenderer renderer = anariNewRenderer(m_device, "default");
+  anariSetParameter(m_device, renderer, "background", ANARI_ARRAY2D, &image);
+  anariCommitParameters(m_device, renderer);
+  anariRelease(m_device, image);
+  ANARIFrame frame = newFrame(renderer, 256, 256);
+  anariRenderFrame(m_device, frame);
+  // Replaced and committed while the frame may still read the image: the
+  // image must outlive that frame, so it goes only when the next starts.
+  const float blue[4] = {0, 0, 1, 1};
+  anariSetParameter(m_device, renderer, "background", ANARI_FLOAT32_VEC4, blue);
+  anariCommitParameters(m_device, renderer);
+  EXPECT_EQ(g_deleted, 0);
+  EXPECT_EQ(firstPixel(frame), std::vector<float>({0.5f, 0.25f, 0.125f, 1.f}));
+  anariRenderFrame(m_device, frame);
+  EXPECT_EQ(firstPixel(frame), std::vector<float>({0, 0, 1, 1}));
+  EXPECT_EQ(g_deleted, 1);
+  anariRelease(m_device, frame);
+  anariRelease(m_device, renderer);
+  EXPECT_TRUE(problems().empty());
+}
+
 TEST_F(DeviceLifetime, ObjectArraysHoldTheirElements)
 {
   ANARIArray2D image = newImage();

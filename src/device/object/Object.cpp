@@ -63,12 +63,20 @@ bool Object::hasStagedParameter(const std::string &name) const
 void Object::snapshotForCommit()
 {
   std::lock_guard lock(m_parameterMutex);
-  m_committed = m_staged;
+  // NOTE: the committed values (and the objects they hold) stay until the
+  // flush applies this snapshot: a frame in flight may still be using them.
+  m_pending = m_staged;
+  m_hasPending = true;
 }
 
 void Object::applyCommit()
 {
   std::lock_guard lock(m_parameterMutex);
+  if (m_hasPending) {
+    m_committed = std::move(m_pending);
+    m_pending.unsetAll();
+    m_hasPending = false;
+  }
   m_readThisCommit.clear();
   m_dependencies.clear();
   m_name = readString("name", "");
@@ -81,6 +89,7 @@ void Object::dropReferences()
 {
   std::lock_guard lock(m_parameterMutex);
   m_staged.unsetAll();
+  m_pending.unsetAll();
   m_committed.unsetAll();
   m_dependencies.clear();
 }

@@ -155,7 +155,9 @@ class Object
 
   mutable std::mutex m_parameterMutex;
   ParameterStore m_staged;
-  ParameterStore m_committed; // frozen at anariCommitParameters
+  ParameterStore m_pending;   // frozen at anariCommitParameters
+  ParameterStore m_committed; // what commitParameters() reads, from a flush
+  bool m_hasPending{false};
   std::set<std::string> m_readThisCommit;
   std::set<std::string> m_warned;
   std::vector<std::pair<Object *, uint64_t>> m_dependencies; // with epochs
