@@ -60,6 +60,7 @@ void Frame::commitParameters()
       "frameCompletionCallback", ANARI_FRAME_COMPLETION_CALLBACK, nullptr);
   m_completionUserPtr = read<const void *>(
       "frameCompletionCallbackUserData", ANARI_VOID_POINTER, nullptr);
+  m_accumulation = readBool("accumulation", false);
 
   std::map<std::string, Channel> channels;
   for (const auto &[name, accepted] : channelFormats()) {
@@ -117,6 +118,13 @@ void Frame::renderAsync()
     std::lock_guard lock(m_stateMutex);
     m_rendering = true;
   }
+  // Any committed change (an epoch moved) restarts the accumulation.
+  const uint64_t version = sceneVersion();
+  if (!m_accumulation || version != m_accumulatedVersion) {
+    m_samplesDone = 0;
+    m_accumulatedVersion = version;
+  }
+  m_sampleIndex = m_samplesDone;
   m_cancel = false;
   m_tilesDone = 0;
   m_start = std::chrono::steady_clock::now();
@@ -141,7 +149,7 @@ void Frame::render()
   const uint32_t tilesX = (m_width + kTileSize - 1) / kTileSize;
   const uint32_t tilesY = (m_height + kTileSize - 1) / kTileSize;
   m_tilesTotal = tilesX * tilesY;
-  RenderContext context{m_camera, m_world, m_width, m_height};
+  RenderContext context{m_camera, m_world, m_width, m_height, m_sampleIndex};
   m_renderer->beginFrame(context);
   tbb::parallel_for(uint32_t(0), m_tilesTotal, [&](uint32_t index) {
     if (m_cancel)
@@ -154,11 +162,58 @@ void Frame::render()
     m_renderer->renderTile(context, tile, m_buffers, m_cancel);
     m_tilesDone++;
   });
+  if (m_cancel) {
+    m_samplesDone = 0; // a partial sample must not enter the average
+    m_accumulatedVersion = ~0ull;
+  } else if (m_accumulation) {
+    accumulate();
+  }
   resolveChannels();
+}
+
+uint64_t Frame::sceneVersion() const
+{
+  // Epochs only grow, so their sum changes whenever any of them does.
+  return epoch() + m_world->epoch() + m_camera->epoch() + m_renderer->epoch()
+         + (uint64_t(m_width) << 40) + (uint64_t(m_height) << 20);
+}
+
+void Frame::accumulate()
+{
+  const size_t pixels = size_t(m_width) * m_height;
+  if (m_samplesDone == 0 || m_accumulated.width != m_width
+      || m_accumulated.height != m_height
+      || !(m_accumulated.needs == m_buffers.needs)) {
+    m_accumulated = m_buffers;
+    m_samplesDone = 1;
+    return;
+  }
+  const float weight = 1.f / float(m_samplesDone + 1);
+  FrameBuffers &sum = m_accumulated;
+  const FrameBuffers &sample = m_buffers;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, pixels, 4096),
+      [&](const tbb::blocked_range<size_t> &range) {
+        for (size_t i = range.begin(); i < range.end(); i++) {
+          sum.color[i] =
+              sum.color[i] + (sample.color[i] - sum.color[i]) * weight;
+          if (sample.needs.depth)
+            sum.depth[i] = std::min(sum.depth[i], sample.depth[i]);
+          if (sample.needs.normal)
+            sum.normal[i] =
+                sum.normal[i] + (sample.normal[i] - sum.normal[i]) * weight;
+          if (sample.needs.albedo)
+            sum.albedo[i] =
+                sum.albedo[i] + (sample.albedo[i] - sum.albedo[i]) * weight;
+        }
+      });
+  m_samplesDone++;
 }
 
 void Frame::resolveChannels()
 {
+  // With accumulation the channels show the average so far.
+  const FrameBuffers &source =
+      m_accumulation && m_samplesDone > 0 ? m_accumulated : m_buffers;
   const size_t pixels = size_t(m_width) * m_height;
   for (auto &[name, channel] : m_channels)
     channel.pixels.resize(pixels * anari::sizeOf(channel.type));
@@ -172,21 +227,22 @@ void Frame::resolveChannels()
               channel.pixels.data() + begin * anari::sizeOf(channel.type);
           if (name == "channel.color") {
             writeColorPixels(
-                channel.type, m_buffers.color.data() + begin, count, out);
+                channel.type, source.color.data() + begin, count, out);
           } else if (name == "channel.depth") {
             std::memcpy(
-                out, m_buffers.depth.data() + begin, count * sizeof(float));
+                out, source.depth.data() + begin, count * sizeof(float));
           } else if (name == "channel.normal") {
             writeVec3Pixels(
-                channel.type, m_buffers.normal.data() + begin, count, out);
+                channel.type, source.normal.data() + begin, count, out);
           } else if (name == "channel.albedo") {
             writeVec3Pixels(
-                channel.type, m_buffers.albedo.data() + begin, count, out);
+                channel.type, source.albedo.data() + begin, count, out);
           } else {
-            const auto &ids =
-                name == "channel.primitiveId" ? m_buffers.primitiveId
-                : name == "channel.objectId"  ? m_buffers.objectId
-                                              : m_buffers.instanceId;
+            // Ids are the first sample's (kept by accumulate()): ids do
+            // not average.
+            const auto &ids = name == "channel.primitiveId" ? source.primitiveId
+                              : name == "channel.objectId"  ? source.objectId
+                                                            : source.instanceId;
             std::memcpy(out, ids.data() + begin, count * sizeof(uint32_t));
           }
         }
@@ -275,6 +331,13 @@ bool Frame::getProperty(const std::string &name,
     if (mask & ANARI_WAIT)
       waitUntilDone();
     value = m_duration;
+  } else if (name == "refinementProgress") {
+    if (mask & ANARI_WAIT)
+      waitUntilDone();
+    const uint32_t target = m_renderer ? m_renderer->convergedSampleCount() : 1;
+    value = m_accumulation ? std::min(
+                1.f, float(m_samplesDone) / float(std::max(target, 1u)))
+                           : 1.f;
   } else if (name == "renderProgress") {
     value = m_tilesTotal ? float(m_tilesDone) / float(m_tilesTotal) : 0.f;
     if (ready(ANARI_NO_WAIT) && m_tilesTotal)

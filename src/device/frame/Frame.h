@@ -56,7 +56,11 @@ class Frame : public Object
     std::vector<unsigned char> pixels;
   };
   void render();
+  // Folds this frame's sample into the accumulation (KHR_FRAME_ACCUMULATION).
+  void accumulate();
   void resolveChannels();
+  // Epochs of everything a frame shows: a change restarts accumulation.
+  uint64_t sceneVersion() const;
   void finish();
   void waitUntilDone();
 
@@ -71,6 +75,11 @@ class Frame : public Object
   const void *m_completionUserPtr{nullptr};
 
   FrameBuffers m_buffers;
+  bool m_accumulation{false};
+  uint32_t m_sampleIndex{0}; // of the render in flight
+  uint32_t m_samplesDone{0}; // accumulated into m_accumulated
+  uint64_t m_accumulatedVersion{~0ull};
+  FrameBuffers m_accumulated; // averages (depth: minimum) over samples
 
   std::mutex m_stateMutex;
   std::condition_variable m_doneCondition;

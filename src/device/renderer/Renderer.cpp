@@ -14,6 +14,31 @@
 #include <limits>
 
 namespace prism {
+namespace {
+
+// A well-mixed 32-bit hash (for per-pixel, per-sample jitter); identical
+// for any thread count, so accumulated images are deterministic.
+uint32_t mix(uint32_t x)
+{
+  x ^= x >> 16;
+  x *= 0x7feb352du;
+  x ^= x >> 15;
+  x *= 0x846ca68bu;
+  x ^= x >> 16;
+  return x;
+}
+
+// A point in [0,1)^2 for pixel (x, y) and sample n; the pixel centre for
+// the first sample so single-sample images stay exact.
+float2 pixelOffset(uint32_t x, uint32_t y, uint32_t sample)
+{
+  if (sample == 0)
+    return {0.5f, 0.5f};
+  const uint32_t h = mix(x * 0x9e3779b9u ^ mix(y ^ mix(sample)));
+  return {float(h & 0xffff) / 65536.f, float(h >> 16) / 65536.f};
+}
+
+} // namespace
 
 Renderer::Renderer(Device &device, const std::string &subtype)
     : Object(device, ANARI_RENDERER, subtype)
@@ -90,14 +115,16 @@ void Renderer::tracePrimary(const RenderContext &context,
 {
   rt::RayPacket packet;
   const float invWidth = 1.f / float(context.width);
-  const float sy = (float(y) + 0.5f) / float(context.height);
   Camera::Pinhole pinhole;
   if (context.camera->pinhole(pinhole)) {
     // The common camera: directions in one straight, vectorisable loop.
-    const float3 row = pinhole.corner + pinhole.dy * sy;
     for (int i = 0; i < rt::kPacketSize; i++) {
-      const float sx = (float(x0 + std::min(i, count - 1)) + 0.5f) * invWidth;
-      const float3 d = row + pinhole.dx * sx;
+      const uint32_t x = x0 + uint32_t(std::min(i, count - 1));
+      const float2 offset = pixelOffset(x, y, context.sampleIndex);
+      const float sx = (float(x) + offset.x) * invWidth;
+      const float syJittered = (float(y) + offset.y) / float(context.height);
+      const float3 d =
+          pinhole.corner + pinhole.dx * sx + pinhole.dy * syJittered;
       const float inv = 1.f / std::sqrt(dot(d, d));
       packet.originX[i] = pinhole.origin.x;
       packet.originY[i] = pinhole.origin.y;
@@ -118,8 +145,16 @@ void Renderer::tracePrimary(const RenderContext &context,
   } else {
     for (int i = 0; i < rt::kPacketSize; i++) {
       const int lane = i < count ? i : count - 1; // idle lanes repeat a ray
-      const float2 screen{(float(x0 + lane) + 0.5f) * invWidth, sy};
-      rays[i] = context.camera->generateRay(screen);
+      const uint32_t x = x0 + uint32_t(lane);
+      const float2 offset = pixelOffset(x, y, context.sampleIndex);
+      const float2 screen{(float(x) + offset.x) * invWidth,
+          (float(y) + offset.y) / float(context.height)};
+      // The lens point: its own stream, decorrelated from the pixel offset.
+      const float2 lens =
+          context.sampleIndex == 0
+              ? float2{0.5f, 0.5f}
+              : pixelOffset(y, x, context.sampleIndex + 0x5bd1e995u);
+      rays[i] = context.camera->generateRay(screen, lens);
       packet.originX[i] = rays[i].origin.x;
       packet.originY[i] = rays[i].origin.y;
       packet.originZ[i] = rays[i].origin.z;

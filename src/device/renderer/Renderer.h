@@ -23,6 +23,9 @@ struct RenderContext
   const World *world;
   uint32_t width;
   uint32_t height;
+  // Which accumulated sample this frame renders (0: the first, through
+  // pixel centres); seeds every random choice with the pixel.
+  uint32_t sampleIndex;
 };
 
 class Renderer : public Object
@@ -41,6 +44,13 @@ class Renderer : public Object
   // The background seen at pixel (x, y) of a width x height frame.
   float4 background(
       uint32_t x, uint32_t y, uint32_t width, uint32_t height) const;
+
+  // Samples per pixel after which accumulating more changes little
+  // (refinementProgress reaches 1 there).
+  virtual uint32_t convergedSampleCount() const
+  {
+    return 16;
+  }
 
   bool getProperty(const std::string &name,
       ANARIDataType type,

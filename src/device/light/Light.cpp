@@ -1,0 +1,109 @@
+#include "Light.h"
+
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+
+namespace prism {
+namespace {
+
+bool isFinite(float3 v)
+{
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+} // namespace
+
+Light::Light(Device &device, const std::string &subtype)
+    : Object(device, ANARI_LIGHT, subtype)
+{}
+
+void Light::commitParameters()
+{
+  m_valid = true;
+  m_color = read<float3>("color", ANARI_FLOAT32_VEC3, {1.f, 1.f, 1.f});
+  if (!isFinite(m_color) || minComponent(m_color) < 0.f) {
+    invalidate("'color' (%g, %g, %g) must be finite and >= 0",
+        m_color.x,
+        m_color.y,
+        m_color.z);
+  }
+  m_visible = readBool("visible", true);
+}
+
+Light::Brightness Light::readBrightness(
+    std::initializer_list<const char *> precedence, float fallback)
+{
+  Brightness result{0, fallback};
+  bool found = false;
+  size_t index = 0;
+  // Every name is read, so the ones the precedence overrides are not
+  // reported as unknown.
+  for (const char *name : precedence) {
+    const Parameter *p = readAny(name);
+    if (p && p->type() != ANARI_FLOAT32) {
+      wrongType(name, p->type(), {ANARI_FLOAT32});
+      p = nullptr;
+    }
+    if (p && !found) {
+      found = true;
+      result = {index, p->as<float>()};
+    }
+    index++;
+  }
+  if (!(std::isfinite(result.value) && result.value >= 0.f)) {
+    invalidate("'%s' (%g) must be finite and >= 0",
+        precedence.begin()[result.source],
+        result.value);
+    result.value = 0.f;
+  }
+  return result;
+}
+
+float Light::readNonNegative(const char *name, float fallback)
+{
+  const float value = read<float>(name, ANARI_FLOAT32, fallback);
+  if (std::isfinite(value) && value >= 0.f)
+    return value;
+  invalidate("'%s' (%g) must be finite and >= 0", name, value);
+  return fallback;
+}
+
+float3 Light::readFinite(const char *name, float3 fallback)
+{
+  const float3 value = read<float3>(name, ANARI_FLOAT32_VEC3, fallback);
+  if (isFinite(value))
+    return value;
+  invalidate("'%s' must be finite", name);
+  return fallback;
+}
+
+float3 Light::readDirection(const char *name, float3 fallback)
+{
+  const float3 value = read<float3>(name, ANARI_FLOAT32_VEC3, fallback);
+  const float length2 = lengthSquared(value);
+  if (isFinite(value) && length2 > 0.f && std::isfinite(length2))
+    return value / std::sqrt(length2);
+  invalidate("'%s' (%g, %g, %g) must be a finite, non-zero vector",
+      name,
+      value.x,
+      value.y,
+      value.z);
+  return normalize(fallback);
+}
+
+void Light::invalidate(const char *format, ...)
+{
+  char buffer[512];
+  va_list args;
+  va_start(args, format);
+  std::vsnprintf(buffer, sizeof(buffer), format, args);
+  va_end(args);
+  report(ANARI_SEVERITY_WARNING,
+      ANARI_STATUS_INVALID_ARGUMENT,
+      "%s; the light is invalid",
+      buffer);
+  m_valid = false;
+}
+
+} // namespace prism

@@ -1,0 +1,90 @@
+// Geometry and sampling helpers the lights share: orthonormal frames, cone
+// and spherical-triangle sampling, and quadrature over the sphere of
+// directions. Angles in radians, solid angles in steradians.
+#pragma once
+
+#include "../math/Vec.h"
+
+#include <functional>
+#include <vector>
+
+namespace prism::light {
+
+inline constexpr float kPi = 3.14159265358979323846f;
+inline constexpr double kPiDouble = 3.14159265358979323846;
+
+// Three orthonormal axes, `z` given; world = x * l.x + y * l.y + z * l.z.
+struct Frame
+{
+  float3 x, y, z;
+
+  float3 toWorld(float3 local) const
+  {
+    return x * local.x + y * local.y + z * local.z;
+  }
+  float3 toLocal(float3 world) const
+  {
+    return {dot(world, x), dot(world, y), dot(world, z)};
+  }
+};
+
+// A frame around the unit `z`, continuous except where z.z changes sign
+// (the branch-free construction of Duff et al. 2017).
+Frame frameAround(float3 z);
+// A frame around the unit `z` whose x axis is `hint` made orthogonal to z;
+// frameAround(z) when the hint is (nearly) parallel to z.
+Frame frameAround(float3 z, float3 hint);
+
+// 3t^2 - 2t^3 of t clamped to [0, 1].
+inline float smoothStep(float t)
+{
+  t = clamp(t, 0.f, 1.f);
+  return t * t * (3.f - 2.f * t);
+}
+
+// 1 - cos(angle), accurate for small angles (2 sin^2(angle / 2)).
+inline float oneMinusCos(float angle)
+{
+  const float s = std::sin(0.5f * angle);
+  return 2.f * s * s;
+}
+// 1 - dot(a, b) of unit vectors, accurate when they nearly agree.
+inline float oneMinusDot(float3 a, float3 b)
+{
+  return 0.5f * lengthSquared(a - b);
+}
+
+// A direction uniform in the cone around +z of the cap with
+// 1 - cos(halfAngle) = `capHeight` (local coordinates).
+float3 sampleUniformCone(float2 u, float capHeight);
+// Its pdf per steradian inside the cone.
+inline float uniformConePdf(float capHeight)
+{
+  return 1.f / (2.f * kPi * capHeight);
+}
+
+// Solid angle of the spherical triangle of the unit vectors a, b, c
+// (Van Oosterom and Strackee's formula; exact for every size).
+double sphericalTriangleArea(const double3 &a, const double3 &b, const double3 &c);
+// A direction uniform in that triangle, `area` its solid angle (Arvo 1995:
+// a sub-triangle of area u.x * area, then a point along its last arc).
+double3 sampleSphericalTriangle(const double3 &a,
+    const double3 &b,
+    const double3 &c,
+    double area,
+    float2 u);
+
+// 2 pi * integral over [0, pi] of f(theta) sin(theta): the integral over the
+// sphere of a function of the angle to an axis. Composite Simpson between
+// sorted `breakpoints` (where f has kinks or jumps), accurate to ~1e-9 for
+// piecewise smooth f.
+double integrateOverSphere(const std::function<double(double theta)> &f,
+    std::vector<double> breakpoints);
+
+// Rec. 709 luminance of linear RGB, to weigh colors by brightness.
+inline float luminance(float3 rgb)
+{
+  return 0.2126f * rgb.x + 0.7152f * rgb.y + 0.0722f * rgb.z;
+}
+
+} // namespace prism::light
