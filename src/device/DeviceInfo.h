@@ -51,6 +51,6 @@ inline const char *kImplementedExtensions[] = {
 
 // "default" first: it aliases the first real renderer (spec 5.3).
 inline const char *kRendererSubtypes[] = {
-    "default", "raycast", "debug", nullptr};
+    "default", "raycast", "ao", "debug", nullptr};
 
 } // namespace prism

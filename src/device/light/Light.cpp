@@ -1,5 +1,10 @@
 #include "Light.h"
 
+#include "../array/Array.h"
+#include "Sampling.h"
+
+#include "anari/frontend/type_utility.h"
+
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
@@ -90,6 +95,65 @@ float3 Light::readDirection(const char *name, float3 fallback)
       value.y,
       value.z);
   return normalize(fallback);
+}
+
+light::ConeFalloff Light::readConeFalloff()
+{
+  constexpr float kTwoPi = 2.f * light::kPi;
+  float openingAngle = readNonNegative("openingAngle", light::kPi);
+  if (openingAngle > kTwoPi) {
+    report(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "'openingAngle' (%g) is more than 2 pi; using 2 pi",
+        openingAngle);
+    openingAngle = kTwoPi;
+  }
+  float falloffAngle = readNonNegative("falloffAngle", 0.1f);
+  if (falloffAngle > 0.5f * openingAngle) {
+    // The spec asks for less than half the opening angle; more would put
+    // the core cone's edge past the axis.
+    report(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "'falloffAngle' (%g) is more than half of 'openingAngle' (%g); "
+        "using %g",
+        falloffAngle,
+        openingAngle,
+        0.5f * openingAngle);
+    falloffAngle = 0.5f * openingAngle;
+  }
+  return light::ConeFalloff(openingAngle, falloffAngle);
+}
+
+Array *Light::readIntensityDistribution()
+{
+  const bool set = isSet("intensityDistribution");
+  auto *array = static_cast<Array *>(
+      readObject("intensityDistribution", {ANARI_ARRAY1D, ANARI_ARRAY2D}));
+  if (!array) {
+    if (set) // the type was reported by readObject()
+      invalidate("'intensityDistribution' is not an ARRAY1D or ARRAY2D");
+    return nullptr;
+  }
+  if (array->elementType() != ANARI_FLOAT32) {
+    invalidate("'intensityDistribution' has element type %s, not FLOAT32",
+        anari::toString(array->elementType()));
+    return nullptr;
+  }
+  return array;
+}
+
+std::shared_ptr<const light::IntensityDistribution>
+Light::buildIntensityDistribution(const Array *array)
+{
+  if (!array)
+    return nullptr;
+  auto table = std::make_shared<light::IntensityDistribution>();
+  const char *why = "";
+  if (!table->assign(*array, why)) {
+    invalidate("'intensityDistribution' %s", why);
+    return nullptr;
+  }
+  return table;
 }
 
 void Light::invalidate(const char *format, ...)

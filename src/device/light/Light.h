@@ -6,12 +6,16 @@
 
 #include "../math/Vec.h"
 #include "../object/Object.h"
+#include "ConeFalloff.h"
+#include "IntensityDistribution.h"
 #include "PlacedLight.h"
 
 #include <initializer_list>
 #include <memory>
 
 namespace prism {
+
+class Array;
 
 class Light : public Object
 {
@@ -59,6 +63,17 @@ class Light : public Object
   float3 readFinite(const char *name, float3 fallback);
   // A FLOAT32_VEC3 that must be finite and of non-zero length; normalised.
   float3 readDirection(const char *name, float3 fallback);
+  // openingAngle and falloffAngle (spot, ring), clamped to the ranges the
+  // spec describes with a warning.
+  light::ConeFalloff readConeFalloff();
+  // The optional intensityDistribution (ARRAY1D/2D of FLOAT32), or NULL.
+  // NOTE: the committed parameter keeps the array alive until the next
+  // commit, so the pointer is only for the finalize() that follows.
+  Array *readIntensityDistribution();
+  // The table of `array` (NULL gives none); reports unusable values and
+  // invalidates the light.
+  std::shared_ptr<const light::IntensityDistribution> buildIntensityDistribution(
+      const Array *array);
   // Reports why the light cannot be used and marks it invalid.
   void invalidate(const char *format, ...) __attribute__((format(printf, 2, 3)));
   // Copies what every placed light shares (primary visibility).

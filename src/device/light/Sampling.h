@@ -5,6 +5,7 @@
 
 #include "../math/Vec.h"
 
+#include <cmath>
 #include <functional>
 #include <vector>
 
@@ -34,6 +35,15 @@ Frame frameAround(float3 z);
 // A frame around the unit `z` whose x axis is `hint` made orthogonal to z;
 // frameAround(z) when the hint is (nearly) parallel to z.
 Frame frameAround(float3 z, float3 hint);
+
+// The unit direction `d` (object space) in world space; `d` itself when a
+// singular transform collapses it.
+inline float3 transformUnit(const mat3x4 &worldFromObject, float3 d)
+{
+  const float3 w = transformDirection(worldFromObject, d);
+  const float length2 = lengthSquared(w);
+  return length2 > 0.f && std::isfinite(length2) ? w / std::sqrt(length2) : d;
+}
 
 // 3t^2 - 2t^3 of t clamped to [0, 1].
 inline float smoothStep(float t)

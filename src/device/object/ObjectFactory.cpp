@@ -7,6 +7,7 @@
 #include "../frame/Frame.h"
 #include "../geometry/Geometry.h"
 #include "../material/Material.h"
+#include "../renderer/AmbientOcclusion.h"
 #include "../renderer/Debug.h"
 #include "../renderer/Raycast.h"
 #include "../sampler/Sampler.h"
@@ -36,6 +37,8 @@ Object *createRenderer(Device &device, const std::string &subtype)
     return new Raycast(device, subtype);
   if (subtype == "debug")
     return new Debug(device);
+  if (subtype == "ao")
+    return new AmbientOcclusion(device);
   return nullptr;
 }
 

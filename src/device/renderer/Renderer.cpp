@@ -1,5 +1,7 @@
 #include "Renderer.h"
 
+#include "SampleHash.h"
+
 #include "../Device.h"
 #include "../array/Array.h"
 #include "../array/ElementConversion.h"
@@ -16,26 +18,11 @@
 namespace prism {
 namespace {
 
-// A well-mixed 32-bit hash (for per-pixel, per-sample jitter); identical
-// for any thread count, so accumulated images are deterministic.
-uint32_t mix(uint32_t x)
-{
-  x ^= x >> 16;
-  x *= 0x7feb352du;
-  x ^= x >> 15;
-  x *= 0x846ca68bu;
-  x ^= x >> 16;
-  return x;
-}
-
 // A point in [0,1)^2 for pixel (x, y) and sample n; the pixel centre for
 // the first sample so single-sample images stay exact.
 float2 pixelOffset(uint32_t x, uint32_t y, uint32_t sample)
 {
-  if (sample == 0)
-    return {0.5f, 0.5f};
-  const uint32_t h = mix(x * 0x9e3779b9u ^ mix(y ^ mix(sample)));
-  return {float(h & 0xffff) / 65536.f, float(h >> 16) / 65536.f};
+  return sample == 0 ? float2{0.5f, 0.5f} : hashedSample2D(x, y, sample, 0);
 }
 
 } // namespace
@@ -150,10 +137,9 @@ void Renderer::tracePrimary(const RenderContext &context,
       const float2 screen{(float(x) + offset.x) * invWidth,
           (float(y) + offset.y) / float(context.height)};
       // The lens point: its own stream, decorrelated from the pixel offset.
-      const float2 lens =
-          context.sampleIndex == 0
-              ? float2{0.5f, 0.5f}
-              : pixelOffset(y, x, context.sampleIndex + 0x5bd1e995u);
+      const float2 lens = context.sampleIndex == 0
+                              ? float2{0.5f, 0.5f}
+                              : hashedSample2D(x, y, context.sampleIndex, 1);
       rays[i] = context.camera->generateRay(screen, lens);
       packet.originX[i] = rays[i].origin.x;
       packet.originY[i] = rays[i].origin.y;

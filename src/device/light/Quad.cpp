@@ -1,0 +1,266 @@
+#include "Quad.h"
+
+#include "Sampling.h"
+
+#include <cmath>
+#include <limits>
+
+namespace prism::light {
+namespace {
+
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+// Sampling by solid angle (uniform over the spherical quadrilateral the
+// quad subtends) has no variance from the 1/d^2 and cosine at the light;
+// outside these bounds its arithmetic degrades (a far speck or a point
+// almost in the quad's plane) and sampling by area takes over.
+constexpr double kMinSphericalArea = 1e-5;
+constexpr double kMaxSphericalArea = 6.0;
+// Keeps a photometric quad's radiance finite at grazing angles.
+constexpr float kMinCosine = 1e-6f;
+
+class PlacedQuad : public PlacedLight
+{
+ public:
+  struct Emission
+  {
+    Quad::Side side;
+    float3 radiance; // uniform, color included (no distribution)
+    std::shared_ptr<const IntensityDistribution> distribution;
+    float3 intensity; // scale of the distribution, color included
+    float3 power;
+  };
+
+  PlacedQuad(float3 corner, float3 edge1, float3 edge2, Emission emission)
+      : m_corner(corner),
+        m_edge1(edge1),
+        m_edge2(edge2),
+        m_normal(cross(edge1, edge2)),
+        m_area(length(m_normal)),
+        // The spec's front side is edge2 x edge1; C0 lies along edge1.
+        m_frame(frameAround(cross(edge2, edge1) / m_area, edge1)),
+        m_emission(std::move(emission))
+  {}
+
+  LightSample sample(const float3 &point, const float2 &u) const override
+  {
+    LightSample s;
+    Subtended subtended = subtend(point);
+    if (subtended.solidAngle > 0.0) {
+      // Pick a triangle in proportion to its solid angle, reusing u.x.
+      const double split = double(u.x) * subtended.solidAngle;
+      const bool first = split < subtended.area[0];
+      const double3 *v = subtended.vertices;
+      const double3 direction = first
+          ? sampleSphericalTriangle(v[0],
+                v[1],
+                v[2],
+                subtended.area[0],
+                {float(split / subtended.area[0]), u.y})
+          : sampleSphericalTriangle(v[0],
+                v[2],
+                v[3],
+                subtended.area[1],
+                {float((split - subtended.area[0]) / subtended.area[1]),
+                    u.y});
+      s.direction = normalize(vecCast<float>(direction));
+      const float along = dot(s.direction, m_normal);
+      s.distance = along != 0.f
+          ? max(0.f, dot(m_corner - point, m_normal) / along)
+          : 0.f;
+      s.pdf = float(1.0 / subtended.solidAngle);
+    } else {
+      const float3 onQuad = m_corner + m_edge1 * u.x + m_edge2 * u.y;
+      const float3 offset = onQuad - point;
+      const float distance2 = lengthSquared(offset);
+      if (!(distance2 > 0.f))
+        return {};
+      s.distance = std::sqrt(distance2);
+      s.direction = offset / s.distance;
+      s.pdf = areaPdf(s.direction, s.distance);
+      if (!(s.pdf > 0.f) || !std::isfinite(s.pdf))
+        return {};
+    }
+    s.radiance = emitted(-s.direction);
+    return s;
+  }
+
+  float3 radianceAlong(const float3 &point,
+      const float3 &direction,
+      float &distance,
+      float &pdf) const override
+  {
+    distance = kInfinity;
+    pdf = 0.f;
+    const float along = dot(direction, m_normal);
+    if (along == 0.f)
+      return {0.f, 0.f, 0.f};
+    const float t = dot(m_corner - point, m_normal) / along;
+    if (!(t > 0.f))
+      return {0.f, 0.f, 0.f};
+    // Parallelogram coordinates of the hit: offset = a edge1 + b edge2.
+    const float3 offset = point + direction * t - m_corner;
+    const float normal2 = m_area * m_area;
+    const float a = dot(cross(offset, m_edge2), m_normal) / normal2;
+    const float b = dot(cross(m_edge1, offset), m_normal) / normal2;
+    if (a < 0.f || a > 1.f || b < 0.f || b > 1.f)
+      return {0.f, 0.f, 0.f};
+    distance = t;
+    const Subtended subtended = subtend(point);
+    pdf = subtended.solidAngle > 0.0 ? float(1.0 / subtended.solidAngle)
+                                     : areaPdf(direction, t);
+    return emitted(-direction);
+  }
+
+  float3 power() const override
+  {
+    return m_emission.power;
+  }
+
+ private:
+  // The quad's corners as unit vectors from a point, the solid angles of
+  // triangles (0, 1, 2) and (0, 2, 3), and their sum; a sum of 0 means
+  // sampling by area.
+  struct Subtended
+  {
+    double3 vertices[4];
+    double area[2];
+    double solidAngle{0.0};
+  };
+  Subtended subtend(const float3 &point) const
+  {
+    Subtended result;
+    const float3 corners[4] = {m_corner - point,
+        m_corner + m_edge1 - point,
+        m_corner + m_edge1 + m_edge2 - point,
+        m_corner + m_edge2 - point};
+    for (int i = 0; i < 4; i++) {
+      const double3 v = vecCast<double>(corners[i]);
+      const double length2 = lengthSquared(v);
+      if (!(length2 > 0.0))
+        return result;
+      result.vertices[i] = v / std::sqrt(length2);
+    }
+    const double3 *v = result.vertices;
+    result.area[0] = sphericalTriangleArea(v[0], v[1], v[2]);
+    result.area[1] = sphericalTriangleArea(v[0], v[2], v[3]);
+    const double total = result.area[0] + result.area[1];
+    if (total >= kMinSphericalArea && total <= kMaxSphericalArea)
+      result.solidAngle = total;
+    return result;
+  }
+
+  // Area density converted to solid angle: d^2 / (area |cos|).
+  float areaPdf(const float3 &direction, float distance) const
+  {
+    const float cosine = std::abs(dot(direction, m_normal)) / m_area;
+    return cosine > 0.f ? distance * distance / (m_area * cosine) : 0.f;
+  }
+
+  // Radiance leaving the quad along the unit `out`.
+  float3 emitted(const float3 &out) const
+  {
+    const float cosFront = dot(out, m_frame.z);
+    const Quad::Side side = m_emission.side;
+    if ((side == Quad::Side::kFront && !(cosFront > 0.f))
+        || (side == Quad::Side::kBack && !(cosFront < 0.f)))
+      return {0.f, 0.f, 0.f};
+    if (!m_emission.distribution)
+      return m_emission.radiance;
+    // Intensity I(w) from area A: L = I(w) / (A |cos|), so the table holds
+    // the whole angular shape, cosine included.
+    const float value = (*m_emission.distribution)(m_frame.toLocal(out));
+    return m_emission.intensity
+        * (value / (m_area * max(std::abs(cosFront), kMinCosine)));
+  }
+
+  float3 m_corner;
+  float3 m_edge1, m_edge2;
+  float3 m_normal; // edge1 x edge2, unnormalised
+  float m_area;
+  Frame m_frame; // z the front normal, x along edge1
+  Emission m_emission;
+};
+
+} // namespace
+
+Quad::Quad(Device &device) : Light(device, "quad") {}
+
+void Quad::commitParameters()
+{
+  Light::commitParameters();
+  m_position = readFinite("position", {0.f, 0.f, 0.f});
+  m_edge1 = readFinite("edge1", {1.f, 0.f, 0.f});
+  m_edge2 = readFinite("edge2", {0.f, 1.f, 0.f});
+  if (lengthSquared(m_edge1) == 0.f || lengthSquared(m_edge2) == 0.f) {
+    invalidate("'edge1' and 'edge2' must have non-zero length");
+  } else if (!(lengthSquared(cross(m_edge1, m_edge2))
+                 > 1e-12f * lengthSquared(m_edge1) * lengthSquared(m_edge2))) {
+    invalidate("'edge1' and 'edge2' are parallel; the quad has no area");
+  }
+  const std::string side = readString("side", "front");
+  m_side = side == "back" ? Side::kBack
+                          : (side == "both" ? Side::kBoth : Side::kFront);
+  if (side != "front" && side != "back" && side != "both") {
+    report(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "unknown 'side' \"%s\"; using front",
+        side.c_str());
+  }
+  m_brightness =
+      readBrightness({"intensity", "power", "radiance"}, 1.f);
+  m_distributionArray = readIntensityDistribution();
+}
+
+void Quad::finalize()
+{
+  m_distribution = buildIntensityDistribution(m_distributionArray);
+  m_distributionArray = nullptr;
+  const double sides = m_side == Side::kBoth ? 2.0 : 1.0;
+  if (!m_distribution) {
+    // Lambertian: the integral of cos over a hemisphere is pi.
+    m_emissionIntegral = kPiDouble * sides;
+    return;
+  }
+  // The table's values towards the emitting sides only.
+  const Side side = m_side;
+  m_emissionIntegral = m_distribution->integral(
+      [side](double gamma) {
+        const bool front = gamma < 0.5 * kPiDouble;
+        return side == Side::kBoth || (side == Side::kFront) == front ? 1.0
+                                                                      : 0.0;
+      },
+      {0.5 * kPiDouble});
+}
+
+std::unique_ptr<PlacedLight> Quad::place(const mat3x4 &worldFromObject) const
+{
+  if (!isValid())
+    return nullptr;
+  // Edges are vectors: the transform's scale changes the area. Intensity
+  // and power stay as given (spec 5.7); radiance then follows the area.
+  const float3 corner = transformPoint(worldFromObject, m_position);
+  const float3 edge1 = transformDirection(worldFromObject, m_edge1);
+  const float3 edge2 = transformDirection(worldFromObject, m_edge2);
+  const float area = length(cross(edge1, edge2));
+  if (!(area > 0.f) || !std::isfinite(area))
+    return nullptr;
+
+  float intensity = m_brightness.value;
+  if (m_brightness.source == 1)
+    intensity = float(m_brightness.value / m_emissionIntegral);
+  else if (m_brightness.source == 2)
+    intensity = m_brightness.value * area; // radiance times area
+  PlacedQuad::Emission emission;
+  emission.side = m_side;
+  emission.distribution = m_distribution;
+  emission.intensity = m_color * intensity;
+  emission.radiance = m_distribution ? float3{0.f, 0.f, 0.f}
+                                     : emission.intensity / area;
+  emission.power = emission.intensity * float(m_emissionIntegral);
+  auto placed = std::make_unique<PlacedQuad>(
+      corner, edge1, edge2, std::move(emission));
+  placeShared(*placed);
+  return placed;
+}
+
+} // namespace prism::light

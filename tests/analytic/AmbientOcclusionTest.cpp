@@ -1,0 +1,73 @@
+// The ao renderer against the analytic occlusion between two parallel
+// planes: with cosine-distributed rays of length d from a plane facing
+// another at height h < d, the open fraction is (h / d)^2.
+#include "AnalyticScene.h"
+
+#include <cmath>
+
+namespace {
+
+class AmbientOcclusionTest : public AnalyticTest
+{
+ protected:
+  // The floor z = 0 facing up, and a ceiling z = h facing down.
+  ANARIWorld floorAndCeiling(float h)
+  {
+    ANARIGeometry floor = geometry(
+        "quad", {-100, -100, 0, 100, -100, 0, 100, 100, 0, -100, 100, 0});
+    ANARIGeometry ceiling = geometry(
+        "quad", {-100, -100, h, -100, 100, h, 100, 100, h, 100, -100, h});
+    return world(
+        {surface(floor, matte(1, 1, 1)), surface(ceiling, matte(1, 1, 1))});
+  }
+  // Mean red over all pixels of an accumulated ao render looking down.
+  float meanVisibility(ANARIWorld w, float aoDistance, int frames)
+  {
+    const float eye[3] = {0, 0, 0.5f}, down[3] = {0, 0, -1};
+    ANARICamera c = orthographic(eye, down, 1.f);
+    ANARIRenderer r = renderer("ao");
+    const int32_t samples = 8;
+    anariSetParameter(m_device, r, "aoSamples", ANARI_INT32, &samples);
+    anariSetParameter(m_device, r, "aoDistance", ANARI_FLOAT32, &aoDistance);
+    anariCommitParameters(m_device, r);
+    ANARIFrame f = anariNewFrame(m_device);
+    const uint32_t size[2] = {16, 16};
+    const ANARIDataType color = ANARI_FLOAT32_VEC4;
+    const uint8_t on = 1;
+    anariSetParameter(m_device, f, "world", ANARI_WORLD, &w);
+    anariSetParameter(m_device, f, "camera", ANARI_CAMERA, &c);
+    anariSetParameter(m_device, f, "renderer", ANARI_RENDERER, &r);
+    anariSetParameter(m_device, f, "size", ANARI_UINT32_VEC2, size);
+    anariSetParameter(m_device, f, "channel.color", ANARI_DATA_TYPE, &color);
+    anariSetParameter(m_device, f, "accumulation", ANARI_BOOL, &on);
+    anariCommitParameters(m_device, f);
+    for (int i = 0; i < frames; i++)
+      anariRenderFrame(m_device, f);
+    anariFrameReady(m_device, f, ANARI_WAIT);
+    uint32_t width, height;
+    ANARIDataType type;
+    auto *p = (const float *)anariMapFrame(
+        m_device, f, "channel.color", &width, &height, &type);
+    double sum = 0;
+    for (uint32_t i = 0; i < width * height; i++)
+      sum += p[4 * i];
+    anariUnmapFrame(m_device, f, "channel.color");
+    for (ANARIObject o : {(ANARIObject)f, (ANARIObject)c, (ANARIObject)r})
+      anariRelease(m_device, o);
+    return float(sum / (width * height));
+  }
+};
+
+TEST_F(AmbientOcclusionTest, OpenFractionBetweenParallelPlanes)
+{
+  ANARIWorld w = floorAndCeiling(1.f);
+  // 16x16 pixels x 32 frames x 8 rays = 65536 rays: standard error < 0.002.
+  EXPECT_NEAR(meanVisibility(w, 2.f, 32), 0.25f, 0.01f);   // (1/2)^2
+  EXPECT_NEAR(meanVisibility(w, 4.f, 32), 0.0625f, 0.01f); // (1/4)^2
+  // Rays shorter than the gap never reach the ceiling.
+  EXPECT_FLOAT_EQ(meanVisibility(w, 0.9f, 4), 1.f);
+  anariRelease(m_device, w);
+  EXPECT_TRUE(problems().empty());
+}
+
+} // namespace
