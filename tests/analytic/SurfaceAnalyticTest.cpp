@@ -240,3 +240,50 @@ TEST_F(SurfaceAnalytic, CurveIsARoundTube)
 }
 
 } // namespace
+
+namespace {
+
+// Changing an array's contents through map/unmap reaches the next frame
+// without recommitting the geometry; only that geometry's group rebuilds.
+TEST_F(SurfaceAnalytic, UnmappedArrayChangesReachTheNextFrame)
+{
+  ANARIGeometry g = anariNewGeometry(m_device, "sphere");
+  ANARIArray1D positions = anariNewArray1D(
+      m_device, nullptr, nullptr, nullptr, ANARI_FLOAT32_VEC3, 1);
+  auto *p = (float *)anariMapArray(m_device, positions);
+  p[0] = p[1] = p[2] = 0.f;
+  anariUnmapArray(m_device, positions);
+  anariSetParameter(m_device, g, "vertex.position", ANARI_ARRAY1D, &positions);
+  ANARIWorld w = world({surface(g, matte(1, 1, 1))});
+  ANARICamera c = orthographic(kEyeZ5, kLookDown, 8.f);
+  ANARIRenderer r = renderer("raycast");
+  RenderedImage before = render(w, c, r, 32, 32);
+  // Pixel centres sit 1/8 off the sphere's centre in x and y.
+  const float bulge = std::sqrt(1.f - 2.f / 64.f);
+  EXPECT_NEAR(before.depthAt(16, 16), 5.f - bulge, 1e-4f);
+  // Move the sphere to x = 2 (pixel 24) and 1 closer to the camera.
+  p = (float *)anariMapArray(m_device, positions);
+  p[0] = 2.f;
+  p[2] = 1.f;
+  anariUnmapArray(m_device, positions);
+  RenderedImage after = render(w, c, r, 32, 32);
+  EXPECT_TRUE(std::isinf(after.depthAt(16, 16)));
+  EXPECT_NEAR(after.depthAt(24, 16), 4.f - bulge, 1e-4f);
+  float bounds[6] = {};
+  anariGetProperty(m_device,
+      w,
+      "bounds",
+      ANARI_FLOAT32_BOX3,
+      bounds,
+      sizeof(bounds),
+      ANARI_WAIT);
+  EXPECT_NEAR(bounds[0], 1.f, 1e-5f);
+  EXPECT_NEAR(bounds[3], 3.f, 1e-5f);
+  anariRelease(m_device, positions);
+  anariRelease(m_device, w);
+  anariRelease(m_device, c);
+  anariRelease(m_device, r);
+  EXPECT_TRUE(problems().empty());
+}
+
+} // namespace
