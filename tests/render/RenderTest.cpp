@@ -436,3 +436,240 @@ bool RenderTest::renderAndCompare(ANARIWorld world,
   }
   return true;
 }
+
+uint64_t RenderTest::elementSize(ANARIDataType type)
+{
+  return anari::sizeOf(type);
+}
+
+ANARIArray3D RenderTest::newArray3D(ANARIDataType type,
+    const void *data,
+    uint64_t width,
+    uint64_t height,
+    uint64_t depth)
+{
+  ANARIArray3D array = keep(anariNewArray3D(
+      m_device, nullptr, nullptr, nullptr, type, width, height, depth));
+  if (void *memory = anariMapArray(m_device, array)) {
+    std::memcpy(memory, data, anari::sizeOf(type) * width * height * depth);
+    anariUnmapArray(m_device, array);
+  }
+  return array;
+}
+
+ANARIGeometry RenderTest::newGeometry(const char *subtype)
+{
+  return keep(anariNewGeometry(m_device, subtype));
+}
+
+ANARISampler RenderTest::newSampler(const char *subtype)
+{
+  return keep(anariNewSampler(m_device, subtype));
+}
+
+ANARIMaterial RenderTest::newMatte(const Vec3 &color)
+{
+  ANARIMaterial material = keep(anariNewMaterial(m_device, "matte"));
+  setVec3(material, "color", color);
+  anariCommitParameters(m_device, material);
+  return material;
+}
+
+ANARIMaterial RenderTest::newMatte(const char *colorAttribute)
+{
+  ANARIMaterial material = keep(anariNewMaterial(m_device, "matte"));
+  setString(material, "color", colorAttribute);
+  anariCommitParameters(m_device, material);
+  return material;
+}
+
+ANARISurface RenderTest::newSurface(
+    ANARIGeometry geometry, ANARIMaterial material, uint32_t id)
+{
+  anariCommitParameters(m_device, geometry);
+  ANARISurface surface = keep(anariNewSurface(m_device));
+  setObject(surface, "geometry", ANARI_GEOMETRY, geometry);
+  setObject(surface, "material", ANARI_MATERIAL, material);
+  if (id != ~0u)
+    setUint32(surface, "id", id);
+  anariCommitParameters(m_device, surface);
+  return surface;
+}
+
+ANARIGroup RenderTest::newGroup(const std::vector<ANARISurface> &surfaces)
+{
+  ANARIGroup group = keep(anariNewGroup(m_device));
+  setObject(group,
+      "surface",
+      ANARI_ARRAY1D,
+      newArray1D(ANARI_SURFACE, surfaces.data(), surfaces.size()));
+  anariCommitParameters(m_device, group);
+  return group;
+}
+
+ANARIInstance RenderTest::newInstance(ANARIGroup group)
+{
+  ANARIInstance instance = keep(anariNewInstance(m_device, "transform"));
+  setObject(instance, "group", ANARI_GROUP, group);
+  return instance;
+}
+
+ANARIWorld RenderTest::newWorld(const std::vector<ANARISurface> &surfaces,
+    const std::vector<ANARIInstance> &instances)
+{
+  ANARIWorld world = keep(anariNewWorld(m_device));
+  if (!surfaces.empty()) {
+    setObject(world,
+        "surface",
+        ANARI_ARRAY1D,
+        newArray1D(ANARI_SURFACE, surfaces.data(), surfaces.size()));
+  }
+  if (!instances.empty()) {
+    setObject(world,
+        "instance",
+        ANARI_ARRAY1D,
+        newArray1D(ANARI_INSTANCE, instances.data(), instances.size()));
+  }
+  anariCommitParameters(m_device, world);
+  return world;
+}
+
+ANARICamera RenderTest::newOrthographicCamera(const Vec3 &position,
+    const Vec3 &direction,
+    const Vec3 &up,
+    float height,
+    float aspect)
+{
+  ANARICamera camera = keep(anariNewCamera(m_device, "orthographic"));
+  setVec3(camera, "position", position);
+  setVec3(camera, "direction", direction);
+  setVec3(camera, "up", up);
+  setFloat(camera, "height", height);
+  setFloat(camera, "aspect", aspect);
+  anariCommitParameters(m_device, camera);
+  return camera;
+}
+
+void RenderTest::setFloat(ANARIObject object, const char *name, float value)
+{
+  anariSetParameter(m_device, object, name, ANARI_FLOAT32, &value);
+}
+
+void RenderTest::setUint32(ANARIObject object, const char *name, uint32_t value)
+{
+  anariSetParameter(m_device, object, name, ANARI_UINT32, &value);
+}
+
+void RenderTest::setVec2(
+    ANARIObject object, const char *name, const Vec2 &value)
+{
+  anariSetParameter(m_device, object, name, ANARI_FLOAT32_VEC2, value.data());
+}
+
+void RenderTest::setVec3(
+    ANARIObject object, const char *name, const Vec3 &value)
+{
+  anariSetParameter(m_device, object, name, ANARI_FLOAT32_VEC3, value.data());
+}
+
+void RenderTest::setVec4(
+    ANARIObject object, const char *name, const Vec4 &value)
+{
+  anariSetParameter(m_device, object, name, ANARI_FLOAT32_VEC4, value.data());
+}
+
+void RenderTest::setMat4(
+    ANARIObject object, const char *name, const Mat4 &value)
+{
+  anariSetParameter(m_device, object, name, ANARI_FLOAT32_MAT4, value.data());
+}
+
+void RenderTest::setString(
+    ANARIObject object, const char *name, const char *value)
+{
+  anariSetParameter(m_device, object, name, ANARI_STRING, value);
+}
+
+void RenderTest::setObject(
+    ANARIObject object, const char *name, ANARIDataType type, ANARIObject value)
+{
+  anariSetParameter(m_device, object, name, type, &value);
+}
+
+Mat4 translation(const Vec3 &offset)
+{
+  return {
+      1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, offset[0], offset[1], offset[2], 1};
+}
+
+Mat4 scaling(const Vec3 &factors)
+{
+  return {factors[0],
+      0,
+      0,
+      0,
+      0,
+      factors[1],
+      0,
+      0,
+      0,
+      0,
+      factors[2],
+      0,
+      0,
+      0,
+      0,
+      1};
+}
+
+Mat4 rotationZ(float radians)
+{
+  const float c = std::cos(radians), s = std::sin(radians);
+  return {c, s, 0, 0, -s, c, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+}
+
+Mat4 operator*(const Mat4 &a, const Mat4 &b)
+{
+  Mat4 out{};
+  for (int column = 0; column < 4; column++) {
+    for (int row = 0; row < 4; row++) {
+      float sum = 0.f;
+      for (int k = 0; k < 4; k++)
+        sum += a[4 * k + row] * b[4 * column + k];
+      out[4 * column + row] = sum;
+    }
+  }
+  return out;
+}
+
+void RenderTest::expectSameImage(
+    const Image &a, const Image &b, const std::string &what)
+{
+  ASSERT_EQ(a.width, b.width) << what;
+  ASSERT_EQ(a.height, b.height) << what;
+  const double difference = rmse(quantizeToSrgb8(a), quantizeToSrgb8(b));
+  // The default tolerance: two renders of one picture agree like a render
+  // and its reference.
+  EXPECT_LE(difference, 0.002) << what << ": rmse " << difference;
+}
+
+Image crop(
+    const Image &image, uint32_t x, uint32_t y, uint32_t width, uint32_t height)
+{
+  Image out(width, height);
+  for (uint32_t row = 0; row < height; row++) {
+    for (uint32_t column = 0; column < width; column++)
+      out.at(column, row) = image.at(x + column, y + row);
+  }
+  return out;
+}
+
+Image mirrorHorizontally(const Image &image)
+{
+  Image out(image.width, image.height);
+  for (uint32_t row = 0; row < image.height; row++) {
+    for (uint32_t column = 0; column < image.width; column++)
+      out.at(column, row) = image.at(image.width - 1 - column, row);
+  }
+  return out;
+}

@@ -302,6 +302,19 @@ float3 Geometry::attributesAt(const rt::Hit &hit,
     bool interpolate) const
 {
   const uint32_t primitive = hit.primitiveId;
+  attributes.primitiveId = primitive;
+  attributes[Attribute::PrimitiveId] = float4{float(primitive), 0.f, 0.f, 1.f};
+  attributes[Attribute::ObjectPosition] =
+      float4{objectPosition.x, objectPosition.y, objectPosition.z, 1.f};
+  const bool smoothNormals =
+      !m_vertexNormals.empty() || !m_cornerNormals.empty();
+  if (!interpolate && !smoothNormals) {
+    // The fast path of renderers that need only the normal.
+    const float3 normal = surfaceNormal(hit, objectPosition);
+    attributes[Attribute::ObjectNormal] =
+        float4{normal.x, normal.y, normal.z, 0.f};
+    return normal;
+  }
   const Corners corners = cornersAt(primitive, hit.u, hit.v);
   const uint32_t perPrimitive = faceVaryingCorners();
   // Face-varying corner indices follow the spec's formula n * primID + k;
@@ -330,9 +343,6 @@ float3 Geometry::attributesAt(const rt::Hit &hit,
     else if (data.hasUniform)
       out = data.uniform;
   }
-  attributes.primitiveId = primitive;
-  attributes[Attribute::PrimitiveId] = float4{float(primitive), 0.f, 0.f, 1.f};
-
   float3 normal = surfaceNormal(hit, objectPosition);
   float3 smooth{0, 0, 0};
   if (!m_cornerNormals.empty()) {
@@ -344,8 +354,6 @@ float3 Geometry::attributesAt(const rt::Hit &hit,
   }
   if (length(smooth) > 0.f)
     normal = normalize(smooth);
-  attributes[Attribute::ObjectPosition] =
-      float4{objectPosition.x, objectPosition.y, objectPosition.z, 1.f};
   attributes[Attribute::ObjectNormal] =
       float4{normal.x, normal.y, normal.z, 0.f};
   return normal;

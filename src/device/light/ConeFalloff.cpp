@@ -5,6 +5,22 @@
 #include <cmath>
 
 namespace prism::light {
+namespace {
+
+// The profile in any precision: the integral needs double so the jump of
+// a sharp cone lands exactly on its breakpoint.
+template <typename T>
+T profileAt(T theta, T halfAngle, T innerAngle)
+{
+  if (theta <= innerAngle)
+    return T(1);
+  if (theta >= halfAngle)
+    return T(0);
+  const T t = (halfAngle - theta) / (halfAngle - innerAngle);
+  return t * t * (T(3) - T(2) * t);
+}
+
+} // namespace
 
 ConeFalloff::ConeFalloff(float openingAngle, float falloffAngle)
     : m_halfAngle(0.5f * openingAngle),
@@ -25,11 +41,12 @@ float ConeFalloff::operator()(float cosTheta) const
 
 float ConeFalloff::atAngle(float theta) const
 {
-  if (theta <= m_innerAngle)
-    return 1.f;
-  if (theta >= m_halfAngle)
-    return 0.f;
-  return smoothStep((m_halfAngle - theta) / (m_halfAngle - m_innerAngle));
+  return profileAt(theta, m_halfAngle, m_innerAngle);
+}
+
+double ConeFalloff::atAngle(double theta) const
+{
+  return profileAt<double>(theta, m_halfAngle, m_innerAngle);
 }
 
 double ConeFalloff::integral(bool cosineWeighted) const
@@ -38,7 +55,7 @@ double ConeFalloff::integral(bool cosineWeighted) const
       [&](double theta) {
         const double weight =
             cosineWeighted ? std::max(0.0, std::cos(theta)) : 1.0;
-        return weight * atAngle(float(theta));
+        return weight * profileAt<double>(theta, m_halfAngle, m_innerAngle);
       },
       {m_innerAngle, m_halfAngle, 0.5 * kPiDouble});
 }

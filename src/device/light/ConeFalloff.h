@@ -17,6 +17,8 @@ class ConeFalloff
   float operator()(float cosTheta) const;
   // The same at an angle (radians) from the axis.
   float atAngle(float theta) const;
+  // The same in double, for integrals that must see jumps exactly.
+  double atAngle(double theta) const;
   // Integral over the sphere of the profile times cos(theta) clamped at 0
   // (`cosineWeighted`) or times 1 (steradians).
   double integral(bool cosineWeighted) const;

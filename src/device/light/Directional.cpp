@@ -54,10 +54,11 @@ class PlacedParallel : public PlacedLight
 class PlacedDisk : public PlacedLight
 {
  public:
-  PlacedDisk(float3 towardsLight, float capHeight, float3 radiance, float3 irradiance)
+  PlacedDisk(
+      float3 towardsLight, float capHeight, float3 radiance, float3 irradiance)
       : m_frame(frameAround(towardsLight)),
         m_capHeight(capHeight),
-        m_pdf(uniformConePdf(capHeight)),
+        m_pdf(capPdf(capHeight)),
         m_radiance(radiance),
         m_irradiance(irradiance)
   {}
@@ -65,7 +66,7 @@ class PlacedDisk : public PlacedLight
   LightSample sample(const float3 &, const float2 &u) const override
   {
     const float3 direction =
-        normalize(m_frame.toWorld(sampleUniformCone(u, m_capHeight)));
+        normalize(m_frame.toWorld(sampleCap(u, m_capHeight)));
     return {direction, kInfinity, m_radiance, m_pdf, false};
   }
   float3 radianceAlong(const float3 &,
@@ -74,9 +75,7 @@ class PlacedDisk : public PlacedLight
       float &pdf) const override
   {
     distance = kInfinity;
-    // 0.1% slack: sample()'s directions at the rim, rounded outwards,
-    // still count as inside.
-    if (oneMinusDot(direction, m_frame.z) > m_capHeight * 1.001f) {
+    if (!insideCap(direction, m_frame.z, m_capHeight)) {
       pdf = 0.f;
       return {0.f, 0.f, 0.f};
     }
@@ -93,7 +92,7 @@ class PlacedDisk : public PlacedLight
   }
 
  private:
-  Frame m_frame; // z towards the light
+  Frame m_frame;     // z towards the light
   float m_capHeight; // 1 - cos(angularDiameter / 2)
   float m_pdf;
   float3 m_radiance; // W/sr/m^2, color included
@@ -128,9 +127,8 @@ void Directional::finalize()
   const float cosineWeightedSolidAngle = kPi * sinRadius * sinRadius;
   if (m_brightness.source == 0) {
     m_irradiance = m_brightness.value;
-    m_radiance = m_angularDiameter > 0.f
-        ? m_irradiance / cosineWeightedSolidAngle
-        : 0.f;
+    m_radiance =
+        m_angularDiameter > 0.f ? m_irradiance / cosineWeightedSolidAngle : 0.f;
   } else {
     // Radiance of a zero-size disk emits nothing (spec 5.7.1 note).
     m_radiance = m_angularDiameter > 0.f ? m_brightness.value : 0.f;

@@ -61,7 +61,8 @@ float Distribution1D::pdf(float x) const
   return float(m_weights[binOf(x)] / m_integral);
 }
 
-Distribution2D::Distribution2D(const float *weights, size_t width, size_t height)
+Distribution2D::Distribution2D(
+    const float *weights, size_t width, size_t height)
 {
   if (width == 0 || height == 0)
     return;

@@ -82,16 +82,15 @@ class PlacedHdri : public PlacedLight
     const float sinTheta = std::sqrt(max(0.f, 1.f - cosTheta * cosTheta));
     const float phi =
         std::atan2(dot(direction, m_right), dot(direction, m_forward));
-    const float2 st{
-        phi / (2.f * kPi) + 0.5f, std::acos(cosTheta) / kPi};
+    const float2 st{phi / (2.f * kPi) + 0.5f, std::acos(cosTheta) / kPi};
     // (s, t) covers the sphere with dw = 2 pi^2 sin(theta) ds dt.
     pdf = sinTheta > 0.f
-        ? m_image->distribution.pdf(st) / (2.f * kPi * kPi * sinTheta)
-        : 0.f;
-    const size_t i = std::min(size_t(max(st.x, 0.f) * float(m_image->width)),
-        m_image->width - 1);
-    const size_t j = std::min(size_t(max(st.y, 0.f) * float(m_image->height)),
-        m_image->height - 1);
+              ? m_image->distribution.pdf(st) / (2.f * kPi * kPi * sinTheta)
+              : 0.f;
+    const size_t i = std::min(
+        size_t(max(st.x, 0.f) * float(m_image->width)), m_image->width - 1);
+    const size_t j = std::min(
+        size_t(max(st.y, 0.f) * float(m_image->height)), m_image->height - 1);
     return m_color * m_image->texels[i + j * m_image->width];
   }
 
@@ -125,7 +124,8 @@ void Hdri::commitParameters()
   m_scale = readNonNegative("scale", 1.f);
 
   const bool set = isSet("radiance");
-  m_radianceArray = static_cast<Array *>(readObject("radiance", {ANARI_ARRAY2D}));
+  m_radianceArray =
+      static_cast<Array *>(readObject("radiance", {ANARI_ARRAY2D}));
   if (!m_radianceArray) {
     invalidate(set ? "'radiance' is not an ARRAY2D"
                    : "required parameter 'radiance' (ARRAY2D of FLOAT32_VEC3) "
@@ -175,7 +175,8 @@ void Hdri::finalize()
           }
         }
         texel = texel * m_scale;
-        weights[i + j * image->width] = float(luminance(texel) * texelSolidAngle);
+        weights[i + j * image->width] =
+            float(luminance(texel) * texelSolidAngle);
         weightedSum = weightedSum + vecCast<double>(texel) * texelSolidAngle;
       }
     }
@@ -187,8 +188,7 @@ void Hdri::finalize()
     }
     image->distribution =
         Distribution2D(weights.data(), image->width, image->height);
-    image->averageRadiance =
-        vecCast<float>(weightedSum / (4.0 * kPiDouble));
+    image->averageRadiance = vecCast<float>(weightedSum / (4.0 * kPiDouble));
     m_image = std::move(image);
   } catch (const std::exception &) {
     report(ANARI_SEVERITY_ERROR,

@@ -13,14 +13,16 @@ bool IntensityDistribution::assign(const Array &array, const char *&why)
 {
   m_values.clear();
   m_averageOverC.clear();
-  const size_t gammaCount = array.dimensions() == 1 ? array.count() : array.size(0);
+  const size_t gammaCount =
+      array.dimensions() == 1 ? array.count() : array.size(0);
   const size_t cCount = array.dimensions() == 1 ? 1 : array.size(1);
   if (gammaCount < 2) {
     why = "needs at least two values along gamma (at 0 and pi)";
     return false;
   }
   std::vector<float> values(gammaCount * cCount);
-  convertToFloat(array.elementType(), array.begin(), values.size(), 0, values.data());
+  convertToFloat(
+      array.elementType(), array.begin(), values.size(), 0, values.data());
   for (float v : values) {
     if (!(std::isfinite(v) && v >= 0.f)) {
       why = "has negative or non-finite values";
@@ -77,8 +79,8 @@ double IntensityDistribution::integral(
         const double x = gamma / step;
         const size_t g0 = std::min(size_t(std::max(x, 0.0)), m_gammaCount - 2);
         const double f = std::clamp(x - double(g0), 0.0, 1.0);
-        const double average = (1.0 - f) * m_averageOverC[g0]
-                               + f * m_averageOverC[g0 + 1];
+        const double average =
+            (1.0 - f) * m_averageOverC[g0] + f * m_averageOverC[g0 + 1];
         return average * weight(gamma);
       },
       std::move(breakpoints));

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
+#include <exception>
 
 namespace prism {
 namespace {
@@ -147,13 +148,21 @@ Light::buildIntensityDistribution(const Array *array)
 {
   if (!array)
     return nullptr;
-  auto table = std::make_shared<light::IntensityDistribution>();
-  const char *why = "";
-  if (!table->assign(*array, why)) {
-    invalidate("'intensityDistribution' %s", why);
+  try {
+    auto table = std::make_shared<light::IntensityDistribution>();
+    const char *why = "";
+    if (!table->assign(*array, why)) {
+      invalidate("'intensityDistribution' %s", why);
+      return nullptr;
+    }
+    return table;
+  } catch (const std::exception &) {
+    report(ANARI_SEVERITY_ERROR,
+        ANARI_STATUS_OUT_OF_MEMORY,
+        "out of memory reading 'intensityDistribution'; the light is invalid");
+    m_valid = false;
     return nullptr;
   }
-  return table;
 }
 
 void Light::invalidate(const char *format, ...)

@@ -72,10 +72,11 @@ class Light : public Object
   Array *readIntensityDistribution();
   // The table of `array` (NULL gives none); reports unusable values and
   // invalidates the light.
-  std::shared_ptr<const light::IntensityDistribution> buildIntensityDistribution(
-      const Array *array);
+  std::shared_ptr<const light::IntensityDistribution>
+  buildIntensityDistribution(const Array *array);
   // Reports why the light cannot be used and marks it invalid.
-  void invalidate(const char *format, ...) __attribute__((format(printf, 2, 3)));
+  void invalidate(const char *format, ...)
+      __attribute__((format(printf, 2, 3)));
   // Copies what every placed light shares (primary visibility).
   void placeShared(PlacedLight &placed) const
   {

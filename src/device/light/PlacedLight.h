@@ -21,6 +21,9 @@ struct LightSample
   bool delta{false};
 };
 
+// NOTE: immutable once placed, so render threads share one without locks;
+// subtypes share their tables (hdri image, photometric data) by
+// shared_ptr<const>, so a placement outlives a recommit of its light.
 class PlacedLight
 {
  public:

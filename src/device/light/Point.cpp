@@ -58,10 +58,7 @@ class PlacedSphere : public PlacedLight
 {
  public:
   PlacedSphere(float3 center, float radius, float3 radiance, float3 power)
-      : m_center(center),
-        m_radius(radius),
-        m_radiance(radiance),
-        m_power(power)
+      : m_center(center), m_radius(radius), m_radiance(radiance), m_power(power)
   {}
 
   LightSample sample(const float3 &point, const float2 &u) const override
@@ -71,13 +68,13 @@ class PlacedSphere : public PlacedLight
     if (!cone(point, capHeight, distanceToCenter))
       return {};
     const Frame frame = frameAround((m_center - point) / distanceToCenter);
-    const float3 local = sampleUniformCone(u, capHeight);
+    const float3 local = sampleCap(u, capHeight);
     const float3 direction = normalize(frame.toWorld(local));
     LightSample s;
     s.direction = direction;
     s.distance = entryDistance(point, direction);
     s.radiance = m_radiance;
-    s.pdf = uniformConePdf(capHeight);
+    s.pdf = capPdf(capHeight);
     return s;
   }
   float3 radianceAlong(const float3 &point,
@@ -91,13 +88,12 @@ class PlacedSphere : public PlacedLight
     float distanceToCenter = 0.f;
     if (!cone(point, capHeight, distanceToCenter))
       return {0.f, 0.f, 0.f};
-    // Inside the subtended cone exactly when the ray hits the sphere; the
-    // 0.1% slack keeps sample()'s rim directions, rounded outwards, hits.
+    // Inside the subtended cone exactly when the ray hits the sphere.
     const float3 axis = (m_center - point) / distanceToCenter;
-    if (oneMinusDot(direction, axis) > capHeight * 1.001f)
+    if (!insideCap(direction, axis, capHeight))
       return {0.f, 0.f, 0.f};
     distance = entryDistance(point, direction);
-    pdf = uniformConePdf(capHeight);
+    pdf = capPdf(capHeight);
     return m_radiance;
   }
   float3 power() const override

@@ -44,29 +44,27 @@ class PlacedQuad : public PlacedLight
   LightSample sample(const float3 &point, const float2 &u) const override
   {
     LightSample s;
-    Subtended subtended = subtend(point);
+    const Subtended subtended = subtend(point);
     if (subtended.solidAngle > 0.0) {
       // Pick a triangle in proportion to its solid angle, reusing u.x.
       const double split = double(u.x) * subtended.solidAngle;
-      const bool first = split < subtended.area[0];
       const double3 *v = subtended.vertices;
-      const double3 direction = first
-          ? sampleSphericalTriangle(v[0],
-                v[1],
-                v[2],
-                subtended.area[0],
-                {float(split / subtended.area[0]), u.y})
-          : sampleSphericalTriangle(v[0],
-                v[2],
-                v[3],
-                subtended.area[1],
-                {float((split - subtended.area[0]) / subtended.area[1]),
-                    u.y});
+      double3 direction;
+      if (split < subtended.area[0]) {
+        const float2 uTriangle{float(split / subtended.area[0]), u.y};
+        direction = sampleSphericalTriangle(
+            v[0], v[1], v[2], subtended.area[0], uTriangle);
+      } else {
+        const float2 uTriangle{
+            float((split - subtended.area[0]) / subtended.area[1]), u.y};
+        direction = sampleSphericalTriangle(
+            v[0], v[2], v[3], subtended.area[1], uTriangle);
+      }
       s.direction = normalize(vecCast<float>(direction));
       const float along = dot(s.direction, m_normal);
       s.distance = along != 0.f
-          ? max(0.f, dot(m_corner - point, m_normal) / along)
-          : 0.f;
+                       ? max(0.f, dot(m_corner - point, m_normal) / along)
+                       : 0.f;
       s.pdf = float(1.0 / subtended.solidAngle);
     } else {
       const float3 onQuad = m_corner + m_edge1 * u.x + m_edge2 * u.y;
@@ -102,7 +100,10 @@ class PlacedQuad : public PlacedLight
     const float normal2 = m_area * m_area;
     const float a = dot(cross(offset, m_edge2), m_normal) / normal2;
     const float b = dot(cross(m_edge1, offset), m_normal) / normal2;
-    if (a < 0.f || a > 1.f || b < 0.f || b > 1.f)
+    // A rounding's worth of slack, growing with distance over size, so
+    // sample()'s own directions at the edges still hit.
+    const float slack = 1e-6f * (1.f + t / std::sqrt(m_area));
+    if (a < -slack || a > 1.f + slack || b < -slack || b > 1.f + slack)
       return {0.f, 0.f, 0.f};
     distance = t;
     const Subtended subtended = subtend(point);
@@ -170,7 +171,7 @@ class PlacedQuad : public PlacedLight
     // the whole angular shape, cosine included.
     const float value = (*m_emission.distribution)(m_frame.toLocal(out));
     return m_emission.intensity
-        * (value / (m_area * max(std::abs(cosFront), kMinCosine)));
+           * (value / (m_area * max(std::abs(cosFront), kMinCosine)));
   }
 
   float3 m_corner;
@@ -206,8 +207,7 @@ void Quad::commitParameters()
         "unknown 'side' \"%s\"; using front",
         side.c_str());
   }
-  m_brightness =
-      readBrightness({"intensity", "power", "radiance"}, 1.f);
+  m_brightness = readBrightness({"intensity", "power", "radiance"}, 1.f);
   m_distributionArray = readIntensityDistribution();
 }
 
@@ -254,11 +254,11 @@ std::unique_ptr<PlacedLight> Quad::place(const mat3x4 &worldFromObject) const
   emission.side = m_side;
   emission.distribution = m_distribution;
   emission.intensity = m_color * intensity;
-  emission.radiance = m_distribution ? float3{0.f, 0.f, 0.f}
-                                     : emission.intensity / area;
+  emission.radiance =
+      m_distribution ? float3{0.f, 0.f, 0.f} : emission.intensity / area;
   emission.power = emission.intensity * float(m_emissionIntegral);
-  auto placed = std::make_unique<PlacedQuad>(
-      corner, edge1, edge2, std::move(emission));
+  auto placed =
+      std::make_unique<PlacedQuad>(corner, edge1, edge2, std::move(emission));
   placeShared(*placed);
   return placed;
 }

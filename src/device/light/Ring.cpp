@@ -28,8 +28,8 @@ struct RingEmission
     const float profile = falloff(cosAxis);
     if (!(profile > 0.f))
       return {0.f, 0.f, 0.f};
-    const float shape = distribution ? (*distribution)(frame.toLocal(out))
-                                     : max(cosAxis, 0.f);
+    const float shape =
+        distribution ? (*distribution)(frame.toLocal(out)) : max(cosAxis, 0.f);
     return intensity * (shape * profile);
   }
 };
@@ -82,10 +82,8 @@ class PlacedRingPoint : public PlacedLight
 class PlacedRingDisk : public PlacedLight
 {
  public:
-  PlacedRingDisk(float3 center,
-      float radius,
-      float innerRadius,
-      RingEmission emission)
+  PlacedRingDisk(
+      float3 center, float radius, float innerRadius, RingEmission emission)
       : m_center(center),
         m_radius(radius),
         m_innerRadius(innerRadius),
@@ -100,8 +98,8 @@ class PlacedRingDisk : public PlacedLight
     const float r = std::sqrt(inner2 + u.x * (m_radius * m_radius - inner2));
     const float phi = 2.f * kPi * u.y;
     const Frame &frame = m_emission.frame;
-    const float3 onDisk = m_center
-        + frame.toWorld({r * std::cos(phi), r * std::sin(phi), 0.f});
+    const float3 onDisk =
+        m_center + frame.toWorld({r * std::cos(phi), r * std::sin(phi), 0.f});
     const float3 offset = onDisk - point;
     const float distance2 = lengthSquared(offset);
     if (!(distance2 > 0.f))
@@ -154,7 +152,7 @@ class PlacedRingDisk : public PlacedLight
   {
     const float cosine = std::abs(dot(out, m_emission.frame.z));
     return m_emission.intensityTowards(out)
-        / (m_area * max(cosine, kMinCosine));
+           / (m_area * max(cosine, kMinCosine));
   }
 
   float3 m_center;
@@ -183,8 +181,7 @@ void Ring::commitParameters()
   m_brightness = readBrightness({"intensity", "power", "radiance"}, 1.f);
   m_distributionArray = readIntensityDistribution();
   m_c0 = readDirection("c0", {1.f, 0.f, 0.f});
-  if (m_distributionArray
-      && lengthSquared(cross(m_c0, m_direction)) < 1e-12f) {
+  if (m_distributionArray && lengthSquared(cross(m_c0, m_direction)) < 1e-12f) {
     report(ANARI_SEVERITY_WARNING,
         ANARI_STATUS_INVALID_ARGUMENT,
         "'c0' is parallel to 'direction'; the C0 half-plane is arbitrary");
@@ -200,7 +197,7 @@ void Ring::finalize()
       falloff.innerAngle(), falloff.halfAngle(), 0.5 * kPiDouble};
   if (m_distribution) {
     m_emissionIntegral = m_distribution->integral(
-        [&](double gamma) { return falloff.atAngle(float(gamma)); }, kinks);
+        [&](double gamma) { return falloff.atAngle(gamma); }, kinks);
   } else {
     // The cosine shape within the cone: the same cosine-weighted integral
     // the spot light's power is defined by.
@@ -222,8 +219,8 @@ std::unique_ptr<PlacedLight> Ring::place(const mat3x4 &worldFromObject) const
   float intensity = m_brightness.value;
   if (m_brightness.source == 1) {
     intensity = m_emissionIntegral > 0.0
-        ? float(m_brightness.value / m_emissionIntegral)
-        : 0.f;
+                    ? float(m_brightness.value / m_emissionIntegral)
+                    : 0.f;
   } else if (m_brightness.source == 2) {
     // Radiance over the disk's area; nothing for radius 0 (spec).
     intensity = m_brightness.value * area;

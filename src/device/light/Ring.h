@@ -27,7 +27,7 @@ class Ring : public Light
  private:
   float3 m_position{0.f, 0.f, 0.f};
   float3 m_direction{0.f, 0.f, -1.f}; // unit
-  float3 m_c0{1.f, 0.f, 0.f};          // unit
+  float3 m_c0{1.f, 0.f, 0.f};         // unit
   ConeFalloff m_falloff;
   float m_radius{0.f};
   float m_innerRadius{0.f};

@@ -38,7 +38,7 @@ Frame frameAround(float3 z, float3 hint)
   return {xUnit, cross(z, xUnit), z};
 }
 
-float3 sampleUniformCone(float2 u, float capHeight)
+float3 sampleCap(float2 u, float capHeight)
 {
   // cos(theta) is uniform in [1 - capHeight, 1]; sin^2 from the cap height
   // keeps tiny cones (the sun) from rounding to a single direction.
@@ -49,7 +49,8 @@ float3 sampleUniformCone(float2 u, float capHeight)
   return {std::cos(phi) * sinTheta, std::sin(phi) * sinTheta, cosTheta};
 }
 
-double sphericalTriangleArea(const double3 &a, const double3 &b, const double3 &c)
+double sphericalTriangleArea(
+    const double3 &a, const double3 &b, const double3 &c)
 {
   // tan(area / 2) = |a . (b x c)| / (1 + a.b + b.c + c.a) for unit vectors;
   // atan2 keeps areas above pi, where the denominator turns negative.
@@ -75,9 +76,10 @@ double3 sampleSphericalTriangle(
   const double p = t - cosAlpha;
   const double q = s + sinAlpha * dot(a, b);
   const double denominator = (q * s + p * t) * sinAlpha;
-  const double cosArc = denominator != 0.0
-      ? clamp(((q * t - p * s) * cosAlpha - q) / denominator, -1.0, 1.0)
-      : 1.0;
+  const double cosArc =
+      denominator != 0.0
+          ? clamp(((q * t - p * s) * cosAlpha - q) / denominator, -1.0, 1.0)
+          : 1.0;
   const double3 towardsC = normalizeOr(c - a * dot(c, a), b);
   const double3 cPrime =
       a * cosArc + towardsC * std::sqrt(max(0.0, 1.0 - cosArc * cosArc));
@@ -89,8 +91,8 @@ double3 sampleSphericalTriangle(
   return b * z + towardsCPrime * std::sqrt(max(0.0, 1.0 - z * z));
 }
 
-double integrateOverSphere(
-    const std::function<double(double theta)> &f, std::vector<double> breakpoints)
+double integrateOverSphere(const std::function<double(double theta)> &f,
+    std::vector<double> breakpoints)
 {
   breakpoints.push_back(0.0);
   breakpoints.push_back(kPiDouble);

@@ -64,18 +64,28 @@ inline float oneMinusDot(float3 a, float3 b)
   return 0.5f * lengthSquared(a - b);
 }
 
+// Whether the unit `direction` lies in the cone around the unit `axis` of
+// cap height 1 - cos(halfAngle); the slack of a few float roundings of the
+// cone's chord keeps sampleCap()'s own rim directions inside.
+inline bool insideCap(float3 direction, float3 axis, float capHeight)
+{
+  return oneMinusDot(direction, axis)
+         <= capHeight + 4e-7f * std::sqrt(capHeight);
+}
+
 // A direction uniform in the cone around +z of the cap with
 // 1 - cos(halfAngle) = `capHeight` (local coordinates).
-float3 sampleUniformCone(float2 u, float capHeight);
+float3 sampleCap(float2 u, float capHeight);
 // Its pdf per steradian inside the cone.
-inline float uniformConePdf(float capHeight)
+inline float capPdf(float capHeight)
 {
   return 1.f / (2.f * kPi * capHeight);
 }
 
 // Solid angle of the spherical triangle of the unit vectors a, b, c
 // (Van Oosterom and Strackee's formula; exact for every size).
-double sphericalTriangleArea(const double3 &a, const double3 &b, const double3 &c);
+double sphericalTriangleArea(
+    const double3 &a, const double3 &b, const double3 &c);
 // A direction uniform in that triangle, `area` its solid angle (Arvo 1995:
 // a sub-triangle of area u.x * area, then a point along its last arc).
 double3 sampleSphericalTriangle(const double3 &a,

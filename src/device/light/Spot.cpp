@@ -95,8 +95,8 @@ std::unique_ptr<PlacedLight> Spot::place(const mat3x4 &worldFromObject) const
   const float3 axis = transformUnit(worldFromObject, m_direction);
   const float3 intensity = m_color * m_intensity;
   const float3 flux = intensity * m_solidAngle;
-  auto placed = std::make_unique<PlacedSpot>(
-      position, axis, m_falloff, intensity, flux);
+  auto placed =
+      std::make_unique<PlacedSpot>(position, axis, m_falloff, intensity, flux);
   placeShared(*placed);
   return placed;
 }

@@ -6,6 +6,7 @@
 #include "../camera/Perspective.h"
 #include "../frame/Frame.h"
 #include "../geometry/Geometry.h"
+#include "../light/Light.h"
 #include "../material/Material.h"
 #include "../renderer/AmbientOcclusion.h"
 #include "../renderer/Debug.h"
@@ -94,6 +95,9 @@ Object *createObject(
     break;
   case ANARI_SAMPLER:
     object = createSampler(device, subtype);
+    break;
+  case ANARI_LIGHT:
+    object = createLight(device, subtype);
     break;
   case ANARI_INSTANCE:
     object = createInstance(device, subtype);

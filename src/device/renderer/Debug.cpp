@@ -1,22 +1,24 @@
 #include "Debug.h"
 
+#include "SampleHash.h"
+
 #include <algorithm>
 
 namespace prism {
 namespace {
 
 // A stable, well-spread color for an id (~0u, "no id", is dark grey).
+// Every channel stays at or above 0.25, so no id (0 included) can look like
+// a black background.
 float3 idColor(uint32_t id)
 {
   if (id == ~0u)
     return {0.1f, 0.1f, 0.1f};
-  uint32_t h = id * 0x9e3779b1u;
-  h ^= h >> 15;
-  h *= 0x85ebca77u;
-  h ^= h >> 13;
-  return {float(h & 0xff) / 255.f,
-      float((h >> 8) & 0xff) / 255.f,
-      float((h >> 16) & 0xff) / 255.f};
+  const uint32_t h = mixBits(id + 1u);
+  auto channel = [](uint32_t bits) {
+    return 0.25f + 0.75f * float(bits & 0xff) / 255.f;
+  };
+  return {channel(h), channel(h >> 8), channel(h >> 16)};
 }
 
 float3 heat(float t)

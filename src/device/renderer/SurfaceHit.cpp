@@ -26,13 +26,21 @@ bool resolveSurfaceHit(const World &world,
       placement.instance->applyAttributes(out.attributes);
   }
   const float3 objectPosition =
-      transformPoint(placement.objectFromWorld, out.position);
+      placement.identity
+          ? out.position
+          : transformPoint(placement.objectFromWorld, out.position);
   const float3 objectNormal = surface->geometry()->attributesAt(
       hit, objectPosition, out.attributes, interpolate);
-  float3 geometric = normalize(
-      transformNormal(placement.objectFromWorld, hit.geometricNormal));
+  float3 geometric =
+      placement.identity
+          ? hit.geometricNormal
+          : transformNormal(placement.objectFromWorld, hit.geometricNormal);
+  geometric = normalize(geometric);
+  // The geometry returns its shading normal normalised already.
   float3 shading =
-      normalize(transformNormal(placement.objectFromWorld, objectNormal));
+      placement.identity
+          ? objectNormal
+          : normalize(transformNormal(placement.objectFromWorld, objectNormal));
   out.backFacing = dot(geometric, ray.direction) > 0.f;
   if (out.backFacing)
     geometric = geometric * -1.f;

@@ -101,8 +101,11 @@ void Scene::clear()
   if (m_scene)
     rtcReleaseScene(m_scene);
   m_scene = m_context.isValid() ? rtcNewScene(m_context.handle()) : nullptr;
-  if (m_scene)
+  if (m_scene) {
     rtcSetSceneBuildQuality(m_scene, RTC_BUILD_QUALITY_HIGH);
+    // Watertight: without it rays through a quad's split diagonal can miss.
+    rtcSetSceneFlags(m_scene, RTC_SCENE_FLAG_ROBUST);
+  }
 }
 
 void Scene::addTriangles(uint32_t id,

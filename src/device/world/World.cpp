@@ -69,8 +69,10 @@ void World::finalize()
                    const mat3x4 &transform,
                    uint32_t id) {
     const auto embreeId = uint32_t(m_placements.size());
+    const bool identity =
+        std::memcmp(&transform, &kIdentityMat3x4, sizeof(mat3x4)) == 0;
     m_placements.push_back(
-        {group, instance, transform, inverse(transform), id});
+        {group, instance, transform, inverse(transform), id, identity});
     m_scene->addInstance(embreeId, group->scene(), transform);
   };
   if (!isEmpty(m_implicitGroup->bounds()))

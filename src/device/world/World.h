@@ -26,6 +26,7 @@ class World : public Object
     mat3x4 worldFromObject;
     mat3x4 objectFromWorld;
     uint32_t instanceId; // the user's id (~0u when unset)
+    bool identity;       // worldFromObject is the identity (skip transforms)
   };
 
   const Placement &placement(uint32_t instanceId) const
