@@ -37,8 +37,16 @@ inline const char *kImplementedExtensions[] = {
     "ANARI_KHR_GEOMETRY_TRIANGLE",
     "ANARI_KHR_INSTANCE_TRANSFORM",
     "ANARI_KHR_INSTANCE_TRANSFORM_ARRAY",
+    "ANARI_KHR_LIGHT_DIRECTIONAL",
+    "ANARI_KHR_LIGHT_HDRI",
+    "ANARI_KHR_LIGHT_POINT",
+    "ANARI_KHR_LIGHT_PRIMARY_VISIBILITY",
+    "ANARI_KHR_LIGHT_QUAD",
+    "ANARI_KHR_LIGHT_RING",
+    "ANARI_KHR_LIGHT_SPOT",
     "ANARI_KHR_MATERIAL_MATTE",
     "ANARI_KHR_MATERIAL_PHYSICALLY_BASED",
+    "ANARI_KHR_RENDERER_AMBIENT_LIGHT",
     "ANARI_KHR_RENDERER_BACKGROUND_COLOR",
     "ANARI_KHR_RENDERER_BACKGROUND_IMAGE",
     "ANARI_KHR_SAMPLER_IMAGE1D",
@@ -51,6 +59,6 @@ inline const char *kImplementedExtensions[] = {
 
 // "default" first: it aliases the first real renderer (spec 5.3).
 inline const char *kRendererSubtypes[] = {
-    "default", "raycast", "ao", "debug", nullptr};
+    "default", "raycast", "pathtracer", "ao", "debug", nullptr};
 
 } // namespace prism

@@ -10,6 +10,7 @@
 #include "../material/Material.h"
 #include "../renderer/AmbientOcclusion.h"
 #include "../renderer/Debug.h"
+#include "../renderer/PathTracer.h"
 #include "../renderer/Raycast.h"
 #include "../sampler/Sampler.h"
 #include "../world/Group.h"
@@ -40,6 +41,8 @@ Object *createRenderer(Device &device, const std::string &subtype)
     return new Debug(device);
   if (subtype == "ao")
     return new AmbientOcclusion(device);
+  if (subtype == "pathtracer")
+    return new PathTracer(device, subtype);
   return nullptr;
 }
 

@@ -33,6 +33,10 @@ Renderer::Renderer(Device &device, const std::string &subtype)
 
 void Renderer::commitParameters()
 {
+  // KHR_RENDERER_AMBIENT_LIGHT: the path tracer lights with it; the other
+  // renderers show geometry, not lighting, and take it without using it.
+  m_ambientColor = read<float3>("ambientColor", ANARI_FLOAT32_VEC3, {1, 1, 1});
+  m_ambientRadiance = read<float>("ambientRadiance", ANARI_FLOAT32, 0.f);
   m_backgroundColor = {0, 0, 0, 1};
   m_backgroundImage.clear();
   m_backgroundWidth = m_backgroundHeight = 0;

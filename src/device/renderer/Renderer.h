@@ -78,6 +78,9 @@ class Renderer : public Object
       uint32_t y,
       const PixelSample &sample);
 
+  float3 m_ambientColor{1, 1, 1};
+  float m_ambientRadiance{0.f};
+
  private:
   float4 m_backgroundColor{0, 0, 0, 1};
   std::vector<float4> m_backgroundImage; // linear RGBA, row 0 at the bottom

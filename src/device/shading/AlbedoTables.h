@@ -1,7 +1,7 @@
 // Directional albedos of the microfacet lobes, which the BSDF needs to put
 // back the energy single scattering loses (Kulla & Conty 2017) and to layer
 // lobes without creating energy. Generated once per process on first use
-// (about 0.1 s, deterministic); lookups are bilinear in (cos theta,
+// (about 50 ms, deterministic); lookups are bilinear in (sqrt(cos theta),
 // roughness) and thread-safe.
 #pragma once
 
@@ -12,10 +12,14 @@ namespace prism {
 //   E_F(mu) = f0 (total - schlick) + f90 schlick.
 struct GgxAlbedo
 {
-  float total; // E(mu): albedo with F = 1, < 1 by the energy single scattering loses
-  float schlick; // the part weighted by (1 - wo.h)^5
-  float average; // 2 * integral of total(mu) mu dmu over [0, 1]
+  // E(mu): the albedo with F = 1, short of 1 by what single scattering loses.
+  float total;
+  float schlick;        // the part weighted by (1 - wo.h)^5
+  float average;        // 2 * integral of total(mu) mu dmu over [0, 1]
   float schlickAverage; // 2 * integral of schlick(mu) mu dmu over [0, 1]
+  // Albedo-weighted mean of cos(wo, h): where to evaluate a Fresnel curve
+  // that is not Schlick's (the thin film) to estimate its lobe average.
+  float meanCos;
 };
 
 // `cosTheta` of the direction from the normal; glTF's alpha = roughness^2.
@@ -27,6 +31,8 @@ GgxAlbedo ggxAlbedo(float cosTheta, float roughness);
 GgxAlbedo mirrorAlbedo(float cosTheta);
 
 // Albedo of the Charlie sheen lobe with sheenColor 1 (KHR_materials_sheen).
+// Can exceed 1 at grazing angles for sheenRoughness below ~0.25: the
+// published Lambda fit is not energy conserving there.
 float sheenAlbedo(float cosTheta, float sheenRoughness);
 
 } // namespace prism

@@ -68,13 +68,13 @@ inline float3 thinFilmSensitivity(float opd, float3 shift)
   float3 xyz;
   for (int c = 0; c < 3; c++) {
     xyz[c] = amplitude[c] * std::sqrt(kTwoPi * variance[c])
-        * std::cos(position[c] * phase + shift[c])
-        * std::exp(-phase2 * variance[c]);
+             * std::cos(position[c] * phase + shift[c])
+             * std::exp(-phase2 * variance[c]);
   }
   // X has a second, short-wavelength lobe.
   xyz.x += 9.7470e-14f * std::sqrt(kTwoPi * 4.5282e+09f)
-      * std::cos(2.2399e+06f * phase + shift.x)
-      * std::exp(-4.5282e+09f * phase2);
+           * std::cos(2.2399e+06f * phase + shift.x)
+           * std::exp(-4.5282e+09f * phase2);
   xyz = xyz * (1.f / 1.0685e-7f);
   return {3.2404542f * xyz.x - 1.5371385f * xyz.y - 0.4985314f * xyz.z,
       -0.9692660f * xyz.x + 1.8760108f * xyz.y + 0.0415560f * xyz.z,
@@ -108,7 +108,7 @@ inline float3 fresnelThinFilm(
   const float cos2 = std::sqrt(1.f - sin2Theta2);
   // Film -> base; the base index is inferred from F0 (exact for dielectrics,
   // an extinction-free approximation for metals).
-  float3 r23, phi23;
+  float3 r23{}, phi23{};
   for (int c = 0; c < 3; c++) {
     const float s = std::sqrt(clamp(baseF0[c], 0.f, 0.9999f));
     const float baseIor = (1.f + s) / (1.f - s);
@@ -122,8 +122,8 @@ inline float3 fresnelThinFilm(
   const float3 phi = phi23 + phi21;
   const float opd = 2.f * n2 * max(filmThicknessNm, 0.f) * cos2;
 
-  float3 result;
-  float3 r123, rs, cm;
+  float3 result{};
+  float3 r123{}, rs{}, cm{};
   for (int c = 0; c < 3; c++) {
     r123[c] = std::sqrt(clamp(r12 * r23[c], 1e-5f, 0.9999f));
     rs[c] = t121 * t121 * r23[c] / (1.f - r123[c] * r123[c]);

@@ -71,7 +71,7 @@ inline float charlieD(float3 h, float alpha)
   const float inverseAlpha = 1.f / alpha;
   const float sin2 = min(1.f, h.x * h.x + h.y * h.y);
   return (2.f + inverseAlpha) * std::pow(sin2, 0.5f * inverseAlpha)
-      * (0.5f * std::numbers::inv_pi_v<float>);
+         * (0.5f * std::numbers::inv_pi_v<float>);
 }
 
 // Estevez & Kulla's fit of the Charlie Lambda, through the curve
@@ -92,8 +92,8 @@ inline float charlieLambda(float cosTheta, float alpha)
   const float c = min(std::abs(cosTheta), 1.f);
   // The fit is only good below 0.5; mirror it about 0.5 above.
   return c < 0.5f
-      ? std::exp(charlieL(c, alpha))
-      : std::exp(2.f * charlieL(0.5f, alpha) - charlieL(1.f - c, alpha));
+             ? std::exp(charlieL(c, alpha))
+             : std::exp(2.f * charlieL(0.5f, alpha) - charlieL(1.f - c, alpha));
 }
 
 // The sheen BRDF's visibility G / (4 |cos_o| |cos_i|), height-correlated.

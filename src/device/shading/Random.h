@@ -43,7 +43,8 @@ constexpr float unitFloatFromBits(uint32_t bits)
 class RandomSequence
 {
  public:
-  constexpr RandomSequence(uint2 pixel, uint32_t sampleIndex, uint32_t frameIndex)
+  constexpr RandomSequence(
+      uint2 pixel, uint32_t sampleIndex, uint32_t frameIndex)
       : m_key(pcg4d(uint4{pixel.x, pixel.y, sampleIndex, frameIndex}))
   {}
 

@@ -93,9 +93,9 @@ inline float3 sampleGgxVisibleNormal(
   const float3 v = normalize(float3{alphaX * wo.x, alphaY * wo.y, wo.z});
   // Orthonormal basis around v; any tangent works at normal incidence.
   const float lengthSquared = v.x * v.x + v.y * v.y;
-  const float3 t1 = lengthSquared > 0.f
-      ? float3{-v.y, v.x, 0.f} * (1.f / std::sqrt(lengthSquared))
-      : float3{1.f, 0.f, 0.f};
+  const float3 t1 = lengthSquared > 0.f ? float3{-v.y, v.x, 0.f}
+                                              * (1.f / std::sqrt(lengthSquared))
+                                        : float3{1.f, 0.f, 0.f};
   const float3 t2 = cross(v, t1);
   // A disk point, squeezed onto the part of the disk that v can see.
   const float r = std::sqrt(u.x);

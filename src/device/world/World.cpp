@@ -2,6 +2,7 @@
 
 #include "../Device.h"
 #include "../array/Array.h"
+#include "../light/Light.h"
 
 #include <cstring>
 
@@ -26,6 +27,7 @@ void World::dropReferences()
   m_traced = nullptr;
   m_instances.clear();
   m_placements.clear();
+  m_placedLights.clear();
   if (m_implicitGroup)
     m_implicitGroup->setSurfaces({});
 }
@@ -63,6 +65,24 @@ void World::finalize()
 {
   m_implicitGroup->finalize();
   m_placements.clear();
+  m_placedLights.clear();
+  auto placeLights = [&](const std::vector<Object *> &lights,
+                         const mat3x4 &transform) {
+    for (Object *object : lights) {
+      auto *light = dynamic_cast<const Light *>(object);
+      if (light && light->isValid()) {
+        if (auto placed = light->place(transform))
+          m_placedLights.push_back(std::move(placed));
+      }
+    }
+  };
+  placeLights(m_lights, kIdentityMat3x4);
+  for (const Instance *instance : m_instances) {
+    if (!instance->isValid())
+      continue;
+    for (size_t i = 0; i < instance->placementCount(); i++)
+      placeLights(instance->group()->lights(), instance->worldFromObject(i));
+  }
   m_scene->clear();
   auto place = [&](const Group *group,
                    const Instance *instance,

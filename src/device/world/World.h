@@ -3,6 +3,7 @@
 // placement of an implicit group for surfaces placed in the world directly.
 #pragma once
 
+#include "../light/PlacedLight.h"
 #include "../rt/Scene.h"
 #include "Group.h"
 #include "Instance.h"
@@ -45,6 +46,12 @@ class World : public Object
   {
     return m_bounds;
   }
+  // Every valid light, placed in world space (world lights and the lights
+  // of every instanced group).
+  const std::vector<std::unique_ptr<PlacedLight>> &lights() const
+  {
+    return m_placedLights;
+  }
   void finalize() override;
   void dropReferences() override;
   bool getProperty(const std::string &name,
@@ -64,6 +71,7 @@ class World : public Object
   std::vector<Object *> m_lights;
   std::vector<Object *> m_volumes;
   std::vector<Placement> m_placements;
+  std::vector<std::unique_ptr<PlacedLight>> m_placedLights;
   std::unique_ptr<rt::Scene> m_scene;
   // A world of one untransformed placement traces its group's scene
   // directly: no instance level, the most common case for simple scenes.

@@ -1,0 +1,204 @@
+// The path tracer against analytic answers: a white furnace (a sphere of
+// albedo 1 under uniform radiance L disappears), a Lambert plane under a
+// directional light (rho E / pi) and under a point light (inverse square).
+#include "AnalyticScene.h"
+
+#include <cmath>
+
+namespace {
+
+const float kEye[3] = {0, 0, 5};
+const float kDown[3] = {0, 0, -1};
+
+struct float3Mean
+{
+  float r{0}, g{0}, b{0};
+  int pixels{0};
+};
+
+class PathTracerTest : public AnalyticTest
+{
+ protected:
+  ANARIRenderer pathTracer(float ambientRadiance, const float background[4])
+  {
+    ANARIRenderer r = anariNewRenderer(m_device, "pathtracer");
+    anariSetParameter(
+        m_device, r, "background", ANARI_FLOAT32_VEC4, background);
+    anariSetParameter(
+        m_device, r, "ambientRadiance", ANARI_FLOAT32, &ambientRadiance);
+    const int32_t depth = 64;
+    anariSetParameter(m_device, r, "maxPathLength", ANARI_INT32, &depth);
+    anariCommitParameters(m_device, r);
+    return r;
+  }
+  // Mean color over the pixels whose depth is finite, accumulated.
+  float3Mean meanOverHits(
+      ANARIWorld w, ANARICamera c, ANARIRenderer r, uint32_t size, int frames)
+  {
+    ANARIFrame f = anariNewFrame(m_device);
+    const uint32_t extent[2] = {size, size};
+    const ANARIDataType color = ANARI_FLOAT32_VEC4, depth = ANARI_FLOAT32;
+    const uint8_t on = 1;
+    anariSetParameter(m_device, f, "world", ANARI_WORLD, &w);
+    anariSetParameter(m_device, f, "camera", ANARI_CAMERA, &c);
+    anariSetParameter(m_device, f, "renderer", ANARI_RENDERER, &r);
+    anariSetParameter(m_device, f, "size", ANARI_UINT32_VEC2, extent);
+    anariSetParameter(m_device, f, "channel.color", ANARI_DATA_TYPE, &color);
+    anariSetParameter(m_device, f, "channel.depth", ANARI_DATA_TYPE, &depth);
+    anariSetParameter(m_device, f, "accumulation", ANARI_BOOL, &on);
+    anariCommitParameters(m_device, f);
+    for (int i = 0; i < frames; i++)
+      anariRenderFrame(m_device, f);
+    anariFrameReady(m_device, f, ANARI_WAIT);
+    uint32_t width, height;
+    ANARIDataType type;
+    auto *p = (const float *)anariMapFrame(
+        m_device, f, "channel.color", &width, &height, &type);
+    auto *d = (const float *)anariMapFrame(
+        m_device, f, "channel.depth", &width, &height, &type);
+    float3Mean mean;
+    for (uint32_t i = 0; i < width * height; i++) {
+      if (!std::isfinite(d[i]))
+        continue;
+      mean.r += p[4 * i];
+      mean.g += p[4 * i + 1];
+      mean.b += p[4 * i + 2];
+      mean.pixels++;
+    }
+    if (mean.pixels) {
+      mean.r /= mean.pixels;
+      mean.g /= mean.pixels;
+      mean.b /= mean.pixels;
+    }
+    anariUnmapFrame(m_device, f, "channel.color");
+    anariUnmapFrame(m_device, f, "channel.depth");
+    anariRelease(m_device, f);
+    return mean;
+  }
+  ANARISurface plane(ANARIMaterial m)
+  {
+    return surface(
+        geometry("quad", {-50, -50, 0, 50, -50, 0, 50, 50, 0, -50, 50, 0}), m);
+  }
+  ANARIMaterial metal(float roughness)
+  {
+    ANARIMaterial m = anariNewMaterial(m_device, "physicallyBased");
+    const float white[3] = {1, 1, 1}, one = 1.f;
+    anariSetParameter(m_device, m, "baseColor", ANARI_FLOAT32_VEC3, white);
+    anariSetParameter(m_device, m, "metallic", ANARI_FLOAT32, &one);
+    anariSetParameter(m_device, m, "roughness", ANARI_FLOAT32, &roughness);
+    anariCommitParameters(m_device, m);
+    return m;
+  }
+};
+
+TEST_F(PathTracerTest, WhiteFurnaceMatteSphereDisappears)
+{
+  const float L = 0.7f, background[4] = {L, L, L, 1};
+  ANARIWorld w =
+      world({surface(geometry("sphere", {0, 0, 0}), matte(1, 1, 1))});
+  ANARICamera c = orthographic(kEye, kDown, 2.5f);
+  ANARIRenderer r = pathTracer(L, background);
+  const float3Mean mean = meanOverHits(w, c, r, 24, 16);
+  EXPECT_GT(mean.pixels, 200);
+  // A convex sphere: every bounced ray escapes to radiance L.
+  EXPECT_NEAR(mean.r, L, 0.01f * L);
+  EXPECT_NEAR(mean.g, L, 0.01f * L);
+  for (ANARIObject o : {(ANARIObject)w, (ANARIObject)c, (ANARIObject)r})
+    anariRelease(m_device, o);
+  EXPECT_TRUE(problems().empty());
+}
+
+TEST_F(PathTracerTest, GreySphereReflectsItsAlbedoOfTheFurnace)
+{
+  const float L = 0.7f, background[4] = {L, L, L, 1};
+  ANARIWorld w =
+      world({surface(geometry("sphere", {0, 0, 0}), matte(0.5f, 0.25f, 1.f))});
+  // A view inside the silhouette, so no pixel mixes in the background.
+  ANARICamera c = orthographic(kEye, kDown, 1.f);
+  ANARIRenderer r = pathTracer(L, background);
+  const float3Mean mean = meanOverHits(w, c, r, 24, 16);
+  EXPECT_NEAR(mean.r, 0.5f * L, 0.01f * L);
+  EXPECT_NEAR(mean.g, 0.25f * L, 0.01f * L);
+  EXPECT_NEAR(mean.b, L, 0.01f * L);
+  for (ANARIObject o : {(ANARIObject)w, (ANARIObject)c, (ANARIObject)r})
+    anariRelease(m_device, o);
+}
+
+TEST_F(PathTracerTest, WhiteFurnaceMetalSphereAtEveryRoughness)
+{
+  const float L = 0.5f, background[4] = {L, L, L, 1};
+  for (float roughness : {0.f, 0.25f, 0.5f, 1.f}) {
+    ANARIWorld w =
+        world({surface(geometry("sphere", {0, 0, 0}), metal(roughness))});
+    ANARICamera c = orthographic(kEye, kDown, 2.5f);
+    ANARIRenderer r = pathTracer(L, background);
+    const float3Mean mean = meanOverHits(w, c, r, 24, 32);
+    // Energy-compensated GGX: within 3% of L (Monte Carlo and fit error).
+    EXPECT_NEAR(mean.r, L, 0.03f * L) << "roughness " << roughness;
+    for (ANARIObject o : {(ANARIObject)w, (ANARIObject)c, (ANARIObject)r})
+      anariRelease(m_device, o);
+  }
+  EXPECT_TRUE(problems().empty());
+}
+
+TEST_F(PathTracerTest, LambertPlaneUnderADirectionalLight)
+{
+  const float black[4] = {0, 0, 0, 1};
+  const float rho = 0.6f, E = 2.f;
+  ANARILight light = anariNewLight(m_device, "directional");
+  const float direction[3] = {0, 0, -1};
+  anariSetParameter(
+      m_device, light, "direction", ANARI_FLOAT32_VEC3, direction);
+  anariSetParameter(m_device, light, "irradiance", ANARI_FLOAT32, &E);
+  anariCommitParameters(m_device, light);
+  ANARIWorld w = world({plane(matte(rho, rho, rho))});
+  setArray(w,
+      "light",
+      anariNewArray1D(m_device, &light, nullptr, nullptr, ANARI_LIGHT, 1));
+  anariRelease(m_device, light);
+  anariCommitParameters(m_device, w);
+  ANARICamera c = orthographic(kEye, kDown, 2.f);
+  ANARIRenderer r = pathTracer(0.f, black);
+  const float3Mean mean = meanOverHits(w, c, r, 8, 1);
+  // A delta light on a single plane: exact, no noise.
+  EXPECT_NEAR(mean.r, rho * E / float(M_PI), 1e-4f);
+  for (ANARIObject o : {(ANARIObject)w, (ANARIObject)c, (ANARIObject)r})
+    anariRelease(m_device, o);
+  EXPECT_TRUE(problems().empty());
+}
+
+TEST_F(PathTracerTest, PointLightFallsOffWithTheInverseSquare)
+{
+  const float black[4] = {0, 0, 0, 1};
+  const float rho = 1.f, I = 10.f;
+  float previous = 0.f;
+  for (float height : {1.f, 2.f, 4.f}) {
+    ANARILight light = anariNewLight(m_device, "point");
+    const float position[3] = {0, 0, height};
+    anariSetParameter(
+        m_device, light, "position", ANARI_FLOAT32_VEC3, position);
+    anariSetParameter(m_device, light, "intensity", ANARI_FLOAT32, &I);
+    anariCommitParameters(m_device, light);
+    ANARIWorld w = world({plane(matte(rho, rho, rho))});
+    setArray(w,
+        "light",
+        anariNewArray1D(m_device, &light, nullptr, nullptr, ANARI_LIGHT, 1));
+    anariRelease(m_device, light);
+    anariCommitParameters(m_device, w);
+    // One pixel right under the light (orthographic, tiny view).
+    ANARICamera c = orthographic(kEye, kDown, 1e-3f);
+    ANARIRenderer r = pathTracer(0.f, black);
+    const float3Mean mean = meanOverHits(w, c, r, 1, 1);
+    const float expected = rho * I / (float(M_PI) * height * height);
+    EXPECT_NEAR(mean.r, expected, 1e-3f * expected) << "height " << height;
+    if (previous > 0.f)
+      EXPECT_NEAR(previous / mean.r, 4.f, 1e-2f);
+    previous = mean.r;
+    for (ANARIObject o : {(ANARIObject)w, (ANARIObject)c, (ANARIObject)r})
+      anariRelease(m_device, o);
+  }
+  EXPECT_TRUE(problems().empty());
+}
+
+} // namespace
