@@ -3,6 +3,7 @@
 // directional light (rho E / pi) and under a point light (inverse square).
 #include "AnalyticScene.h"
 
+#include <array>
 #include <cmath>
 
 namespace {
@@ -198,6 +199,63 @@ TEST_F(PathTracerTest, PointLightFallsOffWithTheInverseSquare)
     for (ANARIObject o : {(ANARIObject)w, (ANARIObject)c, (ANARIObject)r})
       anariRelease(m_device, o);
   }
+  EXPECT_TRUE(problems().empty());
+}
+
+// Irradiance at the origin (normal +z) from a polygon of radiance L:
+// Lambert's formula, E = L / 2 * sum_i angle(v_i, v_i+1) * (n . unit(v_i x
+// v_i+1)).
+float polygonIrradiance(
+    const std::vector<std::array<float, 3>> &corners, float L)
+{
+  double sum = 0;
+  for (size_t i = 0; i < corners.size(); i++) {
+    auto a = corners[i], b = corners[(i + 1) % corners.size()];
+    const double la = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    const double lb = std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+    const double ax = a[0] / la, ay = a[1] / la, az = a[2] / la;
+    const double bx = b[0] / lb, by = b[1] / lb, bz = b[2] / lb;
+    const double angle = std::acos(ax * bx + ay * by + az * bz);
+    const double cx = ay * bz - az * by, cy = az * bx - ax * bz,
+                 cz = ax * by - ay * bx;
+    const double cl = std::sqrt(cx * cx + cy * cy + cz * cz);
+    sum += angle * cz / cl;
+  }
+  return float(std::abs(sum) * 0.5 * L);
+}
+
+TEST_F(PathTracerTest, QuadLightIrradianceIsThePolygonFormFactor)
+{
+  const float black[4] = {0, 0, 0, 1};
+  // A 1 x 2 light 1.5 above the plane, off-centre, emitting downwards.
+  const float corner[3] = {-0.3f, -0.8f, 1.5f}, edge1[3] = {1, 0, 0},
+              edge2[3] = {0, 2, 0}, L = 3.f;
+  ANARILight light = anariNewLight(m_device, "quad");
+  anariSetParameter(m_device, light, "position", ANARI_FLOAT32_VEC3, corner);
+  anariSetParameter(m_device, light, "edge1", ANARI_FLOAT32_VEC3, edge1);
+  anariSetParameter(m_device, light, "edge2", ANARI_FLOAT32_VEC3, edge2);
+  anariSetParameter(m_device, light, "radiance", ANARI_FLOAT32, &L);
+  anariCommitParameters(m_device, light);
+  ANARIWorld w = world({plane(matte(1, 1, 1))});
+  setArray(w,
+      "light",
+      anariNewArray1D(m_device, &light, nullptr, nullptr, ANARI_LIGHT, 1));
+  anariRelease(m_device, light);
+  anariCommitParameters(m_device, w);
+  // One pixel looking at the origin from below the light's height.
+  const float eye[3] = {0, 0, 1};
+  ANARICamera c = orthographic(eye, kDown, 1e-3f);
+  ANARIRenderer r = pathTracer(0.f, black);
+  const float3Mean mean = meanOverHits(w, c, r, 1, 4096);
+  const float E = polygonIrradiance({{-0.3f, -0.8f, 1.5f},
+                                        {0.7f, -0.8f, 1.5f},
+                                        {0.7f, 1.2f, 1.5f},
+                                        {-0.3f, 1.2f, 1.5f}},
+      L);
+  // Radiance of a white Lambert plane is E / pi; 4096 samples: ~1%.
+  EXPECT_NEAR(mean.r, E / float(M_PI), 0.02f * E / float(M_PI));
+  for (ANARIObject o : {(ANARIObject)w, (ANARIObject)c, (ANARIObject)r})
+    anariRelease(m_device, o);
   EXPECT_TRUE(problems().empty());
 }
 
