@@ -112,4 +112,51 @@ TEST_F(GeometryBadInput, CurveIndexWhoseSegmentLeavesTheVertices)
   EXPECT_TRUE(reportedError("refers to vertex 1"));
 }
 
+TEST_F(GeometryBadInput, NonInvertibleInstanceTransformIsSkipped)
+{
+  ANARIGroup group = anariNewGroup(m_device);
+  ANARISurface s = surface(geometry("sphere", {0, 0, 0}), matte(1, 1, 1));
+  setArray(group,
+      "surface",
+      anariNewArray1D(m_device, &s, nullptr, nullptr, ANARI_SURFACE, 1));
+  anariRelease(m_device, s);
+  anariCommitParameters(m_device, group);
+  ANARIInstance instance = anariNewInstance(m_device, "transform");
+  anariSetParameter(m_device, instance, "group", ANARI_GROUP, &group);
+  const float zeroScale[16] = {0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  anariSetParameter(
+      m_device, instance, "transform", ANARI_FLOAT32_MAT4, zeroScale);
+  anariCommitParameters(m_device, instance);
+  anariRelease(m_device, group);
+  ANARIWorld w = anariNewWorld(m_device);
+  setArray(w,
+      "instance",
+      anariNewArray1D(
+          m_device, &instance, nullptr, nullptr, ANARI_INSTANCE, 1));
+  anariRelease(m_device, instance);
+  anariCommitParameters(m_device, w);
+  ANARICamera c = orthographic(kEye, kDown, 4.f);
+  ANARIRenderer r = renderer("raycast");
+  RenderedImage image = render(w, c, r, 8, 8);
+  EXPECT_TRUE(std::isinf(image.depthAt(4, 4)));
+  auto messages = problems();
+  ASSERT_EQ(messages.size(), 1u);
+  EXPECT_NE(messages[0].text.find("not invertible"), std::string::npos);
+  for (ANARIObject o : {(ANARIObject)w, (ANARIObject)c, (ANARIObject)r})
+    anariRelease(m_device, o);
+}
+
+TEST_F(GeometryBadInput, CameraFarBeyondFloatRangeRendersNothing)
+{
+  ANARIWorld w =
+      world({surface(geometry("sphere", {0, 0, 0}), matte(1, 1, 1))});
+  const float far[3] = {1e30f, 0, 5};
+  ANARICamera c = orthographic(far, kDown, 4.f);
+  ANARIRenderer r = renderer("raycast");
+  RenderedImage image = render(w, c, r, 8, 8);
+  EXPECT_TRUE(std::isinf(image.depthAt(4, 4)));
+  for (ANARIObject o : {(ANARIObject)w, (ANARIObject)c, (ANARIObject)r})
+    anariRelease(m_device, o);
+}
+
 } // namespace

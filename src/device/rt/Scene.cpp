@@ -61,6 +61,22 @@ void userIntersect(const RTCIntersectFunctionNArguments *args)
   }
 }
 
+// Embree (built with assertions on Debian) aborts on rays it considers
+// invalid; such rays simply find nothing here.
+constexpr float kLargestCoordinate = 1.8e18f;
+
+bool usable(float v)
+{
+  return std::isfinite(v) && std::abs(v) <= kLargestCoordinate;
+}
+
+bool validRay(const float3 &o, const float3 &d, float tMin, float tMax)
+{
+  return usable(o.x) && usable(o.y) && usable(o.z) && usable(d.x) && usable(d.y)
+         && usable(d.z) && tMin >= 0.f && !std::isnan(tMax) && tMax >= tMin
+         && std::isfinite(tMin);
+}
+
 void attach(RTCScene scene, RTCGeometry geometry, uint32_t id)
 {
   rtcCommitGeometry(geometry);
@@ -260,7 +276,7 @@ bool Scene::intersect(const float3 &origin,
     Hit &hit) const
 {
   hit = Hit{};
-  if (!m_scene)
+  if (!m_scene || !validRay(origin, direction, tMin, tMax))
     return false;
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
@@ -312,8 +328,19 @@ void Scene::intersect(const RayPacket &packet, Hit hits[kPacketSize]) const
     rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
   }
   alignas(32) int valid[8];
-  for (int i = 0; i < 8; i++)
-    valid[i] = packet.active[i];
+  for (int i = 0; i < 8; i++) {
+    valid[i] =
+        packet.active[i]
+                && validRay(
+                    {packet.originX[i], packet.originY[i], packet.originZ[i]},
+                    {packet.directionX[i],
+                        packet.directionY[i],
+                        packet.directionZ[i]},
+                    packet.tMin[i],
+                    packet.tMax[i])
+            ? -1
+            : 0;
+  }
   rtcIntersect8(valid, m_scene, &context, &rh);
   for (int i = 0; i < 8; i++) {
     if (!valid[i] || rh.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID)

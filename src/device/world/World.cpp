@@ -4,6 +4,7 @@
 #include "../array/Array.h"
 #include "../light/Light.h"
 
+#include <cmath>
 #include <cstring>
 
 namespace prism {
@@ -88,11 +89,26 @@ void World::finalize()
                    const Instance *instance,
                    const mat3x4 &transform,
                    uint32_t id) {
+    const mat3x4 objectFromWorld = inverse(transform);
+    bool invertible = true;
+    for (const float3 &c : objectFromWorld.col)
+      invertible &=
+          std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z);
+    for (const float3 &c : transform.col)
+      invertible &=
+          std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z);
+    if (!invertible) {
+      instance->report(ANARI_SEVERITY_WARNING,
+          ANARI_STATUS_INVALID_ARGUMENT,
+          "a transform is not invertible (or not finite); that placement is "
+          "skipped");
+      return;
+    }
     const auto embreeId = uint32_t(m_placements.size());
     const bool identity =
         std::memcmp(&transform, &kIdentityMat3x4, sizeof(mat3x4)) == 0;
     m_placements.push_back(
-        {group, instance, transform, inverse(transform), id, identity});
+        {group, instance, transform, objectFromWorld, id, identity});
     m_scene->addInstance(embreeId, group->scene(), transform);
   };
   if (!isEmpty(m_implicitGroup->bounds()))

@@ -1,0 +1,50 @@
+// The built-in demo scenes, by name: shared by prism-render
+// (--scene demo:<name>), the CLI tests and the benchmarks. Each builds
+// through the public ANARI C API on any device.
+#pragma once
+
+#include "Scene.h"
+
+#include <anari/anari.h>
+
+#include <string>
+#include <vector>
+
+namespace prism::scenes {
+
+// Builders: each returns a committed world the caller releases.
+Scene buildCornellBox(ANARIDevice device);
+Scene buildRandomSpheres(ANARIDevice device);
+Scene buildMaterialBall(ANARIDevice device);
+Scene buildInstancedForest(ANARIDevice device);
+
+struct DemoScene
+{
+  const char *name;        // as in demo:<name>
+  const char *description; // one line
+  Scene (*build)(ANARIDevice device);
+};
+
+// Every demo scene, in a stable order.
+const std::vector<DemoScene> &demoScenes();
+// The demo called `name`, or nullptr.
+const DemoScene *findDemoScene(const std::string &name);
+
+// Adds a light of `subtype` to `lights` when the device has that subtype;
+// otherwise records in `scene.notes` that lights were left out. Returns the
+// uncommitted light (the caller sets parameters, commits and releases it),
+// or nullptr.
+ANARILight newLightIfSupported(ANARIDevice device,
+    const char *subtype,
+    Scene &scene,
+    std::vector<ANARIObject> &lights);
+
+// Sets the world's surfaces, instances and lights (empty lists are left
+// unset), commits it and stores it in `scene.world`; releases the handles.
+void finishWorld(ANARIDevice device,
+    Scene &scene,
+    std::vector<ANARIObject> surfaces,
+    std::vector<ANARIObject> instances,
+    std::vector<ANARIObject> lights);
+
+} // namespace prism::scenes

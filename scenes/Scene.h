@@ -1,0 +1,63 @@
+// A built scene: the committed world plus what its builder knows about how to
+// look at it. Demo scenes and the file loaders of prism-render return this.
+#pragma once
+
+#include <anari/anari.h>
+
+#include <array>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace prism::scenes {
+
+using Vec3 = std::array<float, 3>;
+using Vec4 = std::array<float, 4>;
+
+// A camera the scene suggests; positions in world space.
+struct SuggestedCamera
+{
+  bool valid{false};
+  Vec3 eye{0.f, 0.f, 1.f};
+  Vec3 at{0.f, 0.f, 0.f};
+  Vec3 up{0.f, 1.f, 0.f};
+  float fovyDegrees{45.f}; // perspective: vertical field of view
+  bool orthographic{false};
+  float height{1.f}; // orthographic: world-space height of the view
+};
+
+// An axis-aligned box in world space; empty (lower > upper) until extended.
+struct Bounds
+{
+  Vec3 lower{std::numeric_limits<float>::infinity(),
+      std::numeric_limits<float>::infinity(),
+      std::numeric_limits<float>::infinity()};
+  Vec3 upper{-std::numeric_limits<float>::infinity(),
+      -std::numeric_limits<float>::infinity(),
+      -std::numeric_limits<float>::infinity()};
+
+  bool empty() const;
+  void extend(const Vec3 &point);
+  void extend(const Bounds &other);
+};
+
+struct Scene
+{
+  // Committed; the caller owns this reference and releases it.
+  ANARIWorld world{nullptr};
+  std::string name;
+  std::string description;
+  SuggestedCamera camera;
+  // World-space bounds as the builder computed them, for devices that do
+  // not report the world's `bounds` property.
+  Bounds bounds;
+  // A background the scene looks right with; `hasBackground` false leaves
+  // the renderer's default.
+  bool hasBackground{false};
+  Vec4 background{0.f, 0.f, 0.f, 1.f};
+  // What the builder had to leave out on this device (e.g. lights), in
+  // lower case without trailing period, for the application to report.
+  std::vector<std::string> notes;
+};
+
+} // namespace prism::scenes

@@ -1,0 +1,185 @@
+// prism-render's pieces that need no device: the command line, --param value
+// parsing, camera framing and the progress line.
+#include "CameraFraming.h"
+#include "Options.h"
+#include "Progress.h"
+#include "RendererParameters.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+namespace {
+
+using namespace prism::render;
+
+ParseResult parse(std::vector<const char *> arguments)
+{
+  arguments.insert(arguments.begin(), "prism-render");
+  return parseOptions(int(arguments.size()), arguments.data());
+}
+
+TEST(Options, Defaults)
+{
+  const ParseResult r = parse({"demo:cornell-box"});
+  ASSERT_TRUE(r.ok()) << r.error;
+  EXPECT_EQ(r.options.scene, "demo:cornell-box");
+  EXPECT_EQ(r.options.width, 1024u);
+  EXPECT_EQ(r.options.height, 768u);
+  EXPECT_EQ(r.options.samplesPerPixel, 1u);
+  EXPECT_EQ(r.options.renderer, "default");
+  EXPECT_EQ(r.options.library, "prism");
+  EXPECT_TRUE(r.options.output.empty());
+}
+
+TEST(Options, EverySpelling)
+{
+  const ParseResult r = parse({"--scene=model.glb",
+      "-o",
+      "out.exr",
+      "--size",
+      "640x480",
+      "--spp=16",
+      "-r",
+      "debug",
+      "-p",
+      "mode=Ng",
+      "--eye",
+      "-1,2.5,3e1",
+      "--fovy",
+      "35",
+      "--library",
+      "recording",
+      "--threads",
+      "2",
+      "--raw-dims",
+      "4x5x6",
+      "--raw-type",
+      "UINT16"});
+  ASSERT_TRUE(r.ok()) << r.error;
+  const Options &o = r.options;
+  EXPECT_EQ(o.scene, "model.glb");
+  EXPECT_EQ(o.output, "out.exr");
+  EXPECT_EQ(o.width, 640u);
+  EXPECT_EQ(o.height, 480u);
+  EXPECT_EQ(o.samplesPerPixel, 16u);
+  EXPECT_EQ(o.renderer, "debug");
+  ASSERT_EQ(o.rendererParameters.size(), 1u);
+  EXPECT_EQ(o.rendererParameters[0].first, "mode");
+  EXPECT_EQ(o.rendererParameters[0].second, "Ng");
+  ASSERT_TRUE(o.eye.has_value());
+  EXPECT_FLOAT_EQ((*o.eye)[0], -1.f);
+  EXPECT_FLOAT_EQ((*o.eye)[2], 30.f);
+  EXPECT_FLOAT_EQ(o.fovyDegrees.value_or(0.f), 35.f);
+  EXPECT_EQ(o.library, "recording");
+  EXPECT_EQ(o.threads, 2u);
+  ASSERT_TRUE(o.rawDimensions.has_value());
+  EXPECT_EQ((*o.rawDimensions)[2], 6u);
+  EXPECT_EQ(o.rawType, "uint16");
+}
+
+TEST(Options, BadValuesNameTheOption)
+{
+  const std::vector<std::pair<std::vector<const char *>, const char *>> cases =
+      {{{"s.glb", "--size", "0x4"}, "--size"},
+          {{"s.glb", "--size", "4x"}, "--size"},
+          {{"s.glb", "--size", "70000x4"}, "--size"},
+          {{"s.glb", "--spp", "-1"}, "--spp"},
+          {{"s.glb", "--spp", "1.5"}, "--spp"},
+          {{"s.glb", "--eye", "1,2,nan"}, "--eye"},
+          {{"s.glb", "--up", "0,0,0"}, "--up"},
+          {{"s.glb", "--fovy", "0"}, "--fovy"},
+          {{"s.glb", "--background", "1,2"}, "--background"},
+          {{"s.glb", "--param", "=3"}, "--param"},
+          {{"s.glb", "--depth", "d.tif"}, "--depth"},
+          {{"s.glb", "--bench", "0"}, "--bench"},
+          {{"s.glb", "--threads", "x"}, "--threads"},
+          {{"s.glb", "--raw-dims", "4x4"}, "--raw-dims"},
+          {{"s.glb", "--quiet=yes"}, "--quiet"},
+          {{"s.glb", "--output"}, "--output"},
+          {{"s.glb", "--nope"}, "--nope"},
+          {{"a.glb", "b.glb"}, "more than one scene"},
+          {{"-o", "x.png"}, "no scene"}};
+  for (const auto &[arguments, fragment] : cases) {
+    const ParseResult r = parse(arguments);
+    EXPECT_FALSE(r.ok()) << fragment;
+    EXPECT_NE(r.error.find(fragment), std::string::npos)
+        << "'" << r.error << "' should name " << fragment;
+  }
+}
+
+TEST(Options, HelpAndListNeedNoScene)
+{
+  EXPECT_TRUE(parse({"--help"}).ok());
+  EXPECT_TRUE(parse({"--list-demos"}).ok());
+  EXPECT_NE(helpText().find("Examples"), std::string::npos);
+}
+
+TEST(ParameterValues, ParseByDeclaredType)
+{
+  std::vector<unsigned char> bytes;
+  ASSERT_TRUE(parseParameterValue(ANARI_FLOAT32_VEC3, "0.5,1,-2", bytes));
+  float v[3];
+  ASSERT_EQ(bytes.size(), sizeof(v));
+  std::memcpy(v, bytes.data(), sizeof(v));
+  EXPECT_FLOAT_EQ(v[0], 0.5f);
+  EXPECT_FLOAT_EQ(v[2], -2.f);
+
+  ASSERT_TRUE(parseParameterValue(ANARI_UINT32, "4000000000", bytes));
+  uint32_t u = 0;
+  std::memcpy(&u, bytes.data(), sizeof(u));
+  EXPECT_EQ(u, 4000000000u);
+  EXPECT_FALSE(parseParameterValue(ANARI_UINT32, "-1", bytes));
+  EXPECT_FALSE(parseParameterValue(ANARI_INT8, "200", bytes));
+  EXPECT_FALSE(parseParameterValue(ANARI_FLOAT32, "1,2", bytes));
+  EXPECT_FALSE(parseParameterValue(ANARI_FLOAT32, "1e40", bytes));
+  EXPECT_FALSE(parseParameterValue(ANARI_ARRAY2D, "1", bytes));
+
+  ASSERT_TRUE(parseParameterValue(ANARI_BOOL, "on", bytes));
+  EXPECT_EQ(bytes[0], 1);
+  EXPECT_FALSE(parseParameterValue(ANARI_BOOL, "maybe", bytes));
+  ASSERT_TRUE(parseParameterValue(ANARI_STRING, "Ng", bytes));
+  EXPECT_STREQ((const char *)bytes.data(), "Ng");
+}
+
+TEST(CameraFraming, FitsTheBoundsAndHonoursOverrides)
+{
+  prism::scenes::Bounds bounds;
+  bounds.extend(prism::scenes::Vec3{-1.f, -1.f, -1.f});
+  bounds.extend(prism::scenes::Vec3{1.f, 1.f, 1.f});
+  Options options;
+  const CameraSetup framed = frameCamera({}, bounds, 1.f, options);
+  EXPECT_TRUE(framed.framed);
+  EXPECT_FLOAT_EQ(framed.at[0], 0.f);
+  // The bounding sphere (radius sqrt 3) fits the 40 degree field of view.
+  const float distance =
+      std::sqrt(framed.eye[0] * framed.eye[0] + framed.eye[1] * framed.eye[1]
+                + framed.eye[2] * framed.eye[2]);
+  EXPECT_NEAR(
+      distance, std::sqrt(3.f) / std::sin(20.f * 3.14159265f / 180.f), 1e-3f);
+
+  prism::scenes::SuggestedCamera suggested;
+  suggested.valid = true;
+  suggested.eye = {0.f, 0.f, 5.f};
+  suggested.at = {0.f, 0.f, 0.f};
+  options.at = prism::scenes::Vec3{1.f, 0.f, 0.f};
+  const CameraSetup moved = frameCamera(suggested, bounds, 1.f, options);
+  EXPECT_FALSE(moved.framed);
+  // A new target keeps the direction: the eye moves with it.
+  EXPECT_FLOAT_EQ(moved.eye[0], 1.f);
+  EXPECT_FLOAT_EQ(moved.eye[2], 5.f);
+}
+
+TEST(Progress, Line)
+{
+  const std::string line = Progress::format(16, 64, "samples", 2.0, 10);
+  EXPECT_NE(line.find("16/64 samples"), std::string::npos) << line;
+  EXPECT_NE(line.find("[###.......]"), std::string::npos) << line;
+  EXPECT_NE(line.find("ETA 6.00 s"), std::string::npos) << line;
+  EXPECT_EQ(Progress::format(64, 64, "samples", 2.0, 10).find("ETA"),
+      std::string::npos);
+}
+
+} // namespace

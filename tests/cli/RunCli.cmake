@@ -1,0 +1,129 @@
+# Runs prism-render once and checks what came of it (cmake -P script; lists
+# use "|" so they survive add_test):
+#   TOOL            the prism-render executable
+#   ARGS            its arguments
+#   WORKDIR         where it runs (created; outputs land here)
+#   EXPECT_EXIT     0, 1, 2 or nonzero
+#   OR_SUCCEEDS     when set, exit status 0 with every EXISTS file written
+#                   also passes (for features a device may gain later);
+#                   otherwise the EXISTS files must be absent
+#   EXPECT_STDERR   regex stderr must match
+#   EXPECT_STDOUT   regex stdout must match
+#   EXISTS          files that must exist afterwards
+#   ABSENT          files that must not exist afterwards (no partial output)
+#   IMAGE_DIFF      the image-diff executable, with
+#   COMPARE         output|reference pairs, compared within
+#   DIFF_ARGS       extra image-diff arguments (e.g. --tolerance-rmse|1e-5)
+#   UPDATABLE       when set and PRISM_UPDATE_REFERENCES=1 is in the
+#                   environment, outputs replace their references instead
+# Every listed output is deleted first, so a stale file never passes.
+cmake_minimum_required(VERSION 3.25)
+
+function(split out text)
+  if(text)
+    string(REPLACE "|" ";" list "${text}")
+  else()
+    set(list "")
+  endif()
+  set(${out} "${list}" PARENT_SCOPE)
+endfunction()
+
+split(args "${ARGS}")
+split(exists "${EXISTS}")
+split(absent "${ABSENT}")
+split(compare "${COMPARE}")
+split(diffArgs "${DIFF_ARGS}")
+
+file(MAKE_DIRECTORY "${WORKDIR}")
+set(outputs ${exists} ${absent})
+list(LENGTH compare compareLength)
+if(compareLength GREATER 0)
+  math(EXPR last "${compareLength} - 1")
+  foreach(i RANGE 0 ${last} 2)
+    list(GET compare ${i} output)
+    list(APPEND outputs "${output}")
+  endforeach()
+endif()
+foreach(output IN LISTS outputs)
+  file(REMOVE "${WORKDIR}/${output}")
+endforeach()
+
+execute_process(COMMAND "${TOOL}" ${args}
+  WORKING_DIRECTORY "${WORKDIR}"
+  RESULT_VARIABLE status
+  OUTPUT_VARIABLE stdout
+  ERROR_VARIABLE stderr
+  TIMEOUT 300)
+message("$ prism-render ${args}\nexit status: ${status}\n"
+  "stdout:\n${stdout}\nstderr:\n${stderr}")
+
+set(succeeded FALSE)
+if(OR_SUCCEEDS AND status EQUAL 0)
+  set(succeeded TRUE)
+  foreach(file IN LISTS exists)
+    if(NOT EXISTS "${WORKDIR}/${file}")
+      message(FATAL_ERROR "exit status 0 but '${file}' was not written")
+    endif()
+  endforeach()
+  message("passed: the device now renders this")
+  return()
+elseif(OR_SUCCEEDS)
+  # The refusal path: nothing may have been written.
+  list(APPEND absent ${exists})
+  set(exists "")
+endif()
+
+if(EXPECT_EXIT STREQUAL "nonzero")
+  if(status EQUAL 0 OR NOT status MATCHES "^[0-9]+$")
+    message(FATAL_ERROR "expected a non-zero exit status, got '${status}'")
+  endif()
+elseif(NOT status STREQUAL EXPECT_EXIT)
+  message(FATAL_ERROR "expected exit status ${EXPECT_EXIT}, got '${status}'")
+endif()
+if(DEFINED EXPECT_STDERR AND NOT stderr MATCHES "${EXPECT_STDERR}")
+  message(FATAL_ERROR "stderr does not match '${EXPECT_STDERR}'")
+endif()
+if(DEFINED EXPECT_STDOUT AND NOT stdout MATCHES "${EXPECT_STDOUT}")
+  message(FATAL_ERROR "stdout does not match '${EXPECT_STDOUT}'")
+endif()
+foreach(file IN LISTS exists)
+  if(NOT EXISTS "${WORKDIR}/${file}")
+    message(FATAL_ERROR "'${file}' was not written")
+  endif()
+endforeach()
+foreach(file IN LISTS absent)
+  if(EXISTS "${WORKDIR}/${file}")
+    message(FATAL_ERROR "'${file}' was written, but must not be")
+  endif()
+endforeach()
+
+if(compareLength GREATER 0)
+  foreach(i RANGE 0 ${last} 2)
+    math(EXPR j "${i} + 1")
+    list(GET compare ${i} output)
+    list(GET compare ${j} reference)
+    if(NOT EXISTS "${WORKDIR}/${output}")
+      message(FATAL_ERROR "'${output}' was not written")
+    endif()
+    if(UPDATABLE AND "$ENV{PRISM_UPDATE_REFERENCES}" STREQUAL "1")
+      file(COPY_FILE "${WORKDIR}/${output}" "${reference}")
+      message("updated ${reference}")
+      continue()
+    endif()
+    if(NOT EXISTS "${reference}")
+      message(FATAL_ERROR "no reference '${reference}'; create it with "
+        "PRISM_UPDATE_REFERENCES=1 ctest -L cli, then look at it")
+    endif()
+    get_filename_component(stem "${output}" NAME_WE)
+    execute_process(COMMAND "${IMAGE_DIFF}" "${WORKDIR}/${output}"
+        "${reference}" ${diffArgs} --diff "${WORKDIR}/${stem}.diff.png"
+      RESULT_VARIABLE diffStatus
+      OUTPUT_VARIABLE diffOut
+      ERROR_VARIABLE diffErr)
+    message("image-diff ${output} ${reference}:\n${diffOut}${diffErr}")
+    if(NOT diffStatus EQUAL 0)
+      message(FATAL_ERROR "'${output}' differs from '${reference}' "
+        "(see ${WORKDIR}/${stem}.diff.png)")
+    endif()
+  endforeach()
+endif()

@@ -1,0 +1,30 @@
+// Where the camera goes: the command line's --eye/--at/--up/--fovy over the
+// scene's own camera, over a view framed to the world bounds.
+#pragma once
+
+#include "Options.h"
+#include "Scene.h"
+
+namespace prism::render {
+
+struct CameraSetup
+{
+  scenes::Vec3 eye{0.f, 0.f, 1.f};
+  scenes::Vec3 at{0.f, 0.f, 0.f};
+  scenes::Vec3 up{0.f, 1.f, 0.f};
+  float fovyDegrees{45.f};
+  bool orthographic{false};
+  float height{1.f};  // orthographic view height, world units
+  bool framed{false}; // true when placed from the bounds
+};
+
+// The camera for an image of `aspect` (width / height). Without a scene
+// camera the view looks at the center of `bounds` from the front (+z),
+// slightly from above and the right, far enough back that the bounding
+// sphere fits both fields of view. Empty bounds frame the unit cube.
+CameraSetup frameCamera(const scenes::SuggestedCamera &suggested,
+    const scenes::Bounds &bounds,
+    float aspect,
+    const Options &options);
+
+} // namespace prism::render

@@ -1,0 +1,32 @@
+// glTF 2.0 (.gltf, .glb; via tinygltf) to an ANARI world:
+// - each mesh becomes one group (one surface per triangle primitive), and
+//   every node using the mesh places that shared group: one `transform`
+//   instance with an array of matrices when the device has
+//   KHR_INSTANCE_TRANSFORM_ARRAY, one instance per node otherwise;
+// - materials become `physicallyBased` with the spec's glTF mapping:
+//   factors scale textures through the samplers' outTransform, channels are
+//   swizzled the same way (roughness G, metallic B, occlusion R, ...),
+//   KHR_texture_transform becomes inTransform/inOffset, and the
+//   KHR_materials_* extensions map onto their parameters;
+// - cameras and KHR_lights_punctual come out in world space.
+// Every accessor is bounds-checked: a corrupt file is an error, never a
+// crash.
+#pragma once
+
+#include "LoadResult.h"
+
+#include <anari/anari.h>
+
+#include <string>
+
+namespace prism::render {
+
+struct GltfOptions
+{
+  int cameraIndex{-1}; // glTF camera to view through; -1: the first found
+};
+
+LoadResult loadGltf(
+    ANARIDevice device, const std::string &path, const GltfOptions &options);
+
+} // namespace prism::render

@@ -1,0 +1,525 @@
+#include "Options.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+
+namespace prism::render {
+namespace {
+
+std::string lowerCase(std::string text)
+{
+  for (char &c : text)
+    c = char(std::tolower((unsigned char)c));
+  return text;
+}
+
+// A whole decimal number in [minimum, maximum]; no sign games, no suffixes.
+bool parseUnsigned(
+    const std::string &text, uint64_t minimum, uint64_t maximum, uint64_t &out)
+{
+  if (text.empty() || !std::isdigit((unsigned char)text[0]))
+    return false;
+  errno = 0;
+  char *end = nullptr;
+  const unsigned long long value = std::strtoull(text.c_str(), &end, 10);
+  if (errno != 0 || *end != '\0' || value < minimum || value > maximum)
+    return false;
+  out = value;
+  return true;
+}
+
+bool parseUint32(const std::string &text, uint32_t minimum, uint32_t &out)
+{
+  uint64_t value = 0;
+  if (!parseUnsigned(text, minimum, 0xffffffffull, value))
+    return false;
+  out = uint32_t(value);
+  return true;
+}
+
+// "WxH" or "W,H" or "WxHxD": `count` positive integers up to `maximum`.
+bool parseExtent(
+    const std::string &text, int count, uint64_t maximum, uint64_t *values)
+{
+  std::string rest = lowerCase(text);
+  std::replace(rest.begin(), rest.end(), ',', 'x');
+  for (int i = 0; i < count; i++) {
+    const size_t separator = rest.find('x');
+    const bool last = i + 1 == count;
+    if (last != (separator == std::string::npos))
+      return false;
+    if (!parseUnsigned(rest.substr(0, separator), 1, maximum, values[i]))
+      return false;
+    rest = last ? std::string() : rest.substr(separator + 1);
+  }
+  return true;
+}
+
+// One command-line option: its spellings, whether it takes a value and
+// what it does with it (returning an error message, or empty).
+struct OptionSpec
+{
+  const char *shortName; // may be nullptr
+  const char *longName;
+  bool takesValue;
+  std::function<std::string(Options &, const std::string &)> apply;
+};
+
+std::string expected(
+    const std::string &option, const char *what, const std::string &value)
+{
+  return option + ": expected " + what + ", got '" + value + "'";
+}
+
+std::vector<OptionSpec> optionSpecs()
+{
+  // Pixel and sample counts are capped where a typo would otherwise ask
+  // for terabytes (64k x 64k pixels, a million samples).
+  constexpr uint64_t kMaxImageSide = 65536;
+  return {
+      {"-o",
+          "--output",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            if (!isImagePath(v))
+              return "--output: cannot write '" + v
+                     + "': the name must end in .png, .exr or .pfm";
+            o.output = v;
+            return {};
+          }},
+      {nullptr,
+          "--scene",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            if (!o.scene.empty())
+              return "--scene: a scene was already given ('" + o.scene + "')";
+            o.scene = v;
+            return {};
+          }},
+      {nullptr,
+          "--size",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            uint64_t extent[2];
+            if (!parseExtent(v, 2, kMaxImageSide, extent))
+              return expected("--size",
+                  "WIDTHxHEIGHT, each from 1 to 65536 (e.g. 1024x768)",
+                  v);
+            o.width = uint32_t(extent[0]);
+            o.height = uint32_t(extent[1]);
+            return {};
+          }},
+      {nullptr,
+          "--spp",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            uint64_t n = 0;
+            if (!parseUnsigned(v, 1, 1000000, n))
+              return expected("--spp", "a sample count from 1 to 1000000", v);
+            o.samplesPerPixel = uint32_t(n);
+            return {};
+          }},
+      {"-r",
+          "--renderer",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            if (v.empty())
+              return "--renderer: expected a renderer subtype";
+            o.renderer = v;
+            return {};
+          }},
+      {"-p",
+          "--param",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            const size_t equals = v.find('=');
+            if (equals == std::string::npos || equals == 0)
+              return expected("--param", "NAME=VALUE", v);
+            o.rendererParameters.emplace_back(
+                v.substr(0, equals), v.substr(equals + 1));
+            return {};
+          }},
+      {nullptr,
+          "--eye",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            Vec3 p;
+            if (!parseFloats(v, p.data(), 3))
+              return expected("--eye", "three numbers x,y,z", v);
+            o.eye = p;
+            return {};
+          }},
+      {nullptr,
+          "--at",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            Vec3 p;
+            if (!parseFloats(v, p.data(), 3))
+              return expected("--at", "three numbers x,y,z", v);
+            o.at = p;
+            return {};
+          }},
+      {nullptr,
+          "--up",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            Vec3 p;
+            if (!parseFloats(v, p.data(), 3)
+                || (p[0] == 0.f && p[1] == 0.f && p[2] == 0.f))
+              return expected("--up", "a non-zero direction x,y,z", v);
+            o.up = p;
+            return {};
+          }},
+      {nullptr,
+          "--fovy",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            float f = 0.f;
+            if (!parseFloats(v, &f, 1) || !(f > 0.f && f < 180.f))
+              return expected(
+                  "--fovy", "an angle in degrees between 0 and 180", v);
+            o.fovyDegrees = f;
+            return {};
+          }},
+      {nullptr,
+          "--camera",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            uint32_t index = 0;
+            if (!parseUint32(v, 0, index) || index > 1000000)
+              return expected("--camera", "a glTF camera index (0, 1, ...)", v);
+            o.cameraIndex = int(index);
+            return {};
+          }},
+      {nullptr,
+          "--background",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            std::array<float, 4> c{0.f, 0.f, 0.f, 1.f};
+            if (!parseFloats(v, c.data(), 4) && !parseFloats(v, c.data(), 3))
+              return expected("--background", "r,g,b or r,g,b,a", v);
+            o.background = c;
+            return {};
+          }},
+      {nullptr,
+          "--depth",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            if (!isImagePath(v))
+              return "--depth: cannot write '" + v
+                     + "': the name must end in .png, .exr or .pfm";
+            o.depthPath = v;
+            return {};
+          }},
+      {nullptr,
+          "--normal",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            if (!isImagePath(v))
+              return "--normal: cannot write '" + v
+                     + "': the name must end in .png, .exr or .pfm";
+            o.normalPath = v;
+            return {};
+          }},
+      {nullptr,
+          "--albedo",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            if (!isImagePath(v))
+              return "--albedo: cannot write '" + v
+                     + "': the name must end in .png, .exr or .pfm";
+            o.albedoPath = v;
+            return {};
+          }},
+      {nullptr,
+          "--ids",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            if (v.empty())
+              return "--ids: expected a file name prefix";
+            o.idsPrefix = v;
+            return {};
+          }},
+      {nullptr,
+          "--denoise",
+          false,
+          [](Options &o, const std::string &) -> std::string {
+            o.denoise = true;
+            return {};
+          }},
+      {"-l",
+          "--library",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            if (v.empty())
+              return "--library: expected an ANARI library name";
+            o.library = v;
+            return {};
+          }},
+      {"-d",
+          "--device",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            if (v.empty())
+              return "--device: expected a device subtype";
+            o.deviceSubtype = v;
+            return {};
+          }},
+      {nullptr,
+          "--bench",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            uint64_t n = 0;
+            if (!parseUnsigned(v, 1, 100000, n))
+              return expected("--bench", "a frame count from 1 to 100000", v);
+            o.benchFrames = uint32_t(n);
+            return {};
+          }},
+      {"-t",
+          "--threads",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            uint64_t n = 0;
+            if (!parseUnsigned(v, 1, 4096, n))
+              return expected("--threads", "a thread count from 1 to 4096", v);
+            o.threads = uint32_t(n);
+            return {};
+          }},
+      {nullptr,
+          "--raw-dims",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            std::array<uint64_t, 3> d{};
+            if (!parseExtent(v, 3, 1u << 20, d.data()))
+              return expected(
+                  "--raw-dims", "XxYxZ voxel counts (e.g. 64x64x64)", v);
+            o.rawDimensions = d;
+            return {};
+          }},
+      {nullptr,
+          "--raw-type",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            const std::string t = lowerCase(v);
+            static const char *kTypes[] = {
+                "uint8", "int16", "uint16", "float32", "float64"};
+            for (const char *known : kTypes)
+              if (t == known) {
+                o.rawType = t;
+                return {};
+              }
+            return expected("--raw-type",
+                "one of uint8, int16, uint16, float32, float64",
+                v);
+          }},
+      {nullptr,
+          "--raw-spacing",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            Vec3 s;
+            if (!parseFloats(v, s.data(), 3) || s[0] <= 0.f || s[1] <= 0.f
+                || s[2] <= 0.f)
+              return expected(
+                  "--raw-spacing", "three positive numbers x,y,z", v);
+            o.rawSpacing = s;
+            return {};
+          }},
+      {"-q",
+          "--quiet",
+          false,
+          [](Options &o, const std::string &) -> std::string {
+            o.quiet = true;
+            return {};
+          }},
+      {"-v",
+          "--verbose",
+          false,
+          [](Options &o, const std::string &) -> std::string {
+            o.verbose = true;
+            return {};
+          }},
+      {"-h",
+          "--help",
+          false,
+          [](Options &o, const std::string &) -> std::string {
+            o.help = true;
+            return {};
+          }},
+      {nullptr,
+          "--list-demos",
+          false,
+          [](Options &o, const std::string &) -> std::string {
+            o.listDemos = true;
+            return {};
+          }},
+  };
+}
+
+} // namespace
+
+bool parseFloats(const std::string &text, float *values, int count)
+{
+  size_t start = 0;
+  for (int i = 0; i < count; i++) {
+    const size_t comma = text.find(',', start);
+    const bool last = i + 1 == count;
+    if (last != (comma == std::string::npos))
+      return false;
+    const std::string item =
+        text.substr(start, last ? std::string::npos : comma - start);
+    if (item.empty())
+      return false;
+    errno = 0;
+    char *end = nullptr;
+    const float value = std::strtof(item.c_str(), &end);
+    if (errno != 0 || *end != '\0' || !std::isfinite(value))
+      return false;
+    values[i] = value;
+    start = comma + 1;
+  }
+  return true;
+}
+
+bool isImagePath(const std::string &path)
+{
+  const std::string lower = lowerCase(path);
+  for (const char *extension : {".png", ".exr", ".pfm"}) {
+    const std::string e = extension;
+    if (lower.size() > e.size()
+        && lower.compare(lower.size() - e.size(), e.size(), e) == 0)
+      return true;
+  }
+  return false;
+}
+
+ParseResult parseOptions(int argc, const char *const *argv)
+{
+  ParseResult result;
+  Options &options = result.options;
+  const std::vector<OptionSpec> specs = optionSpecs();
+  bool onlyPositional = false;
+  for (int i = 1; i < argc; i++) {
+    const std::string argument = argv[i];
+    if (onlyPositional || argument.empty() || argument[0] != '-'
+        || argument == "-") {
+      if (!options.scene.empty()) {
+        result.error = "more than one scene given ('" + options.scene
+                       + "' and '" + argument + "')";
+        return result;
+      }
+      options.scene = argument;
+      continue;
+    }
+    if (argument == "--") {
+      onlyPositional = true;
+      continue;
+    }
+    // "--name=value" carries its value; otherwise it is the next argument.
+    std::string name = argument;
+    std::optional<std::string> value;
+    const size_t equals = argument.find('=');
+    if (argument.starts_with("--") && equals != std::string::npos) {
+      name = argument.substr(0, equals);
+      value = argument.substr(equals + 1);
+    }
+    auto spec = std::find_if(specs.begin(), specs.end(), [&](const auto &s) {
+      return name == s.longName || (s.shortName && name == s.shortName);
+    });
+    if (spec == specs.end()) {
+      result.error = "unknown option '" + name + "'";
+      return result;
+    }
+    if (!spec->takesValue && value) {
+      result.error = name + " takes no value";
+      return result;
+    }
+    if (spec->takesValue && !value) {
+      if (i + 1 >= argc) {
+        result.error = name + ": missing value";
+        return result;
+      }
+      value = argv[++i];
+    }
+    result.error = spec->apply(options, value.value_or(""));
+    if (!result.error.empty())
+      return result;
+  }
+  if (options.scene.empty() && !options.help && !options.listDemos)
+    result.error = "no scene given (a file, or demo:<name>; see --list-demos)";
+  if (options.verbose && options.quiet)
+    result.error = "--quiet and --verbose cannot be combined";
+  return result;
+}
+
+std::string helpText()
+{
+  return R"(usage: prism-render SCENE [options]
+
+Renders SCENE with an ANARI device (by default the prism device) and writes
+the image. SCENE is a glTF 2.0 file (.gltf, .glb), an OBJ file (.obj, with
+its .mtl), a raw volume grid (.raw, see --raw-dims) or demo:<name>.
+
+Output
+  -o, --output FILE      image to write: .png (8-bit sRGB), .exr or .pfm
+                         (float); default <scene name>.png
+  --size WxH             image size in pixels (default 1024x768)
+  --spp N                samples per pixel, as N accumulated frames
+  --depth FILE           also write the depth channel (distance to the camera;
+                         PNG: normalised, near is bright; EXR/PFM: the
+                         distances, 0 where nothing was hit)
+  --normal FILE          also write the normal channel (PNG: n * 0.5 + 0.5)
+  --albedo FILE          also write the albedo channel
+  --ids PREFIX           also write PREFIX.primitiveId.png, .objectId.png and
+                         .instanceId.png, one false color per id
+  --denoise              ask the renderer to denoise (KHR_RENDERER_DENOISE)
+
+Rendering
+  -r, --renderer SUBTYPE renderer subtype (default "default")
+  -p, --param NAME=VALUE set a renderer parameter, typed by the device's
+                         introspection: 0.5, 1,2,3, true, text
+  --background R,G,B[,A] background color (linear)
+  -l, --library NAME     ANARI library to load (default prism): loads
+                         libanari_library_NAME.so
+  -d, --device SUBTYPE   device subtype (default "default")
+  -t, --threads N        limit the device to N threads (TBB-based devices
+                         and devices with a numThreads parameter)
+
+Camera (default: the scene's camera, or framed to the world bounds)
+  --eye X,Y,Z            camera position
+  --at X,Y,Z             point looked at
+  --up X,Y,Z             up direction
+  --fovy DEGREES         vertical field of view
+  --camera N             use glTF camera N instead of the first one
+
+Raw volumes
+  --raw-dims XxYxZ       voxel counts (else taken from a name like
+                         skull_256x256x256_uint8.raw)
+  --raw-type TYPE        uint8, int16, uint16, float32 or float64
+  --raw-spacing X,Y,Z    voxel size (default 1,1,1)
+
+Other
+  --bench N              render N frames and print min/median/max frame time
+  --list-demos           list the built-in demo scenes
+  -q, --quiet            no progress bar, no summary
+  -v, --verbose          also show the device's informational messages
+  -h, --help             this text
+
+Examples
+  prism-render demo:cornell-box -o cornell.png
+  prism-render model.glb --size 1920x1080 --spp 64 -o model.exr
+  prism-render model.gltf --renderer debug --param mode=Ng -o normals.png
+  prism-render bunny.obj --eye 0,0.1,0.3 --at 0,0.1,0 --depth depth.pfm
+  prism-render skull_256x256x256_uint8.raw -o skull.png
+  prism-render demo:instanced-forest --bench 20 -q
+  prism-render demo:random-spheres --library helide -o helide.png
+
+Exit status: 0 on success, 1 when the scene, device or output fails,
+2 on a bad command line.
+)";
+}
+
+} // namespace prism::render
