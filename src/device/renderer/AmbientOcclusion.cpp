@@ -37,7 +37,7 @@ void AmbientOcclusion::commitParameters()
   }
 }
 
-PixelSample AmbientOcclusion::shade(const RenderContext &context,
+PixelSample AmbientOcclusion::shadeSample(const RenderContext &context,
     const Ray &ray,
     const rt::Hit &hit,
     uint32_t x,
@@ -78,27 +78,6 @@ PixelSample AmbientOcclusion::shade(const RenderContext &context,
   sample.objectId = surface.surface->id();
   sample.instanceId = surface.placement->instanceId;
   return sample;
-}
-
-void AmbientOcclusion::renderTile(const RenderContext &context,
-    const Tile &tile,
-    FrameBuffers &buffers,
-    const std::atomic<bool> &cancel) const
-{
-  Ray rays[rt::kPacketSize];
-  rt::Hit hits[rt::kPacketSize];
-  for (uint32_t y = tile.y0; y < tile.y1 && !cancel; y++) {
-    for (uint32_t x = tile.x0; x < tile.x1; x += rt::kPacketSize) {
-      const int count = int(std::min<uint32_t>(rt::kPacketSize, tile.x1 - x));
-      tracePrimary(context, x, y, count, rays, hits);
-      for (int i = 0; i < count; i++)
-        store(context,
-            buffers,
-            x + i,
-            y,
-            shade(context, rays[i], hits[i], x + i, y));
-    }
-  }
 }
 
 } // namespace prism

@@ -12,10 +12,6 @@ class AmbientOcclusion : public Renderer
  public:
   explicit AmbientOcclusion(Device &device) : Renderer(device, "ao") {}
 
-  void renderTile(const RenderContext &context,
-      const Tile &tile,
-      FrameBuffers &buffers,
-      const std::atomic<bool> &cancel) const override;
   uint32_t convergedSampleCount() const override
   {
     return std::max(1u, 256u / m_samples); // ~256 rays per pixel
@@ -23,14 +19,13 @@ class AmbientOcclusion : public Renderer
 
  protected:
   void commitParameters() override;
-
- private:
-  PixelSample shade(const RenderContext &context,
+  PixelSample shadeSample(const RenderContext &context,
       const Ray &ray,
       const rt::Hit &hit,
       uint32_t x,
-      uint32_t y) const;
+      uint32_t y) const override;
 
+ private:
   uint32_t m_samples{1};
   float m_distance{1e20f};
 };

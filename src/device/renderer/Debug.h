@@ -29,21 +29,15 @@ class Debug : public Renderer
 
   explicit Debug(Device &device) : Renderer(device, "debug") {}
 
-  void renderTile(const RenderContext &context,
-      const Tile &tile,
-      FrameBuffers &buffers,
-      const std::atomic<bool> &cancel) const override;
-
  protected:
   void commitParameters() override;
-
- private:
-  PixelSample shade(const RenderContext &context,
+  PixelSample shadeSample(const RenderContext &context,
       const Ray &ray,
       const rt::Hit &hit,
       uint32_t x,
-      uint32_t y) const;
+      uint32_t y) const override;
 
+ private:
   Mode m_mode{Mode::ShadingNormal};
   Attribute m_attribute{Attribute::Color};
 };

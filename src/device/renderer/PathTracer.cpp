@@ -107,12 +107,14 @@ float3 PathTracer::lightsAlong(const RenderContext &context,
   return sum;
 }
 
-PixelSample PathTracer::tracePath(const RenderContext &context,
-    Ray ray,
-    rt::Hit hit,
+PixelSample PathTracer::shadeSample(const RenderContext &context,
+    const Ray &primaryRay,
+    const rt::Hit &primaryHit,
     uint32_t x,
     uint32_t y) const
 {
+  Ray ray = primaryRay;
+  rt::Hit hit = primaryHit;
   PixelSample sample;
   const uint32_t n = context.sampleIndex;
   const auto &lights = context.world->lights();
@@ -252,27 +254,6 @@ PixelSample PathTracer::tracePath(const RenderContext &context,
   }
   sample.color = float4{radiance.x, radiance.y, radiance.z, 1.f};
   return sample;
-}
-
-void PathTracer::renderTile(const RenderContext &context,
-    const Tile &tile,
-    FrameBuffers &buffers,
-    const std::atomic<bool> &cancel) const
-{
-  Ray rays[rt::kPacketSize];
-  rt::Hit hits[rt::kPacketSize];
-  for (uint32_t y = tile.y0; y < tile.y1 && !cancel; y++) {
-    for (uint32_t x = tile.x0; x < tile.x1; x += rt::kPacketSize) {
-      const int count = int(std::min<uint32_t>(rt::kPacketSize, tile.x1 - x));
-      tracePrimary(context, x, y, count, rays, hits);
-      for (int i = 0; i < count; i++)
-        store(context,
-            buffers,
-            x + i,
-            y,
-            tracePath(context, rays[i], hits[i], x + i, y));
-    }
-  }
 }
 
 } // namespace prism

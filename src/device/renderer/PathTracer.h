@@ -22,10 +22,6 @@ class PathTracer : public Renderer
       : Renderer(device, subtype)
   {}
 
-  void renderTile(const RenderContext &context,
-      const Tile &tile,
-      FrameBuffers &buffers,
-      const std::atomic<bool> &cancel) const override;
   uint32_t convergedSampleCount() const override
   {
     return 256;
@@ -33,13 +29,13 @@ class PathTracer : public Renderer
 
  protected:
   void commitParameters() override;
+  PixelSample shadeSample(const RenderContext &context,
+      const Ray &ray,
+      const rt::Hit &hit,
+      uint32_t x,
+      uint32_t y) const override;
 
  private:
-  PixelSample tracePath(const RenderContext &context,
-      Ray ray,
-      rt::Hit hit,
-      uint32_t x,
-      uint32_t y) const;
   // Radiance arriving along a ray that escapes the scene (or reaches a
   // light before `hitDistance`), weighted against light sampling.
   float3 lightsAlong(const RenderContext &context,

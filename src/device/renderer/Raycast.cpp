@@ -18,12 +18,13 @@ void Raycast::commitParameters()
       read<float>("eyeLightBlendRatio", ANARI_FLOAT32, 0.5f), 0.f, 1.f);
 }
 
-PixelSample Raycast::shade(const RenderContext &context,
+PixelSample Raycast::shadeSample(const RenderContext &context,
     const Ray &ray,
-    rt::Hit hit,
+    const rt::Hit &firstHit,
     uint32_t x,
     uint32_t y) const
 {
+  rt::Hit hit = firstHit;
   PixelSample sample;
   float3 color{0, 0, 0};
   float alpha = 0.f;
@@ -66,27 +67,6 @@ PixelSample Raycast::shade(const RenderContext &context,
       color.z + rest * background.z,
       alpha + rest * background.w};
   return sample;
-}
-
-void Raycast::renderTile(const RenderContext &context,
-    const Tile &tile,
-    FrameBuffers &buffers,
-    const std::atomic<bool> &cancel) const
-{
-  Ray rays[rt::kPacketSize];
-  rt::Hit hits[rt::kPacketSize];
-  for (uint32_t y = tile.y0; y < tile.y1 && !cancel; y++) {
-    for (uint32_t x = tile.x0; x < tile.x1; x += rt::kPacketSize) {
-      const int count = int(std::min<uint32_t>(rt::kPacketSize, tile.x1 - x));
-      tracePrimary(context, x, y, count, rays, hits);
-      for (int i = 0; i < count; i++)
-        store(context,
-            buffers,
-            x + i,
-            y,
-            shade(context, rays[i], hits[i], x + i, y));
-    }
-  }
 }
 
 } // namespace prism

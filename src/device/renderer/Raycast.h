@@ -14,21 +14,15 @@ class Raycast : public Renderer
       : Renderer(device, subtype)
   {}
 
-  void renderTile(const RenderContext &context,
-      const Tile &tile,
-      FrameBuffers &buffers,
-      const std::atomic<bool> &cancel) const override;
-
  protected:
   void commitParameters() override;
+  PixelSample shadeSample(const RenderContext &context,
+      const Ray &ray,
+      const rt::Hit &hit,
+      uint32_t x,
+      uint32_t y) const override;
 
  private:
-  PixelSample shade(const RenderContext &context,
-      const Ray &ray,
-      rt::Hit hit,
-      uint32_t x,
-      uint32_t y) const;
-
   float m_eyeLightBlendRatio{0.5f};
 };
 

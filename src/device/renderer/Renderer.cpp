@@ -89,12 +89,32 @@ void Renderer::renderTile(const RenderContext &context,
     FrameBuffers &buffers,
     const std::atomic<bool> &cancel) const
 {
+  Ray rays[rt::kPacketSize];
+  rt::Hit hits[rt::kPacketSize];
   for (uint32_t y = tile.y0; y < tile.y1 && !cancel; y++) {
-    for (uint32_t x = tile.x0; x < tile.x1; x++) {
-      const size_t i = size_t(y) * context.width + x;
-      buffers.color[i] = background(x, y, context.width, context.height);
+    for (uint32_t x = tile.x0; x < tile.x1; x += rt::kPacketSize) {
+      const int count = int(std::min<uint32_t>(rt::kPacketSize, tile.x1 - x));
+      tracePrimary(context, x, y, count, rays, hits);
+      for (int i = 0; i < count; i++) {
+        store(context,
+            buffers,
+            x + i,
+            y,
+            shadeSample(context, rays[i], hits[i], x + i, y));
+      }
     }
   }
+}
+
+PixelSample Renderer::shadeSample(const RenderContext &context,
+    const Ray &,
+    const rt::Hit &,
+    uint32_t x,
+    uint32_t y) const
+{
+  PixelSample sample;
+  sample.color = background(x, y, context.width, context.height);
+  return sample;
 }
 
 void Renderer::tracePrimary(const RenderContext &context,

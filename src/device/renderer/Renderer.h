@@ -35,8 +35,9 @@ class Renderer : public Object
 
   // Called once per frame before any tile.
   virtual void beginFrame(const RenderContext &context) {}
-  // Renders the pixels of `tile`; returns early once `cancel` is set.
-  virtual void renderTile(const RenderContext &context,
+  // Renders the pixels of `tile`, row by row in packets of primary rays,
+  // each pixel shaded by shadeSample(); returns early once `cancel` is set.
+  void renderTile(const RenderContext &context,
       const Tile &tile,
       FrameBuffers &buffers,
       const std::atomic<bool> &cancel) const;
@@ -60,6 +61,13 @@ class Renderer : public Object
 
  protected:
   void commitParameters() override;
+  // One pixel's sample from its primary ray and what that ray hit; by
+  // default the background.
+  virtual PixelSample shadeSample(const RenderContext &context,
+      const Ray &ray,
+      const rt::Hit &hit,
+      uint32_t x,
+      uint32_t y) const;
   // Traces the camera rays through `count` (<= rt::kPacketSize) pixels of
   // row y starting at x0 together, as one coherent packet.
   void tracePrimary(const RenderContext &context,
