@@ -21,12 +21,14 @@ if [ "${PRISM_SKIP_SANITIZERS:-0}" != 1 ]; then
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
   PRISM_BUILD_DIR="$root/build-asan" "$root/scripts/build.sh" \
     -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPRISM_SANITIZE=address,undefined \
-    -DPRISM_BUILD_TOOLS=OFF -DPRISM_BUILD_BENCHMARKS=OFF
+    -DPRISM_BUILD_TOOLS=OFF -DPRISM_BUILD_BENCHMARKS=OFF \
+    -DPRISM_BUILD_IMAGE_TESTS=OFF
   run_suite "$root/build-asan" -L "unit|api|analytic" -LE slow
 
   export TSAN_OPTIONS="halt_on_error=1 suppressions=$root/tests/tsan.supp"
   PRISM_BUILD_DIR="$root/build-tsan" "$root/scripts/build.sh" \
     -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPRISM_SANITIZE=thread \
-    -DPRISM_BUILD_TOOLS=OFF -DPRISM_BUILD_BENCHMARKS=OFF
+    -DPRISM_BUILD_TOOLS=OFF -DPRISM_BUILD_BENCHMARKS=OFF \
+    -DPRISM_BUILD_IMAGE_TESTS=OFF -DPRISM_BUILD_UNIT_TESTS=OFF
   run_suite "$root/build-tsan" -R "Device::DeviceFrame|FrontEnd"
 fi
