@@ -137,9 +137,12 @@ void Frame::renderAsync()
 
 void Frame::render()
 {
-  const FrameBuffers::Needs needs{m_channels.count("channel.depth") > 0,
-      m_channels.count("channel.normal") > 0,
-      m_channels.count("channel.albedo") > 0,
+  // The denoiser is guided by depth, normal and albedo, mapped or not.
+  m_denoise = m_renderer->denoise();
+  const FrameBuffers::Needs needs{
+      m_denoise || m_channels.count("channel.depth") > 0,
+      m_denoise || m_channels.count("channel.normal") > 0,
+      m_denoise || m_channels.count("channel.albedo") > 0,
       m_channels.count("channel.primitiveId") > 0,
       m_channels.count("channel.objectId") > 0,
       m_channels.count("channel.instanceId") > 0};
@@ -249,8 +252,37 @@ void Frame::resolveChannels()
       });
 }
 
+void Frame::denoiseColor()
+{
+  auto it = m_channels.find("channel.color");
+  if (!m_denoise || it == m_channels.end() || m_denoisedRender == m_renders)
+    return;
+  m_denoisedRender = m_renders;
+  const FrameBuffers &source =
+      m_accumulation && m_samplesDone > 0 ? m_accumulated : m_buffers;
+  if (source.color.empty())
+    return;
+  auto guide = [](const auto &v) {
+    return v.empty() ? nullptr : v.data();
+  };
+  std::vector<float4> filtered(source.color.size());
+  m_denoiser.denoise({m_width,
+                         m_height,
+                         source.color.data(),
+                         guide(source.albedo),
+                         guide(source.normal),
+                         guide(source.depth),
+                         m_accumulation ? std::max(m_samplesDone, 1u) : 1u},
+      filtered.data());
+  writeColorPixels(it->second.type,
+      filtered.data(),
+      filtered.size(),
+      it->second.pixels.data());
+}
+
 void Frame::finish()
 {
+  m_renders++;
   m_duration =
       std::chrono::duration<float>(std::chrono::steady_clock::now() - m_start)
           .count();
@@ -310,6 +342,8 @@ const void *Frame::map(const char *channel,
                                : "empty (the frame was never rendered)");
     return nullptr;
   }
+  if (it->first == "channel.color")
+    denoiseColor();
   width = m_width;
   height = m_height;
   pixelType = it->second.type;

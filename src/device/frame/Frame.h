@@ -2,6 +2,7 @@
 // asynchronous render of them on the device's task pool (spec 5.1).
 #pragma once
 
+#include "../denoise/Denoiser.h"
 #include "../object/Object.h"
 #include "FrameBuffers.h"
 
@@ -59,6 +60,8 @@ class Frame : public Object
   // Folds this frame's sample into the accumulation (KHR_FRAME_ACCUMULATION).
   void accumulate();
   void resolveChannels();
+  // Filters the color shown by channel.color (once per render).
+  void denoiseColor();
   // Epochs of everything a frame shows: a change restarts accumulation.
   uint64_t sceneVersion() const;
   void finish();
@@ -80,6 +83,12 @@ class Frame : public Object
   uint32_t m_samplesDone{0}; // accumulated into m_accumulated
   uint64_t m_accumulatedVersion{~0ull};
   FrameBuffers m_accumulated; // averages (depth: minimum) over samples
+  // KHR_RENDERER_DENOISE: filtered when color is mapped, not every frame
+  // (the filter costs far more than a sample).
+  Denoiser m_denoiser;
+  bool m_denoise{false};
+  uint64_t m_renders{0};
+  uint64_t m_denoisedRender{~0ull};
 
   std::mutex m_stateMutex;
   std::condition_variable m_doneCondition;

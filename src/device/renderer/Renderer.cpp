@@ -37,6 +37,7 @@ void Renderer::commitParameters()
   // renderers show geometry, not lighting, and take it without using it.
   m_ambientColor = read<float3>("ambientColor", ANARI_FLOAT32_VEC3, {1, 1, 1});
   m_ambientRadiance = read<float>("ambientRadiance", ANARI_FLOAT32, 0.f);
+  m_denoise = readBool("denoise", false);
   m_backgroundColor = {0, 0, 0, 1};
   m_backgroundImage.clear();
   m_backgroundWidth = m_backgroundHeight = 0;

@@ -42,6 +42,12 @@ class Renderer : public Object
       FrameBuffers &buffers,
       const std::atomic<bool> &cancel) const;
 
+  // KHR_RENDERER_DENOISE: whether frames filter the color they show.
+  bool denoise() const
+  {
+    return m_denoise;
+  }
+
   // The background seen at pixel (x, y) of a width x height frame.
   float4 background(
       uint32_t x, uint32_t y, uint32_t width, uint32_t height) const;
@@ -86,6 +92,7 @@ class Renderer : public Object
       uint32_t y,
       const PixelSample &sample);
 
+  bool m_denoise{false};
   float3 m_ambientColor{1, 1, 1};
   float m_ambientRadiance{0.f};
 
