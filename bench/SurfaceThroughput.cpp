@@ -2,8 +2,9 @@
 //
 // For each scene (a ~1M-triangle mesh, 1M spheres) this renders 1920x1080
 // frames with prism's `raycast` renderer through the public API, then
-// traces the identical primary rays with Embree directly (same BVH quality,
-// 8-wide packets, all cores, no shading, no frame writing), and reports
+// traces the identical primary rays with Embree directly (same BVH quality
+// and scene flags, 8-wide packets, all cores, no shading, no frame
+// writing), and reports
 // median times, their ratio (prism's share of raw Embree throughput), BVH
 // build time and BVH bytes per primitive. Run: build/bin/prism-bench-surfaces
 #include <anari/anari.h>
@@ -146,7 +147,9 @@ RawResult rawEmbree(const Scene &s, const Camera &camera)
   RTCDevice device = rtcNewDevice(nullptr);
   rtcSetDeviceMemoryMonitorFunction(device, trackMemory, nullptr);
   RTCScene scene = rtcNewScene(device);
+  // The same build quality and flags as prism's scenes (rt/Scene.cpp).
   rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
+  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
   std::vector<float> spheres;
   RTCGeometry g;
   if (std::strcmp(s.subtype, "triangle") == 0) {

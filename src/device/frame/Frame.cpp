@@ -149,11 +149,23 @@ void Frame::render()
   if (m_buffers.width != m_width || m_buffers.height != m_height
       || !(m_buffers.needs == needs))
     m_buffers.resize(m_width, m_height, needs);
+  if (m_accumulation
+      && (m_accumulated.width != m_width || m_accumulated.height != m_height
+          || !(m_accumulated.needs == needs))) {
+    m_accumulated.resize(m_width, m_height, needs);
+    m_samplesDone = 0;
+  }
+  const size_t pixels = size_t(m_width) * m_height;
+  for (auto &[name, channel] : m_channels)
+    channel.pixels.resize(pixels * anari::sizeOf(channel.type));
+
   const uint32_t tilesX = (m_width + kTileSize - 1) / kTileSize;
   const uint32_t tilesY = (m_height + kTileSize - 1) / kTileSize;
   m_tilesTotal = tilesX * tilesY;
   RenderContext context{m_camera, m_world, m_width, m_height, m_sampleIndex};
   m_renderer->beginFrame(context);
+  // Each tile is rendered, folded into the accumulation and converted to
+  // the channels' types while it is still in cache.
   tbb::parallel_for(uint32_t(0), m_tilesTotal, [&](uint32_t index) {
     if (m_cancel)
       return;
@@ -163,15 +175,17 @@ void Frame::render()
         std::min((tx + 1) * kTileSize, m_width),
         std::min((ty + 1) * kTileSize, m_height)};
     m_renderer->renderTile(context, tile, m_buffers, m_cancel);
+    if (m_accumulation)
+      accumulate(tile);
+    resolve(tile);
     m_tilesDone++;
   });
   if (m_cancel) {
     m_samplesDone = 0; // a partial sample must not enter the average
     m_accumulatedVersion = ~0ull;
   } else if (m_accumulation) {
-    accumulate();
+    m_samplesDone++;
   }
-  resolveChannels();
 }
 
 uint64_t Frame::sceneVersion() const
@@ -181,75 +195,71 @@ uint64_t Frame::sceneVersion() const
          + (uint64_t(m_width) << 40) + (uint64_t(m_height) << 20);
 }
 
-void Frame::accumulate()
+void Frame::accumulate(const Tile &tile)
 {
-  const size_t pixels = size_t(m_width) * m_height;
-  if (m_samplesDone == 0 || m_accumulated.width != m_width
-      || m_accumulated.height != m_height
-      || !(m_accumulated.needs == m_buffers.needs)) {
-    m_accumulated = m_buffers;
-    m_samplesDone = 1;
-    return;
-  }
-  const float weight = 1.f / float(m_samplesDone + 1);
   FrameBuffers &sum = m_accumulated;
   const FrameBuffers &sample = m_buffers;
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, pixels, 4096),
-      [&](const tbb::blocked_range<size_t> &range) {
-        for (size_t i = range.begin(); i < range.end(); i++) {
-          sum.color[i] =
-              sum.color[i] + (sample.color[i] - sum.color[i]) * weight;
-          if (sample.needs.depth)
-            sum.depth[i] = std::min(sum.depth[i], sample.depth[i]);
-          if (sample.needs.normal)
-            sum.normal[i] =
-                sum.normal[i] + (sample.normal[i] - sum.normal[i]) * weight;
-          if (sample.needs.albedo)
-            sum.albedo[i] =
-                sum.albedo[i] + (sample.albedo[i] - sum.albedo[i]) * weight;
-        }
-      });
-  m_samplesDone++;
+  const bool first = m_samplesDone == 0;
+  const float weight = 1.f / float(m_samplesDone + 1);
+  for (uint32_t y = tile.y0; y < tile.y1; y++) {
+    const size_t begin = size_t(y) * m_width + tile.x0;
+    const size_t end = size_t(y) * m_width + tile.x1;
+    if (first) {
+      // The first sample is the average; ids always stay the first's.
+      auto copy = [&](auto &to, const auto &from) {
+        if (!from.empty())
+          std::copy(
+              from.begin() + begin, from.begin() + end, to.begin() + begin);
+      };
+      copy(sum.color, sample.color);
+      copy(sum.depth, sample.depth);
+      copy(sum.normal, sample.normal);
+      copy(sum.albedo, sample.albedo);
+      copy(sum.primitiveId, sample.primitiveId);
+      copy(sum.objectId, sample.objectId);
+      copy(sum.instanceId, sample.instanceId);
+      continue;
+    }
+    for (size_t i = begin; i < end; i++) {
+      sum.color[i] = sum.color[i] + (sample.color[i] - sum.color[i]) * weight;
+      if (sample.needs.depth)
+        sum.depth[i] = std::min(sum.depth[i], sample.depth[i]);
+      if (sample.needs.normal)
+        sum.normal[i] =
+            sum.normal[i] + (sample.normal[i] - sum.normal[i]) * weight;
+      if (sample.needs.albedo)
+        sum.albedo[i] =
+            sum.albedo[i] + (sample.albedo[i] - sum.albedo[i]) * weight;
+    }
+  }
 }
 
-void Frame::resolveChannels()
+void Frame::resolve(const Tile &tile)
 {
   // With accumulation the channels show the average so far.
-  const FrameBuffers &source =
-      m_accumulation && m_samplesDone > 0 ? m_accumulated : m_buffers;
-  const size_t pixels = size_t(m_width) * m_height;
-  for (auto &[name, channel] : m_channels)
-    channel.pixels.resize(pixels * anari::sizeOf(channel.type));
-  // Rows convert independently; the channels' formats are fixed per frame.
-  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, m_height, 16),
-      [&](const tbb::blocked_range<uint32_t> &rows) {
-        const size_t begin = size_t(rows.begin()) * m_width;
-        const size_t count = size_t(rows.size()) * m_width;
-        for (auto &[name, channel] : m_channels) {
-          unsigned char *out =
-              channel.pixels.data() + begin * anari::sizeOf(channel.type);
-          if (name == "channel.color") {
-            writeColorPixels(
-                channel.type, source.color.data() + begin, count, out);
-          } else if (name == "channel.depth") {
-            std::memcpy(
-                out, source.depth.data() + begin, count * sizeof(float));
-          } else if (name == "channel.normal") {
-            writeVec3Pixels(
-                channel.type, source.normal.data() + begin, count, out);
-          } else if (name == "channel.albedo") {
-            writeVec3Pixels(
-                channel.type, source.albedo.data() + begin, count, out);
-          } else {
-            // Ids are the first sample's (kept by accumulate()): ids do
-            // not average.
-            const auto &ids = name == "channel.primitiveId" ? source.primitiveId
-                              : name == "channel.objectId"  ? source.objectId
-                                                            : source.instanceId;
-            std::memcpy(out, ids.data() + begin, count * sizeof(uint32_t));
-          }
-        }
-      });
+  const FrameBuffers &source = m_accumulation ? m_accumulated : m_buffers;
+  const size_t count = tile.x1 - tile.x0;
+  for (uint32_t y = tile.y0; y < tile.y1; y++) {
+    const size_t begin = size_t(y) * m_width + tile.x0;
+    for (auto &[name, channel] : m_channels) {
+      unsigned char *out =
+          channel.pixels.data() + begin * anari::sizeOf(channel.type);
+      if (name == "channel.color") {
+        writeColorPixels(channel.type, source.color.data() + begin, count, out);
+      } else if (name == "channel.depth") {
+        std::memcpy(out, source.depth.data() + begin, count * sizeof(float));
+      } else if (name == "channel.normal") {
+        writeVec3Pixels(channel.type, source.normal.data() + begin, count, out);
+      } else if (name == "channel.albedo") {
+        writeVec3Pixels(channel.type, source.albedo.data() + begin, count, out);
+      } else {
+        const auto &ids = name == "channel.primitiveId" ? source.primitiveId
+                          : name == "channel.objectId"  ? source.objectId
+                                                        : source.instanceId;
+        std::memcpy(out, ids.data() + begin, count * sizeof(uint32_t));
+      }
+    }
+  }
 }
 
 void Frame::denoiseColor()
@@ -258,8 +268,7 @@ void Frame::denoiseColor()
   if (!m_denoise || it == m_channels.end() || m_denoisedRender == m_renders)
     return;
   m_denoisedRender = m_renders;
-  const FrameBuffers &source =
-      m_accumulation && m_samplesDone > 0 ? m_accumulated : m_buffers;
+  const FrameBuffers &source = m_accumulation ? m_accumulated : m_buffers;
   if (source.color.empty())
     return;
   auto guide = [](const auto &v) {

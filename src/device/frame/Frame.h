@@ -57,9 +57,10 @@ class Frame : public Object
     std::vector<unsigned char> pixels;
   };
   void render();
-  // Folds this frame's sample into the accumulation (KHR_FRAME_ACCUMULATION).
-  void accumulate();
-  void resolveChannels();
+  // Folds one tile of this frame's sample into the accumulation
+  // (KHR_FRAME_ACCUMULATION), then converts it to the channels' types.
+  void accumulate(const Tile &tile);
+  void resolve(const Tile &tile);
   // Filters the color shown by channel.color (once per render).
   void denoiseColor();
   // Epochs of everything a frame shows: a change restarts accumulation.
