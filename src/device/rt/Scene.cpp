@@ -124,16 +124,17 @@ void Scene::clear()
   }
 }
 
-void Scene::addTriangles(uint32_t id,
+void Scene::addMesh(uint32_t id,
+    bool quads,
     const float3 *vertices,
     size_t vertexCount,
     const uint32_t *indices,
-    size_t triangleCount)
+    size_t primitiveCount)
 {
   if (!m_scene)
     return;
-  RTCGeometry g =
-      rtcNewGeometry(m_context.handle(), RTC_GEOMETRY_TYPE_TRIANGLE);
+  RTCGeometry g = rtcNewGeometry(m_context.handle(),
+      quads ? RTC_GEOMETRY_TYPE_QUAD : RTC_GEOMETRY_TYPE_TRIANGLE);
   rtcSetSharedGeometryBuffer(g,
       RTC_BUFFER_TYPE_VERTEX,
       0,
@@ -142,15 +143,25 @@ void Scene::addTriangles(uint32_t id,
       0,
       sizeof(float3),
       vertexCount);
+  const unsigned corners = quads ? 4 : 3;
   rtcSetSharedGeometryBuffer(g,
       RTC_BUFFER_TYPE_INDEX,
       0,
-      RTC_FORMAT_UINT3,
+      quads ? RTC_FORMAT_UINT4 : RTC_FORMAT_UINT3,
       indices,
       0,
-      3 * sizeof(uint32_t),
-      triangleCount);
+      corners * sizeof(uint32_t),
+      primitiveCount);
   attach(m_scene, g, id);
+}
+
+void Scene::addTriangles(uint32_t id,
+    const float3 *vertices,
+    size_t vertexCount,
+    const uint32_t *indices,
+    size_t triangleCount)
+{
+  addMesh(id, false, vertices, vertexCount, indices, triangleCount);
 }
 
 void Scene::addQuads(uint32_t id,
@@ -159,26 +170,7 @@ void Scene::addQuads(uint32_t id,
     const uint32_t *indices,
     size_t quadCount)
 {
-  if (!m_scene)
-    return;
-  RTCGeometry g = rtcNewGeometry(m_context.handle(), RTC_GEOMETRY_TYPE_QUAD);
-  rtcSetSharedGeometryBuffer(g,
-      RTC_BUFFER_TYPE_VERTEX,
-      0,
-      RTC_FORMAT_FLOAT3,
-      vertices,
-      0,
-      sizeof(float3),
-      vertexCount);
-  rtcSetSharedGeometryBuffer(g,
-      RTC_BUFFER_TYPE_INDEX,
-      0,
-      RTC_FORMAT_UINT4,
-      indices,
-      0,
-      4 * sizeof(uint32_t),
-      quadCount);
-  attach(m_scene, g, id);
+  addMesh(id, true, vertices, vertexCount, indices, quadCount);
 }
 
 void Scene::addSpheres(uint32_t id, const float4 *centerAndRadius, size_t count)

@@ -75,6 +75,14 @@ class Scene
   void intersect(const RayPacket &packet, Hit hits[kPacketSize]) const;
 
  private:
+  // Triangles (3 indices per primitive) or quads (4), sharing the arrays.
+  void addMesh(uint32_t id,
+      bool quads,
+      const float3 *vertices,
+      size_t vertexCount,
+      const uint32_t *indices,
+      size_t primitiveCount);
+
   const Context &m_context;
   RTCSceneTy *m_scene{nullptr};
 };
