@@ -60,6 +60,6 @@ inline const char *kImplementedExtensions[] = {
 
 // "default" first: it aliases the first real renderer (spec 5.3).
 inline const char *kRendererSubtypes[] = {
-    "default", "raycast", "pathtracer", "ao", "debug", nullptr};
+    "default", "pathtracer", "raycast", "ao", "debug", nullptr};
 
 } // namespace prism

@@ -2,6 +2,7 @@
 
 #include "ImageMetrics.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -293,8 +294,13 @@ Image RenderTest::render(ANARIWorld world,
   anariSetParameter(m_device, frame, "size", ANARI_UINT32_VEC2, size);
   anariSetParameter(
       m_device, frame, "channel.color", ANARI_DATA_TYPE, &colorType);
+  if (m_samplesPerPixel > 1) {
+    const uint8_t on = 1;
+    anariSetParameter(m_device, frame, "accumulation", ANARI_BOOL, &on);
+  }
   anariCommitParameters(m_device, frame);
-  anariRenderFrame(m_device, frame);
+  for (uint32_t i = 0; i < std::max(m_samplesPerPixel, 1u); i++)
+    anariRenderFrame(m_device, frame);
   anariFrameReady(m_device, frame, ANARI_WAIT);
 
   Image image;

@@ -133,8 +133,16 @@ class RenderTest : public ::testing::Test
     setObject(object, name, ANARI_ARRAY1D, newArray1D(type, values));
   }
 
-  // One frame's channel.color as linear float RGBA, row 0 at the bottom;
-  // empty (after a test failure) when the device does not deliver it.
+  // Frames render() accumulates (KHR_FRAME_ACCUMULATION) into one image;
+  // 1 (the default) renders a single frame.
+  void setSamplesPerPixel(uint32_t samples)
+  {
+    m_samplesPerPixel = samples;
+  }
+
+  // channel.color as linear float RGBA, row 0 at the bottom, after
+  // setSamplesPerPixel() frames; empty (after a test failure) when the
+  // device does not deliver it.
   prism::image::Image render(ANARIWorld world,
       ANARICamera camera,
       ANARIRenderer renderer,
@@ -167,4 +175,5 @@ class RenderTest : public ::testing::Test
   ANARILibrary m_library{nullptr};
   ANARIDevice m_device{nullptr};
   std::vector<ANARIObject> m_objects;
+  uint32_t m_samplesPerPixel{1};
 };

@@ -34,15 +34,15 @@ Object *createCamera(Device &device, const std::string &subtype)
 
 Object *createRenderer(Device &device, const std::string &subtype)
 {
-  // "default" is the first listed subtype (spec 5.3): raycast for now.
-  if (subtype == "default" || subtype == "raycast")
+  // "default" is the first listed subtype (spec 5.3): the path tracer.
+  if (subtype == "default" || subtype == "pathtracer")
+    return new PathTracer(device, subtype);
+  if (subtype == "raycast")
     return new Raycast(device, subtype);
   if (subtype == "debug")
     return new Debug(device);
   if (subtype == "ao")
     return new AmbientOcclusion(device);
-  if (subtype == "pathtracer")
-    return new PathTracer(device, subtype);
   return nullptr;
 }
 

@@ -5,6 +5,7 @@
 #include "../material/PhysicallyBased.h"
 #include "../shading/Bsdf.h"
 #include "SampleHash.h"
+#include "wavefront/LocalTransport.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,12 +14,14 @@ namespace prism {
 namespace {
 
 // Random streams per bounce: direction, lobe, light choice, light point,
-// opacity.
+// opacity and roulette.
 constexpr uint32_t kStreamsPerBounce = 5;
+// See-through surfaces a path passes at one bounce before it gives up.
+constexpr uint16_t kMaxLayers = 64;
 
-float2 random2(uint32_t x, uint32_t y, uint32_t sample, uint32_t stream)
+float2 random2(const PathState &path, uint32_t sample, uint32_t stream)
 {
-  return hashedSample2D(x, y, sample, 16 + stream);
+  return hashedSample2D(path.x, path.y, sample, 16 + stream);
 }
 
 float powerHeuristic(float a, float b)
@@ -42,12 +45,19 @@ void frameAround(const float3 &n, float3 &t, float3 &b)
   b = {c, sign + n.y * n.y * a, -n.y};
 }
 
+float3 exp3(const float3 &v)
+{
+  return {std::exp(v.x), std::exp(v.y), std::exp(v.z)};
+}
+
 // The material at a hit as BSDF inputs, and what the BSDF does not cover.
 struct ShadingInputs
 {
   BsdfInputs bsdf;
   float opacity{1.f};
   float3 emissive{0.f, 0.f, 0.f};
+  float occlusion{1.f};              // of ambient light only
+  float3 attenuation{0.f, 0.f, 0.f}; // inside, per unit length
 };
 
 ShadingInputs shadingInputs(const SurfaceHit &hit)
@@ -58,6 +68,10 @@ ShadingInputs shadingInputs(const SurfaceHit &hit)
     const PhysicallyBased::Values values = pbr->evaluate(hit.attributes);
     out.bsdf = physicallyBasedBsdfInputs(values);
     out.emissive = values.emissive;
+    out.occlusion = clamp(values.occlusion, 0.f, 1.f);
+    if (values.transmission > 0.f && values.thickness > 0.f)
+      out.attenuation = volumeAttenuationCoefficient(
+          values.attenuationColor, values.attenuationDistance);
   } else {
     const float4 base = material.baseColorAndOpacity(hit.attributes);
     out.bsdf = matteBsdfInputs(float3{base.x, base.y, base.z});
@@ -77,102 +91,177 @@ void PathTracer::commitParameters()
   m_ambient = m_ambientColor * std::max(m_ambientRadiance, 0.f);
 }
 
+void PathTracer::renderTile(const RenderContext &context,
+    const Tile &tile,
+    FrameBuffers &buffers,
+    const std::atomic<bool> &cancel) const
+{
+  renderTile(context, tile, buffers, LocalTransport(*context.world), cancel);
+}
+
+void PathTracer::renderTile(const RenderContext &context,
+    const Tile &tile,
+    FrameBuffers &buffers,
+    const RayTransport &transport,
+    const std::atomic<bool> &cancel) const
+{
+  const uint32_t width = tile.x1 - tile.x0;
+  const size_t count = size_t(width) * (tile.y1 - tile.y0);
+  std::vector<PathState> paths(count);
+  rt::RayQueue rays, next, shadows;
+  std::vector<float3> contributions;
+  rays.reserve(count);
+  next.reserve(count);
+  shadows.reserve(count);
+  contributions.reserve(count);
+  for (size_t i = 0; i < count; i++) {
+    PathState &path = paths[i];
+    path.x = tile.x0 + uint32_t(i % width);
+    path.y = tile.y0 + uint32_t(i / width);
+    const Ray ray = cameraRay(context, path.x, path.y);
+    rays.push(
+        ray.origin, ray.direction, ray.tMin, ray.tMax, path.time, uint32_t(i));
+  }
+  while (!rays.empty() && !cancel) {
+    transport.traceClosest(rays);
+    next.clear();
+    shadows.clear();
+    contributions.clear();
+    shadeBounce(context, paths, rays, next, shadows, contributions);
+    if (!shadows.empty()) {
+      transport.traceOcclusion(shadows);
+      for (size_t k = 0; k < shadows.size(); k++) {
+        if (!shadows.occluded(k)) {
+          PathState &path = paths[shadows.tag(k)];
+          path.radiance = path.radiance + contributions[k];
+        }
+      }
+    }
+    std::swap(rays, next);
+  }
+  if (cancel)
+    return;
+  for (PathState &path : paths) {
+    if (!path.recordedFirstHit && path.bounce == 0)
+      continue; // the background, already stored by shadeBounce
+    path.sample.color =
+        float4{path.radiance.x, path.radiance.y, path.radiance.z, 1.f};
+  }
+  for (const PathState &path : paths)
+    store(context, buffers, path.x, path.y, path.sample);
+}
+
 float3 PathTracer::lightsAlong(const RenderContext &context,
     const float3 &origin,
     const float3 &direction,
+    float tMin,
     float hitDistance,
-    float bsdfPdf,
-    bool bsdfWasDelta,
-    bool cameraRay) const
+    const PathState &path) const
 {
   const auto &lights = context.world->lights();
-  const float pickProbability =
-      lights.empty() ? 0.f : 1.f / float(lights.size());
+  const LightSelector &selector = context.world->lightSelector();
+  const bool cameraRay = path.bounce == 0;
   float3 sum{0.f, 0.f, 0.f};
-  for (const auto &light : lights) {
-    if (light->isDelta() || (cameraRay && !light->visibleToCamera))
+  for (size_t i = 0; i < lights.size(); i++) {
+    const PlacedLight &light = *lights[i];
+    if (light.isDelta() || (cameraRay && !light.visibleToCamera))
       continue;
     float distance = 0.f, lightPdf = 0.f;
     const float3 radiance =
-        light->radianceAlong(origin, direction, distance, lightPdf);
-    if (distance >= hitDistance || maxComponent(radiance) <= 0.f)
+        light.radianceAlong(origin, direction, distance, lightPdf);
+    if (distance <= tMin || distance >= hitDistance
+        || maxComponent(radiance) <= 0.f)
       continue;
     // Camera rays and delta bounces could not have sampled the light.
-    const float weight =
-        cameraRay || bsdfWasDelta
-            ? 1.f
-            : powerHeuristic(bsdfPdf, lightPdf * pickProbability);
+    const float weight = cameraRay || path.previousDelta
+                             ? 1.f
+                             : powerHeuristic(path.previousPdf,
+                                 lightPdf * selector.probability(i));
     sum = sum + radiance * weight;
   }
   return sum;
 }
 
-PixelSample PathTracer::shadeSample(const RenderContext &context,
-    const Ray &primaryRay,
-    const rt::Hit &primaryHit,
-    uint32_t x,
-    uint32_t y) const
+void PathTracer::shadeBounce(const RenderContext &context,
+    std::vector<PathState> &paths,
+    const rt::RayQueue &rays,
+    rt::RayQueue &next,
+    rt::RayQueue &shadows,
+    std::vector<float3> &contributions) const
 {
-  Ray ray = primaryRay;
-  rt::Hit hit = primaryHit;
-  PixelSample sample;
   const uint32_t n = context.sampleIndex;
   const auto &lights = context.world->lights();
-  float3 radiance{0.f, 0.f, 0.f};
-  float3 throughput{1.f, 1.f, 1.f};
-  float previousPdf = 0.f;
-  bool previousDelta = true;
-  bool first = true;
-  int bounce = 0;
-  for (int step = 0; step < 4 * m_maxPathLength + 64; step++) {
-    const bool cameraRay = bounce == 0;
+  const LightSelector &selector = context.world->lightSelector();
+  for (size_t r = 0; r < rays.size(); r++) {
+    PathState &path = paths[rays.tag(r)];
+    if (rays.untraceable(r))
+      continue; // a degenerate camera or bounce ray ends its path
+    const rt::Hit hit = rays.hit(r);
+    const Ray ray{rays.origin(r), rays.direction(r)};
     SurfaceHit surface;
     const bool found = hit.found()
                        && resolveSurfaceHit(
                            *context.world, ray, hit, surface, HitDetail::Full);
-    const float hitDistance = found ? hit.t : ray.tMax;
-    radiance = radiance
-               + throughput
-                     * lightsAlong(context,
-                         ray.origin,
-                         ray.direction,
-                         hitDistance,
-                         previousPdf,
-                         previousDelta,
-                         cameraRay);
+    const float hitDistance =
+        found ? hit.t : std::numeric_limits<float>::infinity();
+    // Inside an absorbing medium: Beer-Lambert over the segment.
+    if (maxComponent(path.medium) > 0.f && found)
+      path.throughput = path.throughput * exp3(path.medium * -hit.t);
+    path.radiance = path.radiance
+                    + path.throughput
+                          * lightsAlong(context,
+                              ray.origin,
+                              ray.direction,
+                              rays.tMin(r),
+                              hitDistance,
+                              path);
     if (!found) {
-      if (cameraRay) {
-        const float4 bg = background(x, y, context.width, context.height);
-        sample.color = float4{
-            radiance.x + bg.x, radiance.y + bg.y, radiance.z + bg.z, bg.w};
-        return sample;
+      if (path.bounce == 0 && !path.recordedFirstHit) {
+        const float4 bg =
+            background(path.x, path.y, context.width, context.height);
+        path.sample.color = float4{path.radiance.x + bg.x,
+            path.radiance.y + bg.y,
+            path.radiance.z + bg.z,
+            bg.w};
+      } else {
+        path.radiance = path.radiance
+                        + path.throughput * m_ambient * path.ambientVisibility;
       }
-      radiance = radiance + throughput * m_ambient;
-      break;
+      continue;
     }
 
     const ShadingInputs inputs = shadingInputs(surface);
-    const uint32_t stream = uint32_t(bounce) * kStreamsPerBounce;
-    // See-through surfaces: pass through with probability 1 - opacity.
+    const uint32_t stream = uint32_t(path.bounce) * kStreamsPerBounce;
+    // See-through surfaces: pass through with probability 1 - opacity
+    // (each layer its own random number).
     if (inputs.opacity < 1.f
-        && random2(x, y, n, stream + 4).x >= inputs.opacity) {
-      ray.tMin = hit.t + std::max(1e-4f, hit.t * 1e-5f);
-      context.world->intersect(
-          ray.origin, ray.direction, ray.tMin, ray.tMax, hit);
+        && hashedSample2D(
+               path.x, path.y, n, 0x10000u + path.layer + 97u * path.bounce)
+                   .x
+               >= inputs.opacity) {
+      if (++path.layer < kMaxLayers) {
+        next.push(ray.origin,
+            ray.direction,
+            hit.t + std::max(1e-4f, hit.t * 1e-5f),
+            std::numeric_limits<float>::infinity(),
+            path.time,
+            rays.tag(r));
+      }
       continue;
     }
-    if (first) {
-      sample.depth = hit.t;
-      sample.normal = surface.shadingNormal;
-      sample.albedo = inputs.bsdf.baseColor;
-      sample.primitiveId = surface.attributes.primitiveId;
-      sample.objectId = surface.surface->id();
-      sample.instanceId = surface.placement->instanceId;
-      first = false;
+    path.layer = 0;
+    if (!path.recordedFirstHit) {
+      path.sample.depth = hit.t;
+      path.sample.normal = surface.shadingNormal;
+      path.sample.albedo = inputs.bsdf.baseColor;
+      path.sample.primitiveId = surface.attributes.primitiveId;
+      path.sample.objectId = surface.surface->id();
+      path.sample.instanceId = surface.placement->instanceId;
+      path.recordedFirstHit = true;
     }
-    radiance = radiance + throughput * inputs.emissive;
-    if (bounce + 1 >= m_maxPathLength)
-      break;
+    path.radiance = path.radiance + path.throughput * inputs.emissive;
+    if (path.bounce + 1 >= m_maxPathLength)
+      continue;
 
     // The local shading frame around the geometry's own (unflipped)
     // shading normal: the BSDF needs to know which side the viewer is on to
@@ -191,14 +280,14 @@ PixelSample PathTracer::shadeSample(const RenderContext &context,
     const float3 wo = toLocal(ray.direction * -1.f);
     const float offset = 1e-4f * std::max(1.f, hit.t);
 
-    // Next-event estimation: one light, chosen uniformly.
-    if (!lights.empty() && bsdf.hasNonDeltaLobes()) {
-      const float2 pick = random2(x, y, n, stream + 2);
-      const size_t index =
-          std::min(size_t(pick.x * float(lights.size())), lights.size() - 1);
-      const PlacedLight &light = *lights[index];
+    // Next-event estimation: one light, chosen by power; its shadow ray
+    // joins the bounce's shadow queue.
+    if (!selector.empty() && bsdf.hasNonDeltaLobes()) {
+      float pickProbability = 0.f;
+      const PlacedLight &light = *lights[selector.pick(
+          random2(path, n, stream + 2).x, pickProbability)];
       const LightSample ls =
-          light.sample(surface.position, random2(x, y, n, stream + 3));
+          light.sample(surface.position, random2(path, n, stream + 3));
       const float3 wi = toLocal(ls.direction);
       if (ls.pdf > 0.f && maxComponent(ls.radiance) > 0.f) {
         const float3 f = bsdf.eval(wo, wi);
@@ -206,54 +295,59 @@ PixelSample PathTracer::shadeSample(const RenderContext &context,
           const float3 side = dot(ls.direction, surface.geometricNormal) > 0.f
                                   ? surface.geometricNormal
                                   : surface.geometricNormal * -1.f;
-          const float3 origin = surface.position + side * offset;
-          rt::Hit blocker;
           const float tMax = std::isinf(ls.distance)
                                  ? ls.distance
                                  : ls.distance * (1.f - 1e-4f) - offset;
-          if (!context.world->intersect(
-                  origin, ls.direction, 0.f, tMax, blocker)) {
-            const float pickPdf = ls.pdf / float(lights.size());
-            const float weight =
-                ls.delta ? 1.f : powerHeuristic(pickPdf, bsdf.pdf(wo, wi));
-            radiance = radiance
-                       + throughput * f * ls.radiance
-                             * (std::abs(wi.z) * weight / pickPdf);
-          }
+          const float pdf = ls.pdf * pickProbability;
+          const float weight =
+              ls.delta ? 1.f : powerHeuristic(pdf, bsdf.pdf(wo, wi));
+          shadows.push(surface.position + side * offset,
+              ls.direction,
+              0.f,
+              std::max(tMax, 0.f),
+              path.time,
+              rays.tag(r));
+          contributions.push_back(path.throughput * f * ls.radiance
+                                  * (std::abs(wi.z) * weight / pdf));
         }
       }
     }
 
     // Continue the path by sampling the BSDF.
-    const float2 direction = random2(x, y, n, stream);
-    const float lobe = random2(x, y, n, stream + 1).x;
+    const float2 direction = random2(path, n, stream);
+    const float lobe = random2(path, n, stream + 1).x;
     const BsdfSample bs = bsdf.sample(wo, direction, lobe);
     if (!bs.valid())
-      break;
-    throughput = throughput * bs.weight;
-    previousPdf = bs.pdf;
-    previousDelta = bs.isDelta();
+      continue;
+    path.throughput = path.throughput * bs.weight;
+    path.previousPdf = bs.pdf;
+    path.previousDelta = bs.isDelta();
+    path.ambientVisibility = inputs.occlusion;
     const float3 wiWorld = normalize(toWorld(bs.wi));
+    // Crossing a volume boundary: entering it (against the unflipped
+    // normal) starts absorbing, leaving it stops.
+    if (bsdf.isVolumeBoundary()
+        && dot(wiWorld, normal) * dot(ray.direction, normal) > 0.f)
+      path.medium = dot(wiWorld, normal) < 0.f ? inputs.attenuation
+                                               : float3{0.f, 0.f, 0.f};
     const float3 side = dot(wiWorld, surface.geometricNormal) > 0.f
                             ? surface.geometricNormal
                             : surface.geometricNormal * -1.f;
-    ray = Ray{surface.position + side * offset,
+    path.bounce++;
+    // Russian roulette after three bounces keeps long paths unbiased.
+    if (path.bounce > 3) {
+      const float survive = std::min(0.95f, maxComponent(path.throughput));
+      if (random2(path, n, stream + 4).y >= survive)
+        continue;
+      path.throughput = path.throughput / survive;
+    }
+    next.push(surface.position + side * offset,
         wiWorld,
         0.f,
-        std::numeric_limits<float>::infinity()};
-    bounce++;
-    // Russian roulette after three bounces keeps long paths unbiased.
-    if (bounce > 3) {
-      const float survive = std::min(0.95f, maxComponent(throughput));
-      if (random2(x, y, n, stream + 4).y >= survive)
-        break;
-      throughput = throughput / survive;
-    }
-    context.world->intersect(
-        ray.origin, ray.direction, ray.tMin, ray.tMax, hit);
+        std::numeric_limits<float>::infinity(),
+        path.time,
+        rays.tag(r));
   }
-  sample.color = float4{radiance.x, radiance.y, radiance.z, 1.f};
-  return sample;
 }
 
 } // namespace prism

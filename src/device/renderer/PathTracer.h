@@ -1,19 +1,22 @@
-// The `pathtracer` renderer: unidirectional path tracing with next-event
-// estimation and multiple importance sampling (power heuristic) for every
-// light, emissive surfaces and the renderer's ambient light; Russian
-// roulette after three bounces. One path per pixel per frame: with frame
-// accumulation the image converges.
+// The `pathtracer` renderer (and `default`): unidirectional path tracing
+// with next-event estimation and multiple importance sampling (power
+// heuristic) for every light, emissive surfaces and the renderer's ambient
+// light; lights chosen by power; Russian roulette after three bounces. One
+// path per pixel per frame: with frame accumulation the image converges.
 //
-// This is the per-path form of the integrator; the wavefront form (ray
-// queues traced bounce by bounce, the interface the MPI device forwards)
-// replaces its loop without changing what it computes.
+// It runs as a wavefront: a tile's paths advance bounce by bounce, each
+// bounce's rays traced together as one queue (and the shadow rays as
+// another) through a RayTransport, so the data-parallel device can trace
+// the same queues across ranks.
 #pragma once
 
 #include "Renderer.h"
+#include "wavefront/PathState.h"
+#include "wavefront/RayTransport.h"
+
+#include <vector>
 
 namespace prism {
-
-class PlacedLight;
 
 class PathTracer : public Renderer
 {
@@ -26,25 +29,38 @@ class PathTracer : public Renderer
   {
     return 256;
   }
+  void renderTile(const RenderContext &context,
+      const Tile &tile,
+      FrameBuffers &buffers,
+      const std::atomic<bool> &cancel) const override;
+  // Renders `tile` tracing its rays through `transport`.
+  void renderTile(const RenderContext &context,
+      const Tile &tile,
+      FrameBuffers &buffers,
+      const RayTransport &transport,
+      const std::atomic<bool> &cancel) const;
 
  protected:
   void commitParameters() override;
-  PixelSample shadeSample(const RenderContext &context,
-      const Ray &ray,
-      const rt::Hit &hit,
-      uint32_t x,
-      uint32_t y) const override;
 
  private:
-  // Radiance arriving along a ray that escapes the scene (or reaches a
-  // light before `hitDistance`), weighted against light sampling.
+  // Shades the hits of `rays`; continuing paths queue their next ray in
+  // `next` and light samples in `shadows` (contributions[k] for shadow
+  // ray k, added if nothing blocks it).
+  void shadeBounce(const RenderContext &context,
+      std::vector<PathState> &paths,
+      const rt::RayQueue &rays,
+      rt::RayQueue &next,
+      rt::RayQueue &shadows,
+      std::vector<float3> &contributions) const;
+  // Radiance arriving along a ray from lights it reaches within (tMin,
+  // hitDistance), weighted against light sampling.
   float3 lightsAlong(const RenderContext &context,
       const float3 &origin,
       const float3 &direction,
+      float tMin,
       float hitDistance,
-      float bsdfPdf,
-      bool bsdfWasDelta,
-      bool cameraRay) const;
+      const PathState &path) const;
 
   int m_maxPathLength{8};
   float3 m_ambient{0.f, 0.f, 0.f}; // ambientColor * ambientRadiance

@@ -180,6 +180,19 @@ void Renderer::tracePrimary(const RenderContext &context,
   context.world->intersect(packet, hits);
 }
 
+Ray Renderer::cameraRay(
+    const RenderContext &context, uint32_t x, uint32_t y) const
+{
+  const float2 offset = pixelOffset(x, y, context.sampleIndex);
+  const float2 screen{(float(x) + offset.x) / float(context.width),
+      (float(y) + offset.y) / float(context.height)};
+  // The lens point: its own stream, decorrelated from the pixel offset.
+  const float2 lens = context.sampleIndex == 0
+                          ? float2{0.5f, 0.5f}
+                          : hashedSample2D(x, y, context.sampleIndex, 1);
+  return context.camera->generateRay(screen, lens);
+}
+
 rt::Hit Renderer::traceBeyond(
     const World &world, const Ray &ray, const rt::Hit &previous)
 {

@@ -37,7 +37,7 @@ class Renderer : public Object
   virtual void beginFrame(const RenderContext &context) {}
   // Renders the pixels of `tile`, row by row in packets of primary rays,
   // each pixel shaded by shadeSample(); returns early once `cancel` is set.
-  void renderTile(const RenderContext &context,
+  virtual void renderTile(const RenderContext &context,
       const Tile &tile,
       FrameBuffers &buffers,
       const std::atomic<bool> &cancel) const;
@@ -82,6 +82,9 @@ class Renderer : public Object
       int count,
       Ray rays[rt::kPacketSize],
       rt::Hit hits[rt::kPacketSize]) const;
+  // The camera ray of pixel (x, y) for this frame's sample (jittered in
+  // the pixel and on the lens after the first sample).
+  Ray cameraRay(const RenderContext &context, uint32_t x, uint32_t y) const;
   // The next hit along `ray` beyond `previous` (for see-through surfaces).
   static rt::Hit traceBeyond(
       const World &world, const Ray &ray, const rt::Hit &previous);

@@ -1,8 +1,12 @@
 #include "Scene.h"
 
+#include "RayQueue.h"
+#include "RayValidity.h"
+
 #include <embree3/rtcore.h>
 
 #include <cmath>
+#include <limits>
 
 namespace prism::rt {
 namespace {
@@ -61,20 +65,32 @@ void userIntersect(const RTCIntersectFunctionNArguments *args)
   }
 }
 
-// Embree (built with assertions on Debian) aborts on rays it considers
-// invalid; such rays simply find nothing here.
-constexpr float kLargestCoordinate = 1.8e18f;
-
-bool usable(float v)
+void userOccluded(const RTCOccludedFunctionNArguments *args)
 {
-  return std::isfinite(v) && std::abs(v) <= kLargestCoordinate;
-}
-
-bool validRay(const float3 &o, const float3 &d, float tMin, float tMax)
-{
-  return usable(o.x) && usable(o.y) && usable(o.z) && usable(d.x) && usable(d.y)
-         && usable(d.z) && tMin >= 0.f && !std::isnan(tMax) && tMax >= tMin
-         && std::isfinite(tMin);
+  auto *geometry = (const UserGeometry *)args->geometryUserPtr;
+  RTCRayN *ray = args->ray;
+  for (unsigned i = 0; i < args->N; i++) {
+    if (!args->valid[i])
+      continue;
+    const float3 origin{RTCRayN_org_x(ray, args->N, i),
+        RTCRayN_org_y(ray, args->N, i),
+        RTCRayN_org_z(ray, args->N, i)};
+    const float3 direction{RTCRayN_dir_x(ray, args->N, i),
+        RTCRayN_dir_y(ray, args->N, i),
+        RTCRayN_dir_z(ray, args->N, i)};
+    float t, u, v;
+    float3 normal;
+    if (geometry->intersectPrimitive(args->primID,
+            origin,
+            direction,
+            RTCRayN_tnear(ray, args->N, i),
+            RTCRayN_tfar(ray, args->N, i),
+            t,
+            u,
+            v,
+            normal))
+      RTCRayN_tfar(ray, args->N, i) = -std::numeric_limits<float>::infinity();
+  }
 }
 
 void attach(RTCScene scene, RTCGeometry geometry, uint32_t id)
@@ -228,6 +244,7 @@ void Scene::addUser(uint32_t id, const UserGeometry *geometry, size_t count)
   rtcSetGeometryUserData(g, const_cast<UserGeometry *>(geometry));
   rtcSetGeometryBoundsFunction(g, userBounds, nullptr);
   rtcSetGeometryIntersectFunction(g, userIntersect);
+  rtcSetGeometryOccludedFunction(g, userOccluded);
   attach(m_scene, g, id);
 }
 
@@ -268,7 +285,7 @@ bool Scene::intersect(const float3 &origin,
     Hit &hit) const
 {
   hit = Hit{};
-  if (!m_scene || !validRay(origin, direction, tMin, tMax))
+  if (!m_scene || !isTraceable(origin, direction, tMin, tMax))
     return false;
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
@@ -323,7 +340,7 @@ void Scene::intersect(const RayPacket &packet, Hit hits[kPacketSize]) const
   for (int i = 0; i < 8; i++) {
     valid[i] =
         packet.active[i]
-                && validRay(
+                && isTraceable(
                     {packet.originX[i], packet.originY[i], packet.originZ[i]},
                     {packet.directionX[i],
                         packet.directionY[i],
@@ -346,6 +363,61 @@ void Scene::intersect(const RayPacket &packet, Hit hits[kPacketSize]) const
     hit.geometryId = rh.hit.geomID[i];
     hit.instanceId = rh.hit.instID[0][i];
   }
+}
+
+void Scene::intersect(RayQueue &queue) const
+{
+  if (!m_scene || queue.empty())
+    return;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+  RTCRayHitNp rays;
+  rays.ray.org_x = queue.m_originX.data();
+  rays.ray.org_y = queue.m_originY.data();
+  rays.ray.org_z = queue.m_originZ.data();
+  rays.ray.tnear = queue.m_tMin.data();
+  rays.ray.dir_x = queue.m_directionX.data();
+  rays.ray.dir_y = queue.m_directionY.data();
+  rays.ray.dir_z = queue.m_directionZ.data();
+  rays.ray.time = queue.m_time.data();
+  rays.ray.tfar = queue.m_tMax.data();
+  rays.ray.mask = queue.m_mask.data();
+  rays.ray.id = queue.m_tag.data();
+  rays.ray.flags = queue.m_flags.data();
+  rays.hit.Ng_x = queue.m_normalX.data();
+  rays.hit.Ng_y = queue.m_normalY.data();
+  rays.hit.Ng_z = queue.m_normalZ.data();
+  rays.hit.u = queue.m_u.data();
+  rays.hit.v = queue.m_v.data();
+  rays.hit.primID = queue.m_primitiveId.data();
+  rays.hit.geomID = queue.m_geometryId.data();
+  static_assert(RTC_MAX_INSTANCE_LEVEL_COUNT == 1);
+  rays.hit.instID[0] = queue.m_instanceId.data();
+  rtcIntersectNp(m_scene, &context, &rays, unsigned(queue.size()));
+}
+
+void Scene::occluded(RayQueue &queue) const
+{
+  if (!m_scene || queue.empty())
+    return;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+  RTCRayNp rays;
+  rays.org_x = queue.m_originX.data();
+  rays.org_y = queue.m_originY.data();
+  rays.org_z = queue.m_originZ.data();
+  rays.tnear = queue.m_tMin.data();
+  rays.dir_x = queue.m_directionX.data();
+  rays.dir_y = queue.m_directionY.data();
+  rays.dir_z = queue.m_directionZ.data();
+  rays.time = queue.m_time.data();
+  rays.tfar = queue.m_tMax.data();
+  rays.mask = queue.m_mask.data();
+  rays.id = queue.m_tag.data();
+  rays.flags = queue.m_flags.data();
+  rtcOccludedNp(m_scene, &context, &rays, unsigned(queue.size()));
 }
 
 } // namespace prism::rt

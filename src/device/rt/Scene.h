@@ -13,6 +13,10 @@
 struct RTCSceneTy;
 
 namespace prism::rt {
+class RayQueue;
+}
+
+namespace prism::rt {
 
 // A bundle of coherent rays traced together (SoA, up to kPacketSize).
 constexpr int kPacketSize = 8;
@@ -73,6 +77,10 @@ class Scene
       Hit &hit) const;
   // Traces the active lanes of `packet` (coherent rays); hits[i] per lane.
   void intersect(const RayPacket &packet, Hit hits[kPacketSize]) const;
+  // Every ray of `queue` (incoherent rays, Embree's stream API): the
+  // closest hits, or only whether anything blocks each ray.
+  void intersect(RayQueue &queue) const;
+  void occluded(RayQueue &queue) const;
 
  private:
   // Triangles (3 indices per primitive) or quads (4), sharing the arrays.

@@ -131,6 +131,9 @@ void World::finalize()
              &m_placements[0].worldFromObject, &kIdentityMat3x4, sizeof(mat3x4))
              == 0;
   m_traced = single ? &m_placements[0].group->scene() : m_scene.get();
+  const float sceneRadius =
+      isEmpty(m_bounds) ? 1.f : 0.5f * length(m_bounds.upper - m_bounds.lower);
+  m_lightSelector.build(m_placedLights, sceneRadius);
 }
 
 bool World::intersect(const float3 &origin,
@@ -161,6 +164,22 @@ void World::intersect(
         hits[i].instanceId = 0;
     }
   }
+}
+
+void World::intersect(rt::RayQueue &queue) const
+{
+  if (!m_traced)
+    return;
+  m_traced->intersect(queue);
+  // Hits in a group's scene traced directly: the one placement.
+  if (m_traced != m_scene.get())
+    queue.assignInstance(0);
+}
+
+void World::occluded(rt::RayQueue &queue) const
+{
+  if (m_traced)
+    m_traced->occluded(queue);
 }
 
 bool World::getProperty(const std::string &name,

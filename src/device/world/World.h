@@ -3,7 +3,9 @@
 // placement of an implicit group for surfaces placed in the world directly.
 #pragma once
 
+#include "../light/LightSelector.h"
 #include "../light/PlacedLight.h"
+#include "../rt/RayQueue.h"
 #include "../rt/Scene.h"
 #include "Group.h"
 #include "Instance.h"
@@ -42,6 +44,10 @@ class World : public Object
       rt::Hit &hit) const;
   void intersect(
       const rt::RayPacket &packet, rt::Hit hits[rt::kPacketSize]) const;
+  // Every ray of the queue: closest hits (instanceId as above), or only
+  // whether something blocks each.
+  void intersect(rt::RayQueue &queue) const;
+  void occluded(rt::RayQueue &queue) const;
   box3 bounds() const
   {
     return m_bounds;
@@ -51,6 +57,11 @@ class World : public Object
   const std::vector<std::unique_ptr<PlacedLight>> &lights() const
   {
     return m_placedLights;
+  }
+  // Chooses among lights() for next-event estimation.
+  const LightSelector &lightSelector() const
+  {
+    return m_lightSelector;
   }
   void finalize() override;
   void dropReferences() override;
@@ -72,6 +83,7 @@ class World : public Object
   std::vector<Object *> m_volumes;
   std::vector<Placement> m_placements;
   std::vector<std::unique_ptr<PlacedLight>> m_placedLights;
+  LightSelector m_lightSelector;
   std::unique_ptr<rt::Scene> m_scene;
   // A world of one untransformed placement traces its group's scene
   // directly: no instance level, the most common case for simple scenes.

@@ -1,5 +1,7 @@
-// KHR_RENDERER_DENOISE: at a few samples per pixel the denoised image is
-// measurably closer to a converged reference than the noisy one.
+// How the path tracer converges: its error against a high-sample reference
+// falls as 1/sqrt(N), and (KHR_RENDERER_DENOISE) at a few samples per pixel
+// the denoised image is measurably closer to the reference than the noisy
+// one.
 #include "AnalyticScene.h"
 
 #include <cmath>
@@ -7,7 +9,7 @@
 
 namespace {
 
-class Denoise : public AnalyticTest
+class Convergence : public AnalyticTest
 {
  protected:
   // A sphere on a plane under a quad light, seen from above at an angle.
@@ -77,7 +79,33 @@ class Denoise : public AnalyticTest
   }
 };
 
-TEST_F(Denoise, DenoisedLowSampleImageIsCloserToTheReference)
+TEST_F(Convergence, ErrorFallsAsOneOverTheSquareRootOfSamples)
+{
+  ANARIWorld w = litScene();
+  const std::vector<float> reference = render(w, false, 4096);
+  std::vector<float> errors;
+  for (int samples : {4, 16, 64, 256}) {
+    errors.push_back(rmse(render(w, false, samples), reference));
+    std::printf("%3d spp: RMSE %.5f\n", samples, errors.back());
+  }
+  // Each 4x more samples halves the error (a slope of -1/2 in log-log).
+  // Stated tolerance: a factor in [1.6, 2.5] per step and an overall slope
+  // in [-0.6, -0.4]; the reference shares the first samples, which biases
+  // the last step low by at most sqrt(1 - 256/4096) ~ 3%.
+  for (size_t i = 1; i < errors.size(); i++) {
+    const float ratio = errors[i - 1] / errors[i];
+    EXPECT_GT(ratio, 1.6f) << "step " << i;
+    EXPECT_LT(ratio, 2.5f) << "step " << i;
+  }
+  const float slope =
+      std::log(errors.back() / errors.front()) / std::log(256.f / 4.f);
+  EXPECT_GT(slope, -0.6f);
+  EXPECT_LT(slope, -0.4f);
+  anariRelease(m_device, w);
+  EXPECT_TRUE(problems().empty());
+}
+
+TEST_F(Convergence, DenoisedLowSampleImageIsCloserToTheReference)
 {
   ANARIWorld w = litScene();
   const std::vector<float> reference = render(w, false, 1024);

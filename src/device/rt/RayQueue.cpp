@@ -1,0 +1,128 @@
+#include "RayQueue.h"
+
+#include "RayValidity.h"
+
+#include <cmath>
+#include <limits>
+
+namespace prism::rt {
+
+void RayQueue::clear()
+{
+  for (auto *v : {&m_originX,
+           &m_originY,
+           &m_originZ,
+           &m_tMin,
+           &m_directionX,
+           &m_directionY,
+           &m_directionZ,
+           &m_time,
+           &m_tMax,
+           &m_normalX,
+           &m_normalY,
+           &m_normalZ,
+           &m_u,
+           &m_v})
+    v->clear();
+  for (auto *v :
+      {&m_mask, &m_tag, &m_flags, &m_primitiveId, &m_geometryId, &m_instanceId})
+    v->clear();
+}
+
+void RayQueue::reserve(size_t capacity)
+{
+  for (auto *v : {&m_originX,
+           &m_originY,
+           &m_originZ,
+           &m_tMin,
+           &m_directionX,
+           &m_directionY,
+           &m_directionZ,
+           &m_time,
+           &m_tMax,
+           &m_normalX,
+           &m_normalY,
+           &m_normalZ,
+           &m_u,
+           &m_v})
+    v->reserve(capacity);
+  for (auto *v :
+      {&m_mask, &m_tag, &m_flags, &m_primitiveId, &m_geometryId, &m_instanceId})
+    v->reserve(capacity);
+}
+
+size_t RayQueue::push(const float3 &origin,
+    const float3 &direction,
+    float tMin,
+    float tMax,
+    float time,
+    uint32_t tag)
+{
+  const bool valid = isTraceable(origin, direction, tMin, tMax);
+  // An untraceable ray becomes an inactive one (tMin > tMax), which Embree
+  // skips and which therefore finds nothing.
+  m_originX.push_back(valid ? origin.x : 0.f);
+  m_originY.push_back(valid ? origin.y : 0.f);
+  m_originZ.push_back(valid ? origin.z : 0.f);
+  m_tMin.push_back(valid ? tMin : 1.f);
+  m_directionX.push_back(valid ? direction.x : 0.f);
+  m_directionY.push_back(valid ? direction.y : 0.f);
+  m_directionZ.push_back(valid ? direction.z : 1.f);
+  m_time.push_back(std::isfinite(time) ? time : 0.5f);
+  m_tMax.push_back(valid ? tMax : 0.f);
+  m_mask.push_back(~0u);
+  m_tag.push_back(tag);
+  m_flags.push_back(0u);
+  m_normalX.push_back(0.f);
+  m_normalY.push_back(0.f);
+  m_normalZ.push_back(0.f);
+  m_u.push_back(0.f);
+  m_v.push_back(0.f);
+  m_primitiveId.push_back(kInvalidId);
+  m_geometryId.push_back(kInvalidId);
+  m_instanceId.push_back(kInvalidId);
+  return m_originX.size() - 1;
+}
+
+Hit RayQueue::hit(size_t i) const
+{
+  Hit hit;
+  if (m_geometryId[i] == kInvalidId)
+    return hit;
+  hit.t = m_tMax[i];
+  hit.u = m_u[i];
+  hit.v = m_v[i];
+  hit.geometricNormal = {m_normalX[i], m_normalY[i], m_normalZ[i]};
+  hit.primitiveId = m_primitiveId[i];
+  hit.geometryId = m_geometryId[i];
+  hit.instanceId = m_instanceId[i];
+  return hit;
+}
+
+void RayQueue::setHit(size_t i, const Hit &hit)
+{
+  m_tMax[i] = hit.t;
+  m_u[i] = hit.u;
+  m_v[i] = hit.v;
+  m_normalX[i] = hit.geometricNormal.x;
+  m_normalY[i] = hit.geometricNormal.y;
+  m_normalZ[i] = hit.geometricNormal.z;
+  m_primitiveId[i] = hit.primitiveId;
+  m_geometryId[i] = hit.geometryId;
+  m_instanceId[i] = hit.instanceId;
+}
+
+void RayQueue::setOccluded(size_t i)
+{
+  m_tMax[i] = -std::numeric_limits<float>::infinity();
+}
+
+void RayQueue::assignInstance(uint32_t instance)
+{
+  for (size_t i = 0; i < size(); i++) {
+    if (m_geometryId[i] != kInvalidId)
+      m_instanceId[i] = instance;
+  }
+}
+
+} // namespace prism::rt

@@ -1,0 +1,96 @@
+// A wavefront of rays in structure-of-arrays form, with room for what
+// tracing them finds. Renderers fill it, a transport traces all of it at
+// once (Embree's stream API locally; the data-parallel device forwards
+// whole queues between ranks), renderers read the results back. Plain
+// arrays of plain numbers, so a queue can be sent as it is.
+#pragma once
+
+#include "Hit.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace prism::rt {
+
+class RayQueue
+{
+ public:
+  size_t size() const
+  {
+    return m_originX.size();
+  }
+  bool empty() const
+  {
+    return m_originX.empty();
+  }
+  void clear();
+  void reserve(size_t capacity);
+
+  // Appends a ray; `tag` is the caller's (e.g. which path it extends) and
+  // comes back unchanged. A ray that could not be traced (non-finite
+  // numbers, tMax < tMin) is kept but finds nothing.
+  size_t push(const float3 &origin,
+      const float3 &direction,
+      float tMin,
+      float tMax,
+      float time,
+      uint32_t tag);
+
+  uint32_t tag(size_t i) const
+  {
+    return m_tag[i];
+  }
+  float3 origin(size_t i) const
+  {
+    return {m_originX[i], m_originY[i], m_originZ[i]};
+  }
+  float3 direction(size_t i) const
+  {
+    return {m_directionX[i], m_directionY[i], m_directionZ[i]};
+  }
+  float time(size_t i) const
+  {
+    return m_time[i];
+  }
+  float tMin(size_t i) const
+  {
+    return m_tMin[i];
+  }
+  // After a closest-hit trace: whether ray i could not be traced (push()
+  // turned it into an empty interval).
+  bool untraceable(size_t i) const
+  {
+    return m_tMax[i] < m_tMin[i] && m_tMax[i] >= 0.f;
+  }
+
+  // After a closest-hit trace: what ray i found (Hit::found() false if
+  // nothing).
+  Hit hit(size_t i) const;
+  // After an occlusion trace: whether something blocks ray i.
+  bool occluded(size_t i) const
+  {
+    return m_tMax[i] < 0.f && m_tMin[i] >= 0.f;
+  }
+
+  // Marks ray i as hitting primitive `primitive` of geometry `geometry` in
+  // instance `instance` at `t` (for transports that merge results).
+  void setHit(size_t i, const Hit &hit);
+  void setOccluded(size_t i);
+  // Names instance `instance` in every hit (for scenes traced without
+  // their instance level).
+  void assignInstance(uint32_t instance);
+
+ private:
+  friend class Scene; // passes the arrays to Embree as they are
+
+  // Ray (the layout of Embree's RTCRayNp members, one array each).
+  std::vector<float> m_originX, m_originY, m_originZ, m_tMin;
+  std::vector<float> m_directionX, m_directionY, m_directionZ, m_time;
+  std::vector<float> m_tMax;
+  std::vector<uint32_t> m_mask, m_tag, m_flags;
+  // Hit (RTCHitNp).
+  std::vector<float> m_normalX, m_normalY, m_normalZ, m_u, m_v;
+  std::vector<uint32_t> m_primitiveId, m_geometryId, m_instanceId;
+};
+
+} // namespace prism::rt
