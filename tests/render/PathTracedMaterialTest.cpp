@@ -1,0 +1,219 @@
+// Each lobe of the physicallyBased material (spec 5.11, the glTF BRDF and
+// its KHR_materials_* extensions) through the path tracer: one sphere of
+// the material on a floor before a striped wall, under a quad light and a
+// little ambient light, 64 samples per pixel. Plus depth of field with the
+// path tracer.
+#include "RenderTest.h"
+
+#include <functional>
+
+namespace {
+
+constexpr uint32_t kWidth = 80, kHeight = 64, kSamples = 64;
+
+class MaterialBall : public RenderTest
+{
+ protected:
+  // A committed physicallyBased material; `configure` sets its parameters.
+  ANARIMaterial pbr(const std::function<void(ANARIMaterial)> &configure)
+  {
+    ANARIMaterial material =
+        keep(anariNewMaterial(device(), "physicallyBased"));
+    configure(material);
+    anariCommitParameters(device(), material);
+    return material;
+  }
+  ANARIWorld scene(ANARIMaterial ballMaterial)
+  {
+    ANARIGeometry floor = newGeometry("quad");
+    setArray(floor,
+        "vertex.position",
+        ANARI_FLOAT32_VEC3,
+        std::vector<Vec3>{{-3, -3, 0}, {3, -3, 0}, {3, 2, 0}, {-3, 2, 0}});
+    // Vertical stripes on the wall show what refraction and reflection
+    // bend.
+    std::vector<Vec3> stripes;
+    std::vector<uint32_t> stripeIndices;
+    for (int i = 0; i < 6; i++) {
+      const float x0 = -3.f + float(i), x1 = x0 + 0.5f;
+      const auto first = uint32_t(stripes.size());
+      stripes.insert(stripes.end(),
+          {{x0, 1.99f, 0}, {x1, 1.99f, 0}, {x1, 1.99f, 4}, {x0, 1.99f, 4}});
+      for (uint32_t k = 0; k < 4; k++)
+        stripeIndices.push_back(first + k);
+    }
+    ANARIGeometry stripeGeometry = newGeometry("quad");
+    setArray(stripeGeometry, "vertex.position", ANARI_FLOAT32_VEC3, stripes);
+    setArray(
+        stripeGeometry, "primitive.index", ANARI_UINT32_VEC4, stripeIndices);
+    ANARIGeometry wall = newGeometry("quad");
+    setArray(wall,
+        "vertex.position",
+        ANARI_FLOAT32_VEC3,
+        std::vector<Vec3>{{-3, 2, 0}, {3, 2, 0}, {3, 2, 4}, {-3, 2, 4}});
+    ANARIGeometry sphere = newGeometry("sphere");
+    setArray(sphere,
+        "vertex.position",
+        ANARI_FLOAT32_VEC3,
+        std::vector<Vec3>{{0, 0, 0.8f}});
+    setFloat(sphere, "radius", 0.8f);
+    ANARIWorld world =
+        newWorld({newSurface(floor, newMatte({0.7f, 0.7f, 0.7f})),
+            newSurface(wall, newMatte({0.8f, 0.8f, 0.75f})),
+            newSurface(stripeGeometry, newMatte({0.1f, 0.2f, 0.6f})),
+            newSurface(sphere, ballMaterial)});
+    ANARILight light = keep(anariNewLight(device(), "quad"));
+    setVec3(light, "position", {-2.f, -2.f, 3.5f});
+    // Facing down (the front side is edge2 x edge1).
+    setVec3(light, "edge1", {1.5f, 0.f, 0.f});
+    setVec3(light, "edge2", {0.f, 1.5f, 0.f});
+    setFloat(light, "radiance", 6.f);
+    anariCommitParameters(device(), light);
+    setObject(
+        world, "light", ANARI_ARRAY1D, newArray1D(ANARI_LIGHT, &light, 1));
+    anariCommitParameters(device(), world);
+    return world;
+  }
+  ANARICamera camera()
+  {
+    return newPerspectiveCamera({0.f, -4.5f, 1.6f},
+        {0.f, 4.5f, -0.8f},
+        {0.f, 0.f, 1.f},
+        float(kWidth) / float(kHeight),
+        0.7f);
+  }
+  void expectReference(ANARIWorld world, ANARICamera camera)
+  {
+    ANARIRenderer renderer = keep(anariNewRenderer(device(), "pathtracer"));
+    setVec4(renderer, "background", {0.f, 0.f, 0.f, 1.f});
+    setFloat(renderer, "ambientRadiance", 0.15f);
+    anariCommitParameters(device(), renderer);
+    setSamplesPerPixel(kSamples);
+    renderAndCompare(world, camera, renderer, kWidth, kHeight);
+  }
+  void expectReference(const std::function<void(ANARIMaterial)> &configure)
+  {
+    expectReference(scene(pbr(configure)), camera());
+  }
+};
+
+using RoughMetal = MaterialBall;
+TEST_F(RoughMetal, Pathtracer)
+{
+  expectReference([&](ANARIMaterial m) {
+    setVec3(m, "baseColor", {0.95f, 0.64f, 0.54f}); // copper
+    setFloat(m, "metallic", 1.f);
+    setFloat(m, "roughness", 0.35f);
+  });
+}
+
+using MirrorMetal = MaterialBall;
+TEST_F(MirrorMetal, Pathtracer)
+{
+  expectReference([&](ANARIMaterial m) {
+    setVec3(m, "baseColor", {0.9f, 0.9f, 0.9f});
+    setFloat(m, "metallic", 1.f);
+    setFloat(m, "roughness", 0.f);
+  });
+}
+
+using GlossyDielectric = MaterialBall; // base color under a specular layer
+TEST_F(GlossyDielectric, Pathtracer)
+{
+  expectReference([&](ANARIMaterial m) {
+    setVec3(m, "baseColor", {0.1f, 0.5f, 0.15f});
+    setFloat(m, "metallic", 0.f);
+    setFloat(m, "roughness", 0.2f);
+    setFloat(m, "specular", 1.f);
+    setVec3(m, "specularColor", {1.f, 0.8f, 0.6f});
+  });
+}
+
+using Clearcoat = MaterialBall;
+TEST_F(Clearcoat, Pathtracer)
+{
+  expectReference([&](ANARIMaterial m) {
+    setVec3(m, "baseColor", {0.6f, 0.05f, 0.05f});
+    setFloat(m, "metallic", 0.f);
+    setFloat(m, "roughness", 0.7f);
+    setFloat(m, "clearcoat", 1.f);
+    setFloat(m, "clearcoatRoughness", 0.05f);
+  });
+}
+
+using Sheen = MaterialBall;
+TEST_F(Sheen, Pathtracer)
+{
+  expectReference([&](ANARIMaterial m) {
+    setVec3(m, "baseColor", {0.05f, 0.05f, 0.2f});
+    setFloat(m, "metallic", 0.f);
+    setFloat(m, "roughness", 0.9f);
+    setVec3(m, "sheenColor", {1.f, 0.6f, 0.8f});
+    setFloat(m, "sheenRoughness", 0.3f);
+  });
+}
+
+using ThinTransmission = MaterialBall; // thickness 0: a soap-bubble sheet
+TEST_F(ThinTransmission, Pathtracer)
+{
+  expectReference([&](ANARIMaterial m) {
+    setVec3(m, "baseColor", {0.9f, 0.95f, 1.f});
+    setFloat(m, "metallic", 0.f);
+    setFloat(m, "roughness", 0.f);
+    setFloat(m, "transmission", 1.f);
+    setFloat(m, "thickness", 0.f);
+  });
+}
+
+using RefractingGlass = MaterialBall; // thickness > 0, tinted by absorption
+TEST_F(RefractingGlass, Pathtracer)
+{
+  expectReference([&](ANARIMaterial m) {
+    setVec3(m, "baseColor", {1.f, 1.f, 1.f});
+    setFloat(m, "metallic", 0.f);
+    setFloat(m, "roughness", 0.f);
+    setFloat(m, "transmission", 1.f);
+    setFloat(m, "ior", 1.5f);
+    setFloat(m, "thickness", 1.f);
+    setVec3(m, "attenuationColor", {0.3f, 0.8f, 0.4f});
+    setFloat(m, "attenuationDistance", 0.8f);
+  });
+}
+
+using Iridescence = MaterialBall;
+TEST_F(Iridescence, Pathtracer)
+{
+  expectReference([&](ANARIMaterial m) {
+    setVec3(m, "baseColor", {0.05f, 0.05f, 0.05f});
+    setFloat(m, "metallic", 0.f);
+    setFloat(m, "roughness", 0.15f);
+    setFloat(m, "iridescence", 1.f);
+    setFloat(m, "iridescenceIor", 1.3f);
+    setFloat(m, "iridescenceThickness", 400.f);
+  });
+}
+
+using Emissive = MaterialBall; // the ball lights the floor and the wall
+TEST_F(Emissive, Pathtracer)
+{
+  expectReference([&](ANARIMaterial m) {
+    setVec3(m, "baseColor", {0.2f, 0.2f, 0.2f});
+    setVec3(m, "emissive", {2.f, 1.2f, 0.4f});
+  });
+}
+
+using PathTracedDepthOfField = MaterialBall; // focused on the ball
+TEST_F(PathTracedDepthOfField, Pathtracer)
+{
+  ANARICamera lens = camera();
+  setFloat(lens, "apertureRadius", 0.15f);
+  setFloat(lens, "focusDistance", 4.6f);
+  anariCommitParameters(device(), lens);
+  expectReference(scene(pbr([&](ANARIMaterial m) {
+    setVec3(m, "baseColor", {0.8f, 0.3f, 0.2f});
+    setFloat(m, "roughness", 0.4f);
+  })),
+      lens);
+}
+
+} // namespace
