@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace prism {
 namespace {
@@ -122,13 +123,16 @@ void PathTracer::renderTile(const RenderContext &context,
     rays.push(
         ray.origin, ray.direction, ray.tMin, ray.tMax, path.time, uint32_t(i));
   }
+  uint64_t traced = 0;
   while (!rays.empty() && !cancel) {
+    traced += rays.size();
     transport.traceClosest(rays);
     next.clear();
     shadows.clear();
     contributions.clear();
     shadeBounce(context, paths, rays, next, shadows, contributions);
     if (!shadows.empty()) {
+      traced += shadows.size();
       transport.traceOcclusion(shadows);
       for (size_t k = 0; k < shadows.size(); k++) {
         if (!shadows.occluded(k)) {
@@ -139,6 +143,7 @@ void PathTracer::renderTile(const RenderContext &context,
     }
     std::swap(rays, next);
   }
+  m_raysTraced.fetch_add(traced, std::memory_order_relaxed);
   if (cancel)
     return;
   for (PathState &path : paths) {
@@ -149,6 +154,21 @@ void PathTracer::renderTile(const RenderContext &context,
   }
   for (const PathState &path : paths)
     store(context, buffers, path.x, path.y, path.sample);
+}
+
+bool PathTracer::getProperty(const std::string &name,
+    ANARIDataType type,
+    void *mem,
+    uint64_t size,
+    ANARIWaitMask mask)
+{
+  if (name == "raysTraced" && type == ANARI_UINT64 && mem
+      && size >= sizeof(uint64_t)) {
+    const uint64_t value = m_raysTraced.load(std::memory_order_relaxed);
+    std::memcpy(mem, &value, sizeof(value));
+    return true;
+  }
+  return Renderer::getProperty(name, type, mem, size, mask);
 }
 
 float3 PathTracer::lightsAlong(const RenderContext &context,

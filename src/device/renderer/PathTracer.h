@@ -25,6 +25,14 @@ class PathTracer : public Renderer
       : Renderer(device, subtype)
   {}
 
+  // "raysTraced" (UINT64): camera, bounce and shadow rays traced since the
+  // renderer was created, for benchmarks.
+  bool getProperty(const std::string &name,
+      ANARIDataType type,
+      void *mem,
+      uint64_t size,
+      ANARIWaitMask mask) override;
+
   uint32_t convergedSampleCount() const override
   {
     return 256;
@@ -62,6 +70,7 @@ class PathTracer : public Renderer
       float hitDistance,
       const PathState &path) const;
 
+  mutable std::atomic<uint64_t> m_raysTraced{0};
   int m_maxPathLength{8};
   float3 m_ambient{0.f, 0.f, 0.f}; // ambientColor * ambientRadiance
 };
