@@ -5,6 +5,8 @@
 
 #include <array>
 #include <cmath>
+#include <cstring>
+#include <functional>
 
 namespace {
 
@@ -166,6 +168,144 @@ TEST_F(PathTracerTest, LambertPlaneUnderADirectionalLight)
   EXPECT_NEAR(mean.r, rho * E / float(M_PI), 1e-4f);
   for (ANARIObject o : {(ANARIObject)w, (ANARIObject)c, (ANARIObject)r})
     anariRelease(m_device, o);
+  EXPECT_TRUE(problems().empty());
+}
+
+// A diffuse physicallyBased plane (specular 0: no dielectric layer) with
+// texture coordinates along x and y, `normalMap` a constant tangent-space
+// normal (or none), `occlusion` a constant occlusion (or none).
+ANARISurface diffusePlane(ANARIDevice device,
+    float rho,
+    const float *normalMap,
+    const float *occlusion,
+    const std::function<ANARIArray1D(const std::vector<float> &, ANARIDataType)>
+        &array1D)
+{
+  ANARIGeometry g = anariNewGeometry(device, "quad");
+  ANARIArray1D positions = array1D(
+      {-50, -50, 0, 50, -50, 0, 50, 50, 0, -50, 50, 0}, ANARI_FLOAT32_VEC3);
+  anariSetParameter(device, g, "vertex.position", ANARI_ARRAY1D, &positions);
+  anariRelease(device, positions);
+  ANARIArray1D uv = array1D({0, 0, 1, 0, 1, 1, 0, 1}, ANARI_FLOAT32_VEC2);
+  anariSetParameter(device, g, "vertex.attribute0", ANARI_ARRAY1D, &uv);
+  anariRelease(device, uv);
+  anariCommitParameters(device, g);
+  ANARIMaterial m = anariNewMaterial(device, "physicallyBased");
+  const float base[3] = {rho, rho, rho}, zero = 0.f;
+  anariSetParameter(device, m, "baseColor", ANARI_FLOAT32_VEC3, base);
+  anariSetParameter(device, m, "metallic", ANARI_FLOAT32, &zero);
+  anariSetParameter(device, m, "specular", ANARI_FLOAT32, &zero);
+  // A 1x1 image sampler: the same value everywhere.
+  auto constantSampler = [&](const char *name,
+                             ANARIDataType type,
+                             const float *value,
+                             size_t components) {
+    ANARISampler sampler = anariNewSampler(device, "image2D");
+    ANARIArray2D texel =
+        anariNewArray2D(device, nullptr, nullptr, nullptr, type, 1, 1);
+    std::memcpy(
+        anariMapArray(device, texel), value, components * sizeof(float));
+    anariUnmapArray(device, texel);
+    anariSetParameter(device, sampler, "image", ANARI_ARRAY2D, &texel);
+    anariRelease(device, texel);
+    anariCommitParameters(device, sampler);
+    anariSetParameter(device, m, name, ANARI_SAMPLER, &sampler);
+    anariRelease(device, sampler);
+  };
+  if (normalMap)
+    constantSampler("normal", ANARI_FLOAT32_VEC3, normalMap, 3);
+  if (occlusion)
+    constantSampler("occlusion", ANARI_FLOAT32, occlusion, 1);
+  anariCommitParameters(device, m);
+  ANARISurface s = anariNewSurface(device);
+  anariSetParameter(device, s, "geometry", ANARI_GEOMETRY, &g);
+  anariSetParameter(device, s, "material", ANARI_MATERIAL, &m);
+  anariCommitParameters(device, s);
+  anariRelease(device, g);
+  anariRelease(device, m);
+  return s;
+}
+
+TEST_F(PathTracerTest, NormalMapTiltsTheShadingNormalAlongTheTangent)
+{
+  // The sun tilted by a towards +x (= +u, the tangent): a normal map
+  // tilting the normal by a towards +u faces it (cos 0), one tilting away
+  // sees cos 2a, none cos a. Lambert: rho E cos / pi, exact for one plane.
+  const float black[4] = {0, 0, 0, 1};
+  const float rho = 0.5f, E = 3.f, a = 0.5f;
+  const float towards[3] = {std::sin(a), 0.f, std::cos(a)};
+  const float away[3] = {-std::sin(a), 0.f, std::cos(a)};
+  const struct
+  {
+    const float *map;
+    float cosine;
+  } cases[] = {
+      {towards, 1.f}, {away, std::cos(2.f * a)}, {nullptr, std::cos(a)}};
+  for (const auto &test : cases) {
+    ANARILight light = anariNewLight(m_device, "directional");
+    const float direction[3] = {-std::sin(a), 0.f, -std::cos(a)};
+    anariSetParameter(
+        m_device, light, "direction", ANARI_FLOAT32_VEC3, direction);
+    anariSetParameter(m_device, light, "irradiance", ANARI_FLOAT32, &E);
+    anariCommitParameters(m_device, light);
+    ANARIWorld w = world({diffusePlane(m_device,
+        rho,
+        test.map,
+        nullptr,
+        [&](const std::vector<float> &v, ANARIDataType t) {
+          return array1D(v, t);
+        })});
+    setArray(w,
+        "light",
+        anariNewArray1D(m_device, &light, nullptr, nullptr, ANARI_LIGHT, 1));
+    anariRelease(m_device, light);
+    anariCommitParameters(m_device, w);
+    ANARICamera c = orthographic(kEye, kDown, 2.f);
+    ANARIRenderer r = pathTracer(0.f, black);
+    const float3Mean mean = meanOverHits(w, c, r, 8, 1);
+    EXPECT_NEAR(mean.r, rho * E * test.cosine / float(M_PI), 2e-3f)
+        << "expected cosine " << test.cosine;
+    for (ANARIObject o : {(ANARIObject)w, (ANARIObject)c, (ANARIObject)r})
+      anariRelease(m_device, o);
+  }
+  EXPECT_TRUE(problems().empty());
+}
+
+TEST_F(PathTracerTest, OcclusionDarkensAmbientLightOnly)
+{
+  // Ambient radiance L over the plane's hemisphere gives rho L; occlusion
+  // o scales that to rho L o and leaves the sun's rho E / pi alone.
+  const float black[4] = {0, 0, 0, 1};
+  const float rho = 0.5f, L = 1.f, E = 2.f, o = 0.25f;
+  for (const bool sun : {false, true}) {
+    ANARIWorld w = world({diffusePlane(m_device,
+        rho,
+        nullptr,
+        &o,
+        [&](const std::vector<float> &v, ANARIDataType t) {
+          return array1D(v, t);
+        })});
+    if (sun) {
+      ANARILight light = anariNewLight(m_device, "directional");
+      const float direction[3] = {0, 0, -1};
+      anariSetParameter(
+          m_device, light, "direction", ANARI_FLOAT32_VEC3, direction);
+      anariSetParameter(m_device, light, "irradiance", ANARI_FLOAT32, &E);
+      anariCommitParameters(m_device, light);
+      setArray(w,
+          "light",
+          anariNewArray1D(m_device, &light, nullptr, nullptr, ANARI_LIGHT, 1));
+      anariRelease(m_device, light);
+      anariCommitParameters(m_device, w);
+    }
+    ANARICamera c = orthographic(kEye, kDown, 2.f);
+    ANARIRenderer r = pathTracer(L, black);
+    const float3Mean mean = meanOverHits(w, c, r, 16, 64);
+    const float expected = rho * L * o + (sun ? rho * E / float(M_PI) : 0.f);
+    EXPECT_NEAR(mean.r, expected, 0.01f * expected) << "sun " << sun;
+    for (ANARIObject obj : {(ANARIObject)w, (ANARIObject)c, (ANARIObject)r})
+      anariRelease(m_device, obj);
+  }
   EXPECT_TRUE(problems().empty());
 }
 

@@ -6,6 +6,7 @@
 
 #include "anari/frontend/type_utility.h"
 
+#include <cmath>
 #include <cstdio>
 
 namespace prism {
@@ -252,6 +253,8 @@ void Geometry::readAttributes()
   }
   m_vertexNormals.clear();
   m_cornerNormals.clear();
+  m_vertexTangents.clear();
+  m_cornerTangents.clear();
   if (faceVarying) {
     auto normals = [&](const char *name) {
       const Array *array = readArray(name, kNormalTypes);
@@ -266,9 +269,10 @@ void Geometry::readAttributes()
     };
     m_vertexNormals = normals("vertex.normal");
     m_cornerNormals = normals("faceVarying.normal");
-    // Tangents serve normal mapping in the path tracer; read and checked.
-    readArray("vertex.tangent", kTangentTypes);
-    readArray("faceVarying.tangent", kTangentTypes);
+    // Tangents orient normal maps (fourth component: handedness).
+    m_vertexTangents = toFloat4(readArray("vertex.tangent", kTangentTypes));
+    m_cornerTangents =
+        toFloat4(readArray("faceVarying.tangent", kTangentTypes));
   }
 }
 
@@ -289,6 +293,8 @@ void Geometry::checkAttributeSizes()
   }
   check("vertex.normal", m_vertexNormals.size(), m_vertexCount);
   check("faceVarying.normal", m_cornerNormals.size(), corners);
+  check("vertex.tangent", m_vertexTangents.size(), m_vertexCount);
+  check("faceVarying.tangent", m_cornerTangents.size(), corners);
 }
 
 float3 Geometry::surfaceNormal(const rt::Hit &hit, const float3 &) const
@@ -357,6 +363,66 @@ float3 Geometry::attributesAt(const rt::Hit &hit,
   attributes[Attribute::ObjectNormal] =
       float4{normal.x, normal.y, normal.z, 0.f};
   return normal;
+}
+
+bool Geometry::tangentAt(const rt::Hit &hit, float4 &tangent) const
+{
+  const uint32_t perPrimitive = faceVaryingCorners();
+  if (perPrimitive == 0 || !isValid())
+    return false;
+  const uint32_t primitive = hit.primitiveId;
+  const Corners corners = cornersAt(primitive, hit.u, hit.v);
+  float4 sum{0, 0, 0, 0};
+  if (!m_cornerTangents.empty()) {
+    for (uint32_t i = 0; i < corners.count; i++)
+      sum = sum
+            + m_cornerTangents[perPrimitive * primitive + corners.slot[i]]
+                  * corners.weight[i];
+  } else if (!m_vertexTangents.empty()) {
+    for (uint32_t i = 0; i < corners.count; i++)
+      sum = sum + m_vertexTangents[corners.vertex[i]] * corners.weight[i];
+  } else {
+    return uvTangent(primitive, corners, tangent);
+  }
+  if (!(lengthSquared(float3{sum.x, sum.y, sum.z}) > 0.f))
+    return false;
+  tangent = float4{sum.x, sum.y, sum.z, sum.w < 0.f ? -1.f : 1.f};
+  return true;
+}
+
+bool Geometry::uvTangent(
+    uint32_t primitive, const Corners &corners, float4 &tangent) const
+{
+  // Texture coordinates are attribute0 (the samplers' default input).
+  const AttributeData &uv = m_attributes[1];
+  if (corners.count < 3 || (uv.perVertex.empty() && uv.perCorner.empty()))
+    return false;
+  float3 p[3];
+  float2 t[3];
+  for (int i = 0; i < 3; i++) {
+    p[i] = m_positions[corners.vertex[i]];
+    const float4 c =
+        uv.perCorner.empty()
+            ? uv.perVertex[corners.vertex[i]]
+            : uv.perCorner[faceVaryingCorners() * primitive + corners.slot[i]];
+    t[i] = {c.x, c.y};
+  }
+  // dp/du of the triangle's linear map from uv to position.
+  const float3 e1 = p[1] - p[0], e2 = p[2] - p[0];
+  const float du1 = t[1].x - t[0].x, dv1 = t[1].y - t[0].y;
+  const float du2 = t[2].x - t[0].x, dv2 = t[2].y - t[0].y;
+  const float determinant = du1 * dv2 - du2 * dv1;
+  if (!(std::abs(determinant) > 1e-20f))
+    return false;
+  const float3 dpdu = (e1 * dv2 - e2 * dv1) / determinant;
+  const float3 dpdv = (e2 * du1 - e1 * du2) / determinant;
+  if (!(lengthSquared(dpdu) > 0.f) || !std::isfinite(dpdu.x + dpdu.y + dpdu.z))
+    return false;
+  // Handedness: whether (dp/du, dp/dv, Ng) is right-handed.
+  const float3 ng = cross(e1, e2);
+  const float w = dot(cross(ng, dpdu), dpdv) < 0.f ? -1.f : 1.f;
+  tangent = float4{dpdu.x, dpdu.y, dpdu.z, w};
+  return true;
 }
 
 } // namespace prism

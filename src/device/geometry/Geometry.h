@@ -41,6 +41,12 @@ class Geometry : public Object
       AttributeValues &attributes,
       bool interpolate = true) const;
 
+  // The object-space tangent at `hit` (xyz along increasing u, w = +-1 the
+  // handedness of the bitangent) from vertex.tangent / faceVarying.tangent
+  // or, without them, from how attribute0 (texture coordinates) varies
+  // over the primitive; false when neither defines one.
+  bool tangentAt(const rt::Hit &hit, float4 &tangent) const;
+
  protected:
   // Which vertices a hit interpolates, and how; `slot` is each vertex's
   // corner number within its primitive (for faceVarying.* arrays).
@@ -100,12 +106,16 @@ class Geometry : public Object
   void readAttributes();
   std::vector<float4> readAttributeArray(const std::string &name);
   void checkAttributeSizes();
+  bool uvTangent(
+      uint32_t primitive, const Corners &corners, float4 &tangent) const;
 
   bool m_valid{false};
   uint32_t m_primitiveCount{0};
   AttributeData m_attributes[5]; // color, attribute0..3
   std::vector<float3> m_vertexNormals;
   std::vector<float3> m_cornerNormals;
+  std::vector<float4> m_vertexTangents;
+  std::vector<float4> m_cornerTangents;
 };
 
 // The geometry of `subtype`, or NULL if the device does not implement it.

@@ -57,7 +57,9 @@ struct ShadingInputs
   BsdfInputs bsdf;
   float opacity{1.f};
   float3 emissive{0.f, 0.f, 0.f};
-  float occlusion{1.f};              // of ambient light only
+  float occlusion{1.f}; // of ambient light only
+  bool hasNormalMap{false};
+  float3 normalMap{0.f, 0.f, 1.f};   // tangent space
   float3 attenuation{0.f, 0.f, 0.f}; // inside, per unit length
 };
 
@@ -70,6 +72,9 @@ ShadingInputs shadingInputs(const SurfaceHit &hit)
     out.bsdf = physicallyBasedBsdfInputs(values);
     out.emissive = values.emissive;
     out.occlusion = clamp(values.occlusion, 0.f, 1.f);
+    out.hasNormalMap = pbr->inputs().normal.source()
+                       != MaterialInput<float3>::Source::Constant;
+    out.normalMap = values.normal;
     if (values.transmission > 0.f && values.thickness > 0.f)
       out.attenuation = volumeAttenuationCoefficient(
           values.attenuationColor, values.attenuationDistance);
@@ -80,6 +85,40 @@ ShadingInputs shadingInputs(const SurfaceHit &hit)
   out.opacity =
       material.coverage(material.baseColorAndOpacity(hit.attributes).w);
   return out;
+}
+
+// `normal` (the geometry's own shading normal at the hit, world space)
+// bent by a tangent-space normal map value; `normal` itself where the map
+// gives nothing usable or would turn the surface away from the viewer.
+float3 normalMapped(const SurfaceHit &surface,
+    const rt::Hit &hit,
+    const float3 &normal,
+    const float3 &mapped,
+    const float3 &towardsViewer)
+{
+  float4 objectTangent;
+  float3 tangent, bitangent;
+  if (surface.surface->geometry()->tangentAt(hit, objectTangent)) {
+    const float3 t{objectTangent.x, objectTangent.y, objectTangent.z};
+    tangent = surface.placement->identity
+                  ? t
+                  : transformDirection(surface.placement->worldFromObject, t);
+    tangent = tangent - normal * dot(normal, tangent);
+    if (!(lengthSquared(tangent) > 1e-20f))
+      return normal;
+    tangent = normalize(tangent);
+    bitangent = cross(normal, tangent) * objectTangent.w;
+  } else {
+    frameAround(normal, tangent, bitangent);
+  }
+  const float3 bent =
+      tangent * mapped.x + bitangent * mapped.y + normal * mapped.z;
+  if (!(lengthSquared(bent) > 1e-20f))
+    return normal;
+  const float3 result = normalize(bent);
+  const bool sameSide =
+      (dot(result, towardsViewer) > 0.f) == (dot(normal, towardsViewer) > 0.f);
+  return sameSide ? result : normal;
 }
 
 } // namespace
@@ -287,8 +326,11 @@ void PathTracer::shadeBounce(const RenderContext &context,
     // shading normal: the BSDF needs to know which side the viewer is on to
     // tell entering a medium from leaving it.
     float3 tangent, bitangent;
-    const float3 normal = surface.backFacing ? surface.shadingNormal * -1.f
-                                             : surface.shadingNormal;
+    float3 normal = surface.backFacing ? surface.shadingNormal * -1.f
+                                       : surface.shadingNormal;
+    if (inputs.hasNormalMap)
+      normal = normalMapped(
+          surface, hit, normal, inputs.normalMap, ray.direction * -1.f);
     frameAround(normal, tangent, bitangent);
     auto toLocal = [&](const float3 &v) {
       return float3{dot(v, tangent), dot(v, bitangent), dot(v, normal)};
