@@ -158,7 +158,7 @@ PixelSample PathTracer::shadeSample(const RenderContext &context,
         && random2(x, y, n, stream + 4).x >= inputs.opacity) {
       ray.tMin = hit.t + std::max(1e-4f, hit.t * 1e-5f);
       context.world->intersect(
-          ray.origin, ray.direction, ray.tMin, ray.tMax, hit);
+          ray.origin, ray.direction, ray.tMin, ray.tMax, hit, ray.time);
       continue;
     }
     if (first) {
@@ -212,7 +212,7 @@ PixelSample PathTracer::shadeSample(const RenderContext &context,
                                  ? ls.distance
                                  : ls.distance * (1.f - 1e-4f) - offset;
           if (!context.world->intersect(
-                  origin, ls.direction, 0.f, tMax, blocker)) {
+                  origin, ls.direction, 0.f, tMax, blocker, ray.time)) {
             const float pickPdf = ls.pdf / float(lights.size());
             const float weight =
                 ls.delta ? 1.f : powerHeuristic(pickPdf, bsdf.pdf(wo, wi));
@@ -240,7 +240,8 @@ PixelSample PathTracer::shadeSample(const RenderContext &context,
     ray = Ray{surface.position + side * offset,
         wiWorld,
         0.f,
-        std::numeric_limits<float>::infinity()};
+        std::numeric_limits<float>::infinity(),
+        primaryRay.time};
     bounce++;
     // Russian roulette after three bounces keeps long paths unbiased.
     if (bounce > 3) {
@@ -250,7 +251,7 @@ PixelSample PathTracer::shadeSample(const RenderContext &context,
       throughput = throughput / survive;
     }
     context.world->intersect(
-        ray.origin, ray.direction, ray.tMin, ray.tMax, hit);
+        ray.origin, ray.direction, ray.tMin, ray.tMax, hit, ray.time);
   }
   sample.color = float4{radiance.x, radiance.y, radiance.z, 1.f};
   return sample;
