@@ -135,11 +135,14 @@ class RenderTest : public ::testing::Test
 
   // One frame's channel.color as linear float RGBA, row 0 at the bottom;
   // empty (after a test failure) when the device does not deliver it.
+  // More than one accumulated frame renders that many samples per pixel
+  // (KHR_FRAME_ACCUMULATION) and returns their mean.
   prism::image::Image render(ANARIWorld world,
       ANARICamera camera,
       ANARIRenderer renderer,
       uint32_t width,
-      uint32_t height);
+      uint32_t height,
+      uint32_t accumulatedFrames = 1);
 
   // Fails the test unless `a` and `b`, quantized like references, agree
   // within the default tolerance; `what` names the pair in the message.
@@ -156,7 +159,8 @@ class RenderTest : public ::testing::Test
       ANARIRenderer renderer,
       uint32_t width,
       uint32_t height,
-      const std::string &name = {});
+      const std::string &name = {},
+      uint32_t accumulatedFrames = 1);
 
  private:
   // Fails the test for each message of warning severity or worse so far.
