@@ -67,8 +67,7 @@ class LitScene : public RenderTest
         {0.f, 0.f, 1.f},
         float(kWidth) / float(kHeight),
         0.9f);
-    setSamplesPerPixel(kSamples);
-    renderAndCompare(world, camera, renderer, kWidth, kHeight);
+    renderAndCompare(world, camera, renderer, kWidth, kHeight, {}, kSamples);
   }
 };
 

@@ -88,8 +88,7 @@ class MaterialBall : public RenderTest
     setVec4(renderer, "background", {0.f, 0.f, 0.f, 1.f});
     setFloat(renderer, "ambientRadiance", 0.15f);
     anariCommitParameters(device(), renderer);
-    setSamplesPerPixel(kSamples);
-    renderAndCompare(world, camera, renderer, kWidth, kHeight);
+    renderAndCompare(world, camera, renderer, kWidth, kHeight, {}, kSamples);
   }
   void expectReference(const std::function<void(ANARIMaterial)> &configure)
   {

@@ -283,7 +283,8 @@ Image RenderTest::render(ANARIWorld world,
     ANARICamera camera,
     ANARIRenderer renderer,
     uint32_t width,
-    uint32_t height)
+    uint32_t height,
+    uint32_t accumulatedFrames)
 {
   ANARIFrame frame = anariNewFrame(m_device);
   const uint32_t size[2] = {width, height};
@@ -294,14 +295,15 @@ Image RenderTest::render(ANARIWorld world,
   anariSetParameter(m_device, frame, "size", ANARI_UINT32_VEC2, size);
   anariSetParameter(
       m_device, frame, "channel.color", ANARI_DATA_TYPE, &colorType);
-  if (m_samplesPerPixel > 1) {
-    const uint8_t on = 1;
-    anariSetParameter(m_device, frame, "accumulation", ANARI_BOOL, &on);
+  if (accumulatedFrames > 1) {
+    const uint8_t accumulate = 1;
+    anariSetParameter(m_device, frame, "accumulation", ANARI_BOOL, &accumulate);
   }
   anariCommitParameters(m_device, frame);
-  for (uint32_t i = 0; i < std::max(m_samplesPerPixel, 1u); i++)
+  for (uint32_t i = 0; i < std::max(accumulatedFrames, 1u); i++) {
     anariRenderFrame(m_device, frame);
-  anariFrameReady(m_device, frame, ANARI_WAIT);
+    anariFrameReady(m_device, frame, ANARI_WAIT);
+  }
 
   Image image;
   uint32_t mappedWidth = 0, mappedHeight = 0;
@@ -335,7 +337,8 @@ bool RenderTest::renderAndCompare(ANARIWorld world,
     ANARIRenderer renderer,
     uint32_t width,
     uint32_t height,
-    const std::string &name)
+    const std::string &name,
+    uint32_t accumulatedFrames)
 {
   const auto *test = ::testing::UnitTest::GetInstance()->current_test_info();
   const std::string imageName =
@@ -347,7 +350,8 @@ bool RenderTest::renderAndCompare(ANARIWorld world,
                   << height;
     return false;
   }
-  const Image rendered = render(world, camera, renderer, width, height);
+  const Image rendered =
+      render(world, camera, renderer, width, height, accumulatedFrames);
   if (rendered.empty())
     return false;
   // References are 8-bit sRGB: quantize the render the same way, so an

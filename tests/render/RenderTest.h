@@ -133,21 +133,16 @@ class RenderTest : public ::testing::Test
     setObject(object, name, ANARI_ARRAY1D, newArray1D(type, values));
   }
 
-  // Frames render() accumulates (KHR_FRAME_ACCUMULATION) into one image;
-  // 1 (the default) renders a single frame.
-  void setSamplesPerPixel(uint32_t samples)
-  {
-    m_samplesPerPixel = samples;
-  }
-
-  // channel.color as linear float RGBA, row 0 at the bottom, after
-  // setSamplesPerPixel() frames; empty (after a test failure) when the
-  // device does not deliver it.
+  // One frame's channel.color as linear float RGBA, row 0 at the bottom;
+  // empty (after a test failure) when the device does not deliver it.
+  // More than one accumulated frame renders that many samples per pixel
+  // (KHR_FRAME_ACCUMULATION) and returns their mean.
   prism::image::Image render(ANARIWorld world,
       ANARICamera camera,
       ANARIRenderer renderer,
       uint32_t width,
-      uint32_t height);
+      uint32_t height,
+      uint32_t accumulatedFrames = 1);
 
   // Fails the test unless `a` and `b`, quantized like references, agree
   // within the default tolerance; `what` names the pair in the message.
@@ -164,7 +159,8 @@ class RenderTest : public ::testing::Test
       ANARIRenderer renderer,
       uint32_t width,
       uint32_t height,
-      const std::string &name = {});
+      const std::string &name = {},
+      uint32_t accumulatedFrames = 1);
 
  private:
   // Fails the test for each message of warning severity or worse so far.
@@ -175,5 +171,4 @@ class RenderTest : public ::testing::Test
   ANARILibrary m_library{nullptr};
   ANARIDevice m_device{nullptr};
   std::vector<ANARIObject> m_objects;
-  uint32_t m_samplesPerPixel{1};
 };

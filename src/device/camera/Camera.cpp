@@ -1,5 +1,9 @@
 #include "Camera.h"
 
+#include "../array/Array.h"
+#include "../world/MotionParameters.h"
+
+#include <algorithm>
 #include <cmath>
 
 namespace prism {
@@ -112,6 +116,12 @@ void Camera::commitParameters()
     m_interpupillaryDistance = 0.0635f;
   }
 
+  readShutter();
+  readMotion();
+}
+
+void Camera::readShutter()
+{
   // FLOAT32_BOX1 is (lower, upper); the spec clamps both to [0, 1].
   m_shutter = read<float2>("shutter", ANARI_FLOAT32_BOX1, {0.5f, 0.5f});
   m_shutter = clamp(m_shutter, 0.f, 1.f);
@@ -123,6 +133,80 @@ void Camera::commitParameters()
         m_shutter.y);
     m_shutter = {0.5f, 0.5f};
   }
+
+  const std::string rolling = readString("rollingShutterDirection", "none");
+  m_rollingShutter = RollingShutter::kNone;
+  if (rolling == "left")
+    m_rollingShutter = RollingShutter::kLeft;
+  else if (rolling == "right")
+    m_rollingShutter = RollingShutter::kRight;
+  else if (rolling == "down")
+    m_rollingShutter = RollingShutter::kDown;
+  else if (rolling == "up")
+    m_rollingShutter = RollingShutter::kUp;
+  else if (rolling != "none") {
+    report(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "unknown 'rollingShutterDirection' '%s'; using 'none'",
+        rolling.c_str());
+  }
+  const float duration =
+      read<float>("rollingShutterDuration", ANARI_FLOAT32, 0.f);
+  if (std::isnan(duration)) {
+    report(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "'rollingShutterDuration' is not a number; using 0");
+  }
+  // The spec clamps the open time per line to the shutter's length.
+  m_rollingShutterDuration =
+      std::isnan(duration)
+          ? 0.f
+          : std::clamp(duration, 0.f, m_shutter.y - m_shutter.x);
+}
+
+void Camera::readMotion()
+{
+  MotionParameters keys;
+  auto array = [&](const char *name) {
+    return (const Array *)readObject(name, {ANARI_ARRAY1D});
+  };
+  keys.transform = array("motion.transform");
+  keys.scale = array("motion.scale");
+  keys.rotation = array("motion.rotation");
+  keys.translation = array("motion.translation");
+  keys.time = read<float2>("time", ANARI_FLOAT32_BOX1, {0.f, 1.f});
+  m_motion = readMotionTransform(keys, [&](const std::string &message) {
+    report(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "%s",
+        message.c_str());
+  });
+}
+
+float Camera::rayTime(float2 screen, float sample) const
+{
+  const float open = m_shutter.y - m_shutter.x;
+  // How far along the roll the line through `screen` is: 0 opens first.
+  float line = 0.f;
+  switch (m_rollingShutter) {
+  case RollingShutter::kNone:
+    return m_shutter.x + open * sample;
+  case RollingShutter::kRight:
+    line = screen.x;
+    break;
+  case RollingShutter::kLeft:
+    line = 1.f - screen.x;
+    break;
+  case RollingShutter::kUp:
+    line = screen.y;
+    break;
+  case RollingShutter::kDown:
+    line = 1.f - screen.y;
+    break;
+  }
+  line = std::clamp(line, 0.f, 1.f);
+  return m_shutter.x + (open - m_rollingShutterDuration) * line
+         + m_rollingShutterDuration * sample;
 }
 
 void Camera::readNearFar(float &near, float &far)
@@ -141,7 +225,7 @@ void Camera::readNearFar(float &near, float &far)
   }
 }
 
-Ray Camera::generateRay(float2 screen, float2 lensSample) const
+Ray Camera::generateRay(float2 screen, float2 lensSample, float time) const
 {
   const float halfBaseline = 0.5f * m_interpupillaryDistance;
   float eyeShift = 0.f;
@@ -171,7 +255,20 @@ Ray Camera::generateRay(float2 screen, float2 lensSample) const
   const float2 sensor{
       m_regionLower.x + screen.x * (m_regionUpper.x - m_regionLower.x),
       m_regionLower.y + screen.y * (m_regionUpper.y - m_regionLower.y)};
-  return rayThroughSensor(sensor, eyeShift, lensSample);
+  Ray ray = rayThroughSensor(sensor, eyeShift, lensSample);
+  ray.time = time;
+  if (m_motion.isSet()) {
+    // The camera frame moves as a whole; distances along the ray scale
+    // with the transform, so the clip range stays where it was.
+    const mat3x4 worldFromCamera = m_motion.at(time);
+    const float3 direction = transformDirection(worldFromCamera, ray.direction);
+    const float scale = length(direction);
+    ray.origin = transformPoint(worldFromCamera, ray.origin);
+    ray.direction = direction / scale;
+    ray.tMin *= scale;
+    ray.tMax *= scale;
+  }
+  return ray;
 }
 
 Ray Camera::throughLens(float3 origin,

@@ -3,6 +3,7 @@
 // per-eye images, then imageRegion maps those onto the sensor (spec 5.2).
 #pragma once
 
+#include "../math/MotionTransform.h"
 #include "../math/Vec.h"
 #include "../object/Object.h"
 
@@ -18,6 +19,9 @@ struct Ray
   float3 direction;
   float tMin{0.f};
   float tMax{std::numeric_limits<float>::infinity()};
+  // When the ray is traced, in the shutter's [0, 1] (motion blur);
+  // secondary rays inherit their camera ray's time.
+  float time{0.5f};
 };
 
 class Camera : public Object
@@ -26,19 +30,25 @@ class Camera : public Object
   Camera(Device &device, const std::string &subtype);
 
   // The ray through `screen` ([0,1]^2 over the frame) and `lensSample`
-  // (uniform in [0,1)^2, (0.5, 0.5) is the lens centre).
-  Ray generateRay(float2 screen, float2 lensSample) const;
+  // (uniform in [0,1)^2, (0.5, 0.5) is the lens centre) at `time`, where
+  // the camera is then (KHR_CAMERA_MOTION_TRANSFORMATION).
+  Ray generateRay(float2 screen, float2 lensSample, float time = 0.5f) const;
   // The ray through the lens centre (a pinhole camera).
   Ray generateRay(float2 screen) const
   {
     return generateRay(screen, {0.5f, 0.5f});
   }
   // [open, close] of the shutter within the frame's time span, in [0,1]
-  // (KHR_CAMERA_SHUTTER); stored for motion blur.
+  // (KHR_CAMERA_SHUTTER).
   float2 shutter() const
   {
     return m_shutter;
   }
+  // When the sensor at `screen` records, for `sample` uniform in [0, 1)
+  // over its exposure (0.5: its middle): the whole shutter, or with
+  // KHR_CAMERA_ROLLING_SHUTTER the rollingShutterDuration during which the
+  // shutter passes that line.
+  float rayTime(float2 screen, float sample) const;
   // Whether rays depend on the lens sample (KHR_CAMERA_DEPTH_OF_FIELD).
   // A simple pinhole (no stereo, no lens, no clipping) lets renderers build
   // primary rays in bulk: direction(x, y) = normalize(corner + x*dx + y*dy)
@@ -59,6 +69,8 @@ class Camera : public Object
 
  protected:
   enum class StereoMode { kNone, kLeft, kRight, kSideBySide, kTopBottom };
+  // Which way the shutter rolls across the image ("down": top line first).
+  enum class RollingShutter { kNone, kLeft, kRight, kDown, kUp };
 
   void commitParameters() override;
   // The ray through a point of the sensor for an eye displaced by
@@ -80,6 +92,12 @@ class Camera : public Object
   void clipAlongView(Ray &ray, float near, float far) const;
   // Reads and validates 'near' and 'far' (0 <= near < far).
   void readNearFar(float &near, float &far);
+  // Whether the camera moves or is placed by motion.* keys; rays then need
+  // generateRay() (no pinhole() fast path).
+  bool hasMotion() const
+  {
+    return m_motion.isSet();
+  }
 
   float3 m_position{0, 0, 0};
   float3 m_direction{0, 0, -1}; // normalised
@@ -94,6 +112,14 @@ class Camera : public Object
   // An eye's image is this fraction of the frame's width/height ratio.
   float m_eyeAspectScale{1.f};
   float2 m_shutter{0.5f, 0.5f};
+  RollingShutter m_rollingShutter{RollingShutter::kNone};
+  float m_rollingShutterDuration{0.f};
+  // World from the camera frame above at each time (motion.* keys).
+  MotionTransform m_motion;
+
+ private:
+  void readShutter();
+  void readMotion();
 };
 
 } // namespace prism

@@ -53,7 +53,7 @@ Ray Perspective::rayThroughSensor(
 bool Perspective::pinhole(Pinhole &out) const
 {
   if (hasDepthOfField() || m_stereoMode != StereoMode::kNone || m_near != 0.f
-      || !std::isinf(m_far))
+      || !std::isinf(m_far) || hasMotion())
     return false;
   // The sensor point of screen (x, y) is regionLower + (x, y) * regionSize;
   // rayThroughSensor maps sensor s to direction + right*(2s.x-1)*h*a + ...

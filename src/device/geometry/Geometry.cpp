@@ -96,6 +96,7 @@ void Geometry::commitParameters()
   m_primitiveCount = 0;
   m_vertexCount = 0;
   m_positions.clear();
+  m_vertexMotion = VertexMotion();
   readShape();
   readAttributes();
   if (m_valid)
@@ -157,6 +158,58 @@ bool Geometry::readPositions(size_t minimumCount)
       m_vertexCount,
       positions->elementSize(),
       m_positions.data());
+  return true;
+}
+
+bool Geometry::readDeformablePositions(size_t minimumCount)
+{
+  const Array *positions = readArray("motion.vertex.position", {ANARI_ARRAY1D});
+  const Array *normals = readArray("motion.vertex.normal", {ANARI_ARRAY1D});
+  const Array *tangents = readArray("motion.vertex.tangent", {ANARI_ARRAY1D});
+  const float2 time = read<float2>("time", ANARI_FLOAT32_BOX1, {0.f, 1.f});
+  for (const Array *keys : {positions, normals, tangents}) {
+    // Changes to a key array re-commit the geometry, as for any array.
+    for (Object *key : keys ? keys->objects() : std::vector<Object *>{})
+      dependOn(key);
+  }
+  if (!positions) {
+    if (normals || tangents) {
+      report(ANARI_SEVERITY_WARNING,
+          ANARI_STATUS_INVALID_ARGUMENT,
+          "'motion.vertex.normal' and 'motion.vertex.tangent' are ignored "
+          "without 'motion.vertex.position'");
+    }
+    return readPositions(minimumCount);
+  }
+  const std::string problem =
+      m_vertexMotion.readPositions(*positions, time, minimumCount);
+  if (!problem.empty()) {
+    if (isSet("vertex.position")) {
+      report(ANARI_SEVERITY_WARNING,
+          ANARI_STATUS_INVALID_ARGUMENT,
+          "%s; using 'vertex.position' (no motion)",
+          problem.c_str());
+      return readPositions(minimumCount);
+    }
+    invalidate("%s", problem.c_str());
+    return false;
+  }
+  // The keys take precedence over vertex.position (marked read, unused).
+  readAny("vertex.position");
+  m_vertexCount = m_vertexMotion.vertexCount();
+  m_positions = m_vertexMotion.firstPositions();
+  auto warn = [&](const std::string &message) {
+    if (!message.empty()) {
+      report(ANARI_SEVERITY_WARNING,
+          ANARI_STATUS_INVALID_ARGUMENT,
+          "%s; ignored",
+          message.c_str());
+    }
+  };
+  if (normals)
+    warn(m_vertexMotion.readNormals(*normals, time));
+  if (tangents)
+    warn(m_vertexMotion.checkTangents(*tangents));
   return true;
 }
 
@@ -305,15 +358,17 @@ float3 Geometry::surfaceNormal(const rt::Hit &hit, const float3 &) const
 float3 Geometry::attributesAt(const rt::Hit &hit,
     const float3 &objectPosition,
     AttributeValues &attributes,
-    bool interpolate) const
+    bool interpolate,
+    float time) const
 {
   const uint32_t primitive = hit.primitiveId;
   attributes.primitiveId = primitive;
   attributes[Attribute::PrimitiveId] = float4{float(primitive), 0.f, 0.f, 1.f};
   attributes[Attribute::ObjectPosition] =
       float4{objectPosition.x, objectPosition.y, objectPosition.z, 1.f};
-  const bool smoothNormals =
-      !m_vertexNormals.empty() || !m_cornerNormals.empty();
+  const bool smoothNormals = !m_vertexNormals.empty()
+                             || !m_cornerNormals.empty()
+                             || m_vertexMotion.hasNormals();
   if (!interpolate && !smoothNormals) {
     // The fast path of renderers that need only the normal.
     const float3 normal = surfaceNormal(hit, objectPosition);
@@ -354,6 +409,12 @@ float3 Geometry::attributesAt(const rt::Hit &hit,
   if (!m_cornerNormals.empty()) {
     for (uint32_t i = 0; i < cornerCount; i++)
       smooth = smooth + m_cornerNormals[cornerIndex[i]] * cornerWeight[i];
+  } else if (m_vertexMotion.hasNormals()) {
+    for (uint32_t i = 0; i < corners.count; i++) {
+      smooth =
+          smooth
+          + m_vertexMotion.normal(corners.vertex[i], time) * corners.weight[i];
+    }
   } else if (!m_vertexNormals.empty()) {
     for (uint32_t i = 0; i < corners.count; i++)
       smooth = smooth + m_vertexNormals[corners.vertex[i]] * corners.weight[i];

@@ -6,6 +6,7 @@
 #include "../object/Object.h"
 #include "../rt/Hit.h"
 #include "Attributes.h"
+#include "VertexMotion.h"
 
 #include <vector>
 
@@ -35,11 +36,12 @@ class Geometry : public Object
   // Fills the geometry's attributes at `hit` (object space), leaving those
   // the geometry does not define untouched; skips color and attribute0..3
   // unless `interpolate`. Returns the object-space shading normal
-  // (normalised, facing as the geometry defines it).
+  // (normalised, facing as the geometry defines it) at the ray's `time`.
   float3 attributesAt(const rt::Hit &hit,
       const float3 &objectPosition,
       AttributeValues &attributes,
-      bool interpolate = true) const;
+      bool interpolate = true,
+      float time = 0.5f) const;
 
   // The object-space tangent at `hit` (xyz along increasing u, w = +-1 the
   // handedness of the bitangent) from vertex.tangent / faceVarying.tangent
@@ -83,6 +85,9 @@ class Geometry : public Object
   bool readIndices(int components, std::vector<uint32_t> &indices);
   // Positions (FLOAT32_VEC3) with Embree's read padding; false if missing.
   bool readPositions(size_t minimumCount);
+  // Meshes: motion.vertex.* keys (deformation motion blur) if set, else
+  // vertex.position as readPositions(); false if neither is usable.
+  bool readDeformablePositions(size_t minimumCount);
   void setPrimitiveCount(uint32_t count)
   {
     m_primitiveCount = count;
@@ -95,6 +100,9 @@ class Geometry : public Object
 
   std::vector<float3> m_positions; // plus one padding element
   size_t m_vertexCount{0};
+  // Set when motion.vertex.position is: the vertices over time (then
+  // m_positions holds its first key).
+  VertexMotion m_vertexMotion;
 
  private:
   struct AttributeData

@@ -7,7 +7,7 @@ namespace prism {
 void Quad::readShape()
 {
   const bool indexed = readIndices(4, m_indices);
-  if (!readPositions(4))
+  if (!readDeformablePositions(4))
     return;
   if (!indexed) {
     m_indices.resize(m_vertexCount / 4 * 4);
@@ -20,6 +20,14 @@ void Quad::readShape()
 
 void Quad::addTo(rt::Scene &scene, uint32_t id) const
 {
+  if (m_vertexMotion.isSet()) {
+    scene.addQuads(id,
+        m_vertexMotion.positionKeys(),
+        m_vertexCount,
+        m_indices.data(),
+        primitiveCount());
+    return;
+  }
   scene.addQuads(id,
       m_positions.data(),
       m_vertexCount,

@@ -7,7 +7,7 @@ namespace prism {
 void Triangle::readShape()
 {
   const bool indexed = readIndices(3, m_indices);
-  if (!readPositions(3))
+  if (!readDeformablePositions(3))
     return;
   if (!indexed) {
     m_indices.resize(m_vertexCount / 3 * 3);
@@ -20,6 +20,14 @@ void Triangle::readShape()
 
 void Triangle::addTo(rt::Scene &scene, uint32_t id) const
 {
+  if (m_vertexMotion.isSet()) {
+    scene.addTriangles(id,
+        m_vertexMotion.positionKeys(),
+        m_vertexCount,
+        m_indices.data(),
+        primitiveCount());
+    return;
+  }
   scene.addTriangles(id,
       m_positions.data(),
       m_vertexCount,

@@ -63,10 +63,10 @@ PixelSample AmbientOcclusion::shadeSample(const RenderContext &context,
         hashedSample2D(x, y, context.sampleIndex * m_samples + i, 2);
     const float3 direction = cosineDirection(surface.shadingNormal, u);
     rt::Hit blocker;
-    open +=
-        context.world->intersect(origin, direction, 0.f, m_distance, blocker)
-            ? 0u
-            : 1u;
+    open += context.world->intersect(
+                origin, direction, 0.f, m_distance, blocker, ray.time)
+                ? 0u
+                : 1u;
   }
   const float visibility = float(open) / float(m_samples);
   sample.color = float4{

@@ -159,6 +159,7 @@ void PathTracer::renderTile(const RenderContext &context,
     path.x = tile.x0 + uint32_t(i % width);
     path.y = tile.y0 + uint32_t(i / width);
     const Ray ray = cameraRay(context, path.x, path.y);
+    path.time = ray.time;
     rays.push(
         ray.origin, ray.direction, ray.tMin, ray.tMax, path.time, uint32_t(i));
   }
@@ -256,7 +257,8 @@ void PathTracer::shadeBounce(const RenderContext &context,
     if (rays.untraceable(r))
       continue; // a degenerate camera or bounce ray ends its path
     const rt::Hit hit = rays.hit(r);
-    const Ray ray{rays.origin(r), rays.direction(r)};
+    Ray ray{rays.origin(r), rays.direction(r)};
+    ray.time = path.time;
     SurfaceHit surface;
     const bool found = hit.found()
                        && resolveSurfaceHit(

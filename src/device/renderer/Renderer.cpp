@@ -25,6 +25,26 @@ float2 pixelOffset(uint32_t x, uint32_t y, uint32_t sample)
   return sample == 0 ? float2{0.5f, 0.5f} : hashedSample2D(x, y, sample, 0);
 }
 
+// Where in its exposure sample n of pixel (x, y) falls, in [0, 1): the
+// middle for the first sample, then a van der Corput sequence rotated per
+// pixel, so n samples cover the exposure evenly (error ~1/n, not
+// ~1/sqrt(n), for motion blur) without pixels sharing times.
+float exposureSample(uint32_t x, uint32_t y, uint32_t sample)
+{
+  if (sample == 0)
+    return 0.5f;
+  uint32_t bits = sample;
+  bits = (bits << 16) | (bits >> 16);
+  bits = ((bits & 0x00ff00ffu) << 8) | ((bits & 0xff00ff00u) >> 8);
+  bits = ((bits & 0x0f0f0f0fu) << 4) | ((bits & 0xf0f0f0f0u) >> 4);
+  bits = ((bits & 0x33333333u) << 2) | ((bits & 0xccccccccu) >> 2);
+  bits = ((bits & 0x55555555u) << 1) | ((bits & 0xaaaaaaaau) >> 1);
+  const float radicalInverse = float(bits >> 8) * (1.f / 16777216.f);
+  const float rotation = hashedSample2D(x, y, 0, 3).x;
+  const float u = radicalInverse + rotation;
+  return u >= 1.f ? u - 1.f : u;
+}
+
 } // namespace
 
 Renderer::Renderer(Device &device, const std::string &subtype)
@@ -137,6 +157,8 @@ void Renderer::tracePrimary(const RenderContext &context,
       const float syJittered = (float(y) + offset.y) / float(context.height);
       const float3 d =
           pinhole.corner + pinhole.dx * sx + pinhole.dy * syJittered;
+      packet.time[i] = context.camera->rayTime(
+          {sx, syJittered}, exposureSample(x, y, context.sampleIndex));
       const float inv = 1.f / std::sqrt(dot(d, d));
       packet.originX[i] = pinhole.origin.x;
       packet.originY[i] = pinhole.origin.y;
@@ -152,20 +174,14 @@ void Renderer::tracePrimary(const RenderContext &context,
       rays[i] = Ray{pinhole.origin,
           {packet.directionX[i], packet.directionY[i], packet.directionZ[i]},
           0.f,
-          std::numeric_limits<float>::infinity()};
+          std::numeric_limits<float>::infinity(),
+          packet.time[i]};
     }
   } else {
     for (int i = 0; i < rt::kPacketSize; i++) {
       const int lane = i < count ? i : count - 1; // idle lanes repeat a ray
       const uint32_t x = x0 + uint32_t(lane);
-      const float2 offset = pixelOffset(x, y, context.sampleIndex);
-      const float2 screen{(float(x) + offset.x) * invWidth,
-          (float(y) + offset.y) / float(context.height)};
-      // The lens point: its own stream, decorrelated from the pixel offset.
-      const float2 lens = context.sampleIndex == 0
-                              ? float2{0.5f, 0.5f}
-                              : hashedSample2D(x, y, context.sampleIndex, 1);
-      rays[i] = context.camera->generateRay(screen, lens);
+      rays[i] = cameraRay(context, x, y);
       packet.originX[i] = rays[i].origin.x;
       packet.originY[i] = rays[i].origin.y;
       packet.originZ[i] = rays[i].origin.z;
@@ -174,6 +190,7 @@ void Renderer::tracePrimary(const RenderContext &context,
       packet.directionZ[i] = rays[i].direction.z;
       packet.tMin[i] = rays[i].tMin;
       packet.tMax[i] = rays[i].tMax;
+      packet.time[i] = rays[i].time;
       packet.active[i] = i < count ? -1 : 0;
     }
   }
@@ -184,13 +201,17 @@ Ray Renderer::cameraRay(
     const RenderContext &context, uint32_t x, uint32_t y) const
 {
   const float2 offset = pixelOffset(x, y, context.sampleIndex);
-  const float2 screen{(float(x) + offset.x) / float(context.width),
+  // Multiplying by the reciprocal, as the pinhole fast path does, keeps
+  // both paths' rays identical.
+  const float2 screen{(float(x) + offset.x) * (1.f / float(context.width)),
       (float(y) + offset.y) / float(context.height)};
   // The lens point: its own stream, decorrelated from the pixel offset.
   const float2 lens = context.sampleIndex == 0
                           ? float2{0.5f, 0.5f}
                           : hashedSample2D(x, y, context.sampleIndex, 1);
-  return context.camera->generateRay(screen, lens);
+  const float time = context.camera->rayTime(
+      screen, exposureSample(x, y, context.sampleIndex));
+  return context.camera->generateRay(screen, lens, time);
 }
 
 rt::Hit Renderer::traceBeyond(
@@ -200,7 +221,7 @@ rt::Hit Renderer::traceBeyond(
   // is not found again, however far from the origin it is.
   const float tMin = previous.t + std::max(1e-4f, previous.t * 1e-5f);
   rt::Hit next;
-  world.intersect(ray.origin, ray.direction, tMin, ray.tMax, next);
+  world.intersect(ray.origin, ray.direction, tMin, ray.tMax, next, ray.time);
   return next;
 }
 

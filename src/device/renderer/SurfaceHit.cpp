@@ -25,22 +25,22 @@ bool resolveSurfaceHit(const World &world,
     if (placement.instance)
       placement.instance->applyAttributes(out.attributes);
   }
+  // Where a moving instance was when the ray passed.
+  const mat3x4 objectFromWorld = placement.objectFromWorldAt(ray.time);
   const float3 objectPosition =
-      placement.identity
-          ? out.position
-          : transformPoint(placement.objectFromWorld, out.position);
+      placement.identity ? out.position
+                         : transformPoint(objectFromWorld, out.position);
   const float3 objectNormal = surface->geometry()->attributesAt(
-      hit, objectPosition, out.attributes, interpolate);
-  float3 geometric =
-      placement.identity
-          ? hit.geometricNormal
-          : transformNormal(placement.objectFromWorld, hit.geometricNormal);
+      hit, objectPosition, out.attributes, interpolate, ray.time);
+  float3 geometric = placement.identity ? hit.geometricNormal
+                                        : transformNormal(objectFromWorld,
+                                            hit.geometricNormal);
   geometric = normalize(geometric);
   // The geometry returns its shading normal normalised already.
   float3 shading =
       placement.identity
           ? objectNormal
-          : normalize(transformNormal(placement.objectFromWorld, objectNormal));
+          : normalize(transformNormal(objectFromWorld, objectNormal));
   out.backFacing = dot(geometric, ray.direction) > 0.f;
   if (out.backFacing)
     geometric = geometric * -1.f;

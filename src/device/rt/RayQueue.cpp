@@ -68,7 +68,8 @@ size_t RayQueue::push(const float3 &origin,
   m_directionX.push_back(valid ? direction.x : 0.f);
   m_directionY.push_back(valid ? direction.y : 0.f);
   m_directionZ.push_back(valid ? direction.z : 1.f);
-  m_time.push_back(std::isfinite(time) ? time : 0.5f);
+  // Embree traces times in [0, 1]; anything else at the shutter midpoint.
+  m_time.push_back(time >= 0.f && time <= 1.f ? time : 0.5f);
   m_tMax.push_back(valid ? tMax : 0.f);
   m_mask.push_back(~0u);
   m_tag.push_back(tag);

@@ -1,10 +1,12 @@
 #include "Scene.h"
 
+#include "../math/MotionTransform.h"
 #include "RayQueue.h"
 #include "RayValidity.h"
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -93,6 +95,56 @@ void userOccluded(const RTCOccludedFunctionNArguments *args)
   }
 }
 
+// Ray times Embree accepts; anything else traces at the shutter midpoint.
+float validTime(float time)
+{
+  return time >= 0.f && time <= 1.f ? time : 0.5f;
+}
+
+// The uniform time steps Embree traces keys over `timeline` with. Embree
+// drops geometry at times outside its steps' range, ANARI holds the first
+// and last key: extra steps repeating them extend the range over the
+// whole shutter [0, 1]. Keys too dense for Embree's step limit are
+// resampled over the range covering keys and shutter.
+struct TimeSteps
+{
+  uint32_t count{1};
+  float begin{0.f}, end{1.f};
+
+  float time(uint32_t step) const
+  {
+    return count < 2 ? begin
+                     : begin + (end - begin) * float(step) / float(count - 1);
+  }
+};
+
+TimeSteps timeStepsFor(const KeyTimeline &keys)
+{
+  if (keys.keyCount < 2 || !(keys.end > keys.begin))
+    return {};
+  const float spacing = (keys.end - keys.begin) / float(keys.keyCount - 1);
+  // A step ends up within 1e-4 spacings of the shutter's ends at most.
+  const float before = std::max(0.f, std::ceil(keys.begin / spacing - 1e-4f));
+  const float after =
+      std::max(0.f, std::ceil((1.f - keys.end) / spacing - 1e-4f));
+  const float count = float(keys.keyCount) + before + after;
+  if (count <= float(RTC_MAX_TIME_STEP_COUNT)) {
+    return {uint32_t(count),
+        keys.begin - before * spacing,
+        keys.end + after * spacing};
+  }
+  return {RTC_MAX_TIME_STEP_COUNT,
+      std::min(0.f, keys.begin),
+      std::max(1.f, keys.end)};
+}
+
+void setTimeSteps(RTCGeometry geometry, const TimeSteps &steps)
+{
+  rtcSetGeometryTimeStepCount(geometry, steps.count);
+  if (steps.count > 1)
+    rtcSetGeometryTimeRange(geometry, steps.begin, steps.end);
+}
+
 void attach(RTCScene scene, RTCGeometry geometry, uint32_t id)
 {
   rtcCommitGeometry(geometry);
@@ -132,6 +184,7 @@ void Scene::clear()
 {
   if (m_scene)
     rtcReleaseScene(m_scene);
+  m_interpolatedVertices.clear();
   m_scene = m_context.isValid() ? rtcNewScene(m_context.handle()) : nullptr;
   if (m_scene) {
     rtcSetSceneBuildQuality(m_scene, RTC_BUILD_QUALITY_HIGH);
@@ -142,23 +195,42 @@ void Scene::clear()
 
 void Scene::addMesh(uint32_t id,
     bool quads,
-    const float3 *vertices,
+    const VertexKeys &vertices,
     size_t vertexCount,
     const uint32_t *indices,
     size_t primitiveCount)
 {
-  if (!m_scene)
+  if (!m_scene || vertices.positions.empty())
     return;
   RTCGeometry g = rtcNewGeometry(m_context.handle(),
       quads ? RTC_GEOMETRY_TYPE_QUAD : RTC_GEOMETRY_TYPE_TRIANGLE);
-  rtcSetSharedGeometryBuffer(g,
-      RTC_BUFFER_TYPE_VERTEX,
-      0,
-      RTC_FORMAT_FLOAT3,
-      vertices,
-      0,
-      sizeof(float3),
-      vertexCount);
+  const TimeSteps steps = timeStepsFor(vertices.timeline);
+  setTimeSteps(g, steps);
+  for (uint32_t step = 0; step < steps.count; step++) {
+    const KeyTimeline::Position at = vertices.timeline.locate(steps.time(step));
+    // Steps normally fall on keys (up to rounding); only resampled ones
+    // need vertices of their own.
+    const float3 *positions = vertices.positions[at.index];
+    if (at.fraction > 1.f - 1e-4f) {
+      positions = vertices.positions[at.index + 1];
+    } else if (at.fraction >= 1e-4f) {
+      const float3 *a = vertices.positions[at.index];
+      const float3 *b = vertices.positions[at.index + 1];
+      std::vector<float3> between(vertexCount + 1); // Embree's read padding
+      for (size_t v = 0; v < vertexCount; v++)
+        between[v] = a[v] * (1.f - at.fraction) + b[v] * at.fraction;
+      m_interpolatedVertices.push_back(std::move(between));
+      positions = m_interpolatedVertices.back().data();
+    }
+    rtcSetSharedGeometryBuffer(g,
+        RTC_BUFFER_TYPE_VERTEX,
+        step,
+        RTC_FORMAT_FLOAT3,
+        positions,
+        0,
+        sizeof(float3),
+        vertexCount);
+  }
   const unsigned corners = quads ? 4 : 3;
   rtcSetSharedGeometryBuffer(g,
       RTC_BUFFER_TYPE_INDEX,
@@ -177,11 +249,29 @@ void Scene::addTriangles(uint32_t id,
     const uint32_t *indices,
     size_t triangleCount)
 {
-  addMesh(id, false, vertices, vertexCount, indices, triangleCount);
+  addMesh(id, false, {{vertices}, {}}, vertexCount, indices, triangleCount);
 }
 
 void Scene::addQuads(uint32_t id,
     const float3 *vertices,
+    size_t vertexCount,
+    const uint32_t *indices,
+    size_t quadCount)
+{
+  addMesh(id, true, {{vertices}, {}}, vertexCount, indices, quadCount);
+}
+
+void Scene::addTriangles(uint32_t id,
+    const VertexKeys &vertices,
+    size_t vertexCount,
+    const uint32_t *indices,
+    size_t triangleCount)
+{
+  addMesh(id, false, vertices, vertexCount, indices, triangleCount);
+}
+
+void Scene::addQuads(uint32_t id,
+    const VertexKeys &vertices,
     size_t vertexCount,
     const uint32_t *indices,
     size_t quadCount)
@@ -261,6 +351,37 @@ void Scene::addInstance(
   attach(m_scene, g, id);
 }
 
+void Scene::addInstance(
+    uint32_t id, const Scene &child, const MotionTransform &worldFromObject)
+{
+  if (!m_scene || !child.m_scene)
+    return;
+  RTCGeometry g =
+      rtcNewGeometry(m_context.handle(), RTC_GEOMETRY_TYPE_INSTANCE);
+  rtcSetGeometryInstancedScene(g, child.m_scene);
+  const TimeSteps steps = timeStepsFor(worldFromObject.timeline());
+  setTimeSteps(g, steps);
+  for (uint32_t step = 0; step < steps.count; step++) {
+    const float time = steps.time(step);
+    if (worldFromObject.isDecomposed()) {
+      // Embree slerps the rotation between steps, as MotionTransform does.
+      const MotionTransform::Decomposed d = worldFromObject.decomposedAt(time);
+      RTCQuaternionDecomposition q;
+      rtcInitQuaternionDecomposition(&q);
+      rtcQuaternionDecompositionSetScale(&q, d.scale.x, d.scale.y, d.scale.z);
+      rtcQuaternionDecompositionSetQuaternion(
+          &q, d.rotation.w, d.rotation.x, d.rotation.y, d.rotation.z);
+      rtcQuaternionDecompositionSetTranslation(
+          &q, d.translation.x, d.translation.y, d.translation.z);
+      rtcSetGeometryTransformQuaternion(g, step, &q);
+    } else {
+      const mat3x4 m = worldFromObject.at(time);
+      rtcSetGeometryTransform(g, step, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, &m);
+    }
+  }
+  attach(m_scene, g, id);
+}
+
 void Scene::commit()
 {
   if (m_scene)
@@ -282,7 +403,8 @@ bool Scene::intersect(const float3 &origin,
     const float3 &direction,
     float tMin,
     float tMax,
-    Hit &hit) const
+    Hit &hit,
+    float time) const
 {
   hit = Hit{};
   if (!m_scene || !isTraceable(origin, direction, tMin, tMax))
@@ -298,7 +420,7 @@ bool Scene::intersect(const float3 &origin,
   rh.ray.dir_z = direction.z;
   rh.ray.tnear = tMin;
   rh.ray.tfar = tMax;
-  rh.ray.time = 0.5f;
+  rh.ray.time = validTime(time);
   rh.ray.mask = ~0u;
   rh.ray.id = 0;
   rh.ray.flags = 0;
@@ -329,7 +451,7 @@ void Scene::intersect(const RayPacket &packet, Hit hits[kPacketSize]) const
     rh.ray.dir_z[i] = packet.directionZ[i];
     rh.ray.tnear[i] = packet.tMin[i];
     rh.ray.tfar[i] = packet.tMax[i];
-    rh.ray.time[i] = 0.5f;
+    rh.ray.time[i] = validTime(packet.time[i]);
     rh.ray.mask[i] = ~0u;
     rh.ray.id[i] = unsigned(i);
     rh.ray.flags[i] = 0;

@@ -3,14 +3,20 @@
 // Context, that sees Embree types.
 #pragma once
 
+#include "../math/KeyTimeline.h"
 #include "Context.h"
 #include "Hit.h"
 #include "UserGeometry.h"
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 struct RTCSceneTy;
+
+namespace prism {
+class MotionTransform;
+}
 
 namespace prism::rt {
 class RayQueue;
@@ -26,7 +32,16 @@ struct RayPacket
   float directionX[kPacketSize], directionY[kPacketSize],
       directionZ[kPacketSize];
   float tMin[kPacketSize], tMax[kPacketSize];
+  float time[kPacketSize]; // in the shutter's [0, 1] (motion blur)
   int active[kPacketSize]; // -1 traces the lane, 0 skips it
+};
+
+// Vertex positions of a deforming mesh at keys uniformly distributed over
+// `timeline`: one array per key, each as addTriangles' `vertices`.
+struct VertexKeys
+{
+  std::vector<const float3 *> positions;
+  KeyTimeline timeline;
 };
 
 class Scene
@@ -53,6 +68,17 @@ class Scene
       size_t vertexCount,
       const uint32_t *indices,
       size_t quadCount);
+  // Deforming meshes (motion blur over Embree time steps).
+  void addTriangles(uint32_t id,
+      const VertexKeys &vertices,
+      size_t vertexCount,
+      const uint32_t *indices,
+      size_t triangleCount);
+  void addQuads(uint32_t id,
+      const VertexKeys &vertices,
+      size_t vertexCount,
+      const uint32_t *indices,
+      size_t quadCount);
   void addSpheres(uint32_t id, const float4 *centerAndRadius, size_t count);
   // Round linear segments from vertex i to i + 1 for every listed i.
   void addRoundCurves(uint32_t id,
@@ -64,17 +90,22 @@ class Scene
   // `child` placed by `worldFromObject`; `child` must be committed first.
   void addInstance(
       uint32_t id, const Scene &child, const mat3x4 &worldFromObject);
+  // `child` moving over the shutter (motion blur over Embree time steps).
+  void addInstance(
+      uint32_t id, const Scene &child, const MotionTransform &worldFromObject);
 
   // Builds the BVH; call after adding everything.
   void commit();
   box3 bounds() const;
 
-  // The closest hit along the ray in (tMin, tMax); false if none.
+  // The closest hit along the ray in (tMin, tMax) at `time` (in the
+  // shutter's [0, 1]); false if none.
   bool intersect(const float3 &origin,
       const float3 &direction,
       float tMin,
       float tMax,
-      Hit &hit) const;
+      Hit &hit,
+      float time) const;
   // Traces the active lanes of `packet` (coherent rays); hits[i] per lane.
   void intersect(const RayPacket &packet, Hit hits[kPacketSize]) const;
   // Every ray of `queue` (incoherent rays, Embree's stream API): the
@@ -86,13 +117,16 @@ class Scene
   // Triangles (3 indices per primitive) or quads (4), sharing the arrays.
   void addMesh(uint32_t id,
       bool quads,
-      const float3 *vertices,
+      const VertexKeys &vertices,
       size_t vertexCount,
       const uint32_t *indices,
       size_t primitiveCount);
 
   const Context &m_context;
   RTCSceneTy *m_scene{nullptr};
+  // Vertices interpolated between keys where Embree's time steps fall
+  // between them; kept until clear().
+  std::vector<std::vector<float3>> m_interpolatedVertices;
 };
 
 } // namespace prism::rt

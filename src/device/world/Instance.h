@@ -1,9 +1,11 @@
 // ANARIInstance: a group placed in the world by one transform or, with
-// KHR_INSTANCE_TRANSFORM_ARRAY, by many (spec 5.5). The motion subtypes are
-// placed at the shutter's midpoint until motion blur samples time.
+// KHR_INSTANCE_TRANSFORM_ARRAY, by many (spec 5.5), or moving over the
+// shutter by transform keys (the motionTransform and
+// motionScaleRotationTranslation subtypes).
 #pragma once
 
 #include "../geometry/Attributes.h"
+#include "../math/MotionTransform.h"
 #include "Group.h"
 
 namespace prism {
@@ -26,9 +28,15 @@ class Instance : public Object
   {
     return m_worldFromObject.size();
   }
+  // At the shutter midpoint (time 0.5) for a moving instance.
   const mat3x4 &worldFromObject(size_t placement) const
   {
     return m_worldFromObject[placement];
+  }
+  // The transform keys of a moving instance (one placement), or NULL.
+  const MotionTransform *motion() const
+  {
+    return m_motion.isMoving() ? &m_motion : nullptr;
   }
   uint32_t id(size_t placement) const
   {
@@ -48,13 +56,12 @@ class Instance : public Object
   void commitParameters() override;
 
  private:
-  void readMotionTransform();
-  void readMotionScaleRotationTranslation();
-  // Where keys spanning `time` are sampled: the shutter midpoint (0.5).
-  float keyPosition(size_t keyCount);
+  // Reads the motion.* keys; true if they place the instance.
+  bool readMotion();
 
   Group *m_group{nullptr};
   std::vector<mat3x4> m_worldFromObject;
+  MotionTransform m_motion;
   std::vector<uint32_t> m_ids;
   uint32_t m_id{~0u};
   bool m_hasAttribute[5]{};

@@ -105,11 +105,16 @@ void World::finalize()
       return;
     }
     const auto embreeId = uint32_t(m_placements.size());
+    const MotionTransform *motion = instance ? instance->motion() : nullptr;
     const bool identity =
-        std::memcmp(&transform, &kIdentityMat3x4, sizeof(mat3x4)) == 0;
+        !motion
+        && std::memcmp(&transform, &kIdentityMat3x4, sizeof(mat3x4)) == 0;
     m_placements.push_back(
-        {group, instance, transform, objectFromWorld, id, identity});
-    m_scene->addInstance(embreeId, group->scene(), transform);
+        {group, instance, transform, objectFromWorld, id, identity, motion});
+    if (motion)
+      m_scene->addInstance(embreeId, group->scene(), *motion);
+    else
+      m_scene->addInstance(embreeId, group->scene(), transform);
   };
   if (!isEmpty(m_implicitGroup->bounds()))
     place(m_implicitGroup, nullptr, kIdentityMat3x4, ~0u);
@@ -125,11 +130,7 @@ void World::finalize()
   }
   m_scene->commit();
   m_bounds = m_scene->bounds();
-  const bool single =
-      m_placements.size() == 1
-      && std::memcmp(
-             &m_placements[0].worldFromObject, &kIdentityMat3x4, sizeof(mat3x4))
-             == 0;
+  const bool single = m_placements.size() == 1 && m_placements[0].identity;
   m_traced = single ? &m_placements[0].group->scene() : m_scene.get();
   const float sceneRadius =
       isEmpty(m_bounds) ? 1.f : 0.5f * length(m_bounds.upper - m_bounds.lower);
@@ -140,9 +141,11 @@ bool World::intersect(const float3 &origin,
     const float3 &direction,
     float tMin,
     float tMax,
-    rt::Hit &hit) const
+    rt::Hit &hit,
+    float time) const
 {
-  if (!m_traced || !m_traced->intersect(origin, direction, tMin, tMax, hit))
+  if (!m_traced
+      || !m_traced->intersect(origin, direction, tMin, tMax, hit, time))
     return false;
   if (m_traced != m_scene.get())
     hit.instanceId = 0;

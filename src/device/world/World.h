@@ -30,18 +30,29 @@ class World : public Object
     mat3x4 objectFromWorld;
     uint32_t instanceId; // the user's id (~0u when unset)
     bool identity;       // worldFromObject is the identity (skip transforms)
+    // Keys of a moving instance (then the transforms above hold at the
+    // shutter midpoint only), or NULL.
+    const MotionTransform *motion{nullptr};
+
+    // objectFromWorld at `time`, in the shutter's [0, 1].
+    mat3x4 objectFromWorldAt(float time) const
+    {
+      return motion ? inverse(motion->at(time)) : objectFromWorld;
+    }
   };
 
   const Placement &placement(uint32_t instanceId) const
   {
     return m_placements[instanceId];
   }
-  // The closest hit; instanceId names the placement (see placement()).
+  // The closest hit at `time` (in the shutter's [0, 1]); instanceId names
+  // the placement (see placement()).
   bool intersect(const float3 &origin,
       const float3 &direction,
       float tMin,
       float tMax,
-      rt::Hit &hit) const;
+      rt::Hit &hit,
+      float time) const;
   void intersect(
       const rt::RayPacket &packet, rt::Hit hits[rt::kPacketSize]) const;
   // Every ray of the queue: closest hits (instanceId as above), or only
