@@ -399,4 +399,72 @@ TEST_F(PathTracerTest, QuadLightIrradianceIsThePolygonFormFactor)
   EXPECT_TRUE(problems().empty());
 }
 
+TEST_F(PathTracerTest, EmissiveQuadLightsLikeAQuadLight)
+{
+  // The same 1 x 2 rectangle as above as black geometry with emissive
+  // radiance L: next-event estimation samples it, rays that hit it are
+  // weighted against that, and the irradiance is the same form factor.
+  const float black[4] = {0, 0, 0, 1};
+  const float L = 3.f;
+  ANARIMaterial glow = anariNewMaterial(m_device, "physicallyBased");
+  const float none[3] = {0, 0, 0}, emissive[3] = {L, L, L};
+  anariSetParameter(m_device, glow, "baseColor", ANARI_FLOAT32_VEC3, none);
+  anariSetParameter(m_device, glow, "emissive", ANARI_FLOAT32_VEC3, emissive);
+  anariCommitParameters(m_device, glow);
+  ANARIGeometry panel = geometry("quad",
+      {-0.3f,
+          -0.8f,
+          1.5f,
+          0.7f,
+          -0.8f,
+          1.5f,
+          0.7f,
+          1.2f,
+          1.5f,
+          -0.3f,
+          1.2f,
+          1.5f});
+  ANARIWorld w = world({plane(matte(1, 1, 1)), surface(panel, glow)});
+  const float eye[3] = {0, 0, 1};
+  ANARICamera c = orthographic(eye, kDown, 1e-3f);
+  ANARIRenderer r = pathTracer(0.f, black);
+  const float3Mean mean = meanOverHits(w, c, r, 1, 4096);
+  const float E = polygonIrradiance({{-0.3f, -0.8f, 1.5f},
+                                        {0.7f, -0.8f, 1.5f},
+                                        {0.7f, 1.2f, 1.5f},
+                                        {-0.3f, 1.2f, 1.5f}},
+      L);
+  EXPECT_NEAR(mean.r, E / float(M_PI), 0.02f * E / float(M_PI));
+  for (ANARIObject o : {(ANARIObject)w, (ANARIObject)c, (ANARIObject)r})
+    anariRelease(m_device, o);
+  EXPECT_TRUE(problems().empty());
+}
+
+TEST_F(PathTracerTest, SmallEmissiveSphereIsSampledAsALight)
+{
+  // A sphere of radius R and radiance L at height h over a white plane
+  // gives the point below it E = pi L (R / h)^2 (a sphere's form factor).
+  // Too small to be found by chance, it converges only through next-event
+  // estimation.
+  const float black[4] = {0, 0, 0, 1};
+  const float L = 50.f, R = 0.05f, h = 1.f;
+  ANARIMaterial glow = anariNewMaterial(m_device, "physicallyBased");
+  const float none[3] = {0, 0, 0}, emissive[3] = {L, L, L};
+  anariSetParameter(m_device, glow, "baseColor", ANARI_FLOAT32_VEC3, none);
+  anariSetParameter(m_device, glow, "emissive", ANARI_FLOAT32_VEC3, emissive);
+  anariCommitParameters(m_device, glow);
+  ANARIGeometry ball = geometry("sphere", {0, 0, h});
+  anariSetParameter(m_device, ball, "radius", ANARI_FLOAT32, &R);
+  ANARIWorld w = world({plane(matte(1, 1, 1)), surface(ball, glow)});
+  const float eye[3] = {0.f, 0.f, 0.5f};
+  ANARICamera c = orthographic(eye, kDown, 1e-3f);
+  ANARIRenderer r = pathTracer(0.f, black);
+  const float3Mean mean = meanOverHits(w, c, r, 1, 1024);
+  const float E = float(M_PI) * L * (R / h) * (R / h);
+  EXPECT_NEAR(mean.r, E / float(M_PI), 0.03f * E / float(M_PI));
+  for (ANARIObject o : {(ANARIObject)w, (ANARIObject)c, (ANARIObject)r})
+    anariRelease(m_device, o);
+  EXPECT_TRUE(problems().empty());
+}
+
 } // namespace

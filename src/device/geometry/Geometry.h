@@ -6,6 +6,7 @@
 #include "../object/Object.h"
 #include "../rt/Hit.h"
 #include "Attributes.h"
+#include "EmitterShape.h"
 #include "VertexMotion.h"
 
 #include <vector>
@@ -48,6 +49,11 @@ class Geometry : public Object
   // or, without them, from how attribute0 (texture coordinates) varies
   // over the primitive; false when neither defines one.
   bool tangentAt(const rt::Hit &hit, float4 &tangent) const;
+
+  // Appends the surface, in object space, for sampling it as a light;
+  // nothing for shapes that cannot be sampled (or move while the shutter
+  // is open).
+  virtual void appendEmitterShape(EmitterShape &) const {}
 
  protected:
   // Which vertices a hit interpolates, and how; `slot` is each vertex's

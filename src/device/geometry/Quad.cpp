@@ -45,4 +45,15 @@ Geometry::Corners Quad::cornersAt(uint32_t primitive, float u, float v) const
   return {3, {q[2], q[3], q[1]}, {2, 3, 1}, {u + v - 1.f, 1.f - u, 1.f - v}};
 }
 
+void Quad::appendEmitterShape(EmitterShape &shape) const
+{
+  if (!isValid() || m_vertexMotion.isSet())
+    return;
+  for (size_t q = 0; q + 3 < m_indices.size(); q += 4) {
+    // The two triangles Embree splits the quad into.
+    for (int corner : {0, 1, 3, 2, 3, 1})
+      shape.triangles.push_back(m_positions[m_indices[q + corner]]);
+  }
+}
+
 } // namespace prism

@@ -10,6 +10,7 @@ class Quad : public Geometry
  public:
   explicit Quad(Device &device) : Geometry(device, "quad") {}
   void addTo(rt::Scene &scene, uint32_t id) const override;
+  void appendEmitterShape(EmitterShape &shape) const override;
 
  protected:
   void readShape() override;

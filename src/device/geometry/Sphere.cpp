@@ -49,4 +49,11 @@ float3 Sphere::surfaceNormal(
   return normalize(objectPosition - float3{s.x, s.y, s.z});
 }
 
+void Sphere::appendEmitterShape(EmitterShape &shape) const
+{
+  if (isValid())
+    shape.spheres.insert(
+        shape.spheres.end(), m_centerRadius.begin(), m_centerRadius.end());
+}
+
 } // namespace prism

@@ -11,6 +11,7 @@ class Sphere : public Geometry
  public:
   explicit Sphere(Device &device) : Geometry(device, "sphere") {}
   void addTo(rt::Scene &scene, uint32_t id) const override;
+  void appendEmitterShape(EmitterShape &shape) const override;
 
  protected:
   void readShape() override;

@@ -42,4 +42,12 @@ Geometry::Corners Triangle::cornersAt(
   return {3, {tri[0], tri[1], tri[2]}, {0, 1, 2}, {1.f - u - v, u, v}};
 }
 
+void Triangle::appendEmitterShape(EmitterShape &shape) const
+{
+  if (!isValid() || m_vertexMotion.isSet())
+    return;
+  for (uint32_t index : m_indices)
+    shape.triangles.push_back(m_positions[index]);
+}
+
 } // namespace prism

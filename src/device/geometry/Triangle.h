@@ -10,6 +10,7 @@ class Triangle : public Geometry
  public:
   explicit Triangle(Device &device) : Geometry(device, "triangle") {}
   void addTo(rt::Scene &scene, uint32_t id) const override;
+  void appendEmitterShape(EmitterShape &shape) const override;
 
  protected:
   void readShape() override;

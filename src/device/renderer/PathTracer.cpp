@@ -1,5 +1,6 @@
 #include "PathTracer.h"
 
+#include "../light/EmissiveSurface.h"
 #include "../light/PlacedLight.h"
 #include "../material/Matte.h"
 #include "../material/PhysicallyBased.h"
@@ -196,6 +197,27 @@ void PathTracer::renderTile(const RenderContext &context,
     store(context, buffers, path.x, path.y, path.sample);
 }
 
+float PathTracer::emissionWeight(const RenderContext &context,
+    const PathState &path,
+    const Ray &ray,
+    const rt::Hit &hit,
+    const SurfaceHit &surface) const
+{
+  // Camera rays and delta bounces could not have sampled the surface.
+  if (path.bounce == 0 || path.previousDelta)
+    return 1.f;
+  const World &world = *context.world;
+  const int32_t index = world.emitterLight(hit.instanceId, hit.geometryId);
+  if (index < 0)
+    return 1.f; // no light samples this surface
+  const auto &emitter =
+      static_cast<const EmissiveSurface &>(*world.lights()[size_t(index)]);
+  const float cosine = std::abs(dot(surface.geometricNormal, ray.direction));
+  const float lightPdf = emitter.pdfOfHit(hit.t, cosine)
+                         * world.lightSelector().probability(size_t(index));
+  return powerHeuristic(path.previousPdf, lightPdf);
+}
+
 bool PathTracer::getProperty(const std::string &name,
     ANARIDataType type,
     void *mem,
@@ -320,7 +342,9 @@ void PathTracer::shadeBounce(const RenderContext &context,
       path.sample.instanceId = surface.placement->instanceId;
       path.recordedFirstHit = true;
     }
-    path.radiance = path.radiance + path.throughput * inputs.emissive;
+    path.radiance = path.radiance
+                    + path.throughput * inputs.emissive
+                          * emissionWeight(context, path, ray, hit, surface);
     if (path.bounce + 1 >= m_maxPathLength)
       continue;
 

@@ -71,6 +71,14 @@ class PathTracer : public Renderer
       const PathState &path) const;
 
   mutable std::atomic<uint64_t> m_raysTraced{0};
+  // The multiple importance sampling weight of emission a ray found by
+  // hitting a surface, against next-event estimation sampling it.
+  float emissionWeight(const RenderContext &context,
+      const PathState &path,
+      const Ray &ray,
+      const rt::Hit &hit,
+      const SurfaceHit &surface) const;
+
   int m_maxPathLength{8};
   float3 m_ambient{0.f, 0.f, 0.f}; // ambientColor * ambientRadiance
 };

@@ -21,6 +21,11 @@ class Group : public Object
   {
     return geometryId < m_surfaces.size() ? m_surfaces[geometryId] : nullptr;
   }
+  // One more than the largest geometry id.
+  uint32_t surfaceCount() const
+  {
+    return uint32_t(m_surfaces.size());
+  }
   const std::vector<Object *> &lights() const
   {
     return m_lights;

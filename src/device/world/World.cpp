@@ -2,12 +2,46 @@
 
 #include "../Device.h"
 #include "../array/Array.h"
+#include "../light/EmissiveSurface.h"
 #include "../light/Light.h"
+#include "../material/PhysicallyBased.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
 namespace prism {
+namespace {
+
+// `shape` moved into world space. Spheres keep their shape only under
+// similarity transforms; under others they are left out (rays still find
+// them).
+EmitterShape placedEmitterShape(
+    const EmitterShape &shape, const mat3x4 &worldFromObject)
+{
+  EmitterShape out;
+  out.triangles.reserve(shape.triangles.size());
+  for (const float3 &p : shape.triangles)
+    out.triangles.push_back(transformPoint(worldFromObject, p));
+  const float3 *axes = worldFromObject.col;
+  const float scale = length(axes[0]);
+  const float tolerance = 1e-4f * scale;
+  const bool similarity =
+      std::abs(length(axes[1]) - scale) <= tolerance
+      && std::abs(length(axes[2]) - scale) <= tolerance
+      && std::abs(dot(axes[0], axes[1])) <= tolerance * scale
+      && std::abs(dot(axes[1], axes[2])) <= tolerance * scale
+      && std::abs(dot(axes[0], axes[2])) <= tolerance * scale;
+  if (similarity) {
+    for (const float4 &s : shape.spheres) {
+      const float3 c = transformPoint(worldFromObject, float3{s.x, s.y, s.z});
+      out.spheres.push_back(float4{c.x, c.y, c.z, s.w * scale});
+    }
+  }
+  return out;
+}
+
+} // namespace
 
 World::World(Device &device)
     : Object(device, ANARI_WORLD, ""),
@@ -29,6 +63,7 @@ void World::dropReferences()
   m_instances.clear();
   m_placements.clear();
   m_placedLights.clear();
+  m_emitterLights.clear();
   if (m_implicitGroup)
     m_implicitGroup->setSurfaces({});
 }
@@ -132,9 +167,47 @@ void World::finalize()
   m_bounds = m_scene->bounds();
   const bool single = m_placements.size() == 1 && m_placements[0].identity;
   m_traced = single ? &m_placements[0].group->scene() : m_scene.get();
+  placeEmitters();
   const float sceneRadius =
       isEmpty(m_bounds) ? 1.f : 0.5f * length(m_bounds.upper - m_bounds.lower);
   m_lightSelector.build(m_placedLights, sceneRadius);
+}
+
+void World::placeEmitters()
+{
+  m_emitterLights.assign(m_placements.size(), {});
+  for (size_t p = 0; p < m_placements.size(); p++) {
+    const Placement &placement = m_placements[p];
+    // Moving instances' emitters are found by rays alone.
+    if (placement.motion)
+      continue;
+    const Group &group = *placement.group;
+    for (uint32_t g = 0; g < group.surfaceCount(); g++) {
+      const Surface *surface = group.surface(g);
+      const auto *material =
+          surface ? dynamic_cast<const PhysicallyBased *>(surface->material())
+                  : nullptr;
+      if (!material)
+        continue;
+      const auto &emissive = material->inputs().emissive;
+      const float3 radiance = emissive.constant();
+      // Textured emission varies over the surface: rays find it alone.
+      if (emissive.source() != MaterialInput<float3>::Source::Constant
+          || !(std::max(radiance.x, std::max(radiance.y, radiance.z)) > 0.f))
+        continue;
+      EmitterShape shape;
+      surface->geometry()->appendEmitterShape(shape);
+      if (!placement.identity)
+        shape = placedEmitterShape(shape, placement.worldFromObject);
+      auto light =
+          std::make_unique<EmissiveSurface>(std::move(shape), radiance);
+      if (light->isEmpty())
+        continue;
+      m_emitterLights[p].resize(group.surfaceCount(), -1);
+      m_emitterLights[p][g] = int32_t(m_placedLights.size());
+      m_placedLights.push_back(std::move(light));
+    }
+  }
 }
 
 bool World::intersect(const float3 &origin,

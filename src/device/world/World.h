@@ -69,6 +69,15 @@ class World : public Object
   {
     return m_placedLights;
   }
+  // The index in lights() of the light that samples surface `geometryId`
+  // of placement `instanceId` (an emissive surface), or -1 if none does.
+  int32_t emitterLight(uint32_t instanceId, uint32_t geometryId) const
+  {
+    if (instanceId >= m_emitterLights.size())
+      return -1;
+    const std::vector<int32_t> &ofPlacement = m_emitterLights[instanceId];
+    return geometryId < ofPlacement.size() ? ofPlacement[geometryId] : -1;
+  }
   // Chooses among lights() for next-event estimation.
   const LightSelector &lightSelector() const
   {
@@ -87,6 +96,8 @@ class World : public Object
 
  private:
   std::vector<Object *> readObjects(const char *name);
+  // Adds a light for every surface with constant emission.
+  void placeEmitters();
 
   std::vector<const Instance *> m_instances;
   Group *m_implicitGroup; // an internal object, never seen by the API
@@ -95,6 +106,8 @@ class World : public Object
   std::vector<Placement> m_placements;
   std::vector<std::unique_ptr<PlacedLight>> m_placedLights;
   LightSelector m_lightSelector;
+  // Per placement, per geometry id: see emitterLight().
+  std::vector<std::vector<int32_t>> m_emitterLights;
   std::unique_ptr<rt::Scene> m_scene;
   // A world of one untransformed placement traces its group's scene
   // directly: no instance level, the most common case for simple scenes.
