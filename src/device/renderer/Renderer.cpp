@@ -16,16 +16,6 @@
 #include <limits>
 
 namespace prism {
-namespace {
-
-// A point in [0,1)^2 for pixel (x, y) and sample n; the pixel centre for
-// the first sample so single-sample images stay exact.
-float2 pixelOffset(uint32_t x, uint32_t y, uint32_t sample)
-{
-  return sample == 0 ? float2{0.5f, 0.5f} : hashedSample2D(x, y, sample, 0);
-}
-
-} // namespace
 
 Renderer::Renderer(Device &device, const std::string &subtype)
     : Object(device, ANARI_RENDERER, subtype)

@@ -31,4 +31,11 @@ inline float2 hashedSample2D(
       float(h >> 8) * (1.f / 16777216.f), float(g >> 8) * (1.f / 16777216.f)};
 }
 
+// Where in pixel (x, y) sample `sample` looks, in [0,1)^2: the pixel centre
+// for the first sample so single-sample images stay exact.
+inline float2 pixelOffset(uint32_t x, uint32_t y, uint32_t sample)
+{
+  return sample == 0 ? float2{0.5f, 0.5f} : hashedSample2D(x, y, sample, 0);
+}
+
 } // namespace prism

@@ -5,6 +5,7 @@
 
 #include "Context.h"
 #include "Hit.h"
+#include "RayHitPacket.h"
 #include "UserGeometry.h"
 
 #include <cstddef>
@@ -73,6 +74,10 @@ class Scene
       Hit &hit) const;
   // Traces the active lanes of `packet` (coherent rays); hits[i] per lane.
   void intersect(const RayPacket &packet, Hit hits[kPacketSize]) const;
+  // Traces the lanes of `packet` whose `active` entry is -1, in place, with
+  // no copies: a lane's geometryId is kInvalidId unless it found a hit, and
+  // its other hit fields mean something only then.
+  void intersect(RayHitPacket &packet, const int active[kPacketSize]) const;
 
  private:
   // Triangles (3 indices per primitive) or quads (4), sharing the arrays.

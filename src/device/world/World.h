@@ -42,6 +42,10 @@ class World : public Object
       rt::Hit &hit) const;
   void intersect(
       const rt::RayPacket &packet, rt::Hit hits[rt::kPacketSize]) const;
+  // The packet's active lanes traced in place (see rt::Scene); instance
+  // ids name placements, as above.
+  void intersect(
+      rt::RayHitPacket &packet, const int active[rt::kPacketSize]) const;
   box3 bounds() const
   {
     return m_bounds;
