@@ -108,16 +108,21 @@ void writeColorPixels(
       p[3] = toUnorm8(c.w);
     }
     break;
-  case ANARI_UFIXED8_RGBA_SRGB:
+  case ANARI_UFIXED8_RGBA_SRGB: {
+    // Runs of one color (a plain background) are encoded once; the pixel
+    // is kept as one 32-bit word and so stored.
+    uint32_t pixel = 0;
     for (size_t i = 0; i < count; i++) {
       const float4 &c = linearRGBA[i];
-      uint8_t *p = bytes + 4 * i;
-      p[0] = toSrgb8(c.x);
-      p[1] = toSrgb8(c.y);
-      p[2] = toSrgb8(c.z);
-      p[3] = toUnorm8(c.w);
+      if (i == 0 || std::memcmp(&c, &linearRGBA[i - 1], sizeof(float4)) != 0) {
+        const uint8_t codes[4] = {
+            toSrgb8(c.x), toSrgb8(c.y), toSrgb8(c.z), toUnorm8(c.w)};
+        std::memcpy(&pixel, codes, sizeof(pixel));
+      }
+      std::memcpy(bytes + 4 * i, &pixel, sizeof(pixel));
     }
     break;
+  }
   case ANARI_FLOAT32_VEC4:
     std::memcpy(dst, linearRGBA, count * sizeof(float4));
     break;

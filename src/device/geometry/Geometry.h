@@ -54,6 +54,14 @@ class Geometry : public Object
   // nothing for shapes that cannot be sampled (or move while the shutter
   // is open).
   virtual void appendEmitterShape(EmitterShape &) const {}
+  // Whether the normal attributesAt() returns is just the normalised
+  // hit.geometricNormal (no vertex or corner normals, no analytic normal):
+  // renderers that need nothing else may then skip attributesAt().
+  bool flatShaded() const
+  {
+    return m_vertexNormals.empty() && m_cornerNormals.empty()
+           && !m_vertexMotion.hasNormals() && !hasAnalyticNormal();
+  }
 
  protected:
   // Which vertices a hit interpolates, and how; `slot` is each vertex's
@@ -78,6 +86,11 @@ class Geometry : public Object
   // The shading normal before vertex normals apply (default: Ng).
   virtual float3 surfaceNormal(
       const rt::Hit &hit, const float3 &objectPosition) const;
+  // True in subtypes whose surfaceNormal() is not Ng (see flatShaded()).
+  virtual bool hasAnalyticNormal() const
+  {
+    return false;
+  }
 
   // Marks the geometry invalid with an error naming the problem.
   void invalidate(const char *format, ...)

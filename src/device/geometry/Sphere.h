@@ -18,6 +18,10 @@ class Sphere : public Geometry
   Corners cornersAt(uint32_t primitive, float u, float v) const override;
   float3 surfaceNormal(
       const rt::Hit &hit, const float3 &objectPosition) const override;
+  bool hasAnalyticNormal() const override
+  {
+    return true;
+  }
 
  private:
   std::vector<uint32_t> m_vertexOf;   // sphere -> vertex

@@ -1,5 +1,7 @@
 #include "Raycast.h"
 
+#include "PrimaryRays.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -8,6 +10,207 @@ namespace {
 
 // Surfaces seen through at most this many see-through layers per pixel.
 constexpr int kMaxLayers = 64;
+// Accumulated alpha beyond which the layers behind no longer show.
+constexpr float kOpaqueAlpha = 0.999f;
+
+// The eye light's brightness where the surface normal and the ray make an
+// angle of the given cosine.
+float eyeLight(float blendRatio, float cosine)
+{
+  return blendRatio * cosine + (1.f - blendRatio);
+}
+
+// Front-to-back compositing of the layers a ray crosses, then of the
+// background behind them.
+struct LayerBlend
+{
+  float3 color{0, 0, 0};
+  float alpha{0.f};
+
+  void add(const float3 &baseColor, float light, float coverage)
+  {
+    const float weight = (1.f - alpha) * coverage;
+    color = color + baseColor * (light * weight);
+    alpha += weight;
+  }
+  bool opaque() const
+  {
+    return alpha >= kOpaqueAlpha;
+  }
+  float4 over(const float4 &background) const
+  {
+    const float rest = 1.f - alpha;
+    return {color.x + rest * background.x,
+        color.y + rest * background.y,
+        color.z + rest * background.z,
+        alpha + rest * background.w};
+  }
+};
+
+// What hits on one surface share when its material color is constant and
+// its first layer is opaque: then a hit needs only its normal computed.
+struct ConstantSurface
+{
+  uint32_t instanceKey{rt::kInvalidId}; // the hit ids this was made for
+  uint32_t geometryKey{rt::kInvalidId};
+  bool constant{false}; // false: shade the hit with shadeSample()
+  bool flat{false};     // the shading normal is the normalised world-space Ng
+  float3 baseColor{0, 0, 0};
+  float coverage{0.f};
+  uint32_t objectId{kNoId};
+  uint32_t instanceId{kNoId};
+};
+
+// The ConstantSurface of the surface a hit names; `last` caches the one
+// looked up before, as neighbouring pixels mostly hit the same surface.
+const ConstantSurface &constantSurface(const World &world,
+    uint32_t instanceKey,
+    uint32_t geometryKey,
+    ConstantSurface &last)
+{
+  if (last.instanceKey == instanceKey && last.geometryKey == geometryKey)
+    return last;
+  last = ConstantSurface{};
+  last.instanceKey = instanceKey;
+  last.geometryKey = geometryKey;
+  const World::Placement &placement = world.placement(instanceKey);
+  const Surface *surface = placement.group->surface(geometryKey);
+  if (!surface || surface->material()->colorReadsAttributes())
+    return last;
+  const Material &material = *surface->material();
+  const float4 base = material.baseColorAndOpacity(AttributeValues{});
+  last.baseColor = float3{base.x, base.y, base.z};
+  last.coverage = material.coverage(base.w);
+  LayerBlend first;
+  first.add(last.baseColor, 1.f, last.coverage);
+  last.constant = first.opaque();
+  last.flat =
+      last.constant && placement.identity && surface->geometry()->flatShaded();
+  last.objectId = surface->id();
+  last.instanceId = placement.instanceId;
+  return last;
+}
+
+// One packet's shading, lane by lane in arrays (SoA) so that the common
+// case, a miss or a hit on a flat constant surface, is shaded for all
+// lanes by one straight loop the compiler vectorises.
+struct PacketShading
+{
+  static constexpr int kLanes = rt::kPacketSize;
+
+  // Inputs. `hit` is 1 where the lane hit a flat constant surface, 0 where
+  // it missed or is shaded by other means (then `otherwise` says so).
+  alignas(32) float hit[kLanes];
+  alignas(32) float baseR[kLanes], baseG[kLanes], baseB[kLanes];
+  alignas(32) float coverage[kLanes];
+  alignas(32) float backR[kLanes], backG[kLanes], backB[kLanes], backA[kLanes];
+  uint32_t objectId[kLanes], instanceId[kLanes];
+  bool otherwise[kLanes];
+  PixelSample samples[kLanes]; // the lanes shaded otherwise
+
+  // Results of shadeFlat().
+  alignas(32) float colorR[kLanes], colorG[kLanes], colorB[kLanes],
+      colorA[kLanes];
+  alignas(32) float normalX[kLanes], normalY[kLanes], normalZ[kLanes];
+
+  void fillBackground(const float4 &background)
+  {
+    for (int i = 0; i < kLanes; i++) {
+      backR[i] = background.x;
+      backG[i] = background.y;
+      backB[i] = background.z;
+      backA[i] = background.w;
+    }
+  }
+  // Lane i as a hit on `surface` (true) or as a miss.
+  void setLane(int i, const ConstantSurface &surface, bool isHit)
+  {
+    hit[i] = isHit ? 1.f : 0.f;
+    baseR[i] = isHit ? surface.baseColor.x : 0.f;
+    baseG[i] = isHit ? surface.baseColor.y : 0.f;
+    baseB[i] = isHit ? surface.baseColor.z : 0.f;
+    coverage[i] = isHit ? surface.coverage : 0.f;
+    objectId[i] = isHit ? surface.objectId : kNoId;
+    instanceId[i] = isHit ? surface.instanceId : kNoId;
+    otherwise[i] = false;
+  }
+
+  // What shadeSample() computes for flat hits and misses, operation for
+  // operation: the shading normal is the normalised Ng turned to face the
+  // ray; one layer is blended over the background, for a miss one of no
+  // coverage (the lane's Ng is then meaningless and its light unused).
+  void shadeFlat(const rt::RayHitPacket &packet, float blendRatio)
+  {
+    for (int i = 0; i < kLanes; i++) {
+      const float gx = packet.normalX[i], gy = packet.normalY[i],
+                  gz = packet.normalZ[i];
+      const float inv = 1.f / std::sqrt(gx * gx + gy * gy + gz * gz);
+      const float nx = gx * inv, ny = gy * inv, nz = gz * inv;
+      const float facing = nx * packet.directionX[i] + ny * packet.directionY[i]
+                           + nz * packet.directionZ[i];
+      const bool away = facing > 0.f;
+      normalX[i] = away ? nx * -1.f : nx;
+      normalY[i] = away ? ny * -1.f : ny;
+      normalZ[i] = away ? nz * -1.f : nz;
+      // LayerBlend::add() on an empty blend; |facing| is also the turned
+      // normal's, as negation is exact.
+      const float weight = (1.f - 0.f) * coverage[i];
+      const float lightWeight =
+          hit[i] != 0.f ? eyeLight(blendRatio, std::abs(facing)) * weight : 0.f;
+      const float alpha = 0.f + weight;
+      // LayerBlend::over().
+      const float rest = 1.f - alpha;
+      colorR[i] = (0.f + baseR[i] * lightWeight) + rest * backR[i];
+      colorG[i] = (0.f + baseG[i] * lightWeight) + rest * backG[i];
+      colorB[i] = (0.f + baseB[i] * lightWeight) + rest * backB[i];
+      colorA[i] = alpha + rest * backA[i];
+    }
+  }
+
+  // Writes the first `count` lanes to row y from x0.
+  void store(const rt::RayHitPacket &packet,
+      FrameBuffers &buffers,
+      uint32_t width,
+      uint32_t x0,
+      uint32_t y,
+      int count) const
+  {
+    const size_t row = size_t(y) * width + x0;
+    const FrameBuffers::Needs &needs = buffers.needs;
+    float4 *color = buffers.color.data() + row;
+    for (int i = 0; i < count; i++)
+      color[i] = {colorR[i], colorG[i], colorB[i], colorA[i]};
+    if (needs.depth) {
+      for (int i = 0; i < count; i++) {
+        buffers.depth[row + i] =
+            hit[i] != 0.f ? packet.tMax[i] : PixelSample{}.depth;
+      }
+    }
+    if (needs.normal) {
+      for (int i = 0; i < count; i++) {
+        buffers.normal[row + i] =
+            hit[i] != 0.f ? float3{normalX[i], normalY[i], normalZ[i]}
+                          : PixelSample{}.normal;
+      }
+    }
+    if (needs.albedo) {
+      for (int i = 0; i < count; i++)
+        buffers.albedo[row + i] = {baseR[i], baseG[i], baseB[i]};
+    }
+    if (needs.primitiveId) {
+      for (int i = 0; i < count; i++) {
+        buffers.primitiveId[row + i] =
+            hit[i] != 0.f ? packet.primitiveId[i] : kNoId;
+      }
+    }
+    if (needs.objectId)
+      std::copy(objectId, objectId + count, buffers.objectId.begin() + row);
+    if (needs.instanceId) {
+      std::copy(
+          instanceId, instanceId + count, buffers.instanceId.begin() + row);
+    }
+  }
+};
 
 } // namespace
 
@@ -18,6 +221,118 @@ void Raycast::commitParameters()
       read<float>("eyeLightBlendRatio", ANARI_FLOAT32, 0.5f), 0.f, 1.f);
 }
 
+void Raycast::renderTile(const RenderContext &context,
+    const Tile &tile,
+    FrameBuffers &buffers,
+    const std::atomic<bool> &cancel) const
+{
+  constexpr int kLanes = rt::kPacketSize;
+  const World &world = *context.world;
+  const PrimaryRays primaryRays(context);
+  ConstantSurface lastSurface;
+  SurfaceHit surface; // reused for hits whose normal the geometry resolves
+  rt::RayHitPacket packet;
+  int active[kLanes];
+  float rayTMax[kLanes]; // Embree overwrites the packet's with the hit's t
+  PacketShading shading;
+  // Lane i of the packet just traced for the straight loop: a miss, a hit
+  // on a flat constant surface, or a hit shaded here, the loop told to
+  // take it for a miss.
+  auto prepareLane = [&](int i, uint32_t x, uint32_t y) {
+    if (packet.geometryId[i] == rt::kInvalidId) {
+      shading.setLane(i, lastSurface, false);
+      return;
+    }
+    const ConstantSurface &constant = constantSurface(
+        world, packet.instanceId[i], packet.geometryId[i], lastSurface);
+    shading.setLane(i, constant, constant.flat);
+    if (constant.flat)
+      return;
+    shading.otherwise[i] = true;
+    const Ray ray{{packet.originX[i], packet.originY[i], packet.originZ[i]},
+        {packet.directionX[i], packet.directionY[i], packet.directionZ[i]},
+        packet.tMin[i],
+        rayTMax[i],
+        packet.time[i]};
+    rt::Hit hit;
+    hit.t = packet.tMax[i];
+    hit.u = packet.u[i];
+    hit.v = packet.v[i];
+    hit.geometricNormal = {
+        packet.normalX[i], packet.normalY[i], packet.normalZ[i]};
+    hit.primitiveId = packet.primitiveId[i];
+    hit.geometryId = packet.geometryId[i];
+    hit.instanceId = packet.instanceId[i];
+    PixelSample &sample = shading.samples[i];
+    if (!constant.constant
+        || !resolveSurfaceHit(
+            world, ray, hit, surface, HitDetail::ForMaterial)) {
+      sample = shadeSample(context, ray, hit, x, y);
+      return;
+    }
+    // A constant surface whose normal the geometry resolves (spheres,
+    // vertex normals, instances): just that is resolved per hit.
+    LayerBlend blend;
+    blend.add(constant.baseColor,
+        eyeLight(m_eyeLightBlendRatio,
+            std::abs(dot(surface.shadingNormal, ray.direction))),
+        constant.coverage);
+    sample.color = blend.over({shading.backR[i],
+        shading.backG[i],
+        shading.backB[i],
+        shading.backA[i]});
+    sample.depth = hit.t;
+    sample.normal = surface.shadingNormal;
+    sample.albedo = constant.baseColor;
+    sample.primitiveId = hit.primitiveId;
+    sample.objectId = constant.objectId;
+    sample.instanceId = constant.instanceId;
+  };
+  if (uniformBackground())
+    shading.fillBackground(background(0, 0, context.width, context.height));
+  for (uint32_t y = tile.y0; y < tile.y1 && !cancel; y++) {
+    for (uint32_t x0 = tile.x0; x0 < tile.x1; x0 += kLanes) {
+      const int count = int(std::min<uint32_t>(kLanes, tile.x1 - x0));
+      primaryRays.generate(x0, y, count, packet, active);
+      std::copy(packet.tMax, packet.tMax + kLanes, rayTMax);
+      world.intersect(packet, active);
+      if (!uniformBackground()) {
+        for (int i = 0; i < count; i++) {
+          const float4 b = background(x0 + i, y, context.width, context.height);
+          shading.backR[i] = b.x;
+          shading.backG[i] = b.y;
+          shading.backB[i] = b.z;
+          shading.backA[i] = b.w;
+        }
+      }
+      // Mostly every lane misses or hits the surface the last hit did.
+      bool anyHit = false, sameSurface = true;
+      for (int i = 0; i < kLanes; i++) {
+        const bool isHit = packet.geometryId[i] != rt::kInvalidId;
+        anyHit |= isHit;
+        sameSurface &= !isHit
+                       || (packet.geometryId[i] == lastSurface.geometryKey
+                           && packet.instanceId[i] == lastSurface.instanceKey);
+      }
+      if (sameSurface && (lastSurface.flat || !anyHit)) {
+        for (int i = 0; i < kLanes; i++) {
+          shading.setLane(
+              i, lastSurface, packet.geometryId[i] != rt::kInvalidId);
+        }
+      } else {
+        for (int i = 0; i < kLanes; i++)
+          prepareLane(i, x0 + uint32_t(i), y);
+      }
+      shading.shadeFlat(packet, m_eyeLightBlendRatio);
+      shading.store(packet, buffers, context.width, x0, y, count);
+      for (int i = 0; i < count; i++) {
+        if (shading.otherwise[i])
+          store(context, buffers, x0 + uint32_t(i), y, shading.samples[i]);
+      }
+    }
+  }
+}
+
 PixelSample Raycast::shadeSample(const RenderContext &context,
     const Ray &ray,
     const rt::Hit &firstHit,
@@ -26,8 +341,7 @@ PixelSample Raycast::shadeSample(const RenderContext &context,
 {
   rt::Hit hit = firstHit;
   PixelSample sample;
-  float3 color{0, 0, 0};
-  float alpha = 0.f;
+  LayerBlend blend;
   bool first = true;
   for (int layer = 0; layer < kMaxLayers && hit.found(); layer++) {
     SurfaceHit surface;
@@ -46,26 +360,17 @@ PixelSample Raycast::shadeSample(const RenderContext &context,
           sample.instanceId = surface.placement->instanceId;
           first = false;
         }
-        const float cosine =
-            std::abs(dot(surface.shadingNormal, ray.direction));
-        const float light =
-            m_eyeLightBlendRatio * cosine + (1.f - m_eyeLightBlendRatio);
-        const float weight = (1.f - alpha) * coverage;
-        color = color + float3{base.x, base.y, base.z} * (light * weight);
-        alpha += weight;
-        if (alpha >= 0.999f)
+        blend.add(float3{base.x, base.y, base.z},
+            eyeLight(m_eyeLightBlendRatio,
+                std::abs(dot(surface.shadingNormal, ray.direction))),
+            coverage);
+        if (blend.opaque())
           break;
       }
     }
     hit = traceBeyond(*context.world, ray, hit);
   }
-  const float4 background =
-      this->background(x, y, context.width, context.height);
-  const float rest = 1.f - alpha;
-  sample.color = float4{color.x + rest * background.x,
-      color.y + rest * background.y,
-      color.z + rest * background.z,
-      alpha + rest * background.w};
+  sample.color = blend.over(background(x, y, context.width, context.height));
   return sample;
 }
 

@@ -14,6 +14,14 @@ class Raycast : public Renderer
       : Renderer(device, subtype)
   {}
 
+  // Traces whole packets and shades, in line, hits on surfaces whose color
+  // is constant and whose first layer hides everything behind; every other
+  // pixel goes through shadeSample(). Both give the same image.
+  void renderTile(const RenderContext &context,
+      const Tile &tile,
+      FrameBuffers &buffers,
+      const std::atomic<bool> &cancel) const override;
+
  protected:
   void commitParameters() override;
   PixelSample shadeSample(const RenderContext &context,

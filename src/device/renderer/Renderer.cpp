@@ -16,36 +16,6 @@
 #include <limits>
 
 namespace prism {
-namespace {
-
-// A point in [0,1)^2 for pixel (x, y) and sample n; the pixel centre for
-// the first sample so single-sample images stay exact.
-float2 pixelOffset(uint32_t x, uint32_t y, uint32_t sample)
-{
-  return sample == 0 ? float2{0.5f, 0.5f} : hashedSample2D(x, y, sample, 0);
-}
-
-// Where in its exposure sample n of pixel (x, y) falls, in [0, 1): the
-// middle for the first sample, then a van der Corput sequence rotated per
-// pixel, so n samples cover the exposure evenly (error ~1/n, not
-// ~1/sqrt(n), for motion blur) without pixels sharing times.
-float exposureSample(uint32_t x, uint32_t y, uint32_t sample)
-{
-  if (sample == 0)
-    return 0.5f;
-  uint32_t bits = sample;
-  bits = (bits << 16) | (bits >> 16);
-  bits = ((bits & 0x00ff00ffu) << 8) | ((bits & 0xff00ff00u) >> 8);
-  bits = ((bits & 0x0f0f0f0fu) << 4) | ((bits & 0xf0f0f0f0u) >> 4);
-  bits = ((bits & 0x33333333u) << 2) | ((bits & 0xccccccccu) >> 2);
-  bits = ((bits & 0x55555555u) << 1) | ((bits & 0xaaaaaaaau) >> 1);
-  const float radicalInverse = float(bits >> 8) * (1.f / 16777216.f);
-  const float rotation = hashedSample2D(x, y, 0, 3).x;
-  const float u = radicalInverse + rotation;
-  return u >= 1.f ? u - 1.f : u;
-}
-
-} // namespace
 
 Renderer::Renderer(Device &device, const std::string &subtype)
     : Object(device, ANARI_RENDERER, subtype)

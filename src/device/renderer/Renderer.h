@@ -51,6 +51,11 @@ class Renderer : public Object
   // The background seen at pixel (x, y) of a width x height frame.
   float4 background(
       uint32_t x, uint32_t y, uint32_t width, uint32_t height) const;
+  // Whether background() is the same everywhere (no background image).
+  bool uniformBackground() const
+  {
+    return m_backgroundImage.empty();
+  }
 
   // Samples per pixel after which accumulating more changes little
   // (refinementProgress reaches 1 there).

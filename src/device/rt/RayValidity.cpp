@@ -5,9 +5,6 @@
 namespace prism::rt {
 namespace {
 
-// Coordinates beyond this make Embree's internal arithmetic overflow.
-constexpr float kLargestCoordinate = 1.8e18f;
-
 bool usable(float v)
 {
   return std::isfinite(v) && std::abs(v) <= kLargestCoordinate;

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 
 namespace prism::rt {
@@ -144,6 +145,45 @@ void setTimeSteps(RTCGeometry geometry, const TimeSteps &steps)
   if (steps.count > 1)
     rtcSetGeometryTimeRange(geometry, steps.begin, steps.end);
 }
+
+// validRay() without branches, so a packet's lanes are checked together:
+// a magnitude test is false for NaN and infinities too.
+int validLane(const RayHitPacket &p, int i)
+{
+  auto usable = [](float v) {
+    return int(std::abs(v) <= kLargestCoordinate);
+  };
+  const int origin =
+      usable(p.originX[i]) & usable(p.originY[i]) & usable(p.originZ[i]);
+  const int direction = usable(p.directionX[i]) & usable(p.directionY[i])
+                        & usable(p.directionZ[i]);
+  const int interval = int(p.tMin[i] >= 0.f)
+                       & int(p.tMin[i] <= std::numeric_limits<float>::max())
+                       & int(p.tMax[i] >= p.tMin[i]);
+  return -(origin & direction & interval);
+}
+
+// RayHitPacket is handed to Embree as an RTCRayHit8, so it must be one.
+#define PRISM_SAME_OFFSET(ours, embree) \
+  static_assert(offsetof(RayHitPacket, ours) == offsetof(RTCRayHit8, embree))
+static_assert(sizeof(RayHitPacket) == sizeof(RTCRayHit8));
+static_assert(alignof(RayHitPacket) >= alignof(RTCRayHit8));
+static_assert(RTC_MAX_INSTANCE_LEVEL_COUNT == 1);
+PRISM_SAME_OFFSET(originX, ray.org_x);
+PRISM_SAME_OFFSET(tMin, ray.tnear);
+PRISM_SAME_OFFSET(directionX, ray.dir_x);
+PRISM_SAME_OFFSET(time, ray.time);
+PRISM_SAME_OFFSET(tMax, ray.tfar);
+PRISM_SAME_OFFSET(mask, ray.mask);
+PRISM_SAME_OFFSET(id, ray.id);
+PRISM_SAME_OFFSET(flags, ray.flags);
+PRISM_SAME_OFFSET(normalX, hit.Ng_x);
+PRISM_SAME_OFFSET(u, hit.u);
+PRISM_SAME_OFFSET(v, hit.v);
+PRISM_SAME_OFFSET(primitiveId, hit.primID);
+PRISM_SAME_OFFSET(geometryId, hit.geomID);
+PRISM_SAME_OFFSET(instanceId, hit.instID);
+#undef PRISM_SAME_OFFSET
 
 void attach(RTCScene scene, RTCGeometry geometry, uint32_t id)
 {
@@ -540,6 +580,28 @@ void Scene::occluded(RayQueue &queue) const
   rays.id = queue.m_tag.data();
   rays.flags = queue.m_flags.data();
   rtcOccludedNp(m_scene, &context, &rays, unsigned(queue.size()));
+}
+
+void Scene::intersect(RayHitPacket &packet, const int active[kPacketSize]) const
+{
+  static_assert(kPacketSize == RayHitPacket::kLanes);
+  alignas(32) int valid[kPacketSize];
+  for (int i = 0; i < kPacketSize; i++) {
+    packet.mask[i] = ~0u;
+    packet.id[i] = unsigned(i);
+    packet.flags[i] = 0;
+    packet.geometryId[i] = RTC_INVALID_GEOMETRY_ID;
+    packet.instanceId[i] = RTC_INVALID_GEOMETRY_ID;
+    packet.time[i] = validTime(packet.time[i]);
+    valid[i] = active[i] & validLane(packet, i);
+  }
+  if (!m_scene)
+    return;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  rtcIntersect8(
+      valid, m_scene, &context, reinterpret_cast<RTCRayHit8 *>(&packet));
 }
 
 } // namespace prism::rt

@@ -6,6 +6,7 @@
 #include "../math/KeyTimeline.h"
 #include "Context.h"
 #include "Hit.h"
+#include "RayHitPacket.h"
 #include "UserGeometry.h"
 
 #include <cstddef>
@@ -112,6 +113,10 @@ class Scene
   // closest hits, or only whether anything blocks each ray.
   void intersect(RayQueue &queue) const;
   void occluded(RayQueue &queue) const;
+  // Traces the lanes of `packet` whose `active` entry is -1, in place, with
+  // no copies: a lane's geometryId is kInvalidId unless it found a hit, and
+  // its other hit fields mean something only then.
+  void intersect(RayHitPacket &packet, const int active[kPacketSize]) const;
 
  private:
   // Triangles (3 indices per primitive) or quads (4), sharing the arrays.

@@ -258,6 +258,22 @@ void World::occluded(rt::RayQueue &queue) const
     m_traced->occluded(queue);
 }
 
+void World::intersect(
+    rt::RayHitPacket &packet, const int active[rt::kPacketSize]) const
+{
+  if (!m_traced) {
+    for (int i = 0; i < rt::kPacketSize; i++)
+      packet.geometryId[i] = rt::kInvalidId;
+    return;
+  }
+  m_traced->intersect(packet, active);
+  if (m_traced != m_scene.get()) {
+    // The group's scene traced directly: every hit is placement 0.
+    for (int i = 0; i < rt::kPacketSize; i++)
+      packet.instanceId[i] = 0;
+  }
+}
+
 bool World::getProperty(const std::string &name,
     ANARIDataType type,
     void *mem,

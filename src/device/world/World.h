@@ -59,6 +59,10 @@ class World : public Object
   // whether something blocks each.
   void intersect(rt::RayQueue &queue) const;
   void occluded(rt::RayQueue &queue) const;
+  // The packet's active lanes traced in place (see rt::Scene); instance
+  // ids name placements, as above.
+  void intersect(
+      rt::RayHitPacket &packet, const int active[rt::kPacketSize]) const;
   box3 bounds() const
   {
     return m_bounds;

@@ -209,3 +209,23 @@ TEST(PixelFormat, RowsMatchSinglePixels)
     EXPECT_EQ(bulk, single) << anari::toString(format);
   }
 }
+
+TEST(PixelFormat, RunsOfOneColorMatchSinglePixels)
+{
+  // sRGB rows encode a run of equal pixels once: runs, changes after a run,
+  // and values equal but for their bits (-0, NaN) must all still match.
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float4 row[8] = {{0.2f, 0.4f, 0.6f, 1.f},
+      {0.2f, 0.4f, 0.6f, 1.f},
+      {0.2f, 0.4f, 0.6f, 1.f},
+      {0.2f, 0.4f, 0.61f, 1.f},
+      {-0.f, 0.5f, nan, 0.5f},
+      {0.f, 0.5f, nan, 0.5f},
+      {0.f, 0.5f, nan, 0.5f},
+      {0.2f, 0.4f, 0.6f, 1.f}};
+  std::vector<uint8_t> bulk(8 * 4), single(8 * 4);
+  writeColorPixels(ANARI_UFIXED8_RGBA_SRGB, row, 8, bulk.data());
+  for (size_t i = 0; i < 8; i++)
+    writeColor(ANARI_UFIXED8_RGBA_SRGB, row[i], single.data() + i * 4);
+  EXPECT_EQ(bulk, single);
+}

@@ -1,0 +1,91 @@
+#include "PrimaryRays.h"
+
+#include "SampleHash.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace prism {
+
+PrimaryRays::PrimaryRays(const RenderContext &context)
+    : m_context(context), m_invWidth(1.f / float(context.width))
+{
+  m_isPinhole = context.camera->pinhole(m_pinhole);
+}
+
+void PrimaryRays::generate(uint32_t x0,
+    uint32_t y,
+    int count,
+    rt::RayHitPacket &packet,
+    int active[rt::kPacketSize]) const
+{
+  const uint32_t sampleIndex = m_context.sampleIndex;
+  if (m_isPinhole) {
+    // The common camera: screen positions first, then the directions in
+    // one straight loop the compiler vectorises.
+    alignas(32) float sx[rt::kPacketSize], sy[rt::kPacketSize],
+        time[rt::kPacketSize];
+    const float invWidth = m_invWidth;
+    const float height = float(m_context.height);
+    if (sampleIndex == 0) {
+      // Every pixel's first sample is at the same offset (its centre).
+      const float2 offset = pixelOffset(x0, y, 0);
+      for (int i = 0; i < rt::kPacketSize; i++) {
+        const uint32_t x = x0 + uint32_t(std::min(i, count - 1));
+        sx[i] = (float(x) + offset.x) * invWidth;
+        sy[i] = (float(y) + offset.y) / height;
+        time[i] = m_context.camera->rayTime({sx[i], sy[i]}, 0.5f);
+      }
+    } else {
+      for (int i = 0; i < rt::kPacketSize; i++) {
+        const uint32_t x = x0 + uint32_t(std::min(i, count - 1));
+        const float2 offset = pixelOffset(x, y, sampleIndex);
+        sx[i] = (float(x) + offset.x) * invWidth;
+        sy[i] = (float(y) + offset.y) / height;
+        time[i] = m_context.camera->rayTime(
+            {sx[i], sy[i]}, exposureSample(x, y, sampleIndex));
+      }
+    }
+    const Camera::Pinhole p = m_pinhole; // a copy the stores cannot alias
+    for (int i = 0; i < rt::kPacketSize; i++) {
+      const float3 d = p.corner + p.dx * sx[i] + p.dy * sy[i];
+      const float inv = 1.f / std::sqrt(dot(d, d));
+      packet.originX[i] = p.origin.x;
+      packet.originY[i] = p.origin.y;
+      packet.originZ[i] = p.origin.z;
+      packet.directionX[i] = d.x * inv;
+      packet.directionY[i] = d.y * inv;
+      packet.directionZ[i] = d.z * inv;
+      packet.tMin[i] = 0.f;
+      packet.tMax[i] = std::numeric_limits<float>::infinity();
+      packet.time[i] = time[i];
+      active[i] = i < count ? -1 : 0;
+    }
+    return;
+  }
+  for (int i = 0; i < rt::kPacketSize; i++) {
+    const uint32_t x = x0 + uint32_t(std::min(i, count - 1));
+    const float2 offset = pixelOffset(x, y, sampleIndex);
+    const float2 screen{(float(x) + offset.x) * m_invWidth,
+        (float(y) + offset.y) / float(m_context.height)};
+    // The lens point: its own stream, decorrelated from the pixel offset.
+    const float2 lens = sampleIndex == 0 ? float2{0.5f, 0.5f}
+                                         : hashedSample2D(x, y, sampleIndex, 1);
+    const float rayTime =
+        m_context.camera->rayTime(screen, exposureSample(x, y, sampleIndex));
+    const Ray ray = m_context.camera->generateRay(screen, lens, rayTime);
+    packet.originX[i] = ray.origin.x;
+    packet.originY[i] = ray.origin.y;
+    packet.originZ[i] = ray.origin.z;
+    packet.directionX[i] = ray.direction.x;
+    packet.directionY[i] = ray.direction.y;
+    packet.directionZ[i] = ray.direction.z;
+    packet.tMin[i] = ray.tMin;
+    packet.tMax[i] = ray.tMax;
+    packet.time[i] = ray.time;
+    active[i] = i < count ? -1 : 0;
+  }
+}
+
+} // namespace prism
