@@ -1,6 +1,7 @@
 // Camera rays for packets of pixels, written straight into the packet
-// Embree traces. The rays are those Renderer::tracePrimary traces (same
-// pixel and lens samples), so renderers may use either.
+// Embree traces: every renderer's primary rays (the path tracer's too, one
+// at a time, through Renderer::cameraRay: the same pixel, lens and time
+// samples).
 #pragma once
 
 #include "Renderer.h"

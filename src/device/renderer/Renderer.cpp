@@ -1,5 +1,6 @@
 #include "Renderer.h"
 
+#include "PrimaryRays.h"
 #include "SampleHash.h"
 
 #include "../Device.h"
@@ -82,10 +83,11 @@ void Renderer::renderTile(const RenderContext &context,
 {
   Ray rays[rt::kPacketSize];
   rt::Hit hits[rt::kPacketSize];
+  const PrimaryRays primaryRays(context);
   for (uint32_t y = tile.y0; y < tile.y1 && !cancel; y++) {
     for (uint32_t x = tile.x0; x < tile.x1; x += rt::kPacketSize) {
       const int count = int(std::min<uint32_t>(rt::kPacketSize, tile.x1 - x));
-      tracePrimary(context, x, y, count, rays, hits);
+      tracePrimary(context, primaryRays, x, y, count, rays, hits);
       for (int i = 0; i < count; i++) {
         store(context,
             buffers,
@@ -109,62 +111,38 @@ PixelSample Renderer::shadeSample(const RenderContext &context,
 }
 
 void Renderer::tracePrimary(const RenderContext &context,
+    const PrimaryRays &primaryRays,
     uint32_t x0,
     uint32_t y,
     int count,
     Ray rays[rt::kPacketSize],
     rt::Hit hits[rt::kPacketSize]) const
 {
-  rt::RayPacket packet;
-  const float invWidth = 1.f / float(context.width);
-  Camera::Pinhole pinhole;
-  if (context.camera->pinhole(pinhole)) {
-    // The common camera: directions in one straight, vectorisable loop.
-    for (int i = 0; i < rt::kPacketSize; i++) {
-      const uint32_t x = x0 + uint32_t(std::min(i, count - 1));
-      const float2 offset = pixelOffset(x, y, context.sampleIndex);
-      const float sx = (float(x) + offset.x) * invWidth;
-      const float syJittered = (float(y) + offset.y) / float(context.height);
-      const float3 d =
-          pinhole.corner + pinhole.dx * sx + pinhole.dy * syJittered;
-      packet.time[i] = context.camera->rayTime(
-          {sx, syJittered}, exposureSample(x, y, context.sampleIndex));
-      const float inv = 1.f / std::sqrt(dot(d, d));
-      packet.originX[i] = pinhole.origin.x;
-      packet.originY[i] = pinhole.origin.y;
-      packet.originZ[i] = pinhole.origin.z;
-      packet.directionX[i] = d.x * inv;
-      packet.directionY[i] = d.y * inv;
-      packet.directionZ[i] = d.z * inv;
-      packet.tMin[i] = 0.f;
-      packet.tMax[i] = std::numeric_limits<float>::infinity();
-      packet.active[i] = i < count ? -1 : 0;
-    }
-    for (int i = 0; i < count; i++) {
-      rays[i] = Ray{pinhole.origin,
-          {packet.directionX[i], packet.directionY[i], packet.directionZ[i]},
-          0.f,
-          std::numeric_limits<float>::infinity(),
-          packet.time[i]};
-    }
-  } else {
-    for (int i = 0; i < rt::kPacketSize; i++) {
-      const int lane = i < count ? i : count - 1; // idle lanes repeat a ray
-      const uint32_t x = x0 + uint32_t(lane);
-      rays[i] = cameraRay(context, x, y);
-      packet.originX[i] = rays[i].origin.x;
-      packet.originY[i] = rays[i].origin.y;
-      packet.originZ[i] = rays[i].origin.z;
-      packet.directionX[i] = rays[i].direction.x;
-      packet.directionY[i] = rays[i].direction.y;
-      packet.directionZ[i] = rays[i].direction.z;
-      packet.tMin[i] = rays[i].tMin;
-      packet.tMax[i] = rays[i].tMax;
-      packet.time[i] = rays[i].time;
-      packet.active[i] = i < count ? -1 : 0;
-    }
+  rt::RayHitPacket packet;
+  alignas(32) int active[rt::kPacketSize];
+  primaryRays.generate(x0, y, count, packet, active);
+  for (int i = 0; i < count; i++) {
+    rays[i] = Ray{{packet.originX[i], packet.originY[i], packet.originZ[i]},
+        {packet.directionX[i], packet.directionY[i], packet.directionZ[i]},
+        packet.tMin[i],
+        packet.tMax[i],
+        packet.time[i]};
   }
-  context.world->intersect(packet, hits);
+  context.world->intersect(packet, active);
+  for (int i = 0; i < count; i++) {
+    rt::Hit &hit = hits[i];
+    hit = rt::Hit{};
+    if (packet.geometryId[i] == rt::kInvalidId)
+      continue;
+    hit.t = packet.tMax[i];
+    hit.u = packet.u[i];
+    hit.v = packet.v[i];
+    hit.geometricNormal = {
+        packet.normalX[i], packet.normalY[i], packet.normalZ[i]};
+    hit.primitiveId = packet.primitiveId[i];
+    hit.geometryId = packet.geometryId[i];
+    hit.instanceId = packet.instanceId[i];
+  }
 }
 
 Ray Renderer::cameraRay(

@@ -14,6 +14,7 @@
 namespace prism {
 
 class Camera;
+class PrimaryRays;
 class World;
 
 // What one frame renders, fixed for the duration of the render.
@@ -82,6 +83,7 @@ class Renderer : public Object
   // Traces the camera rays through `count` (<= rt::kPacketSize) pixels of
   // row y starting at x0 together, as one coherent packet.
   void tracePrimary(const RenderContext &context,
+      const PrimaryRays &primaryRays,
       uint32_t x0,
       uint32_t y,
       int count,

@@ -471,62 +471,6 @@ bool Scene::intersect(const float3 &origin,
   return hit.found();
 }
 
-void Scene::intersect(const RayPacket &packet, Hit hits[kPacketSize]) const
-{
-  for (int i = 0; i < kPacketSize; i++)
-    hits[i] = Hit{};
-  if (!m_scene)
-    return;
-  static_assert(kPacketSize == 8);
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-  alignas(32) RTCRayHit8 rh;
-  for (int i = 0; i < 8; i++) {
-    rh.ray.org_x[i] = packet.originX[i];
-    rh.ray.org_y[i] = packet.originY[i];
-    rh.ray.org_z[i] = packet.originZ[i];
-    rh.ray.dir_x[i] = packet.directionX[i];
-    rh.ray.dir_y[i] = packet.directionY[i];
-    rh.ray.dir_z[i] = packet.directionZ[i];
-    rh.ray.tnear[i] = packet.tMin[i];
-    rh.ray.tfar[i] = packet.tMax[i];
-    rh.ray.time[i] = validTime(packet.time[i]);
-    rh.ray.mask[i] = ~0u;
-    rh.ray.id[i] = unsigned(i);
-    rh.ray.flags[i] = 0;
-    rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
-    rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
-  }
-  alignas(32) int valid[8];
-  for (int i = 0; i < 8; i++) {
-    valid[i] =
-        packet.active[i]
-                && isTraceable(
-                    {packet.originX[i], packet.originY[i], packet.originZ[i]},
-                    {packet.directionX[i],
-                        packet.directionY[i],
-                        packet.directionZ[i]},
-                    packet.tMin[i],
-                    packet.tMax[i])
-            ? -1
-            : 0;
-  }
-  rtcIntersect8(valid, m_scene, &context, &rh);
-  for (int i = 0; i < 8; i++) {
-    if (!valid[i] || rh.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID)
-      continue;
-    Hit &hit = hits[i];
-    hit.t = rh.ray.tfar[i];
-    hit.u = rh.hit.u[i];
-    hit.v = rh.hit.v[i];
-    hit.geometricNormal = {rh.hit.Ng_x[i], rh.hit.Ng_y[i], rh.hit.Ng_z[i]};
-    hit.primitiveId = rh.hit.primID[i];
-    hit.geometryId = rh.hit.geomID[i];
-    hit.instanceId = rh.hit.instID[0][i];
-  }
-}
-
 void Scene::intersect(RayQueue &queue) const
 {
   if (!m_scene || queue.empty())

@@ -25,17 +25,8 @@ class RayQueue;
 
 namespace prism::rt {
 
-// A bundle of coherent rays traced together (SoA, up to kPacketSize).
+// Rays traced together in one coherent packet (see RayHitPacket).
 constexpr int kPacketSize = 8;
-struct RayPacket
-{
-  float originX[kPacketSize], originY[kPacketSize], originZ[kPacketSize];
-  float directionX[kPacketSize], directionY[kPacketSize],
-      directionZ[kPacketSize];
-  float tMin[kPacketSize], tMax[kPacketSize];
-  float time[kPacketSize]; // in the shutter's [0, 1] (motion blur)
-  int active[kPacketSize]; // -1 traces the lane, 0 skips it
-};
 
 // Vertex positions of a deforming mesh at keys uniformly distributed over
 // `timeline`: one array per key, each as addTriangles' `vertices`.
@@ -107,8 +98,6 @@ class Scene
       float tMax,
       Hit &hit,
       float time) const;
-  // Traces the active lanes of `packet` (coherent rays); hits[i] per lane.
-  void intersect(const RayPacket &packet, Hit hits[kPacketSize]) const;
   // Every ray of `queue` (incoherent rays, Embree's stream API): the
   // closest hits, or only whether anything blocks each ray.
   void intersect(RayQueue &queue) const;

@@ -225,23 +225,6 @@ bool World::intersect(const float3 &origin,
   return true;
 }
 
-void World::intersect(
-    const rt::RayPacket &packet, rt::Hit hits[rt::kPacketSize]) const
-{
-  if (!m_traced) {
-    for (int i = 0; i < rt::kPacketSize; i++)
-      hits[i] = rt::Hit{};
-    return;
-  }
-  m_traced->intersect(packet, hits);
-  if (m_traced != m_scene.get()) {
-    for (int i = 0; i < rt::kPacketSize; i++) {
-      if (hits[i].found())
-        hits[i].instanceId = 0;
-    }
-  }
-}
-
 void World::intersect(rt::RayQueue &queue) const
 {
   if (!m_traced)

@@ -53,8 +53,6 @@ class World : public Object
       float tMax,
       rt::Hit &hit,
       float time) const;
-  void intersect(
-      const rt::RayPacket &packet, rt::Hit hits[rt::kPacketSize]) const;
   // Every ray of the queue: closest hits (instanceId as above), or only
   // whether something blocks each.
   void intersect(rt::RayQueue &queue) const;
