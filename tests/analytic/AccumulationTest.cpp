@@ -1,9 +1,13 @@
-// KHR_FRAME_ACCUMULATION with the raycast renderer: samples jitter within
-// pixels (anti-aliasing, depth of field), the first sample stays exact, any
-// committed change restarts, and the result is deterministic.
+// KHR_FRAME_ACCUMULATION with the raycast renderer (and the path tracer):
+// samples jitter within pixels (anti-aliasing, depth of field), the first
+// sample stays exact, any committed change restarts, and the result is
+// deterministic.
 #include "AnalyticScene.h"
 
+#include <tbb/global_control.h>
+
 #include <cmath>
+#include <optional>
 
 namespace {
 
@@ -127,6 +131,46 @@ TEST_F(Accumulation, IsDeterministic)
            (ANARIObject)w,
            (ANARIObject)c,
            (ANARIObject)r})
+    anariRelease(m_device, o);
+  EXPECT_TRUE(problems().empty());
+}
+
+TEST_F(Accumulation, PathTracedImageIsTheSameForAnyThreadCount)
+{
+  // A lit box corner: bounces, shadows and light sampling, all seeded by
+  // pixel and sample alone, so the schedule of tiles cannot matter.
+  ANARIWorld w =
+      world({surface(geometry("quad", {-3, -3, 0, 3, -3, 0, 3, 3, 0, -3, 3, 0}),
+                 matte(0.8f, 0.8f, 0.8f)),
+          surface(geometry("quad", {-3, 1, 0, 3, 1, 0, 3, 1, 3, -3, 1, 3}),
+              matte(0.2f, 0.7f, 0.3f)),
+          surface(geometry("sphere", {0, 0, 0.5f}), matte(0.9f, 0.3f, 0.2f))});
+  ANARILight light = anariNewLight(m_device, "point");
+  const float position[3] = {1, -1, 3}, intensity = 10.f;
+  anariSetParameter(m_device, light, "position", ANARI_FLOAT32_VEC3, position);
+  anariSetParameter(m_device, light, "intensity", ANARI_FLOAT32, &intensity);
+  anariCommitParameters(m_device, light);
+  setArray(w,
+      "light",
+      anariNewArray1D(m_device, &light, nullptr, nullptr, ANARI_LIGHT, 1));
+  anariRelease(m_device, light);
+  anariCommitParameters(m_device, w);
+  const float eye[3] = {0, -5, 3}, direction[3] = {0, 5, -2.5f};
+  ANARICamera c = perspective(eye, direction, 0.8f);
+  ANARIRenderer r = renderer("pathtracer");
+  std::vector<float> images[2];
+  for (int threads : {1, 0}) {
+    // TBB's process-wide limit also binds the device's task arena.
+    std::optional<tbb::global_control> limit;
+    if (threads > 0)
+      limit.emplace(tbb::global_control::max_allowed_parallelism, threads);
+    ANARIFrame f = frame(w, c, r, 64);
+    images[threads > 0 ? 0 : 1] = renderSamples(f, 4);
+    anariRelease(m_device, f);
+  }
+  ASSERT_FALSE(images[0].empty());
+  EXPECT_EQ(images[0], images[1]);
+  for (ANARIObject o : {(ANARIObject)w, (ANARIObject)c, (ANARIObject)r})
     anariRelease(m_device, o);
   EXPECT_TRUE(problems().empty());
 }

@@ -1,0 +1,122 @@
+// Ray queues traced through Embree's stream API: closest hits and
+// occlusion per ray, tags returned unchanged, and rays Embree must never
+// see (non-finite, huge, empty intervals) finding nothing.
+#include "rt/Context.h"
+#include "rt/RayQueue.h"
+#include "rt/Scene.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace prism::rt {
+namespace {
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+class RayQueueTest : public ::testing::Test
+{
+ protected:
+  RayQueueTest()
+      : m_context([this](const std::string &m) { m_errors.push_back(m); }),
+        m_scene(m_context)
+  {
+    // A unit triangle in the plane z = 0 (geometry 0) and a sphere of
+    // radius 1 around (5, 0, 0) (geometry 1).
+    m_vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 0}}; // + padding
+    m_indices = {0, 1, 2};
+    m_spheres = {{5, 0, 0, 1}};
+    m_scene.addTriangles(0, m_vertices.data(), 3, m_indices.data(), 1);
+    m_scene.addSpheres(1, m_spheres.data(), 1);
+    m_scene.commit();
+  }
+
+  std::vector<std::string> m_errors;
+  Context m_context;
+  Scene m_scene;
+  std::vector<float3> m_vertices;
+  std::vector<uint32_t> m_indices;
+  std::vector<float4> m_spheres;
+};
+
+TEST_F(RayQueueTest, ClosestHitsPerRayWithTagsKept)
+{
+  RayQueue queue;
+  queue.push({0.2f, 0.2f, 1}, {0, 0, -1}, 0.f, kInf, 0.5f, 70); // triangle
+  queue.push({5, 0, 3}, {0, 0, -1}, 0.f, kInf, 0.5f, 71);       // sphere
+  queue.push({-3, 0, 1}, {0, 0, -1}, 0.f, kInf, 0.5f, 72);      // nothing
+  queue.push({0.2f, 0.2f, 1}, {0, 0, -1}, 0.f, 0.5f, 0.5f, 73); // too short
+  m_scene.intersect(queue);
+  ASSERT_EQ(queue.size(), 4u);
+  const Hit triangle = queue.hit(0);
+  ASSERT_TRUE(triangle.found());
+  EXPECT_EQ(triangle.geometryId, 0u);
+  EXPECT_FLOAT_EQ(triangle.t, 1.f);
+  const Hit sphere = queue.hit(1);
+  ASSERT_TRUE(sphere.found());
+  EXPECT_EQ(sphere.geometryId, 1u);
+  EXPECT_NEAR(sphere.t, 2.f, 1e-5f);
+  EXPECT_FALSE(queue.hit(2).found());
+  EXPECT_FALSE(queue.hit(3).found());
+  for (size_t i = 0; i < 4; i++) {
+    EXPECT_EQ(queue.tag(i), 70 + i);
+    EXPECT_FALSE(queue.untraceable(i));
+  }
+  EXPECT_TRUE(m_errors.empty());
+}
+
+TEST_F(RayQueueTest, OcclusionPerRay)
+{
+  RayQueue queue;
+  queue.push({0.2f, 0.2f, 1}, {0, 0, -1}, 0.f, kInf, 0.5f, 0);
+  queue.push({0.2f, 0.2f, 1}, {0, 0, -1}, 0.f, 0.9f, 0.5f, 1); // stops short
+  queue.push({5, 0, 3}, {0, 0, -1}, 0.f, kInf, 0.5f, 2);
+  queue.push({5, 0, 3}, {0, 0, 1}, 0.f, kInf, 0.5f, 3); // away from it
+  m_scene.occluded(queue);
+  EXPECT_TRUE(queue.occluded(0));
+  EXPECT_FALSE(queue.occluded(1));
+  EXPECT_TRUE(queue.occluded(2));
+  EXPECT_FALSE(queue.occluded(3));
+}
+
+TEST_F(RayQueueTest, UntraceableRaysFindNothing)
+{
+  RayQueue queue;
+  queue.push({kNaN, 0, 1}, {0, 0, -1}, 0.f, kInf, 0.5f, 0);
+  queue.push({0.2f, 0.2f, 1}, {0, 0, kInf}, 0.f, kInf, 0.5f, 1);
+  queue.push({0.2f, 0.2f, 1e30f}, {0, 0, -1}, 0.f, kInf, 0.5f, 2);
+  queue.push({0.2f, 0.2f, 1}, {0, 0, -1}, 2.f, 1.f, 0.5f, 3); // tMax < tMin
+  queue.push({0.2f, 0.2f, 1}, {0, 0, -1}, -1.f, kInf, 0.5f, 4);
+  queue.push({0.2f, 0.2f, 1}, {0, 0, -1}, 0.f, kNaN, 0.5f, 5);
+  // A time outside the shutter is traced at its midpoint, not refused.
+  queue.push({0.2f, 0.2f, 1}, {0, 0, -1}, 0.f, kInf, kNaN, 6);
+  m_scene.intersect(queue);
+  for (size_t i = 0; i < 6; i++) {
+    EXPECT_TRUE(queue.untraceable(i)) << i;
+    EXPECT_FALSE(queue.hit(i).found()) << i;
+  }
+  EXPECT_FALSE(queue.untraceable(6));
+  EXPECT_TRUE(queue.hit(6).found());
+  EXPECT_FLOAT_EQ(queue.time(6), 0.5f);
+  RayQueue shadows;
+  shadows.push({kNaN, 0, 1}, {0, 0, -1}, 0.f, kInf, 0.5f, 0);
+  m_scene.occluded(shadows);
+  EXPECT_FALSE(shadows.occluded(0));
+  EXPECT_TRUE(m_errors.empty());
+}
+
+TEST_F(RayQueueTest, EmptyQueueAndClear)
+{
+  RayQueue queue;
+  m_scene.intersect(queue);
+  m_scene.occluded(queue);
+  queue.push({0.2f, 0.2f, 1}, {0, 0, -1}, 0.f, kInf, 0.5f, 9);
+  queue.clear();
+  EXPECT_TRUE(queue.empty());
+}
+
+} // namespace
+} // namespace prism::rt
