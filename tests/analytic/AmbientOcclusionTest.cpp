@@ -70,4 +70,62 @@ TEST_F(AmbientOcclusionTest, OpenFractionBetweenParallelPlanes)
   EXPECT_TRUE(problems().empty());
 }
 
+TEST_F(AmbientOcclusionTest, SeesThroughSurfacesByTheirOpacity)
+{
+  // A grey floor at z = 0 under a red sheet at z = 0.2 of opacity 0.25
+  // (alphaMode blend); the camera looks down from z = 1 and the rays of
+  // length 0.1 reach nothing, so a pixel is red where the camera ray stops
+  // at the sheet (a quarter of the samples) and grey where it passes.
+  ANARIGeometry floor = geometry(
+      "quad", {-100, -100, 0, 100, -100, 0, 100, 100, 0, -100, 100, 0});
+  ANARIGeometry sheet = geometry("quad",
+      {-100, -100, 0.2f, 100, -100, 0.2f, 100, 100, 0.2f, -100, 100, 0.2f});
+  ANARIMaterial red = anariNewMaterial(m_device, "matte");
+  const float color[3] = {1, 0, 0}, opacity = 0.25f;
+  anariSetParameter(m_device, red, "color", ANARI_FLOAT32_VEC3, color);
+  anariSetParameter(m_device, red, "opacity", ANARI_FLOAT32, &opacity);
+  anariSetParameter(m_device, red, "alphaMode", ANARI_STRING, "blend");
+  anariCommitParameters(m_device, red);
+  ANARIWorld w =
+      world({surface(floor, matte(0.5f, 0.5f, 0.5f)), surface(sheet, red)});
+  const float eye[3] = {0, 0, 1}, down[3] = {0, 0, -1};
+  ANARICamera c = orthographic(eye, down, 1.f);
+  ANARIRenderer r = renderer("ao");
+  const float distance = 0.1f;
+  anariSetParameter(m_device, r, "aoDistance", ANARI_FLOAT32, &distance);
+  anariCommitParameters(m_device, r);
+  ANARIFrame f = anariNewFrame(m_device);
+  const uint32_t size[2] = {16, 16};
+  const ANARIDataType colorType = ANARI_FLOAT32_VEC4;
+  const uint8_t on = 1;
+  anariSetParameter(m_device, f, "world", ANARI_WORLD, &w);
+  anariSetParameter(m_device, f, "camera", ANARI_CAMERA, &c);
+  anariSetParameter(m_device, f, "renderer", ANARI_RENDERER, &r);
+  anariSetParameter(m_device, f, "size", ANARI_UINT32_VEC2, size);
+  anariSetParameter(m_device, f, "channel.color", ANARI_DATA_TYPE, &colorType);
+  anariSetParameter(m_device, f, "accumulation", ANARI_BOOL, &on);
+  anariCommitParameters(m_device, f);
+  for (int i = 0; i < 64; i++)
+    anariRenderFrame(m_device, f);
+  anariFrameReady(m_device, f, ANARI_WAIT);
+  uint32_t width, height;
+  ANARIDataType type;
+  auto *p = (const float *)anariMapFrame(
+      m_device, f, "channel.color", &width, &height, &type);
+  double red_ = 0, green = 0;
+  for (uint32_t i = 0; i < width * height; i++) {
+    red_ += p[4 * i];
+    green += p[4 * i + 1];
+  }
+  anariUnmapFrame(m_device, f, "channel.color");
+  const double n = double(width) * height;
+  // red = 0.25 * 1 + 0.75 * 0.5, green = 0.75 * 0.5; 16384 samples.
+  EXPECT_NEAR(red_ / n, 0.625, 0.01);
+  EXPECT_NEAR(green / n, 0.375, 0.01);
+  for (ANARIObject o :
+      {(ANARIObject)f, (ANARIObject)w, (ANARIObject)c, (ANARIObject)r})
+    anariRelease(m_device, o);
+  EXPECT_TRUE(problems().empty());
+}
+
 } // namespace

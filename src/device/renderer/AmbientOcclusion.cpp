@@ -1,9 +1,12 @@
 #include "AmbientOcclusion.h"
 
 #include "SampleHash.h"
+#include "wavefront/LocalTransport.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 namespace prism {
 namespace {
@@ -21,6 +24,9 @@ float3 cosineDirection(const float3 &n, float2 u)
   return t * (radius * std::cos(phi)) + b * (radius * std::sin(phi)) + n * z;
 }
 
+// Surfaces seen through at most this many see-through layers per pixel.
+constexpr uint16_t kMaxLayers = 64;
+
 } // namespace
 
 void AmbientOcclusion::commitParameters()
@@ -37,47 +43,113 @@ void AmbientOcclusion::commitParameters()
   }
 }
 
-PixelSample AmbientOcclusion::shadeSample(const RenderContext &context,
-    const Ray &ray,
-    const rt::Hit &hit,
-    uint32_t x,
-    uint32_t y) const
+void AmbientOcclusion::renderTile(const RenderContext &context,
+    const Tile &tile,
+    FrameBuffers &buffers,
+    const std::atomic<bool> &cancel) const
 {
-  PixelSample sample;
-  SurfaceHit surface;
-  if (!resolveSurfaceHit(
-          *context.world, ray, hit, surface, HitDetail::ForMaterial)) {
-    sample.color = background(x, y, context.width, context.height);
-    return sample;
+  const LocalTransport transport(*context.world);
+  const uint32_t width = tile.x1 - tile.x0;
+  const size_t count = size_t(width) * (tile.y1 - tile.y0);
+  std::vector<PixelSample> samples(count);
+  std::vector<float> times(count);
+  std::vector<uint32_t> open(count, 0);
+  std::vector<uint16_t> layers(count, 0);
+  rt::RayQueue rays, next, occlusion;
+  rays.reserve(count);
+  next.reserve(count);
+  occlusion.reserve(count * m_samples);
+  auto pixelOf = [&](size_t i) {
+    return uint2{tile.x0 + uint32_t(i % width), tile.y0 + uint32_t(i / width)};
+  };
+  for (size_t i = 0; i < count; i++) {
+    const uint2 pixel = pixelOf(i);
+    const Ray ray = cameraRay(context, pixel.x, pixel.y);
+    times[i] = ray.time;
+    rays.push(
+        ray.origin, ray.direction, ray.tMin, ray.tMax, ray.time, uint32_t(i));
+    samples[i].color =
+        background(pixel.x, pixel.y, context.width, context.height);
   }
-  const float4 base =
-      surface.material().baseColorAndOpacity(surface.attributes);
-  // Offset along the geometric normal, scaled with the distance, so the
-  // occlusion rays do not hit the surface they start on.
-  const float3 origin =
-      surface.position
-      + surface.geometricNormal * (1e-4f * std::max(1.f, hit.t));
-  uint32_t open = 0;
-  for (uint32_t i = 0; i < m_samples; i++) {
-    const float2 u =
-        hashedSample2D(x, y, context.sampleIndex * m_samples + i, 2);
-    const float3 direction = cosineDirection(surface.shadingNormal, u);
-    rt::Hit blocker;
-    open += context.world->intersect(
-                origin, direction, 0.f, m_distance, blocker, ray.time)
-                ? 0u
-                : 1u;
+  // Camera rays, then their continuations through see-through surfaces.
+  while (!rays.empty() && !cancel) {
+    transport.traceClosest(rays);
+    next.clear();
+    for (size_t r = 0; r < rays.size(); r++) {
+      const uint32_t i = rays.tag(r);
+      const uint2 pixel = pixelOf(i);
+      const rt::Hit hit = rays.hit(r);
+      const Ray ray{rays.origin(r),
+          rays.direction(r),
+          rays.tMin(r),
+          std::numeric_limits<float>::infinity(),
+          times[i]};
+      SurfaceHit surface;
+      if (rays.untraceable(r)
+          || !resolveSurfaceHit(
+              *context.world, ray, hit, surface, HitDetail::ForMaterial))
+        continue; // the background stays
+      const float4 base =
+          surface.material().baseColorAndOpacity(surface.attributes);
+      const float coverage = surface.material().coverage(base.w);
+      if (coverage < 1.f
+          && hashedSample2D(
+                 pixel.x, pixel.y, context.sampleIndex, 4 + layers[i])
+                     .x
+                 >= coverage) {
+        if (++layers[i] < kMaxLayers) {
+          next.push(ray.origin,
+              ray.direction,
+              hit.t + std::max(1e-4f, hit.t * 1e-5f),
+              std::numeric_limits<float>::infinity(),
+              ray.time,
+              i);
+        }
+        continue;
+      }
+      PixelSample &sample = samples[i];
+      sample.color = float4{base.x, base.y, base.z, 1.f};
+      sample.depth = hit.t;
+      sample.normal = surface.shadingNormal;
+      sample.albedo = float3{base.x, base.y, base.z};
+      sample.primitiveId = surface.attributes.primitiveId;
+      sample.objectId = surface.surface->id();
+      sample.instanceId = surface.placement->instanceId;
+      // Offset along the geometric normal, scaled with the distance, so
+      // the occlusion rays do not hit the surface they start on.
+      const float3 origin =
+          surface.position
+          + surface.geometricNormal * (1e-4f * std::max(1.f, hit.t));
+      for (uint32_t k = 0; k < m_samples; k++) {
+        const float2 u = hashedSample2D(
+            pixel.x, pixel.y, context.sampleIndex * m_samples + k, 2);
+        occlusion.push(origin,
+            cosineDirection(surface.shadingNormal, u),
+            0.f,
+            m_distance,
+            ray.time,
+            i);
+      }
+    }
+    std::swap(rays, next);
   }
-  const float visibility = float(open) / float(m_samples);
-  sample.color = float4{
-      base.x * visibility, base.y * visibility, base.z * visibility, 1.f};
-  sample.depth = hit.t;
-  sample.normal = surface.shadingNormal;
-  sample.albedo = float3{base.x, base.y, base.z};
-  sample.primitiveId = surface.attributes.primitiveId;
-  sample.objectId = surface.surface->id();
-  sample.instanceId = surface.placement->instanceId;
-  return sample;
+  if (cancel)
+    return;
+  transport.traceOcclusion(occlusion);
+  for (size_t k = 0; k < occlusion.size(); k++)
+    open[occlusion.tag(k)] += occlusion.occluded(k) ? 0u : 1u;
+  for (size_t i = 0; i < count; i++) {
+    PixelSample &sample = samples[i];
+    if (std::isfinite(sample.depth)) {
+      const float visibility = float(open[i]) / float(m_samples);
+      sample.color = float4{sample.color.x * visibility,
+          sample.color.y * visibility,
+          sample.color.z * visibility,
+          1.f};
+    }
+    const uint2 pixel = pixelOf(i);
+    store(context, buffers, pixel.x, pixel.y, sample);
+  }
 }
 
 } // namespace prism

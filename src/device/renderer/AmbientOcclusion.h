@@ -1,6 +1,8 @@
 // The `ao` renderer: the base color at the first hit, darkened by how much
 // of the hemisphere above it is blocked within `aoDistance`, estimated with
-// `aoSamples` cosine-distributed rays per pixel and sample.
+// `aoSamples` cosine-distributed rays per pixel and sample. Like the path
+// tracer it runs as a wavefront: a tile's camera rays (and continuations
+// through see-through surfaces) as one queue, all occlusion rays as another.
 #pragma once
 
 #include "Renderer.h"
@@ -17,13 +19,13 @@ class AmbientOcclusion : public Renderer
     return std::max(1u, 256u / m_samples); // ~256 rays per pixel
   }
 
+  void renderTile(const RenderContext &context,
+      const Tile &tile,
+      FrameBuffers &buffers,
+      const std::atomic<bool> &cancel) const override;
+
  protected:
   void commitParameters() override;
-  PixelSample shadeSample(const RenderContext &context,
-      const Ray &ray,
-      const rt::Hit &hit,
-      uint32_t x,
-      uint32_t y) const override;
 
  private:
   uint32_t m_samples{1};
