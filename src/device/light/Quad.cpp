@@ -15,6 +15,10 @@ constexpr float kInfinity = std::numeric_limits<float>::infinity();
 // almost in the quad's plane) and sampling by area takes over.
 constexpr double kMinSphericalArea = 1e-5;
 constexpr double kMaxSphericalArea = 6.0;
+// Below this solid angle (estimated from the centre) the 1/d^2 and cosine
+// hardly vary over the quad, so sampling by area is as good and costs no
+// trigonometry: solid-angle sampling is kept for close, large quads.
+constexpr float kMinSolidAngleSampling = 0.05f;
 // Keeps a photometric quad's radiance finite at grazing angles.
 constexpr float kMinCosine = 1e-6f;
 
@@ -44,6 +48,8 @@ class PlacedQuad : public PlacedLight
   LightSample sample(const float3 &point, const float2 &u) const override
   {
     LightSample s;
+    if (!litSide(point))
+      return s;
     const Subtended subtended = subtend(point);
     if (subtended.solidAngle > 0.0) {
       // Pick a triangle in proportion to its solid angle, reusing u.x.
@@ -130,6 +136,11 @@ class PlacedQuad : public PlacedLight
   Subtended subtend(const float3 &point) const
   {
     Subtended result;
+    const float3 toCenter = m_corner + (m_edge1 + m_edge2) * 0.5f - point;
+    const float distance2 = lengthSquared(toCenter);
+    if (std::abs(dot(toCenter, m_normal))
+        < kMinSolidAngleSampling * distance2 * std::sqrt(distance2))
+      return result; // sampling by area
     const float3 corners[4] = {m_corner - point,
         m_corner + m_edge1 - point,
         m_corner + m_edge1 + m_edge2 - point,
@@ -148,6 +159,20 @@ class PlacedQuad : public PlacedLight
     if (total >= kMinSphericalArea && total <= kMaxSphericalArea)
       result.solidAngle = total;
     return result;
+  }
+
+  // Whether `point` is on a side the quad emits towards.
+  bool litSide(const float3 &point) const
+  {
+    const float height = dot(point - m_corner, m_frame.z);
+    switch (m_emission.side) {
+    case Quad::Side::kFront:
+      return height > 0.f;
+    case Quad::Side::kBack:
+      return height < 0.f;
+    default:
+      return true;
+    }
   }
 
   // Area density converted to solid angle: d^2 / (area |cos|).

@@ -51,6 +51,11 @@ class Material : public Object
   {
     return m_colorReadsAttributes;
   }
+  // Whether any of the material's inputs reads surface attributes.
+  bool readsAttributes() const
+  {
+    return m_readsAttributes;
+  }
   float alphaCutoff() const
   {
     return m_alphaCutoff;
@@ -79,6 +84,7 @@ class Material : public Object
   friend class MaterialInput;
 
   bool m_colorReadsAttributes{false};
+  bool m_readsAttributes{false};
   AlphaMode m_alphaMode{AlphaMode::Opaque};
   float m_alphaCutoff{0.5f};
 };

@@ -9,6 +9,7 @@ void Matte::commitParameters()
   m_color = MaterialInput<float3>::read(*this, "color", kDefaultColor);
   m_opacity = MaterialInput<float>::read(*this, "opacity", 1.f);
   m_colorReadsAttributes = !m_color.isConstant() || !m_opacity.isConstant();
+  m_readsAttributes = m_colorReadsAttributes;
   readAlphaMode();
 }
 

@@ -46,6 +46,16 @@ void PhysicallyBased::commitParameters()
   in.iridescenceIor =
       read<float>("iridescenceIor", ANARI_FLOAT32, in.iridescenceIor);
   input(in.iridescenceThickness, "iridescenceThickness");
+  m_readsAttributes =
+      m_colorReadsAttributes || !in.metallic.isConstant()
+      || !in.roughness.isConstant() || !in.normal.isConstant()
+      || !in.emissive.isConstant() || !in.occlusion.isConstant()
+      || !in.specular.isConstant() || !in.specularColor.isConstant()
+      || !in.clearcoat.isConstant() || !in.clearcoatRoughness.isConstant()
+      || !in.clearcoatNormal.isConstant() || !in.transmission.isConstant()
+      || !in.ior.isConstant() || !in.thickness.isConstant()
+      || !in.sheenColor.isConstant() || !in.sheenRoughness.isConstant()
+      || !in.iridescence.isConstant() || !in.iridescenceThickness.isConstant();
   m_inputs = std::move(in);
 }
 

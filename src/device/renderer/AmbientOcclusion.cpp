@@ -51,14 +51,19 @@ void AmbientOcclusion::renderTile(const RenderContext &context,
   const LocalTransport transport(*context.world);
   const uint32_t width = tile.x1 - tile.x0;
   const size_t count = size_t(width) * (tile.y1 - tile.y0);
-  std::vector<PixelSample> samples(count);
-  std::vector<float> times(count);
-  std::vector<uint32_t> open(count, 0);
-  std::vector<uint16_t> layers(count, 0);
-  rt::RayQueue rays, next, occlusion;
-  rays.reserve(count);
-  next.reserve(count);
-  occlusion.reserve(count * m_samples);
+  const auto workspace = m_workspaces.take();
+  std::vector<PixelSample> &samples = workspace->samples;
+  std::vector<float> &times = workspace->times;
+  std::vector<uint32_t> &open = workspace->open;
+  std::vector<uint16_t> &layers = workspace->layers;
+  rt::RayQueue &rays = workspace->rays, &next = workspace->next,
+               &occlusion = workspace->occlusion;
+  samples.assign(count, PixelSample{});
+  times.assign(count, 0.5f);
+  open.assign(count, 0);
+  layers.assign(count, 0);
+  rays.clear();
+  occlusion.clear();
   auto pixelOf = [&](size_t i) {
     return uint2{tile.x0 + uint32_t(i % width), tile.y0 + uint32_t(i / width)};
   };

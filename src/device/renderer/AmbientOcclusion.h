@@ -6,6 +6,7 @@
 #pragma once
 
 #include "Renderer.h"
+#include "wavefront/WorkspacePool.h"
 
 namespace prism {
 
@@ -28,6 +29,16 @@ class AmbientOcclusion : public Renderer
   void commitParameters() override;
 
  private:
+  // What a tile works in, reused tile after tile.
+  struct TileWorkspace
+  {
+    std::vector<PixelSample> samples;
+    std::vector<float> times;
+    std::vector<uint32_t> open;
+    std::vector<uint16_t> layers;
+    rt::RayQueue rays, next, occlusion;
+  };
+  mutable WorkspacePool<TileWorkspace> m_workspaces;
   uint32_t m_samples{1};
   float m_distance{1e20f};
 };

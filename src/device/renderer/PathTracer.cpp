@@ -148,13 +148,13 @@ void PathTracer::renderTile(const RenderContext &context,
 {
   const uint32_t width = tile.x1 - tile.x0;
   const size_t count = size_t(width) * (tile.y1 - tile.y0);
-  std::vector<PathState> paths(count);
-  rt::RayQueue rays, next, shadows;
-  std::vector<float3> contributions;
-  rays.reserve(count);
-  next.reserve(count);
-  shadows.reserve(count);
-  contributions.reserve(count);
+  const auto workspace = m_workspaces.take();
+  std::vector<PathState> &paths = workspace->paths;
+  rt::RayQueue &rays = workspace->rays, &next = workspace->next,
+               &shadows = workspace->shadows;
+  std::vector<float3> &contributions = workspace->contributions;
+  paths.assign(count, PathState{});
+  rays.clear();
   for (size_t i = 0; i < count; i++) {
     PathState &path = paths[i];
     path.x = tile.x0 + uint32_t(i % width);
@@ -282,9 +282,10 @@ void PathTracer::shadeBounce(const RenderContext &context,
     Ray ray{rays.origin(r), rays.direction(r)};
     ray.time = path.time;
     SurfaceHit surface;
-    const bool found = hit.found()
-                       && resolveSurfaceHit(
-                           *context.world, ray, hit, surface, HitDetail::Full);
+    const bool found =
+        hit.found()
+        && resolveSurfaceHit(
+            *context.world, ray, hit, surface, HitDetail::ForShading);
     const float hitDistance =
         found ? hit.t : std::numeric_limits<float>::infinity();
     // Inside an absorbing medium: Beer-Lambert over the segment.

@@ -13,6 +13,7 @@
 #include "Renderer.h"
 #include "wavefront/PathState.h"
 #include "wavefront/RayTransport.h"
+#include "wavefront/WorkspacePool.h"
 
 #include <vector>
 
@@ -70,6 +71,14 @@ class PathTracer : public Renderer
       float hitDistance,
       const PathState &path) const;
 
+  // What a tile's wavefront works in, reused tile after tile.
+  struct TileWorkspace
+  {
+    std::vector<PathState> paths;
+    rt::RayQueue rays, next, shadows;
+    std::vector<float3> contributions;
+  };
+  mutable WorkspacePool<TileWorkspace> m_workspaces;
   mutable std::atomic<uint64_t> m_raysTraced{0};
   // The multiple importance sampling weight of emission a ray found by
   // hitting a surface, against next-event estimation sampling it.

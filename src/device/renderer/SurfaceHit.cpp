@@ -18,8 +18,11 @@ bool resolveSurfaceHit(const World &world,
   out.placement = &placement;
   out.distance = hit.t;
   out.position = ray.origin + ray.direction * hit.t;
+  const Material &material = *surface->material();
   const bool interpolate =
-      detail == HitDetail::Full || surface->material()->colorReadsAttributes();
+      detail == HitDetail::Full
+      || (detail == HitDetail::ForMaterial && material.colorReadsAttributes())
+      || (detail == HitDetail::ForShading && material.readsAttributes());
   if (interpolate) {
     out.attributes = AttributeValues{};
     if (placement.instance)

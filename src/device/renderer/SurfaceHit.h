@@ -30,6 +30,7 @@ struct SurfaceHit
 enum class HitDetail : uint8_t {
   Full,        // every attribute (samplers, debug views, path tracing)
   ForMaterial, // only what the material's base color needs
+  ForShading,  // only what the material's inputs need
 };
 
 // Resolves `hit` of `ray` in `world`; false if it names no live surface.

@@ -2,12 +2,13 @@
 
 #include "RayValidity.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace prism::rt {
 
-void RayQueue::clear()
+void RayQueue::grow(size_t capacity)
 {
   for (auto *v : {&m_originX,
            &m_originY,
@@ -23,32 +24,16 @@ void RayQueue::clear()
            &m_normalZ,
            &m_u,
            &m_v})
-    v->clear();
+    v->resize(capacity);
   for (auto *v :
       {&m_mask, &m_tag, &m_flags, &m_primitiveId, &m_geometryId, &m_instanceId})
-    v->clear();
+    v->resize(capacity);
 }
 
 void RayQueue::reserve(size_t capacity)
 {
-  for (auto *v : {&m_originX,
-           &m_originY,
-           &m_originZ,
-           &m_tMin,
-           &m_directionX,
-           &m_directionY,
-           &m_directionZ,
-           &m_time,
-           &m_tMax,
-           &m_normalX,
-           &m_normalY,
-           &m_normalZ,
-           &m_u,
-           &m_v})
-    v->reserve(capacity);
-  for (auto *v :
-      {&m_mask, &m_tag, &m_flags, &m_primitiveId, &m_geometryId, &m_instanceId})
-    v->reserve(capacity);
+  if (capacity > m_originX.size())
+    grow(capacity);
 }
 
 size_t RayQueue::push(const float3 &origin,
@@ -58,31 +43,28 @@ size_t RayQueue::push(const float3 &origin,
     float time,
     uint32_t tag)
 {
+  if (m_size == m_originX.size())
+    grow(std::max<size_t>(64, 2 * m_size));
+  const size_t i = m_size++;
   const bool valid = isTraceable(origin, direction, tMin, tMax);
   // An untraceable ray becomes an inactive one (tMin > tMax), which Embree
   // skips and which therefore finds nothing.
-  m_originX.push_back(valid ? origin.x : 0.f);
-  m_originY.push_back(valid ? origin.y : 0.f);
-  m_originZ.push_back(valid ? origin.z : 0.f);
-  m_tMin.push_back(valid ? tMin : 1.f);
-  m_directionX.push_back(valid ? direction.x : 0.f);
-  m_directionY.push_back(valid ? direction.y : 0.f);
-  m_directionZ.push_back(valid ? direction.z : 1.f);
+  m_originX[i] = valid ? origin.x : 0.f;
+  m_originY[i] = valid ? origin.y : 0.f;
+  m_originZ[i] = valid ? origin.z : 0.f;
+  m_tMin[i] = valid ? tMin : 1.f;
+  m_directionX[i] = valid ? direction.x : 0.f;
+  m_directionY[i] = valid ? direction.y : 0.f;
+  m_directionZ[i] = valid ? direction.z : 1.f;
   // Embree traces times in [0, 1]; anything else at the shutter midpoint.
-  m_time.push_back(time >= 0.f && time <= 1.f ? time : 0.5f);
-  m_tMax.push_back(valid ? tMax : 0.f);
-  m_mask.push_back(~0u);
-  m_tag.push_back(tag);
-  m_flags.push_back(0u);
-  m_normalX.push_back(0.f);
-  m_normalY.push_back(0.f);
-  m_normalZ.push_back(0.f);
-  m_u.push_back(0.f);
-  m_v.push_back(0.f);
-  m_primitiveId.push_back(kInvalidId);
-  m_geometryId.push_back(kInvalidId);
-  m_instanceId.push_back(kInvalidId);
-  return m_originX.size() - 1;
+  m_time[i] = time >= 0.f && time <= 1.f ? time : 0.5f;
+  m_tMax[i] = valid ? tMax : 0.f;
+  m_mask[i] = ~0u;
+  m_tag[i] = tag;
+  m_flags[i] = 0u;
+  m_geometryId[i] = kInvalidId;
+  m_instanceId[i] = kInvalidId;
+  return i;
 }
 
 Hit RayQueue::hit(size_t i) const
@@ -120,7 +102,7 @@ void RayQueue::setOccluded(size_t i)
 
 void RayQueue::assignInstance(uint32_t instance)
 {
-  for (size_t i = 0; i < size(); i++) {
+  for (size_t i = 0; i < m_size; i++) {
     if (m_geometryId[i] != kInvalidId)
       m_instanceId[i] = instance;
   }

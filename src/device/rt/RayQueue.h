@@ -17,13 +17,17 @@ class RayQueue
  public:
   size_t size() const
   {
-    return m_originX.size();
+    return m_size;
   }
   bool empty() const
   {
-    return m_originX.empty();
+    return m_size == 0;
   }
-  void clear();
+  // Keeps the memory for the next rays.
+  void clear()
+  {
+    m_size = 0;
+  }
   void reserve(size_t capacity);
 
   // Appends a ray; `tag` is the caller's (e.g. which path it extends) and
@@ -83,6 +87,10 @@ class RayQueue
  private:
   friend class Scene; // passes the arrays to Embree as they are
 
+  // Every array holds at least `capacity` elements (the first m_size used).
+  void grow(size_t capacity);
+
+  size_t m_size{0};
   // Ray (the layout of Embree's RTCRayNp members, one array each).
   std::vector<float> m_originX, m_originY, m_originZ, m_tMin;
   std::vector<float> m_directionX, m_directionY, m_directionZ, m_time;
