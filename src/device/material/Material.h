@@ -10,6 +10,7 @@ namespace prism {
 
 template <typename T>
 class MaterialInput;
+class PhysicallyBased;
 
 enum class AlphaMode : uint8_t {
   Opaque,
@@ -24,6 +25,12 @@ class Material : public Object
       : Object(device, ANARI_MATERIAL, subtype)
   {}
 
+  // This material as physicallyBased, or NULL (a virtual call: cheaper
+  // per hit than dynamic_cast across the device library's type info).
+  virtual const PhysicallyBased *asPhysicallyBased() const
+  {
+    return nullptr;
+  }
   // Linear base color (rgb) and opacity (a) at a hit, before alphaMode.
   virtual float4 baseColorAndOpacity(
       const AttributeValues &attributes) const = 0;

@@ -73,6 +73,10 @@ class PhysicallyBased : public Material
 
   explicit PhysicallyBased(Device &device);
 
+  const PhysicallyBased *asPhysicallyBased() const override
+  {
+    return this;
+  }
   float4 baseColorAndOpacity(const AttributeValues &attributes) const override;
   Values evaluate(const AttributeValues &attributes) const;
   const Inputs &inputs() const

@@ -68,7 +68,7 @@ ShadingInputs shadingInputs(const SurfaceHit &hit)
 {
   ShadingInputs out;
   const Material &material = hit.material();
-  if (auto *pbr = dynamic_cast<const PhysicallyBased *>(&material)) {
+  if (const PhysicallyBased *pbr = material.asPhysicallyBased()) {
     const PhysicallyBased::Values values = pbr->evaluate(hit.attributes);
     out.bsdf = physicallyBasedBsdfInputs(values);
     out.emissive = values.emissive;
@@ -79,12 +79,12 @@ ShadingInputs shadingInputs(const SurfaceHit &hit)
     if (values.transmission > 0.f && values.thickness > 0.f)
       out.attenuation = volumeAttenuationCoefficient(
           values.attenuationColor, values.attenuationDistance);
+    out.opacity = material.coverage(values.opacity);
   } else {
     const float4 base = material.baseColorAndOpacity(hit.attributes);
     out.bsdf = matteBsdfInputs(float3{base.x, base.y, base.z});
+    out.opacity = material.coverage(base.w);
   }
-  out.opacity =
-      material.coverage(material.baseColorAndOpacity(hit.attributes).w);
   return out;
 }
 
