@@ -467,4 +467,45 @@ TEST_F(PathTracerTest, SmallEmissiveSphereIsSampledAsALight)
   EXPECT_TRUE(problems().empty());
 }
 
+TEST_F(PathTracerTest, UniformHdriLightsAPlaneAndHidesAWhiteSphere)
+{
+  // An hdri light of uniform radiance L (a 4 x 2 image of L): a Lambert
+  // plane of albedo rho facing up receives pi L from the upper hemisphere
+  // and shows rho L; a white sphere in it shows L (a furnace made of a
+  // light, importance sampled, rather than of the ambient term).
+  const float black[4] = {0, 0, 0, 1};
+  const float L = 0.8f, rho = 0.5f;
+  for (const bool sphere : {false, true}) {
+    ANARILight light = anariNewLight(m_device, "hdri");
+    std::vector<float> texels(4 * 2 * 3, L);
+    ANARIArray2D image = anariNewArray2D(
+        m_device, nullptr, nullptr, nullptr, ANARI_FLOAT32_VEC3, 4, 2);
+    std::memcpy(anariMapArray(m_device, image),
+        texels.data(),
+        texels.size() * sizeof(float));
+    anariUnmapArray(m_device, image);
+    anariSetParameter(m_device, light, "radiance", ANARI_ARRAY2D, &image);
+    anariRelease(m_device, image);
+    const float up[3] = {0, 0, 1};
+    anariSetParameter(m_device, light, "up", ANARI_FLOAT32_VEC3, up);
+    anariCommitParameters(m_device, light);
+    ANARIWorld w =
+        world({sphere ? surface(geometry("sphere", {0, 0, 0}), matte(1, 1, 1))
+                      : plane(matte(rho, rho, rho))});
+    setArray(w,
+        "light",
+        anariNewArray1D(m_device, &light, nullptr, nullptr, ANARI_LIGHT, 1));
+    anariRelease(m_device, light);
+    anariCommitParameters(m_device, w);
+    ANARICamera c = orthographic(kEye, kDown, sphere ? 1.f : 2.f);
+    ANARIRenderer r = pathTracer(0.f, black);
+    const float3Mean mean = meanOverHits(w, c, r, 16, 64);
+    const float expected = sphere ? L : rho * L;
+    EXPECT_NEAR(mean.r, expected, 0.01f * expected) << "sphere " << sphere;
+    for (ANARIObject o : {(ANARIObject)w, (ANARIObject)c, (ANARIObject)r})
+      anariRelease(m_device, o);
+  }
+  EXPECT_TRUE(problems().empty());
+}
+
 } // namespace

@@ -251,8 +251,10 @@ float3 PathTracer::lightsAlong(const RenderContext &context,
     float distance = 0.f, lightPdf = 0.f;
     const float3 radiance =
         light.radianceAlong(origin, direction, distance, lightPdf);
-    if (distance <= tMin || distance >= hitDistance
-        || maxComponent(radiance) <= 0.f)
+    // Lights at infinity (distance +inf) are behind every surface and
+    // reached by every ray that escapes (hitDistance +inf).
+    const bool hidden = std::isfinite(hitDistance) && distance >= hitDistance;
+    if (distance <= tMin || hidden || maxComponent(radiance) <= 0.f)
       continue;
     // Camera rays and delta bounces could not have sampled the light.
     const float weight = cameraRay || path.previousDelta
