@@ -1,5 +1,6 @@
 #include "PhysicallyBased.h"
 
+#include <cmath>
 #include <type_traits>
 
 namespace prism {
@@ -25,6 +26,13 @@ void PhysicallyBased::commitParameters()
   input(in.roughness, "roughness");
   input(in.normal, "normal", InputAccepts::SamplerOnly);
   input(in.emissive, "emissive");
+  const float3 emission = in.emissive.constant();
+  const float3 usable = usableEmission(emission);
+  if (in.emissive.isConstant() && !(usable == emission))
+    report(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "'emissive' has negative or non-finite components; they emit "
+        "nothing");
   input(in.occlusion, "occlusion", InputAccepts::SamplerOnly);
   readAlphaMode();
   input(in.specular, "specular");
@@ -71,6 +79,14 @@ float4 PhysicallyBased::baseColorAndOpacity(
   return makeVec4(xyz(color), opacity);
 }
 
+float3 PhysicallyBased::usableEmission(const float3 &emissive)
+{
+  auto usable = [](float v) {
+    return std::isfinite(v) && v > 0.f ? v : 0.f;
+  };
+  return {usable(emissive.x), usable(emissive.y), usable(emissive.z)};
+}
+
 PhysicallyBased::Values PhysicallyBased::evaluate(
     const AttributeValues &attributes) const
 {
@@ -81,7 +97,7 @@ PhysicallyBased::Values PhysicallyBased::evaluate(
       in.metallic.evaluate(attributes),
       in.roughness.evaluate(attributes),
       in.normal.evaluate(attributes),
-      in.emissive.evaluate(attributes),
+      usableEmission(in.emissive.evaluate(attributes)),
       in.occlusion.evaluate(attributes),
       in.specular.evaluate(attributes),
       in.specularColor.evaluate(attributes),

@@ -73,6 +73,9 @@ class PhysicallyBased : public Material
 
   explicit PhysicallyBased(Device &device);
 
+  // `emissive` as radiance: negative or non-finite components are 0.
+  static float3 usableEmission(const float3 &emissive);
+
   const PhysicallyBased *asPhysicallyBased() const override
   {
     return this;

@@ -190,7 +190,8 @@ void World::placeEmitters()
       if (!material)
         continue;
       const auto &emissive = material->inputs().emissive;
-      const float3 radiance = emissive.constant();
+      const float3 radiance =
+          PhysicallyBased::usableEmission(emissive.constant());
       // Textured emission varies over the surface: rays find it alone.
       if (emissive.source() != MaterialInput<float3>::Source::Constant
           || !(std::max(radiance.x, std::max(radiance.y, radiance.z)) > 0.f))

@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <limits>
 #include <string>
 #include <vector>
@@ -234,6 +236,15 @@ TEST_F(MaterialTest, WrongTypesWarnAndUseDefaults)
   EXPECT_EQ(matte->baseColorAndOpacity({}), (float4{0.8f, 0.8f, 0.8f, 1.f}));
   EXPECT_TRUE(reported({"'color'", "ANARI_FLOAT32_VEC4", "ANARI_SAMPLER"}));
   EXPECT_TRUE(reported({"'opacity'", "texcoord", "not a surface attribute"}));
+}
+
+TEST_F(MaterialTest, UnusableEmissionIsReportedAndEmitsNothing)
+{
+  auto *pbr = make<PhysicallyBased>();
+  set(pbr, "emissive", float3{-1.f, std::nanf(""), 2.f});
+  commit(pbr);
+  EXPECT_EQ(pbr->evaluate({}).emissive, (float3{0.f, 0.f, 2.f}));
+  EXPECT_TRUE(reported({"'emissive'", "non-finite"}));
 }
 
 TEST_F(MaterialTest, InvalidSamplerGivesTheDefault)
