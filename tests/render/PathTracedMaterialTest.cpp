@@ -5,6 +5,8 @@
 // path tracer.
 #include "RenderTest.h"
 
+#include <cmath>
+#include <cstring>
 #include <functional>
 
 namespace {
@@ -82,6 +84,41 @@ class MaterialBall : public RenderTest
         float(kWidth) / float(kHeight),
         0.7f);
   }
+  // A sampler of tangent-space normals rippling along x, read at the world
+  // position (repeating every 0.25 units), for normal and clearcoatNormal.
+  ANARISampler rippleNormals()
+  {
+    ANARIDevice device = this->device();
+    constexpr uint32_t size = 16;
+    std::vector<Vec3> normals(size * size);
+    for (uint32_t y = 0; y < size; y++) {
+      for (uint32_t x = 0; x < size; x++) {
+        const float slope =
+            0.6f * std::sin(2.f * 3.14159265f * float(x) / size);
+        const float length = std::sqrt(1.f + slope * slope);
+        normals[y * size + x] = {slope / length, 0.f, 1.f / length};
+      }
+    }
+    ANARISampler sampler = anariNewSampler(device, "image2D");
+    ANARIArray2D image = anariNewArray2D(
+        device, nullptr, nullptr, nullptr, ANARI_FLOAT32_VEC3, size, size);
+    std::memcpy(anariMapArray(device, image),
+        normals.data(),
+        normals.size() * sizeof(Vec3));
+    anariUnmapArray(device, image);
+    anariSetParameter(device, sampler, "image", ANARI_ARRAY2D, &image);
+    anariRelease(device, image);
+    anariSetParameter(
+        device, sampler, "inAttribute", ANARI_STRING, "worldPosition");
+    anariSetParameter(device, sampler, "filter", ANARI_STRING, "linear");
+    anariSetParameter(device, sampler, "wrapMode1", ANARI_STRING, "repeat");
+    anariSetParameter(device, sampler, "wrapMode2", ANARI_STRING, "repeat");
+    const Mat4 scale = scaling({4.f, 4.f, 4.f});
+    anariSetParameter(
+        device, sampler, "inTransform", ANARI_FLOAT32_MAT4, scale.data());
+    anariCommitParameters(device, sampler);
+    return keep(sampler);
+  }
   void expectReference(ANARIWorld world, ANARICamera camera)
   {
     ANARIRenderer renderer = keep(anariNewRenderer(device(), "pathtracer"));
@@ -137,6 +174,32 @@ TEST_F(Clearcoat, Pathtracer)
     setFloat(m, "roughness", 0.7f);
     setFloat(m, "clearcoat", 1.f);
     setFloat(m, "clearcoatRoughness", 0.05f);
+  });
+}
+
+using NormalMap = MaterialBall; // the base's normal rippled, a smooth coat
+TEST_F(NormalMap, Pathtracer)
+{
+  ANARISampler ripples = rippleNormals();
+  expectReference([&](ANARIMaterial m) {
+    setVec3(m, "baseColor", {0.7f, 0.5f, 0.2f});
+    setFloat(m, "metallic", 1.f);
+    setFloat(m, "roughness", 0.25f);
+    setObject(m, "normal", ANARI_SAMPLER, ripples);
+  });
+}
+
+using ClearcoatNormal = MaterialBall; // a rippled coat on a smooth base
+TEST_F(ClearcoatNormal, Pathtracer)
+{
+  ANARISampler ripples = rippleNormals();
+  expectReference([&](ANARIMaterial m) {
+    setVec3(m, "baseColor", {0.1f, 0.2f, 0.6f});
+    setFloat(m, "metallic", 0.f);
+    setFloat(m, "roughness", 0.6f);
+    setFloat(m, "clearcoat", 1.f);
+    setFloat(m, "clearcoatRoughness", 0.f);
+    setObject(m, "clearcoatNormal", ANARI_SAMPLER, ripples);
   });
 }
 

@@ -60,8 +60,10 @@ struct ShadingInputs
   float3 emissive{0.f, 0.f, 0.f};
   float occlusion{1.f}; // of ambient light only
   bool hasNormalMap{false};
-  float3 normalMap{0.f, 0.f, 1.f};   // tangent space
-  float3 attenuation{0.f, 0.f, 0.f}; // inside, per unit length
+  bool hasCoatNormalMap{false};
+  float3 coatNormalMap{0.f, 0.f, 1.f}; // tangent space
+  float3 normalMap{0.f, 0.f, 1.f};     // tangent space
+  float3 attenuation{0.f, 0.f, 0.f};   // inside, per unit length
 };
 
 ShadingInputs shadingInputs(const SurfaceHit &hit)
@@ -73,6 +75,10 @@ ShadingInputs shadingInputs(const SurfaceHit &hit)
     out.bsdf = physicallyBasedBsdfInputs(values);
     out.emissive = values.emissive;
     out.occlusion = clamp(values.occlusion, 0.f, 1.f);
+    out.hasCoatNormalMap = values.clearcoat > 0.f
+                           && pbr->inputs().clearcoatNormal.source()
+                                  != MaterialInput<float3>::Source::Constant;
+    out.coatNormalMap = values.clearcoatNormal;
     out.hasNormalMap = pbr->inputs().normal.source()
                        != MaterialInput<float3>::Source::Constant;
     out.normalMap = values.normal;
@@ -357,6 +363,7 @@ void PathTracer::shadeBounce(const RenderContext &context,
     float3 tangent, bitangent;
     float3 normal = surface.backFacing ? surface.shadingNormal * -1.f
                                        : surface.shadingNormal;
+    const float3 unbent = normal;
     if (inputs.hasNormalMap)
       normal = normalMapped(
           surface, hit, normal, inputs.normalMap, ray.direction * -1.f);
@@ -367,7 +374,12 @@ void PathTracer::shadeBounce(const RenderContext &context,
     auto toWorld = [&](const float3 &v) {
       return tangent * v.x + bitangent * v.y + normal * v.z;
     };
-    const Bsdf bsdf(inputs.bsdf);
+    BsdfInputs bsdfInputs = inputs.bsdf;
+    // The coat's normal map bends the geometry's normal on its own.
+    if (inputs.hasCoatNormalMap)
+      bsdfInputs.clearcoatNormal = toLocal(normalMapped(
+          surface, hit, unbent, inputs.coatNormalMap, ray.direction * -1.f));
+    const Bsdf bsdf(bsdfInputs);
     const float3 wo = toLocal(ray.direction * -1.f);
     const float offset = 1e-4f * std::max(1.f, hit.t);
 

@@ -178,6 +178,13 @@ Bsdf::Bsdf(const BsdfInputs &in)
   m_coatRoughness = unitClamp(in.clearcoatRoughness, 0.f);
   m_coatAlpha = m_coatRoughness * m_coatRoughness;
   m_coatDelta = m_coatAlpha < kDeltaAlpha;
+  const float3 coatNormal = finiteOr(in.clearcoatNormal, float3{0.f, 0.f, 1.f});
+  if (m_clearcoat > 0.f && coatNormal.z > 0.f
+      && (coatNormal.x != 0.f || coatNormal.y != 0.f)) {
+    m_coatZ = normalize(coatNormal);
+    orthonormalBasis(m_coatZ, m_coatX, m_coatY);
+    m_coatTilted = true;
+  }
 
   const bool specularOff = m_metallic == 0.f && m_dielectricF90 == 0.f
                            && m_dielectricF0Max == 0.f && m_iridescence == 0.f;
@@ -261,8 +268,25 @@ float Bsdf::iridescentAlbedo(const Albedo &a) const
       a.total * max(maxComponent(atMean), maxComponent(atEffective)), schlick);
 }
 
+float3 Bsdf::toCoat(const Context &c, float3 w) const
+{
+  if (!m_coatTilted || c.sign < 0.f)
+    return w;
+  return {dot(w, m_coatX), dot(w, m_coatY), dot(w, m_coatZ)};
+}
+
+float3 Bsdf::fromCoat(const Context &c, float3 w) const
+{
+  if (!m_coatTilted || c.sign < 0.f)
+    return w;
+  return m_coatX * w.x + m_coatY * w.y + m_coatZ * w.z;
+}
+
 float Bsdf::coatAlbedo(float cosTheta) const
 {
+  // A coat facing away from the direction reflects nothing of it.
+  if (!(cosTheta > 0.f))
+    return 0.f;
   if (m_clearcoat == 0.f)
     return 0.f;
   const GgxAlbedo a = m_coatDelta ? mirrorAlbedo(cosTheta)
@@ -339,7 +363,7 @@ Bsdf::Context Bsdf::prepare(float3 wo) const
   if (c.inside)
     return c;
   c.dielectricO = dielectricAlbedo(c.specularO);
-  c.coatO = coatAlbedo(c.cosO);
+  c.coatO = coatAlbedo(toCoat(c, c.wo).z);
   c.sheenO = sheenLayerAlbedo(c.cosO);
 
   // Lobe selection in proportion to each lobe's albedo estimate at wo.
@@ -410,16 +434,24 @@ void Bsdf::evaluate(const Context &c, float3 wiIn, float3 &f, float &pdf) const
     const float cosI = wi.z;
     const float3 h = normalize(wo + wi);
     const float cosOH = dot(wo, h);
-    if (m_clearcoat > 0.f && !m_coatDelta) {
-      const float d = ggxD(h, m_coatAlpha);
-      const float fresnel = fresnelSchlick(kCoatF0, 1.f, cosOH);
-      const float value = m_clearcoat * fresnel * d * ggxG2(wo, wi, m_coatAlpha)
-                          / (4.f * cosO * cosI);
+    // The coat in its own frame (the base's unless clearcoatNormal tilts
+    // it).
+    const float3 woC = toCoat(c, wo), wiC = toCoat(c, wi);
+    if (m_clearcoat > 0.f && !m_coatDelta && woC.z > 0.f && wiC.z > 0.f) {
+      const float3 hC = normalize(woC + wiC);
+      const float d = ggxD(hC, m_coatAlpha);
+      const float fresnel = fresnelSchlick(kCoatF0, 1.f, dot(woC, hC));
+      // Dividing by the larger of each direction's two cosines keeps a
+      // tilted coat reciprocal and within its own albedo (for an untilted
+      // coat the two are equal).
+      const float value = m_clearcoat * fresnel * d
+                          * ggxG2(woC, wiC, m_coatAlpha)
+                          / (4.f * max(cosO, woC.z) * max(cosI, wiC.z));
       f += float3{value, value, value};
-      pdf += c.probability[kCoat] * ggxG1(wo, m_coatAlpha) * d / (4.f * cosO);
+      pdf += c.probability[kCoat] * ggxG1(woC, m_coatAlpha) * d / (4.f * woC.z);
     }
     // Light under the coat crosses it twice: reciprocal albedo scaling.
-    const float coatScale = (1.f - c.coatO) * (1.f - coatAlbedo(cosI));
+    const float coatScale = (1.f - c.coatO) * (1.f - coatAlbedo(wiC.z));
     if (m_sheenMax > 0.f) {
       // Dividing by the larger albedo (when above 1) keeps narrow sheen
       // from creating energy at grazing angles, and keeps it reciprocal.
@@ -631,17 +663,22 @@ BsdfSample Bsdf::sample(float3 woIn, float2 u, float uLobe) const
   float3 wi{0.f, 0.f, 1.f};
   switch (lobe) {
   case kCoat: {
+    const float3 woC = toCoat(c, wo);
     if (m_coatDelta) {
+      const float3 mirrored = fromCoat(c, mirror(woC));
+      if (!(mirrored.z > 0.f))
+        return {}; // the coat reflects it below the surface
       const float reflectance =
-          m_clearcoat * fresnelSchlick(kCoatF0, 1.f, c.cosO);
-      return deltaSample(mirror(wo),
+          m_clearcoat * fresnelSchlick(kCoatF0, 1.f, woC.z);
+      return deltaSample(mirrored,
           c.sign,
           float3{reflectance, reflectance, reflectance},
           probability,
           1.f);
     }
-    wi = reflectDirection(
-        wo, sampleGgxVisibleNormal(wo, m_coatAlpha, m_coatAlpha, u));
+    wi = fromCoat(c,
+        reflectDirection(
+            woC, sampleGgxVisibleNormal(woC, m_coatAlpha, m_coatAlpha, u)));
     break;
   }
   case kSheen:
@@ -649,9 +686,11 @@ BsdfSample Bsdf::sample(float3 woIn, float2 u, float uLobe) const
     break;
   case kSpecular: {
     if (m_specularDelta) {
-      // The mirror direction has mu_i = mu_o: both coat passes and the
-      // sheen scaling evaluate at wo.
-      const float scale = (1.f - c.coatO) * (1.f - c.coatO) * (1.f - c.sheenO);
+      // The mirror direction has mu_i = mu_o: the sheen scaling evaluates
+      // at wo, and so do both coat passes unless the coat is tilted.
+      const float scale = (1.f - c.coatO)
+                          * (1.f - coatAlbedo(toCoat(c, mirror(wo)).z))
+                          * (1.f - c.sheenO);
       return deltaSample(mirror(wo),
           c.sign,
           specularFresnel(c.cosO) * scale,

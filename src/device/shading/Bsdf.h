@@ -37,6 +37,10 @@ struct BsdfInputs
   float ior{1.5f};
   float clearcoat{0.f};
   float clearcoatRoughness{0.f};
+  // The clearcoat layer's own normal in the local frame (z = the base's
+  // shading normal), e.g. from clearcoatNormal; seen from the back of a
+  // thin surface the coat lies flat.
+  float3 clearcoatNormal{0.f, 0.f, 1.f};
   float transmission{0.f};
   // Only its sign matters here: 0 is thin-walled, > 0 a volume boundary (the
   // integrator applies the attenuation inside).
@@ -63,8 +67,8 @@ inline BsdfInputs matteBsdfInputs(float3 color)
 // inputs, left to the integrator: opacity (stochastic pass-through), normal
 // (the shading frame), emissive, occlusion (ambient light only),
 // attenuationColor/attenuationDistance (the medium behind a volume boundary:
-// volumeAttenuationCoefficient). clearcoatNormal is not supported yet: the
-// coat shares the base's shading normal.
+// volumeAttenuationCoefficient), clearcoatNormal (tangent space: the
+// integrator turns it into BsdfInputs::clearcoatNormal in the local frame).
 template <typename Values>
 BsdfInputs physicallyBasedBsdfInputs(const Values &values)
 {
@@ -198,6 +202,10 @@ class Bsdf
   float dielectricAlbedo(const Albedo &albedo) const;
   float iridescentAlbedo(const Albedo &albedo) const;
   float coatAlbedo(float cosTheta) const;
+  // A direction of our frame in the coat's frame, and back; the identity
+  // unless the coat is tilted and seen from the front.
+  float3 toCoat(const Context &c, float3 w) const;
+  float3 fromCoat(const Context &c, float3 w) const;
   float sheenLayerAlbedo(float cosTheta) const;
   float3 specularFresnel(float cosTheta) const;
   float3 dielectricFresnel(float cosTheta) const;
@@ -233,6 +241,9 @@ class Bsdf
   float m_clearcoat{0.f};
   float m_coatRoughness{0.f}, m_coatAlpha{0.f};
   bool m_coatDelta{false};
+  // The coat's frame when its normal differs from the base's.
+  bool m_coatTilted{false};
+  float3 m_coatX{1.f, 0.f, 0.f}, m_coatY{0.f, 1.f, 0.f}, m_coatZ{0.f, 0.f, 1.f};
 
   bool m_lambertOnly{true};
   bool m_hasNonDeltaLobes{true};

@@ -94,7 +94,8 @@ std::string describe(const BsdfInputs &in)
   std::snprintf(text,
       sizeof(text),
       "baseColor (%g %g %g) metallic %g roughness %g specular %g "
-      "specularColor (%g %g %g) ior %g clearcoat %g/%g transmission %g "
+      "specularColor (%g %g %g) ior %g clearcoat %g/%g (%g %g %g) "
+      "transmission %g "
       "thickness %g sheen (%g %g %g)/%g iridescence %g ior %g %g nm",
       in.baseColor.x,
       in.baseColor.y,
@@ -108,6 +109,9 @@ std::string describe(const BsdfInputs &in)
       in.ior,
       in.clearcoat,
       in.clearcoatRoughness,
+      in.clearcoatNormal.x,
+      in.clearcoatNormal.y,
+      in.clearcoatNormal.z,
       in.transmission,
       in.thickness,
       in.sheenColor.x,
@@ -169,6 +173,16 @@ std::vector<BsdfInputs> inputGrid()
     in.clearcoat = 1.f;
     in.clearcoatRoughness = r;
     grid.push_back(in);
+  }
+  // clearcoatNormal: a slight and a strong tilt, rough and smooth.
+  for (float3 tilt : {float3{0.3f, 0.1f, 0.95f}, float3{0.7f, 0.f, 0.7f}}) {
+    for (float r : {0.f, 0.3f}) {
+      BsdfInputs in = whitePlastic(0.6f);
+      in.clearcoat = 1.f;
+      in.clearcoatRoughness = r;
+      in.clearcoatNormal = tilt;
+      grid.push_back(in);
+    }
   }
   for (float thickness : {250.f, 500.f, 900.f}) {
     BsdfInputs in = whitePlastic(0.3f);
@@ -523,6 +537,32 @@ TEST(Bsdf, ThinFilmFresnel)
   // Interference colours the reflection.
   const float3 f = fresnelThinFilm(1.f, 1.3f, 400.f, f0);
   EXPECT_GT(maxComponent(f) - minComponent(f), 0.01f);
+}
+
+TEST(Bsdf, TiltedClearcoatReflectsAboutItsOwnNormal)
+{
+  // A smooth coat over a black diffuse base: its one delta direction is wo
+  // mirrored about clearcoatNormal, not about the base's normal.
+  BsdfInputs in = whitePlastic(1.f);
+  in.baseColor = {0.f, 0.f, 0.f};
+  in.clearcoat = 1.f;
+  in.clearcoatRoughness = 0.f;
+  const float3 n = normalize(float3{0.3f, 0.f, 1.f});
+  in.clearcoatNormal = n;
+  const Bsdf bsdf(in);
+  const float3 wo = direction(0.8f, 0.3f);
+  const float3 expected = n * (2.f * dot(wo, n)) - wo;
+  int found = 0;
+  for (int i = 0; i < 16; i++) {
+    const BsdfSample s = bsdf.sample(wo, {0.5f, 0.5f}, (i + 0.5f) / 16.f);
+    if (!s.valid() || !s.isDelta())
+      continue;
+    found++;
+    EXPECT_NEAR(length(s.wi - expected), 0.f, 1e-5f);
+    EXPECT_NEAR(
+        s.weight.x * s.pdf, fresnelSchlick(0.04f, 1.f, dot(wo, n)), 1e-4f);
+  }
+  EXPECT_GT(found, 0);
 }
 
 TEST(Bsdf, DeltaLobes)
