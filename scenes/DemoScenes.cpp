@@ -23,6 +23,10 @@ const std::vector<DemoScene> &demoScenes()
       {"instanced-forest",
           "one tree group (cone trunk, cone canopy) instanced 4096 times",
           buildInstancedForest},
+      {"furnished-room",
+          "a living room lit by a ceiling panel and a floor lamp: sofa, "
+          "tables, chairs, a bookshelf full of books, metal and glass",
+          buildFurnishedRoom},
   };
   return scenes;
 }

@@ -17,6 +17,7 @@ Scene buildCornellBox(ANARIDevice device);
 Scene buildRandomSpheres(ANARIDevice device);
 Scene buildMaterialBall(ANARIDevice device);
 Scene buildInstancedForest(ANARIDevice device);
+Scene buildFurnishedRoom(ANARIDevice device);
 
 struct DemoScene
 {

@@ -18,7 +18,7 @@ constexpr double kMaxSphericalArea = 6.0;
 // Below this solid angle (estimated from the centre) the 1/d^2 and cosine
 // hardly vary over the quad, so sampling by area is as good and costs no
 // trigonometry: solid-angle sampling is kept for close, large quads.
-constexpr float kMinSolidAngleSampling = 0.05f;
+constexpr float kMinSolidAngleSampling = 0.3f;
 // Keeps a photometric quad's radiance finite at grazing angles.
 constexpr float kMinCosine = 1e-6f;
 

@@ -393,7 +393,9 @@ void PathTracer::shadeBounce(const RenderContext &context,
           light.sample(surface.position, random2(path, n, stream + 3));
       const float3 wi = toLocal(ls.direction);
       if (ls.pdf > 0.f && maxComponent(ls.radiance) > 0.f) {
-        const float3 f = bsdf.eval(wo, wi);
+        float3 f;
+        float bsdfPdf = 0.f;
+        bsdf.evalAndPdf(wo, wi, f, bsdfPdf);
         if (maxComponent(f) > 0.f) {
           const float3 side = dot(ls.direction, surface.geometricNormal) > 0.f
                                   ? surface.geometricNormal
@@ -402,8 +404,7 @@ void PathTracer::shadeBounce(const RenderContext &context,
                                  ? ls.distance
                                  : ls.distance * (1.f - 1e-4f) - offset;
           const float pdf = ls.pdf * pickProbability;
-          const float weight =
-              ls.delta ? 1.f : powerHeuristic(pdf, bsdf.pdf(wo, wi));
+          const float weight = ls.delta ? 1.f : powerHeuristic(pdf, bsdfPdf);
           shadows.push(surface.position + side * offset,
               ls.direction,
               0.f,

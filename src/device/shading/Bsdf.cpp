@@ -136,6 +136,16 @@ struct Bsdf::Context
 Bsdf::Bsdf(const BsdfInputs &in)
 {
   m_baseColor = clamp(finiteOr(in.baseColor, {0.f, 0.f, 0.f}), 0.f, 1.f);
+  // The most common BSDF by far (every matte surface): nothing but Lambert,
+  // decided before any of the layers' set-up.
+  if (in.metallic == 0.f && in.specular == 0.f && in.transmission == 0.f
+      && in.clearcoat == 0.f && in.iridescence == 0.f && in.sheenColor.x == 0.f
+      && in.sheenColor.y == 0.f && in.sheenColor.z == 0.f) {
+    m_metallic = 0.f;
+    m_lambertOnly = true;
+    m_hasNonDeltaLobes = true;
+    return;
+  }
   m_metallic = unitClamp(in.metallic, 0.f);
   m_roughness = unitClamp(in.roughness, 1.f);
   m_alpha = m_roughness * m_roughness;
@@ -569,6 +579,11 @@ float Bsdf::pdf(float3 wo, float3 wi) const
   float p;
   evaluate(prepare(wo), wi, f, p);
   return p;
+}
+
+void Bsdf::evalAndPdf(float3 wo, float3 wi, float3 &f, float &pdf) const
+{
+  evaluate(prepare(wo), wi, f, pdf);
 }
 
 namespace {

@@ -156,6 +156,8 @@ class Bsdf
   float3 eval(float3 wo, float3 wi) const;
   // The density with which sample() returns wi from its non-delta lobes.
   float pdf(float3 wo, float3 wi) const;
+  // Both at once (the work they share done once).
+  void evalAndPdf(float3 wo, float3 wi, float3 &f, float &pdf) const;
   // A direction from one lobe chosen by uLobe; uDirection places it in the
   // lobe. Both in [0, 1).
   BsdfSample sample(float3 wo, float2 uDirection, float uLobe) const;
