@@ -657,6 +657,20 @@ BsdfSample Bsdf::sample(float3 woIn, float2 u, float uLobe) const
   const Context c = prepare(woIn);
   if (!c.valid)
     return {};
+  if (m_lambertOnly) {
+    // One lobe sampled exactly by its density: f cos / pdf = baseColor.
+    const float3 wi = sampleCosineHemisphere(u);
+    if (!(wi.z > 0.f) || maxComponent(m_baseColor) <= 0.f)
+      return {};
+    BsdfSample s;
+    s.wi = {wi.x, wi.y, wi.z * c.sign};
+    s.f = m_baseColor * kInvPi;
+    s.pdf = wi.z * kInvPi;
+    s.weight = m_baseColor;
+    s.relativeIor = 1.f;
+    s.flags = kBsdfReflection;
+    return s;
+  }
   if (c.inside)
     return sampleInterior(c, u, uLobe);
   const float3 wo = c.wo;
