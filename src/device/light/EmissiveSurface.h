@@ -22,6 +22,14 @@ class EmissiveSurface final : public PlacedLight
   {
     return !(m_area > 0.f);
   }
+  bool reachableByRays() const override
+  {
+    return false; // the tracer finds the surface itself
+  }
+  size_t primitiveCount() const
+  {
+    return m_cdf.size();
+  }
   LightSample sample(const float3 &point, const float2 &u) const override;
   float3 radianceAlong(const float3 &point,
       const float3 &direction,

@@ -46,6 +46,12 @@ class PlacedLight
   {
     return false;
   }
+  // Whether radianceAlong() can find it: false for delta lights and for
+  // lights whose surfaces rays hit as geometry (emissive surfaces).
+  virtual bool reachableByRays() const
+  {
+    return !isDelta();
+  }
   // Directional and hdri lights: at infinity, outside every scene bound.
   virtual bool isInfinite() const
   {

@@ -250,9 +250,9 @@ float3 PathTracer::lightsAlong(const RenderContext &context,
   const LightSelector &selector = context.world->lightSelector();
   const bool cameraRay = path.bounce == 0;
   float3 sum{0.f, 0.f, 0.f};
-  for (size_t i = 0; i < lights.size(); i++) {
+  for (const uint32_t i : context.world->lightsReachableByRays()) {
     const PlacedLight &light = *lights[i];
-    if (light.isDelta() || (cameraRay && !light.visibleToCamera))
+    if (cameraRay && !light.visibleToCamera)
       continue;
     float distance = 0.f, lightPdf = 0.f;
     const float3 radiance =

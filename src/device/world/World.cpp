@@ -64,6 +64,7 @@ void World::dropReferences()
   m_placements.clear();
   m_placedLights.clear();
   m_emitterLights.clear();
+  m_reachableLights.clear();
   if (m_implicitGroup)
     m_implicitGroup->setSurfaces({});
 }
@@ -168,6 +169,11 @@ void World::finalize()
   const bool single = m_placements.size() == 1 && m_placements[0].identity;
   m_traced = single ? &m_placements[0].group->scene() : m_scene.get();
   placeEmitters();
+  m_reachableLights.clear();
+  for (size_t i = 0; i < m_placedLights.size(); i++) {
+    if (m_placedLights[i]->reachableByRays())
+      m_reachableLights.push_back(uint32_t(i));
+  }
   const float sceneRadius =
       isEmpty(m_bounds) ? 1.f : 0.5f * length(m_bounds.upper - m_bounds.lower);
   m_lightSelector.build(m_placedLights, sceneRadius);
@@ -175,6 +181,12 @@ void World::finalize()
 
 void World::placeEmitters()
 {
+  // Beyond these, further emissive surfaces are found by rays alone: each
+  // placement of a surface copies its primitives, and light selection
+  // grows with the number of lights.
+  constexpr size_t kMaxEmitters = 1u << 16;
+  constexpr size_t kMaxEmitterPrimitives = 1u << 22;
+  size_t emitters = 0, primitives = 0;
   m_emitterLights.assign(m_placements.size(), {});
   for (size_t p = 0; p < m_placements.size(); p++) {
     const Placement &placement = m_placements[p];
@@ -185,8 +197,7 @@ void World::placeEmitters()
     for (uint32_t g = 0; g < group.surfaceCount(); g++) {
       const Surface *surface = group.surface(g);
       const auto *material =
-          surface ? dynamic_cast<const PhysicallyBased *>(surface->material())
-                  : nullptr;
+          surface ? surface->material()->asPhysicallyBased() : nullptr;
       if (!material)
         continue;
       const auto &emissive = material->inputs().emissive;
@@ -196,6 +207,10 @@ void World::placeEmitters()
       if (emissive.source() != MaterialInput<float3>::Source::Constant
           || !(std::max(radiance.x, std::max(radiance.y, radiance.z)) > 0.f))
         continue;
+      if (emitters >= kMaxEmitters
+          || primitives + surface->geometry()->primitiveCount()
+                 > kMaxEmitterPrimitives)
+        continue;
       EmitterShape shape;
       surface->geometry()->appendEmitterShape(shape);
       if (!placement.identity)
@@ -204,6 +219,8 @@ void World::placeEmitters()
           std::make_unique<EmissiveSurface>(std::move(shape), radiance);
       if (light->isEmpty())
         continue;
+      emitters++;
+      primitives += light->primitiveCount();
       m_emitterLights[p].resize(group.surfaceCount(), -1);
       m_emitterLights[p][g] = int32_t(m_placedLights.size());
       m_placedLights.push_back(std::move(light));

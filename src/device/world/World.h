@@ -80,6 +80,12 @@ class World : public Object
     const std::vector<int32_t> &ofPlacement = m_emitterLights[instanceId];
     return geometryId < ofPlacement.size() ? ofPlacement[geometryId] : -1;
   }
+  // Indices in lights() of those a ray can reach (PlacedLight::
+  // reachableByRays()), so rays need not ask every emissive surface.
+  const std::vector<uint32_t> &lightsReachableByRays() const
+  {
+    return m_reachableLights;
+  }
   // Chooses among lights() for next-event estimation.
   const LightSelector &lightSelector() const
   {
@@ -110,6 +116,7 @@ class World : public Object
   LightSelector m_lightSelector;
   // Per placement, per geometry id: see emitterLight().
   std::vector<std::vector<int32_t>> m_emitterLights;
+  std::vector<uint32_t> m_reachableLights;
   std::unique_ptr<rt::Scene> m_scene;
   // A world of one untransformed placement traces its group's scene
   // directly: no instance level, the most common case for simple scenes.
