@@ -84,6 +84,25 @@ class PathTracerTest : public AnalyticTest
     return surface(
         geometry("quad", {-50, -50, 0, 50, -50, 0, 50, 50, 0, -50, 50, 0}), m);
   }
+  // Gives world `w` the one committed `light` (released) and recommits it.
+  void addLight(ANARIWorld w, ANARILight light)
+  {
+    setArray(w,
+        "light",
+        anariNewArray1D(m_device, &light, nullptr, nullptr, ANARI_LIGHT, 1));
+    anariRelease(m_device, light);
+    anariCommitParameters(m_device, w);
+  }
+  // A black physicallyBased material emitting radiance L (committed).
+  ANARIMaterial glowing(float L)
+  {
+    ANARIMaterial m = anariNewMaterial(m_device, "physicallyBased");
+    const float none[3] = {0, 0, 0}, emissive[3] = {L, L, L};
+    anariSetParameter(m_device, m, "baseColor", ANARI_FLOAT32_VEC3, none);
+    anariSetParameter(m_device, m, "emissive", ANARI_FLOAT32_VEC3, emissive);
+    anariCommitParameters(m_device, m);
+    return m;
+  }
   ANARIMaterial metal(float roughness)
   {
     ANARIMaterial m = anariNewMaterial(m_device, "physicallyBased");
@@ -157,11 +176,7 @@ TEST_F(PathTracerTest, LambertPlaneUnderADirectionalLight)
   anariSetParameter(m_device, light, "irradiance", ANARI_FLOAT32, &E);
   anariCommitParameters(m_device, light);
   ANARIWorld w = world({plane(matte(rho, rho, rho))});
-  setArray(w,
-      "light",
-      anariNewArray1D(m_device, &light, nullptr, nullptr, ANARI_LIGHT, 1));
-  anariRelease(m_device, light);
-  anariCommitParameters(m_device, w);
+  addLight(w, light);
   ANARICamera c = orthographic(kEye, kDown, 2.f);
   ANARIRenderer r = pathTracer(0.f, black);
   const float3Mean mean = meanOverHits(w, c, r, 8, 1);
@@ -256,11 +271,7 @@ TEST_F(PathTracerTest, NormalMapTiltsTheShadingNormalAlongTheTangent)
         [&](const std::vector<float> &v, ANARIDataType t) {
           return array1D(v, t);
         })});
-    setArray(w,
-        "light",
-        anariNewArray1D(m_device, &light, nullptr, nullptr, ANARI_LIGHT, 1));
-    anariRelease(m_device, light);
-    anariCommitParameters(m_device, w);
+    addLight(w, light);
     ANARICamera c = orthographic(kEye, kDown, 2.f);
     ANARIRenderer r = pathTracer(0.f, black);
     const float3Mean mean = meanOverHits(w, c, r, 8, 1);
@@ -293,11 +304,7 @@ TEST_F(PathTracerTest, OcclusionDarkensAmbientLightOnly)
           m_device, light, "direction", ANARI_FLOAT32_VEC3, direction);
       anariSetParameter(m_device, light, "irradiance", ANARI_FLOAT32, &E);
       anariCommitParameters(m_device, light);
-      setArray(w,
-          "light",
-          anariNewArray1D(m_device, &light, nullptr, nullptr, ANARI_LIGHT, 1));
-      anariRelease(m_device, light);
-      anariCommitParameters(m_device, w);
+      addLight(w, light);
     }
     ANARICamera c = orthographic(kEye, kDown, 2.f);
     ANARIRenderer r = pathTracer(L, black);
@@ -323,11 +330,7 @@ TEST_F(PathTracerTest, PointLightFallsOffWithTheInverseSquare)
     anariSetParameter(m_device, light, "intensity", ANARI_FLOAT32, &I);
     anariCommitParameters(m_device, light);
     ANARIWorld w = world({plane(matte(rho, rho, rho))});
-    setArray(w,
-        "light",
-        anariNewArray1D(m_device, &light, nullptr, nullptr, ANARI_LIGHT, 1));
-    anariRelease(m_device, light);
-    anariCommitParameters(m_device, w);
+    addLight(w, light);
     // One pixel right under the light (orthographic, tiny view).
     ANARICamera c = orthographic(kEye, kDown, 1e-3f);
     ANARIRenderer r = pathTracer(0.f, black);
@@ -365,11 +368,7 @@ TEST_F(PathTracerTest, SphereAndSpotLightsGiveThePointLightsIrradiance)
     }
     anariCommitParameters(m_device, light);
     ANARIWorld w = world({plane(matte(1, 1, 1))});
-    setArray(w,
-        "light",
-        anariNewArray1D(m_device, &light, nullptr, nullptr, ANARI_LIGHT, 1));
-    anariRelease(m_device, light);
-    anariCommitParameters(m_device, w);
+    addLight(w, light);
     // Below the light, which camera rays would otherwise see.
     const float eye[3] = {0, 0, 1};
     ANARICamera c = orthographic(eye, kDown, 1e-3f);
@@ -418,11 +417,7 @@ TEST_F(PathTracerTest, QuadLightIrradianceIsThePolygonFormFactor)
   anariSetParameter(m_device, light, "radiance", ANARI_FLOAT32, &L);
   anariCommitParameters(m_device, light);
   ANARIWorld w = world({plane(matte(1, 1, 1))});
-  setArray(w,
-      "light",
-      anariNewArray1D(m_device, &light, nullptr, nullptr, ANARI_LIGHT, 1));
-  anariRelease(m_device, light);
-  anariCommitParameters(m_device, w);
+  addLight(w, light);
   // One pixel looking at the origin from below the light's height.
   const float eye[3] = {0, 0, 1};
   ANARICamera c = orthographic(eye, kDown, 1e-3f);
@@ -447,11 +442,7 @@ TEST_F(PathTracerTest, EmissiveQuadLightsLikeAQuadLight)
   // weighted against that, and the irradiance is the same form factor.
   const float black[4] = {0, 0, 0, 1};
   const float L = 3.f;
-  ANARIMaterial glow = anariNewMaterial(m_device, "physicallyBased");
-  const float none[3] = {0, 0, 0}, emissive[3] = {L, L, L};
-  anariSetParameter(m_device, glow, "baseColor", ANARI_FLOAT32_VEC3, none);
-  anariSetParameter(m_device, glow, "emissive", ANARI_FLOAT32_VEC3, emissive);
-  anariCommitParameters(m_device, glow);
+  ANARIMaterial glow = glowing(L);
   ANARIGeometry panel = geometry("quad",
       {-0.3f,
           -0.8f,
@@ -489,11 +480,7 @@ TEST_F(PathTracerTest, SmallEmissiveSphereIsSampledAsALight)
   // estimation.
   const float black[4] = {0, 0, 0, 1};
   const float L = 50.f, R = 0.05f, h = 1.f;
-  ANARIMaterial glow = anariNewMaterial(m_device, "physicallyBased");
-  const float none[3] = {0, 0, 0}, emissive[3] = {L, L, L};
-  anariSetParameter(m_device, glow, "baseColor", ANARI_FLOAT32_VEC3, none);
-  anariSetParameter(m_device, glow, "emissive", ANARI_FLOAT32_VEC3, emissive);
-  anariCommitParameters(m_device, glow);
+  ANARIMaterial glow = glowing(L);
   ANARIGeometry ball = geometry("sphere", {0, 0, h});
   anariSetParameter(m_device, ball, "radius", ANARI_FLOAT32, &R);
   ANARIWorld w = world({plane(matte(1, 1, 1)), surface(ball, glow)});
@@ -533,11 +520,7 @@ TEST_F(PathTracerTest, UniformHdriLightsAPlaneAndHidesAWhiteSphere)
     ANARIWorld w =
         world({sphere ? surface(geometry("sphere", {0, 0, 0}), matte(1, 1, 1))
                       : plane(matte(rho, rho, rho))});
-    setArray(w,
-        "light",
-        anariNewArray1D(m_device, &light, nullptr, nullptr, ANARI_LIGHT, 1));
-    anariRelease(m_device, light);
-    anariCommitParameters(m_device, w);
+    addLight(w, light);
     ANARICamera c = orthographic(kEye, kDown, sphere ? 1.f : 2.f);
     ANARIRenderer r = pathTracer(0.f, black);
     const float3Mean mean = meanOverHits(w, c, r, 16, 64);
