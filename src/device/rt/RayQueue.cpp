@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace prism::rt {
 
@@ -80,24 +79,6 @@ Hit RayQueue::hit(size_t i) const
   hit.geometryId = m_geometryId[i];
   hit.instanceId = m_instanceId[i];
   return hit;
-}
-
-void RayQueue::setHit(size_t i, const Hit &hit)
-{
-  m_tMax[i] = hit.t;
-  m_u[i] = hit.u;
-  m_v[i] = hit.v;
-  m_normalX[i] = hit.geometricNormal.x;
-  m_normalY[i] = hit.geometricNormal.y;
-  m_normalZ[i] = hit.geometricNormal.z;
-  m_primitiveId[i] = hit.primitiveId;
-  m_geometryId[i] = hit.geometryId;
-  m_instanceId[i] = hit.instanceId;
-}
-
-void RayQueue::setOccluded(size_t i)
-{
-  m_tMax[i] = -std::numeric_limits<float>::infinity();
 }
 
 void RayQueue::assignInstance(uint32_t instance)

@@ -76,10 +76,6 @@ class RayQueue
     return m_tMax[i] < 0.f && m_tMin[i] >= 0.f;
   }
 
-  // Marks ray i as hitting primitive `primitive` of geometry `geometry` in
-  // instance `instance` at `t` (for transports that merge results).
-  void setHit(size_t i, const Hit &hit);
-  void setOccluded(size_t i);
   // Names instance `instance` in every hit (for scenes traced without
   // their instance level).
   void assignInstance(uint32_t instance);

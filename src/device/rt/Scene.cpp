@@ -28,6 +28,35 @@ void userBounds(const RTCBoundsFunctionArguments *args)
       0.f};
 }
 
+// Ray i of a stream Embree hands a user geometry, tested against
+// `primitive`: the nearest hit in the ray's (tnear, tfar), if any.
+bool intersectLane(const UserGeometry &geometry,
+    unsigned primitive,
+    RTCRayN *ray,
+    unsigned n,
+    unsigned i,
+    float &t,
+    float &u,
+    float &v,
+    float3 &normal)
+{
+  const float3 origin{RTCRayN_org_x(ray, n, i),
+      RTCRayN_org_y(ray, n, i),
+      RTCRayN_org_z(ray, n, i)};
+  const float3 direction{RTCRayN_dir_x(ray, n, i),
+      RTCRayN_dir_y(ray, n, i),
+      RTCRayN_dir_z(ray, n, i)};
+  return geometry.intersectPrimitive(primitive,
+      origin,
+      direction,
+      RTCRayN_tnear(ray, n, i),
+      RTCRayN_tfar(ray, n, i),
+      t,
+      u,
+      v,
+      normal);
+}
+
 void userIntersect(const RTCIntersectFunctionNArguments *args)
 {
   auto *geometry = (const UserGeometry *)args->geometryUserPtr;
@@ -37,23 +66,10 @@ void userIntersect(const RTCIntersectFunctionNArguments *args)
   for (unsigned i = 0; i < args->N; i++) {
     if (!args->valid[i])
       continue;
-    const float3 origin{RTCRayN_org_x(ray, args->N, i),
-        RTCRayN_org_y(ray, args->N, i),
-        RTCRayN_org_z(ray, args->N, i)};
-    const float3 direction{RTCRayN_dir_x(ray, args->N, i),
-        RTCRayN_dir_y(ray, args->N, i),
-        RTCRayN_dir_z(ray, args->N, i)};
     float t, u, v;
     float3 normal;
-    if (!geometry->intersectPrimitive(args->primID,
-            origin,
-            direction,
-            RTCRayN_tnear(ray, args->N, i),
-            RTCRayN_tfar(ray, args->N, i),
-            t,
-            u,
-            v,
-            normal))
+    if (!intersectLane(
+            *geometry, args->primID, ray, args->N, i, t, u, v, normal))
       continue;
     RTCRayN_tfar(ray, args->N, i) = t;
     RTCHitN_Ng_x(hit, args->N, i) = normal.x;
@@ -75,23 +91,10 @@ void userOccluded(const RTCOccludedFunctionNArguments *args)
   for (unsigned i = 0; i < args->N; i++) {
     if (!args->valid[i])
       continue;
-    const float3 origin{RTCRayN_org_x(ray, args->N, i),
-        RTCRayN_org_y(ray, args->N, i),
-        RTCRayN_org_z(ray, args->N, i)};
-    const float3 direction{RTCRayN_dir_x(ray, args->N, i),
-        RTCRayN_dir_y(ray, args->N, i),
-        RTCRayN_dir_z(ray, args->N, i)};
     float t, u, v;
     float3 normal;
-    if (geometry->intersectPrimitive(args->primID,
-            origin,
-            direction,
-            RTCRayN_tnear(ray, args->N, i),
-            RTCRayN_tfar(ray, args->N, i),
-            t,
-            u,
-            v,
-            normal))
+    if (intersectLane(
+            *geometry, args->primID, ray, args->N, i, t, u, v, normal))
       RTCRayN_tfar(ray, args->N, i) = -std::numeric_limits<float>::infinity();
   }
 }
