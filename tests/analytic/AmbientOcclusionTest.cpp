@@ -30,31 +30,13 @@ class AmbientOcclusionTest : public AnalyticTest
     anariSetParameter(m_device, r, "aoSamples", ANARI_INT32, &samples);
     anariSetParameter(m_device, r, "aoDistance", ANARI_FLOAT32, &aoDistance);
     anariCommitParameters(m_device, r);
-    ANARIFrame f = anariNewFrame(m_device);
-    const uint32_t size[2] = {16, 16};
-    const ANARIDataType color = ANARI_FLOAT32_VEC4;
-    const uint8_t on = 1;
-    anariSetParameter(m_device, f, "world", ANARI_WORLD, &w);
-    anariSetParameter(m_device, f, "camera", ANARI_CAMERA, &c);
-    anariSetParameter(m_device, f, "renderer", ANARI_RENDERER, &r);
-    anariSetParameter(m_device, f, "size", ANARI_UINT32_VEC2, size);
-    anariSetParameter(m_device, f, "channel.color", ANARI_DATA_TYPE, &color);
-    anariSetParameter(m_device, f, "accumulation", ANARI_BOOL, &on);
-    anariCommitParameters(m_device, f);
-    for (int i = 0; i < frames; i++)
-      anariRenderFrame(m_device, f);
-    anariFrameReady(m_device, f, ANARI_WAIT);
-    uint32_t width, height;
-    ANARIDataType type;
-    auto *p = (const float *)anariMapFrame(
-        m_device, f, "channel.color", &width, &height, &type);
+    const std::vector<float> p = accumulatedColor(w, c, r, 16, frames);
     double sum = 0;
-    for (uint32_t i = 0; i < width * height; i++)
-      sum += p[4 * i];
-    anariUnmapFrame(m_device, f, "channel.color");
-    for (ANARIObject o : {(ANARIObject)f, (ANARIObject)c, (ANARIObject)r})
+    for (size_t i = 0; i < p.size(); i += 4)
+      sum += p[i];
+    for (ANARIObject o : {(ANARIObject)c, (ANARIObject)r})
       anariRelease(m_device, o);
-    return float(sum / (width * height));
+    return float(sum / (p.size() / 4));
   }
 };
 
@@ -94,36 +76,17 @@ TEST_F(AmbientOcclusionTest, SeesThroughSurfacesByTheirOpacity)
   const float distance = 0.1f;
   anariSetParameter(m_device, r, "aoDistance", ANARI_FLOAT32, &distance);
   anariCommitParameters(m_device, r);
-  ANARIFrame f = anariNewFrame(m_device);
-  const uint32_t size[2] = {16, 16};
-  const ANARIDataType colorType = ANARI_FLOAT32_VEC4;
-  const uint8_t on = 1;
-  anariSetParameter(m_device, f, "world", ANARI_WORLD, &w);
-  anariSetParameter(m_device, f, "camera", ANARI_CAMERA, &c);
-  anariSetParameter(m_device, f, "renderer", ANARI_RENDERER, &r);
-  anariSetParameter(m_device, f, "size", ANARI_UINT32_VEC2, size);
-  anariSetParameter(m_device, f, "channel.color", ANARI_DATA_TYPE, &colorType);
-  anariSetParameter(m_device, f, "accumulation", ANARI_BOOL, &on);
-  anariCommitParameters(m_device, f);
-  for (int i = 0; i < 64; i++)
-    anariRenderFrame(m_device, f);
-  anariFrameReady(m_device, f, ANARI_WAIT);
-  uint32_t width, height;
-  ANARIDataType type;
-  auto *p = (const float *)anariMapFrame(
-      m_device, f, "channel.color", &width, &height, &type);
+  const std::vector<float> p = accumulatedColor(w, c, r, 16, 64);
   double red_ = 0, green = 0;
-  for (uint32_t i = 0; i < width * height; i++) {
-    red_ += p[4 * i];
-    green += p[4 * i + 1];
+  for (size_t i = 0; i < p.size(); i += 4) {
+    red_ += p[i];
+    green += p[i + 1];
   }
-  anariUnmapFrame(m_device, f, "channel.color");
-  const double n = double(width) * height;
+  const double n = double(p.size() / 4);
   // red = 0.25 * 1 + 0.75 * 0.5, green = 0.75 * 0.5; 16384 samples.
   EXPECT_NEAR(red_ / n, 0.625, 0.01);
   EXPECT_NEAR(green / n, 0.375, 0.01);
-  for (ANARIObject o :
-      {(ANARIObject)f, (ANARIObject)w, (ANARIObject)c, (ANARIObject)r})
+  for (ANARIObject o : {(ANARIObject)w, (ANARIObject)c, (ANARIObject)r})
     anariRelease(m_device, o);
   EXPECT_TRUE(problems().empty());
 }

@@ -122,6 +122,37 @@ class AnalyticTest : public PrismDeviceTest
     anariCommitParameters(m_device, r);
     return r;
   }
+  // channel.color (RGBA floats, row 0 at the bottom) after `frames`
+  // accumulated frames of a size x size image (releases nothing it was
+  // given).
+  std::vector<float> accumulatedColor(
+      ANARIWorld w, ANARICamera c, ANARIRenderer r, uint32_t size, int frames)
+  {
+    ANARIFrame f = anariNewFrame(m_device);
+    const uint32_t extent[2] = {size, size};
+    const ANARIDataType color = ANARI_FLOAT32_VEC4;
+    const uint8_t on = 1;
+    anariSetParameter(m_device, f, "world", ANARI_WORLD, &w);
+    anariSetParameter(m_device, f, "camera", ANARI_CAMERA, &c);
+    anariSetParameter(m_device, f, "renderer", ANARI_RENDERER, &r);
+    anariSetParameter(m_device, f, "size", ANARI_UINT32_VEC2, extent);
+    anariSetParameter(m_device, f, "channel.color", ANARI_DATA_TYPE, &color);
+    anariSetParameter(m_device, f, "accumulation", ANARI_BOOL, &on);
+    anariCommitParameters(m_device, f);
+    for (int i = 0; i < frames; i++)
+      anariRenderFrame(m_device, f);
+    anariFrameReady(m_device, f, ANARI_WAIT);
+    uint32_t width = 0, height = 0;
+    ANARIDataType type;
+    auto *p = (const float *)anariMapFrame(
+        m_device, f, "channel.color", &width, &height, &type);
+    std::vector<float> out;
+    if (p)
+      out.assign(p, p + 4 * size_t(width) * height);
+    anariUnmapFrame(m_device, f, "channel.color");
+    anariRelease(m_device, f);
+    return out;
+  }
   // Renders and returns every channel (releases nothing it was given).
   RenderedImage render(ANARIWorld w,
       ANARICamera c,

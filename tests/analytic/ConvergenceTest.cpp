@@ -42,27 +42,8 @@ class Convergence : public AnalyticTest
     const uint8_t on = denoise ? 1 : 0;
     anariSetParameter(m_device, r, "denoise", ANARI_BOOL, &on);
     anariCommitParameters(m_device, r);
-    ANARIFrame f = anariNewFrame(m_device);
-    const uint32_t size[2] = {32, 32};
-    const ANARIDataType color = ANARI_FLOAT32_VEC4;
-    const uint8_t accumulate = 1;
-    anariSetParameter(m_device, f, "world", ANARI_WORLD, &w);
-    anariSetParameter(m_device, f, "camera", ANARI_CAMERA, &c);
-    anariSetParameter(m_device, f, "renderer", ANARI_RENDERER, &r);
-    anariSetParameter(m_device, f, "size", ANARI_UINT32_VEC2, size);
-    anariSetParameter(m_device, f, "channel.color", ANARI_DATA_TYPE, &color);
-    anariSetParameter(m_device, f, "accumulation", ANARI_BOOL, &accumulate);
-    anariCommitParameters(m_device, f);
-    for (int i = 0; i < samples; i++)
-      anariRenderFrame(m_device, f);
-    anariFrameReady(m_device, f, ANARI_WAIT);
-    uint32_t width, height;
-    ANARIDataType type;
-    auto *p = (const float *)anariMapFrame(
-        m_device, f, "channel.color", &width, &height, &type);
-    std::vector<float> out(p, p + 4 * size_t(width) * height);
-    anariUnmapFrame(m_device, f, "channel.color");
-    for (ANARIObject o : {(ANARIObject)f, (ANARIObject)c, (ANARIObject)r})
+    std::vector<float> out = accumulatedColor(w, c, r, 32, samples);
+    for (ANARIObject o : {(ANARIObject)c, (ANARIObject)r})
       anariRelease(m_device, o);
     return out;
   }
