@@ -76,6 +76,7 @@ void AmbientOcclusion::renderTile(const RenderContext &context,
     samples[i].color =
         background(pixel.x, pixel.y, context.width, context.height);
   }
+  rays.setCoherent(true);
   // Camera rays, then their continuations through see-through surfaces.
   while (!rays.empty() && !cancel) {
     transport.traceClosest(rays);

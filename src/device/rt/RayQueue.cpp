@@ -24,9 +24,11 @@ void RayQueue::grow(size_t capacity)
            &m_u,
            &m_v})
     v->resize(capacity);
-  for (auto *v :
-      {&m_mask, &m_tag, &m_flags, &m_primitiveId, &m_geometryId, &m_instanceId})
+  for (auto *v : {&m_tag, &m_primitiveId, &m_geometryId, &m_instanceId})
     v->resize(capacity);
+  // Every ray is of every mask and flagless; tracing never changes either.
+  m_mask.resize(capacity, ~0u);
+  m_flags.resize(capacity, 0u);
 }
 
 void RayQueue::reserve(size_t capacity)
@@ -45,22 +47,22 @@ size_t RayQueue::push(const float3 &origin,
   if (m_size == m_originX.size())
     grow(std::max<size_t>(64, 2 * m_size));
   const size_t i = m_size++;
-  const bool valid = isTraceable(origin, direction, tMin, tMax);
   // An untraceable ray becomes an inactive one (tMin > tMax), which Embree
   // skips and which therefore finds nothing.
-  m_originX[i] = valid ? origin.x : 0.f;
-  m_originY[i] = valid ? origin.y : 0.f;
-  m_originZ[i] = valid ? origin.z : 0.f;
+  const bool valid = isTraceable(origin, direction, tMin, tMax);
+  const float3 o = valid ? origin : float3{0.f, 0.f, 0.f};
+  const float3 d = valid ? direction : float3{0.f, 0.f, 1.f};
+  m_originX[i] = o.x;
+  m_originY[i] = o.y;
+  m_originZ[i] = o.z;
   m_tMin[i] = valid ? tMin : 1.f;
-  m_directionX[i] = valid ? direction.x : 0.f;
-  m_directionY[i] = valid ? direction.y : 0.f;
-  m_directionZ[i] = valid ? direction.z : 1.f;
+  m_directionX[i] = d.x;
+  m_directionY[i] = d.y;
+  m_directionZ[i] = d.z;
   // Embree traces times in [0, 1]; anything else at the shutter midpoint.
   m_time[i] = time >= 0.f && time <= 1.f ? time : 0.5f;
   m_tMax[i] = valid ? tMax : 0.f;
-  m_mask[i] = ~0u;
   m_tag[i] = tag;
-  m_flags[i] = 0u;
   m_geometryId[i] = kInvalidId;
   m_instanceId[i] = kInvalidId;
   return i;

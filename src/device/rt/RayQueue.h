@@ -23,10 +23,11 @@ class RayQueue
   {
     return m_size == 0;
   }
-  // Keeps the memory for the next rays.
+  // Keeps the memory for the next rays; the queue is incoherent again.
   void clear()
   {
     m_size = 0;
+    m_coherent = false;
   }
   void reserve(size_t capacity);
 
@@ -76,6 +77,17 @@ class RayQueue
     return m_tMax[i] < 0.f && m_tMin[i] >= 0.f;
   }
 
+  // A hint for the tracer: the rays start close together and point alike
+  // (a tile's camera rays), so tracing them as packets pays.
+  void setCoherent(bool coherent)
+  {
+    m_coherent = coherent;
+  }
+  bool coherent() const
+  {
+    return m_coherent;
+  }
+
   // Names instance `instance` in every hit (for scenes traced without
   // their instance level).
   void assignInstance(uint32_t instance);
@@ -87,6 +99,7 @@ class RayQueue
   void grow(size_t capacity);
 
   size_t m_size{0};
+  bool m_coherent{false};
   // Ray (the layout of Embree's RTCRayNp members, one array each).
   std::vector<float> m_originX, m_originY, m_originZ, m_tMin;
   std::vector<float> m_directionX, m_directionY, m_directionZ, m_time;

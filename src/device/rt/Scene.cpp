@@ -480,7 +480,8 @@ void Scene::intersect(RayQueue &queue) const
     return;
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  context.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+  context.flags = queue.coherent() ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
+                                   : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
   RTCRayHitNp rays;
   rays.ray.org_x = queue.m_originX.data();
   rays.ray.org_y = queue.m_originY.data();
@@ -512,7 +513,8 @@ void Scene::occluded(RayQueue &queue) const
     return;
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  context.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+  context.flags = queue.coherent() ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
+                                   : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
   RTCRayNp rays;
   rays.org_x = queue.m_originX.data();
   rays.org_y = queue.m_originY.data();
