@@ -21,6 +21,13 @@ struct LightSample
   bool delta{false};
 };
 
+// A sphere around all of a light that rays can reach.
+struct LightBounds
+{
+  float3 center{0.f, 0.f, 0.f};
+  float radius{0.f};
+};
+
 // NOTE: immutable once placed, so render threads share one without locks;
 // subtypes share their tables (hdri image, photometric data) by
 // shared_ptr<const>, so a placement outlives a recommit of its light.
@@ -51,6 +58,13 @@ class PlacedLight
   virtual bool reachableByRays() const
   {
     return !isDelta();
+  }
+  // Where radianceAlong() can find the light, so rays passing elsewhere
+  // need not ask it; false for lights at infinity (and any without
+  // bounds), which every ray must ask.
+  virtual bool bounds(LightBounds &) const
+  {
+    return false;
   }
   // Directional and hdri lights: at infinity, outside every scene bound.
   virtual bool isInfinite() const

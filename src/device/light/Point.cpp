@@ -100,6 +100,11 @@ class PlacedSphere : public PlacedLight
   {
     return m_power;
   }
+  bool bounds(LightBounds &out) const override
+  {
+    out = {m_center, m_radius};
+    return true;
+  }
 
  private:
   // The cone of directions from `point` that hit the sphere; false from

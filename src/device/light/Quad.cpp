@@ -122,6 +122,15 @@ class PlacedQuad : public PlacedLight
   {
     return m_emission.power;
   }
+  bool bounds(LightBounds &out) const override
+  {
+    out.center = m_corner + (m_edge1 + m_edge2) * 0.5f;
+    // Half the longer diagonal.
+    out.radius = 0.5f
+                 * std::sqrt(std::max(lengthSquared(m_edge1 + m_edge2),
+                     lengthSquared(m_edge1 - m_edge2)));
+    return true;
+  }
 
  private:
   // The quad's corners as unit vectors from a point, the solid angles of

@@ -140,6 +140,11 @@ class PlacedRingDisk : public PlacedLight
   {
     return m_emission.power;
   }
+  bool bounds(LightBounds &out) const override
+  {
+    out = {m_center, m_radius};
+    return true;
+  }
 
  private:
   float areaPdf(const float3 &direction, float distance) const

@@ -64,15 +64,19 @@ double3 sampleSphericalTriangle(
 {
   // The interior angle at `a`, between the great circles through a, b and
   // a, c (the angle of their planes' normals).
+  // Its sine from the cross product stays accurate for thin triangles.
   const double3 normalAB = normalizeOr(cross(a, b), {0, 0, 1});
   const double3 normalAC = normalizeOr(cross(a, c), {0, 0, 1});
-  const double alpha = std::acos(clamp(dot(normalAB, normalAC), -1.0, 1.0));
-  const double sinAlpha = std::sin(alpha), cosAlpha = std::cos(alpha);
+  const double cosAlpha = clamp(dot(normalAB, normalAC), -1.0, 1.0);
+  const double sinAlpha = std::min(1.0, length(cross(normalAB, normalAC)));
 
   // The point c' on arc ac for which triangle a, b, c' has area u.x * area:
-  // the spherical law of cosines for angles solved for cos(arc a c').
-  const double delta = double(u.x) * area - alpha;
-  const double s = std::sin(delta), t = std::cos(delta);
+  // the spherical law of cosines for angles solved for cos(arc a c'), with
+  // s, t the sine and cosine of u.x * area - alpha.
+  const double sampled = double(u.x) * area;
+  const double sinSampled = std::sin(sampled), cosSampled = std::cos(sampled);
+  const double s = sinSampled * cosAlpha - cosSampled * sinAlpha;
+  const double t = cosSampled * cosAlpha + sinSampled * sinAlpha;
   const double p = t - cosAlpha;
   const double q = s + sinAlpha * dot(a, b);
   const double denominator = (q * s + p * t) * sinAlpha;

@@ -15,15 +15,16 @@
 namespace prism {
 namespace {
 
-// Random streams per bounce: direction, lobe, light choice, light point,
-// opacity and roulette.
+// Random streams per bounce: direction, lobe, light choice, light point
+// and roulette; see-through surfaces draw from kOpacityStreams on.
 constexpr uint32_t kStreamsPerBounce = 5;
+constexpr uint32_t kOpacityStreams = 0x10000u;
 // See-through surfaces a path passes at one bounce before it gives up.
 constexpr uint16_t kMaxLayers = 64;
 
-float2 random2(const PathState &path, uint32_t sample, uint32_t stream)
+float2 random2(const PathState &path, uint32_t stream)
 {
-  return hashedSample2D(path.x, path.y, sample, 16 + stream);
+  return seededSample2D(path.seed, stream);
 }
 
 float powerHeuristic(float a, float b)
@@ -45,6 +46,28 @@ void frameAround(const float3 &n, float3 &t, float3 &b)
   const float c = n.x * n.y * a;
   t = {1.f + sign * n.x * n.x * a, sign * c, -sign * n.x};
   b = {c, sign + n.y * n.y * a, -n.y};
+}
+
+// False when the ray (unit `direction`) surely passes the light's bounds
+// within (tMin, hitDistance): a few multiplies instead of asking the light.
+// The sphere is widened by more than the rounding of this test, so every
+// ray that can find the light is let through.
+bool mayReach(const World::ReachableLight &light,
+    const float3 &origin,
+    const float3 &direction,
+    float tMin,
+    float hitDistance)
+{
+  if (!light.bounded)
+    return true;
+  const float3 toCenter = light.bounds.center - origin;
+  const float along = dot(toCenter, direction);
+  const float radius = light.bounds.radius * 1.001f + 1e-5f * std::abs(along);
+  if (along + radius <= tMin || along - radius >= hitDistance)
+    return false;
+  // The distance of the line from the center, without cancellation.
+  const float3 across = toCenter - direction * along;
+  return lengthSquared(across) <= radius * radius;
 }
 
 float3 exp3(const float3 &v)
@@ -165,11 +188,13 @@ void PathTracer::renderTile(const RenderContext &context,
     PathState &path = paths[i];
     path.x = tile.x0 + uint32_t(i % width);
     path.y = tile.y0 + uint32_t(i / width);
+    path.seed = pathSeed(path.x, path.y, context.sampleIndex);
     const Ray ray = cameraRay(context, path.x, path.y);
     path.time = ray.time;
     rays.push(
         ray.origin, ray.direction, ray.tMin, ray.tMax, path.time, uint32_t(i));
   }
+  rays.setCoherent(true);
   uint64_t traced = 0;
   while (!rays.empty() && !cancel) {
     traced += rays.size();
@@ -250,9 +275,12 @@ float3 PathTracer::lightsAlong(const RenderContext &context,
   const LightSelector &selector = context.world->lightSelector();
   const bool cameraRay = path.bounce == 0;
   float3 sum{0.f, 0.f, 0.f};
-  for (const uint32_t i : context.world->lightsReachableByRays()) {
+  for (const World::ReachableLight &reachable :
+      context.world->lightsReachableByRays()) {
+    const uint32_t i = reachable.index;
     const PlacedLight &light = *lights[i];
-    if (cameraRay && !light.visibleToCamera)
+    if ((cameraRay && !light.visibleToCamera)
+        || !mayReach(reachable, origin, direction, tMin, hitDistance))
       continue;
     float distance = 0.f, lightPdf = 0.f;
     const float3 radiance =
@@ -279,7 +307,6 @@ void PathTracer::shadeBounce(const RenderContext &context,
     rt::RayQueue &shadows,
     std::vector<float3> &contributions) const
 {
-  const uint32_t n = context.sampleIndex;
   const auto &lights = context.world->lights();
   const LightSelector &selector = context.world->lightSelector();
   for (size_t r = 0; r < rays.size(); r++) {
@@ -327,9 +354,7 @@ void PathTracer::shadeBounce(const RenderContext &context,
     // See-through surfaces: pass through with probability 1 - opacity
     // (each layer its own random number).
     if (inputs.opacity < 1.f
-        && hashedSample2D(
-               path.x, path.y, n, 0x10000u + path.layer + 97u * path.bounce)
-                   .x
+        && random2(path, kOpacityStreams + path.layer + 97u * path.bounce).x
                >= inputs.opacity) {
       if (++path.layer < kMaxLayers) {
         next.push(ray.origin,
@@ -387,10 +412,10 @@ void PathTracer::shadeBounce(const RenderContext &context,
     // joins the bounce's shadow queue.
     if (!selector.empty() && bsdf.hasNonDeltaLobes()) {
       float pickProbability = 0.f;
-      const PlacedLight &light = *lights[selector.pick(
-          random2(path, n, stream + 2).x, pickProbability)];
+      const PlacedLight &light =
+          *lights[selector.pick(random2(path, stream + 2).x, pickProbability)];
       const LightSample ls =
-          light.sample(surface.position, random2(path, n, stream + 3));
+          light.sample(surface.position, random2(path, stream + 3));
       const float3 wi = toLocal(ls.direction);
       if (ls.pdf > 0.f && maxComponent(ls.radiance) > 0.f) {
         float3 f;
@@ -418,8 +443,8 @@ void PathTracer::shadeBounce(const RenderContext &context,
     }
 
     // Continue the path by sampling the BSDF.
-    const float2 direction = random2(path, n, stream);
-    const float lobe = random2(path, n, stream + 1).x;
+    const float2 direction = random2(path, stream);
+    const float lobe = random2(path, stream + 1).x;
     const BsdfSample bs = bsdf.sample(wo, direction, lobe);
     if (!bs.valid())
       continue;
@@ -441,7 +466,7 @@ void PathTracer::shadeBounce(const RenderContext &context,
     // Russian roulette after three bounces keeps long paths unbiased.
     if (path.bounce > 3) {
       const float survive = std::min(0.95f, maxComponent(path.throughput));
-      if (random2(path, n, stream + 4).y >= survive)
+      if (random2(path, stream + 4).y >= survive)
         continue;
       path.throughput = path.throughput / survive;
     }

@@ -171,8 +171,12 @@ void World::finalize()
   placeEmitters();
   m_reachableLights.clear();
   for (size_t i = 0; i < m_placedLights.size(); i++) {
-    if (m_placedLights[i]->reachableByRays())
-      m_reachableLights.push_back(uint32_t(i));
+    const PlacedLight &light = *m_placedLights[i];
+    if (light.reachableByRays()) {
+      ReachableLight reachable{uint32_t(i), false, {}};
+      reachable.bounded = light.bounds(reachable.bounds);
+      m_reachableLights.push_back(reachable);
+    }
   }
   const float sceneRadius =
       isEmpty(m_bounds) ? 1.f : 0.5f * length(m_bounds.upper - m_bounds.lower);

@@ -80,9 +80,15 @@ class World : public Object
     const std::vector<int32_t> &ofPlacement = m_emitterLights[instanceId];
     return geometryId < ofPlacement.size() ? ofPlacement[geometryId] : -1;
   }
-  // Indices in lights() of those a ray can reach (PlacedLight::
-  // reachableByRays()), so rays need not ask every emissive surface.
-  const std::vector<uint32_t> &lightsReachableByRays() const
+  // The lights a ray can reach (PlacedLight::reachableByRays()), so rays
+  // need not ask every emissive surface, each with where it can be found.
+  struct ReachableLight
+  {
+    uint32_t index; // in lights()
+    bool bounded;   // false: at infinity, asked by every ray
+    LightBounds bounds;
+  };
+  const std::vector<ReachableLight> &lightsReachableByRays() const
   {
     return m_reachableLights;
   }
@@ -116,7 +122,7 @@ class World : public Object
   LightSelector m_lightSelector;
   // Per placement, per geometry id: see emitterLight().
   std::vector<std::vector<int32_t>> m_emitterLights;
-  std::vector<uint32_t> m_reachableLights;
+  std::vector<ReachableLight> m_reachableLights;
   std::unique_ptr<rt::Scene> m_scene;
   // A world of one untransformed placement traces its group's scene
   // directly: no instance level, the most common case for simple scenes.

@@ -28,6 +28,7 @@ struct PathState
   uint16_t bounce{0};  // scattering events so far (0: the camera ray)
   uint16_t layer{0};   // see-through surfaces passed at this bounce
   uint32_t x{0}, y{0}; // the pixel
+  uint32_t seed{0};    // of its random numbers (pathSeed())
   float time{0.5f};    // within the shutter, shared by all its rays
   PixelSample sample;  // the first hit's channels and the final color
 };
