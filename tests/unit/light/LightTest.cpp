@@ -104,7 +104,8 @@ double pdfIntegral(const PlacedLight &light,
 }
 
 // How many of n x n samples from `point` disagree with radianceAlong() in
-// pdf, radiance or distance (relative 1e-3); `checked` counts the rest.
+// pdf, radiance or distance (relative 1e-3), or land outside the light's
+// bounds (which rays use to skip it); `checked` counts the rest.
 int inconsistentSamples(
     const PlacedLight &light, float3 point, int &checked, int n = 64)
 {
@@ -123,13 +124,20 @@ int inconsistentSamples(
     float distance = 0.f, pdf = 0.f;
     const float3 radiance =
         light.radianceAlong(point, s.direction, distance, pdf);
+    LightBounds bounds;
+    const bool bounded = light.bounds(bounds);
+    const float fromCenter =
+        length(point + s.direction * s.distance - bounds.center);
+    const bool inside = !bounded || fromCenter <= bounds.radius * 1.0001f;
     const bool ok = near(pdf, s.pdf) && near(radiance.x, s.radiance.x)
-                    && near(distance, s.distance);
+                    && near(distance, s.distance) && inside;
     if (!ok && bad++ == 0) {
       ADD_FAILURE() << "sample pdf " << s.pdf << " radiance " << s.radiance.x
                     << " distance " << s.distance << " vs radianceAlong pdf "
                     << pdf << " radiance " << radiance.x << " distance "
-                    << distance;
+                    << distance << "; " << fromCenter
+                    << " from the bounds' center (radius " << bounds.radius
+                    << ")";
     }
     checked++;
   }
@@ -798,6 +806,53 @@ TEST_F(LightTest, RingWithoutRadiusIsALambertianSpot)
   EXPECT_NEAR(intensityAt(0.5f), 2.f * std::cos(0.5f), 1e-5f);
   EXPECT_NEAR(intensityAt(0.9f), 2.f * std::cos(0.9f) * 0.5f, 1e-4f);
   EXPECT_EQ(intensityAt(1.2f), 0.f);
+}
+
+TEST_F(LightTest, BoundsHoldEveryPointRaysCanFindWhereverPlaced)
+{
+  // Rays skip a light whose bounding sphere they pass, so every sampled
+  // point (which radianceAlong() must find) lies inside it, also under a
+  // rotating, scaling instance; lights at infinity have no bounds.
+  const mat3x4 moves[] = {kIdentityMat3x4,
+      rotation(normalize(float3{1, 2, 3}), 1.1f, {4, -2, 7}),
+      scaling(3.f, {-1, 0, 2})};
+  light::Quad quad(m_device);
+  setVec3(quad, "position", {-1.f, -0.5f, 2.f});
+  setVec3(quad, "edge1", {2, 0, 0.5f});
+  setVec3(quad, "edge2", {0.3f, 1, 0});
+  setString(quad, "side", "both");
+  commit(quad);
+  light::Point sphere(m_device);
+  setVec3(sphere, "position", {1, 0, 0});
+  setFloat(sphere, "radius", 0.3f);
+  commit(sphere);
+  light::Ring ring(m_device);
+  setVec3(ring, "position", {0, 1, 0});
+  setVec3(ring, "direction", {0, -1, 0});
+  setFloat(ring, "radius", 0.8f);
+  setFloat(ring, "falloffAngle", 0.f);
+  commit(ring);
+  for (const Light *light :
+      {(const Light *)&quad, (const Light *)&sphere, (const Light *)&ring}) {
+    for (const mat3x4 &move : moves) {
+      const auto placed = place(*light, move);
+      LightBounds bounds;
+      EXPECT_TRUE(placed->bounds(bounds)) << light->subtype();
+      int total = 0;
+      for (float3 point : {float3{0, -3, 0}, float3{5, 4, -3}}) {
+        int checked = 0;
+        EXPECT_EQ(inconsistentSamples(*placed, point, checked, 32), 0)
+            << light->subtype();
+        total += checked;
+      }
+      EXPECT_GT(total, 500) << light->subtype();
+    }
+  }
+  light::Directional sun(m_device);
+  setFloat(sun, "angularDiameter", 0.1f);
+  commit(sun);
+  LightBounds none;
+  EXPECT_FALSE(place(sun)->bounds(none));
 }
 
 TEST_F(LightTest, RingIrradianceOnTheAxisIsTheAnnulusFormula)

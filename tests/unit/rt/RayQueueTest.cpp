@@ -114,8 +114,49 @@ TEST_F(RayQueueTest, EmptyQueueAndClear)
   m_scene.intersect(queue);
   m_scene.occluded(queue);
   queue.push({0.2f, 0.2f, 1}, {0, 0, -1}, 0.f, kInf, 0.5f, 9);
+  queue.setCoherent(true);
   queue.clear();
   EXPECT_TRUE(queue.empty());
+  EXPECT_FALSE(queue.coherent()); // the next rays are anyone's
+}
+
+TEST_F(RayQueueTest, CoherentQueuesFindWhatIncoherentOnesFind)
+{
+  // A fan of camera-like rays from one point over the triangle and the
+  // sphere, some untraceable: the coherence hint changes how Embree
+  // traces, never what a ray finds or whether it is blocked.
+  RayQueue coherent, incoherent, coherentShadows, incoherentShadows;
+  for (RayQueue *queue :
+      {&coherent, &incoherent, &coherentShadows, &incoherentShadows}) {
+    for (int i = 0; i < 100; i++) {
+      const float3 direction =
+          normalize(float3{-0.5f + 0.065f * float(i), 0.25f, -1.f});
+      const float tMin = i % 17 == 5 ? kNaN : 0.f;
+      queue->push({0.1f, 0.f, 1.f}, direction, tMin, kInf, 0.5f, uint32_t(i));
+    }
+  }
+  coherent.setCoherent(true);
+  coherentShadows.setCoherent(true);
+  m_scene.intersect(coherent);
+  m_scene.intersect(incoherent);
+  m_scene.occluded(coherentShadows);
+  m_scene.occluded(incoherentShadows);
+  int hits = 0, blocked = 0;
+  for (size_t i = 0; i < coherent.size(); i++) {
+    const Hit a = coherent.hit(i), b = incoherent.hit(i);
+    ASSERT_EQ(a.found(), b.found()) << i;
+    hits += a.found();
+    if (a.found()) {
+      EXPECT_EQ(a.geometryId, b.geometryId) << i;
+      EXPECT_EQ(a.primitiveId, b.primitiveId) << i;
+      EXPECT_FLOAT_EQ(a.t, b.t) << i;
+    }
+    EXPECT_EQ(coherentShadows.occluded(i), incoherentShadows.occluded(i)) << i;
+    blocked += coherentShadows.occluded(i);
+  }
+  EXPECT_GT(hits, 10);
+  EXPECT_EQ(blocked, hits);
+  EXPECT_TRUE(m_errors.empty());
 }
 
 } // namespace
