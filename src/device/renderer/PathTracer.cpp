@@ -1,10 +1,13 @@
 #include "PathTracer.h"
 
+#include "NormalMapping.h"
+
 #include "../light/EmissiveSurface.h"
 #include "../light/PlacedLight.h"
 #include "../material/Matte.h"
 #include "../material/PhysicallyBased.h"
 #include "../shading/Bsdf.h"
+#include "../shading/Sampling.h"
 #include "SampleHash.h"
 #include "wavefront/LocalTransport.h"
 
@@ -36,16 +39,6 @@ float powerHeuristic(float a, float b)
 float maxComponent(const float3 &v)
 {
   return std::max(v.x, std::max(v.y, v.z));
-}
-
-// An orthonormal frame around n (Duff et al. 2017).
-void frameAround(const float3 &n, float3 &t, float3 &b)
-{
-  const float sign = std::copysign(1.f, n.z);
-  const float a = -1.f / (sign + n.z);
-  const float c = n.x * n.y * a;
-  t = {1.f + sign * n.x * n.x * a, sign * c, -sign * n.x};
-  b = {c, sign + n.y * n.y * a, -n.y};
 }
 
 // False when the ray (unit `direction`) surely passes the light's bounds
@@ -115,40 +108,6 @@ ShadingInputs shadingInputs(const SurfaceHit &hit)
     out.opacity = material.coverage(base.w);
   }
   return out;
-}
-
-// `normal` (the geometry's own shading normal at the hit, world space)
-// bent by a tangent-space normal map value; `normal` itself where the map
-// gives nothing usable or would turn the surface away from the viewer.
-float3 normalMapped(const SurfaceHit &surface,
-    const rt::Hit &hit,
-    const float3 &normal,
-    const float3 &mapped,
-    const float3 &towardsViewer)
-{
-  float4 objectTangent;
-  float3 tangent, bitangent;
-  if (surface.surface->geometry()->tangentAt(hit, objectTangent)) {
-    const float3 t{objectTangent.x, objectTangent.y, objectTangent.z};
-    tangent = surface.placement->identity
-                  ? t
-                  : transformDirection(surface.placement->worldFromObject, t);
-    tangent = tangent - normal * dot(normal, tangent);
-    if (!(lengthSquared(tangent) > 1e-20f))
-      return normal;
-    tangent = normalize(tangent);
-    bitangent = cross(normal, tangent) * objectTangent.w;
-  } else {
-    frameAround(normal, tangent, bitangent);
-  }
-  const float3 bent =
-      tangent * mapped.x + bitangent * mapped.y + normal * mapped.z;
-  if (!(lengthSquared(bent) > 1e-20f))
-    return normal;
-  const float3 result = normalize(bent);
-  const bool sameSide =
-      (dot(result, towardsViewer) > 0.f) == (dot(normal, towardsViewer) > 0.f);
-  return sameSide ? result : normal;
 }
 
 } // namespace
@@ -392,7 +351,7 @@ void PathTracer::shadeBounce(const RenderContext &context,
     if (inputs.hasNormalMap)
       normal = normalMapped(
           surface, hit, normal, inputs.normalMap, ray.direction * -1.f);
-    frameAround(normal, tangent, bitangent);
+    orthonormalBasis(normal, tangent, bitangent);
     auto toLocal = [&](const float3 &v) {
       return float3{dot(v, tangent), dot(v, bitangent), dot(v, normal)};
     };
