@@ -4,6 +4,7 @@
 #include "Console.h"
 #include "DefaultEnvironment.h"
 #include "DemoScenes.h"
+#include "FrameMemory.h"
 #include "FrameOutput.h"
 #include "GltfLoader.h"
 #include "ObjLoader.h"
@@ -192,6 +193,8 @@ int run(int argc, char **argv)
     listDemos();
     return 0;
   }
+  if (const std::string why = whyFrameDoesNotFit(options); !why.empty())
+    return fail(why);
 
   // What to load, checked before any device is touched.
   SourceKind kind = SourceKind::Demo;
