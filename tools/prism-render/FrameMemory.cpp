@@ -43,7 +43,8 @@ std::string whyFrameDoesNotFit(const Options &options)
   char text[256];
   std::snprintf(text,
       sizeof(text),
-      "--size %ux%u needs about %.1f GiB of memory, more than this machine's %.1f GiB",
+      "--size %ux%u needs about %.1f GiB of memory, more than this machine's "
+      "%.1f GiB",
       options.width,
       options.height,
       double(needed) / kGiB,
