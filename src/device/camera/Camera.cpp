@@ -31,7 +31,7 @@ float2 concentricDisk(float2 u)
 
 } // namespace
 
-Camera::Camera(Device &device, const std::string &subtype)
+Camera::Camera(DeviceState &device, const std::string &subtype)
     : Object(device, ANARI_CAMERA, subtype)
 {}
 

@@ -1,7 +1,8 @@
 #include "Frame.h"
 
-#include "../Device.h"
 #include "../camera/Camera.h"
+#include "../object/DeviceState.h"
+#include "../parallel/TaskPool.h"
 #include "../renderer/Renderer.h"
 #include "../world/World.h"
 #include "PixelFormat.h"
@@ -39,7 +40,7 @@ const std::map<std::string, std::vector<ANARIDataType>> &channelFormats()
 
 } // namespace
 
-Frame::Frame(Device &device) : Object(device, ANARI_FRAME, "") {}
+Frame::Frame(DeviceState &device) : Object(device, ANARI_FRAME, "") {}
 
 Frame::~Frame() = default;
 
@@ -367,7 +368,7 @@ void Frame::finish(const Completion &completion)
   device().frameFinished();
   if (completion.callback)
     completion.callback(
-        completion.userPtr, device().this_device(), (ANARIFrame)handle());
+        completion.userPtr, device().apiHandle(), (ANARIFrame)handle());
   std::lock_guard lock(m_stateMutex);
   m_rendering = false;
   m_doneCondition.notify_all();

@@ -21,7 +21,7 @@ class World;
 class Frame : public Object
 {
  public:
-  explicit Frame(Device &device);
+  explicit Frame(DeviceState &device);
   ~Frame() override;
 
   bool isValid() const override;

@@ -21,7 +21,7 @@ enum class AlphaMode : uint8_t {
 class Material : public Object
 {
  public:
-  Material(Device &device, const std::string &subtype)
+  Material(DeviceState &device, const std::string &subtype)
       : Object(device, ANARI_MATERIAL, subtype)
   {}
 
@@ -97,6 +97,6 @@ class Material : public Object
 };
 
 // The material of `subtype`, or NULL if the device does not implement it.
-Material *createMaterial(Device &device, const std::string &subtype);
+Material *createMaterial(DeviceState &device, const std::string &subtype);
 
 } // namespace prism

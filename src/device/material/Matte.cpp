@@ -2,7 +2,7 @@
 
 namespace prism {
 
-Matte::Matte(Device &device) : Material(device, "matte") {}
+Matte::Matte(DeviceState &device) : Material(device, "matte") {}
 
 void Matte::commitParameters()
 {

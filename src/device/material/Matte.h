@@ -9,7 +9,7 @@ namespace prism {
 class Matte : public Material
 {
  public:
-  explicit Matte(Device &device);
+  explicit Matte(DeviceState &device);
 
   float4 baseColorAndOpacity(const AttributeValues &attributes) const override;
 

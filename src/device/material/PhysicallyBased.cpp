@@ -5,7 +5,7 @@
 
 namespace prism {
 
-PhysicallyBased::PhysicallyBased(Device &device)
+PhysicallyBased::PhysicallyBased(DeviceState &device)
     : Material(device, "physicallyBased")
 {}
 

@@ -71,7 +71,7 @@ class PhysicallyBased : public Material
     float iridescenceThickness;
   };
 
-  explicit PhysicallyBased(Device &device);
+  explicit PhysicallyBased(DeviceState &device);
 
   // `emissive` as radiance: negative or non-finite components are 0.
   static float3 usableEmission(const float3 &emissive);

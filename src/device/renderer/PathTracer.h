@@ -22,7 +22,7 @@ namespace prism {
 class PathTracer : public Renderer
 {
  public:
-  PathTracer(Device &device, const std::string &subtype)
+  PathTracer(DeviceState &device, const std::string &subtype)
       : Renderer(device, subtype)
   {}
 

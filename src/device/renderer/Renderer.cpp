@@ -3,11 +3,11 @@
 #include "PrimaryRays.h"
 #include "SampleHash.h"
 
-#include "../Device.h"
 #include "../array/Array.h"
 #include "../array/ElementConversion.h"
 #include "../frame/ImageFilter.h"
 #include "../introspection/Introspection.h"
+#include "../object/DeviceState.h"
 
 #include "anari/frontend/type_utility.h"
 
@@ -18,7 +18,7 @@
 
 namespace prism {
 
-Renderer::Renderer(Device &device, const std::string &subtype)
+Renderer::Renderer(DeviceState &device, const std::string &subtype)
     : Object(device, ANARI_RENDERER, subtype)
 {}
 

@@ -32,7 +32,7 @@ struct RenderContext
 class Renderer : public Object
 {
  public:
-  Renderer(Device &device, const std::string &subtype);
+  Renderer(DeviceState &device, const std::string &subtype);
 
   // Called once per frame before any tile.
   virtual void beginFrame(const RenderContext &context) {}

@@ -1,10 +1,10 @@
 #include "World.h"
 
-#include "../Device.h"
 #include "../array/Array.h"
 #include "../light/EmissiveSurface.h"
 #include "../light/Light.h"
 #include "../material/PhysicallyBased.h"
+#include "../object/DeviceState.h"
 #include "../rt/RayValidity.h"
 
 #include <algorithm>
@@ -67,7 +67,7 @@ bool isTraceablePlacement(const box3 &bounds,
 
 } // namespace
 
-World::World(Device &device)
+World::World(DeviceState &device)
     : Object(device, ANARI_WORLD, ""),
       m_implicitGroup(new Group(device)),
       m_scene(std::make_unique<rt::Scene>(device.rtContext())),

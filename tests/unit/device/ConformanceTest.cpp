@@ -4,7 +4,7 @@
 #include "Device.h"
 #include "DeviceInfo.h"
 #include "introspection/Introspection.h"
-#include "object/ObjectFactory.h"
+#include "object/UnknownObject.h"
 
 #include "anari/frontend/type_utility.h"
 
