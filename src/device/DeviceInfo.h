@@ -63,6 +63,7 @@ inline const char *kImplementedExtensions[] = {
     "ANARI_KHR_SAMPLER_IMAGExD_CLAMP_TO_BORDER",
     "ANARI_KHR_SAMPLER_PRIMITIVE",
     "ANARI_KHR_SAMPLER_TRANSFORM",
+    "ANARI_PRISM_RENDERERS",
     nullptr,
 };
 

@@ -98,6 +98,13 @@ class Object
       uint64_t size,
       ANARIWaitMask mask);
 
+  // The names the last commit asked for, set or not (conformance checks:
+  // everything an object reads must be declared to introspection).
+  const std::set<std::string> &parametersRead() const
+  {
+    return m_readThisCommit;
+  }
+
   // Drops every reference this object holds on others (device teardown).
   virtual void dropReferences();
 
