@@ -6,6 +6,7 @@
 #include "frame/Frame.h"
 #include "introspection/Introspection.h"
 #include "object/UnknownObject.h"
+#include "renderer/wavefront/LocalTransport.h"
 
 #include "anari/frontend/type_utility.h"
 
@@ -961,6 +962,11 @@ try {
 }
 
 // Frames ///////////////////////////////////////////////////////////////////
+
+std::unique_ptr<RayTransport> Device::transportFor(const World &world)
+{
+  return std::make_unique<LocalTransport>(world);
+}
 
 void Device::frameStarted()
 {

@@ -143,6 +143,7 @@ class Device : public anari::DeviceImpl, public DeviceState
   {
     return m_rtContext;
   }
+  std::unique_ptr<RayTransport> transportFor(const World &world) override;
   void frameStarted() override;
   void frameFinished() override;
 

@@ -7,12 +7,15 @@
 #include "anari/anari.h"
 
 #include <functional>
+#include <memory>
 #include <string>
 
 namespace prism {
 
 class Object;
+class RayTransport;
 class TaskPool;
+class World;
 namespace rt {
 class Context;
 }
@@ -44,6 +47,9 @@ class DeviceState
   // Ray tracing and the workers frames render on.
   virtual const rt::Context &rtContext() const = 0;
   virtual TaskPool &taskPool() = 0;
+
+  // How a frame's renderer traces rays through `world`.
+  virtual std::unique_ptr<RayTransport> transportFor(const World &world) = 0;
 
   // Frames in flight, so commits and array maps never tear a frame.
   virtual void frameStarted() = 0;

@@ -1,7 +1,7 @@
 #include "AmbientOcclusion.h"
 
 #include "SampleHash.h"
-#include "wavefront/LocalTransport.h"
+#include "wavefront/RayTransport.h"
 
 #include <algorithm>
 #include <cmath>
@@ -48,7 +48,7 @@ void AmbientOcclusion::renderTile(const RenderContext &context,
     FrameBuffers &buffers,
     const std::atomic<bool> &cancel) const
 {
-  const LocalTransport transport(*context.world);
+  const RayTransport &transport = *context.transport;
   const uint32_t width = tile.x1 - tile.x0;
   const size_t count = size_t(width) * (tile.y1 - tile.y0);
   const auto workspace = m_workspaces.take();

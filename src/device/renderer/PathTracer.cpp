@@ -9,7 +9,7 @@
 #include "../shading/Bsdf.h"
 #include "../shading/Sampling.h"
 #include "SampleHash.h"
-#include "wavefront/LocalTransport.h"
+#include "wavefront/RayTransport.h"
 
 #include <algorithm>
 #include <cmath>
@@ -125,15 +125,7 @@ void PathTracer::renderTile(const RenderContext &context,
     FrameBuffers &buffers,
     const std::atomic<bool> &cancel) const
 {
-  renderTile(context, tile, buffers, LocalTransport(*context.world), cancel);
-}
-
-void PathTracer::renderTile(const RenderContext &context,
-    const Tile &tile,
-    FrameBuffers &buffers,
-    const RayTransport &transport,
-    const std::atomic<bool> &cancel) const
-{
+  const RayTransport &transport = *context.transport;
   const uint32_t width = tile.x1 - tile.x0;
   const size_t count = size_t(width) * (tile.y1 - tile.y0);
   const auto workspace = m_workspaces.take();
@@ -166,9 +158,10 @@ void PathTracer::renderTile(const RenderContext &context,
       traced += shadows.size();
       transport.traceOcclusion(shadows);
       for (size_t k = 0; k < shadows.size(); k++) {
-        if (!shadows.occluded(k)) {
+        const float3 &through = shadows.transmittance(k);
+        if (maxComponent(through) > 0.f) {
           PathState &path = paths[shadows.tag(k)];
-          path.radiance = path.radiance + contributions[k];
+          path.radiance = path.radiance + contributions[k] * through;
         }
       }
     }
@@ -283,8 +276,11 @@ void PathTracer::shadeBounce(const RenderContext &context,
     const float hitDistance =
         found ? hit.t : std::numeric_limits<float>::infinity();
     // Inside an absorbing medium: Beer-Lambert over the segment.
-    if (maxComponent(path.medium) > 0.f && found)
-      path.throughput = path.throughput * exp3(path.medium * -hit.t);
+    if (found && path.media.depth() > 0) {
+      const float3 absorption = path.media.absorption();
+      if (maxComponent(absorption) > 0.f)
+        path.throughput = path.throughput * exp3(absorption * -hit.t);
+    }
     path.radiance = path.radiance
                     + path.throughput
                           * lightsAlong(context,
@@ -413,11 +409,14 @@ void PathTracer::shadeBounce(const RenderContext &context,
     path.ambientVisibility = inputs.occlusion;
     const float3 wiWorld = normalize(toWorld(bs.wi));
     // Crossing a volume boundary: entering it (against the unflipped
-    // normal) starts absorbing, leaving it stops.
+    // normal) enters its medium, leaving it returns to the one outside.
     if (bsdf.isVolumeBoundary()
-        && dot(wiWorld, normal) * dot(ray.direction, normal) > 0.f)
-      path.medium = dot(wiWorld, normal) < 0.f ? inputs.attenuation
-                                               : float3{0.f, 0.f, 0.f};
+        && dot(wiWorld, normal) * dot(ray.direction, normal) > 0.f) {
+      if (dot(wiWorld, normal) < 0.f)
+        path.media.enter(inputs.attenuation);
+      else
+        path.media.leave();
+    }
     const float3 side = dot(wiWorld, surface.geometricNormal) > 0.f
                             ? surface.geometricNormal
                             : surface.geometricNormal * -1.f;

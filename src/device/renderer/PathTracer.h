@@ -38,16 +38,11 @@ class PathTracer : public Renderer
   {
     return 256;
   }
+  // Traces through context.transport.
   void renderTile(const RenderContext &context,
       const Tile &tile,
       FrameBuffers &buffers,
       const std::atomic<bool> &cancel) const override;
-  // Renders `tile` tracing its rays through `transport`.
-  void renderTile(const RenderContext &context,
-      const Tile &tile,
-      FrameBuffers &buffers,
-      const RayTransport &transport,
-      const std::atomic<bool> &cancel) const;
 
  protected:
   void commitParameters() override;

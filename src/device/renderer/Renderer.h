@@ -13,6 +13,8 @@
 
 namespace prism {
 
+class RayTransport;
+
 class Camera;
 class PrimaryRays;
 class World;
@@ -22,6 +24,9 @@ struct RenderContext
 {
   const Camera *camera;
   const World *world;
+  // Where wavefront renderers trace their queues: the device decides
+  // (locally the world's BVH; across ranks for the data-parallel device).
+  const RayTransport *transport;
   uint32_t width;
   uint32_t height;
   // Which accumulated sample this frame renders (0: the first, through

@@ -5,6 +5,7 @@
 
 #include "../../frame/FrameBuffers.h"
 #include "../../math/Vec.h"
+#include "MediumStack.h"
 
 #include <cstdint>
 
@@ -22,9 +23,8 @@ struct PathState
   // How much of the ambient light the last surface lets reach it (its
   // material's occlusion).
   float ambientVisibility{1.f};
-  // The absorbing medium the current ray travels through (per unit
-  // length; zero outside any volume).
-  float3 medium{0.f, 0.f, 0.f};
+  // The media the current ray travels through.
+  MediumStack media;
   uint16_t bounce{0};  // scattering events so far (0: the camera ray)
   uint16_t layer{0};   // see-through surfaces passed at this bounce
   uint32_t x{0}, y{0}; // the pixel
