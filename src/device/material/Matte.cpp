@@ -21,6 +21,15 @@ float4 Matte::baseColorAndOpacity(const AttributeValues &attributes) const
   return makeVec4(xyz(color), m_opacity.evaluate(attributes) * color.w);
 }
 
+MaterialShading Matte::shade(const AttributeValues &attributes) const
+{
+  const float4 base = baseColorAndOpacity(attributes);
+  MaterialShading out;
+  out.bsdf = matteBsdfInputs(xyz(base));
+  out.opacity = coverage(base.w);
+  return out;
+}
+
 void Matte::dropReferences()
 {
   Material::dropReferences();

@@ -12,6 +12,7 @@ class Matte : public Material
   explicit Matte(DeviceState &device);
 
   float4 baseColorAndOpacity(const AttributeValues &attributes) const override;
+  MaterialShading shade(const AttributeValues &attributes) const override;
 
   const MaterialInput<float3> &color() const
   {

@@ -76,11 +76,9 @@ class PhysicallyBased : public Material
   // `emissive` as radiance: negative or non-finite components are 0.
   static float3 usableEmission(const float3 &emissive);
 
-  const PhysicallyBased *asPhysicallyBased() const override
-  {
-    return this;
-  }
   float4 baseColorAndOpacity(const AttributeValues &attributes) const override;
+  MaterialShading shade(const AttributeValues &attributes) const override;
+  bool constantEmission(float3 &radiance) const override;
   Values evaluate(const AttributeValues &attributes) const;
   const Inputs &inputs() const
   {

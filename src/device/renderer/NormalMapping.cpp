@@ -1,6 +1,6 @@
 #include "NormalMapping.h"
 
-#include "../material/PhysicallyBased.h"
+#include "../material/Material.h"
 #include "../shading/Sampling.h"
 
 namespace prism {
@@ -39,14 +39,11 @@ float3 normalMapped(const SurfaceHit &surface,
 float3 shadingNormalWithMap(
     const SurfaceHit &surface, const rt::Hit &hit, const float3 &towardsViewer)
 {
-  const PhysicallyBased *pbr = surface.material().asPhysicallyBased();
-  if (!pbr
-      || pbr->inputs().normal.source()
-             == MaterialInput<float3>::Source::Constant)
+  const MaterialShading shading = surface.material().shade(surface.attributes);
+  if (!shading.hasNormalMap)
     return surface.shadingNormal;
-  const PhysicallyBased::Values values = pbr->evaluate(surface.attributes);
   return normalMapped(
-      surface, hit, surface.shadingNormal, values.normal, towardsViewer);
+      surface, hit, surface.shadingNormal, shading.normalMap, towardsViewer);
 }
 
 } // namespace prism

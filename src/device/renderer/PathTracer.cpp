@@ -4,8 +4,7 @@
 
 #include "../light/EmissiveSurface.h"
 #include "../light/PlacedLight.h"
-#include "../material/Matte.h"
-#include "../material/PhysicallyBased.h"
+#include "../material/Material.h"
 #include "../shading/Bsdf.h"
 #include "../shading/Sampling.h"
 #include "SampleHash.h"
@@ -66,48 +65,6 @@ bool mayReach(const World::ReachableLight &light,
 float3 exp3(const float3 &v)
 {
   return {std::exp(v.x), std::exp(v.y), std::exp(v.z)};
-}
-
-// The material at a hit as BSDF inputs, and what the BSDF does not cover.
-struct ShadingInputs
-{
-  BsdfInputs bsdf;
-  float opacity{1.f};
-  float3 emissive{0.f, 0.f, 0.f};
-  float occlusion{1.f}; // of ambient light only
-  bool hasNormalMap{false};
-  bool hasCoatNormalMap{false};
-  float3 coatNormalMap{0.f, 0.f, 1.f}; // tangent space
-  float3 normalMap{0.f, 0.f, 1.f};     // tangent space
-  float3 attenuation{0.f, 0.f, 0.f};   // inside, per unit length
-};
-
-ShadingInputs shadingInputs(const SurfaceHit &hit)
-{
-  ShadingInputs out;
-  const Material &material = hit.material();
-  if (const PhysicallyBased *pbr = material.asPhysicallyBased()) {
-    const PhysicallyBased::Values values = pbr->evaluate(hit.attributes);
-    out.bsdf = physicallyBasedBsdfInputs(values);
-    out.emissive = values.emissive;
-    out.occlusion = clamp(values.occlusion, 0.f, 1.f);
-    out.hasCoatNormalMap = values.clearcoat > 0.f
-                           && pbr->inputs().clearcoatNormal.source()
-                                  != MaterialInput<float3>::Source::Constant;
-    out.coatNormalMap = values.clearcoatNormal;
-    out.hasNormalMap = pbr->inputs().normal.source()
-                       != MaterialInput<float3>::Source::Constant;
-    out.normalMap = values.normal;
-    if (values.transmission > 0.f && values.thickness > 0.f)
-      out.attenuation = volumeAttenuationCoefficient(
-          values.attenuationColor, values.attenuationDistance);
-    out.opacity = material.coverage(values.opacity);
-  } else {
-    const float4 base = material.baseColorAndOpacity(hit.attributes);
-    out.bsdf = matteBsdfInputs(float3{base.x, base.y, base.z});
-    out.opacity = material.coverage(base.w);
-  }
-  return out;
 }
 
 } // namespace
@@ -304,7 +261,7 @@ void PathTracer::shadeBounce(const RenderContext &context,
       continue;
     }
 
-    const ShadingInputs inputs = shadingInputs(surface);
+    const MaterialShading inputs = surface.material().shade(surface.attributes);
     const uint32_t stream = uint32_t(path.bounce) * kStreamsPerBounce;
     // See-through surfaces: pass through with probability 1 - opacity
     // (each layer its own random number).
