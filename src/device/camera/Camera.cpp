@@ -1,7 +1,7 @@
 #include "Camera.h"
 
 #include "../array/Array.h"
-#include "../world/MotionParameters.h"
+#include "../array/MotionParameters.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 
 #include "../denoise/Denoiser.h"
 #include "../object/Object.h"
-#include "FrameBuffers.h"
+#include "../renderer/FrameBuffers.h"
 
 #include <atomic>
 #include <chrono>

@@ -4,9 +4,9 @@
 #pragma once
 
 #include "../camera/Camera.h"
-#include "../frame/FrameBuffers.h"
 #include "../object/Object.h"
 #include "../rt/Scene.h"
+#include "FrameBuffers.h"
 #include "SurfaceHit.h"
 
 #include <atomic>

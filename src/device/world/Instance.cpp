@@ -2,7 +2,7 @@
 
 #include "../array/Array.h"
 #include "../array/ElementConversion.h"
-#include "MotionParameters.h"
+#include "../array/MotionParameters.h"
 
 #include <algorithm>
 #include <cmath>

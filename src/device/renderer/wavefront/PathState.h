@@ -3,8 +3,8 @@
 // hold its rays; this holds everything else, indexed by the ray's tag).
 #pragma once
 
-#include "../../frame/FrameBuffers.h"
 #include "../../math/Vec.h"
+#include "../FrameBuffers.h"
 #include "MediumStack.h"
 
 #include <cstdint>
