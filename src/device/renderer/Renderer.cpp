@@ -5,9 +5,9 @@
 
 #include "../array/Array.h"
 #include "../array/ElementConversion.h"
-#include "../frame/ImageFilter.h"
 #include "../introspection/Introspection.h"
 #include "../object/DeviceState.h"
+#include "ImageFilter.h"
 
 #include "anari/frontend/type_utility.h"
 
