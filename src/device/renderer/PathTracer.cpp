@@ -7,7 +7,7 @@
 #include "../material/Material.h"
 #include "../shading/Bsdf.h"
 #include "../shading/Sampling.h"
-#include "SampleHash.h"
+#include "SampleSequence.h"
 #include "wavefront/RayTransport.h"
 
 #include <algorithm>
@@ -24,9 +24,12 @@ constexpr uint32_t kOpacityStreams = 0x10000u;
 // See-through surfaces a path passes at one bounce before it gives up.
 constexpr uint16_t kMaxLayers = 64;
 
+// Decision `stream` of the path: a 2D pair of the pixel's low-discrepancy
+// sequences, its own for each stream (docs/sampling.md).
 float2 random2(const PathState &path, uint32_t stream)
 {
-  return seededSample2D(path.seed, stream);
+  return sobolSample2D(
+      path.sampleIndex, mixBits(path.seed + (stream + 1u) * 0x9e3779b9u));
 }
 
 // False when the ray (unit `direction`) surely passes the light's bounds
@@ -85,7 +88,8 @@ void PathTracer::renderTile(const RenderContext &context,
     PathState &path = paths[i];
     path.x = tile.x0 + uint32_t(i % width);
     path.y = tile.y0 + uint32_t(i / width);
-    path.seed = pathSeed(path.x, path.y, context.sampleIndex);
+    path.seed = sequenceSeed(path.x, path.y, 0);
+    path.sampleIndex = context.sampleIndex;
     const Ray ray = cameraRay(context, path.x, path.y);
     path.time = ray.time;
     rays.push(

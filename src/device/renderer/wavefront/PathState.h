@@ -25,12 +25,13 @@ struct PathState
   float ambientVisibility{1.f};
   // The media the current ray travels through.
   MediumStack media;
-  uint16_t bounce{0};  // scattering events so far (0: the camera ray)
-  uint16_t layer{0};   // see-through surfaces passed at this bounce
-  uint32_t x{0}, y{0}; // the pixel
-  uint32_t seed{0};    // of its random numbers (pathSeed())
-  float time{0.5f};    // within the shutter, shared by all its rays
-  PixelSample sample;  // the first hit's channels and the final color
+  uint16_t bounce{0};      // scattering events so far (0: the camera ray)
+  uint16_t layer{0};       // see-through surfaces passed at this bounce
+  uint32_t x{0}, y{0};     // the pixel
+  uint32_t seed{0};        // the pixel's (sequenceSeed() per decision)
+  uint32_t sampleIndex{0}; // in the pixel's sample sequences
+  float time{0.5f};        // within the shutter, shared by all its rays
+  PixelSample sample;      // the first hit's channels and the final color
 };
 
 } // namespace prism
