@@ -18,6 +18,10 @@ the outputs are committed, so this only reruns when the assets change):
                         missing-buffer.gltf, cycle.gltf, bad-index.obj,
                         garbage.obj, tiny_4x4x4_uint8.raw,
                         truncated_8x8x8_uint16.raw, volume.raw
+  OBJ numbers           nonfinite.obj (nan, inf and 1e39 vertices beside a
+                        good quad), huge-index.obj (vertex 2^63),
+                        wrapping-index.obj (vertex 2^32 + 1, which a 32-bit
+                        atoi reads as 1)
 """
 import base64
 import json
@@ -265,6 +269,21 @@ Kd 0.9 0.45 0.1
 Ns 10
 """
 
+NONFINITE_OBJ = """# A quad that renders, and three triangles whose third vertex is not a
+# finite number: they must be left out with one warning.
+v -1 -1 0
+v  1 -1 0
+v  1  1 0
+v -1  1 0
+v nan 0 0
+v 0 inf 0
+v 0 0 1e39
+f 1 2 3 4
+f 1 2 5
+f 2 3 6
+f 3 4 7
+"""
+
 
 def main():
     write("checker.png", checker_png())
@@ -290,6 +309,10 @@ def main():
     write("cycle.gltf", json.dumps(cycle))
     write("bad-index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n")
     write("garbage.obj", bytes((i * 37 + 11) % 256 for i in range(512)))
+    write("nonfinite.obj", NONFINITE_OBJ)
+    write("huge-index.obj",
+          "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9223372036854775808\n")
+    write("wrapping-index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4294967297\n")
     write("tiny_4x4x4_uint8.raw", bytes(range(64)))
     write("truncated_8x8x8_uint16.raw", bytes(1000))
     write("volume.raw", bytes(64))
