@@ -114,8 +114,8 @@ class Reader
       m_at++;
       const bool keepMember = keep && key != "extras";
       if (keepMember) {
-        out.members.emplace_back(key, JsonValue());
-        if (!value(out.members.back().second, true, depth))
+        out.members.push_back({key, JsonValue()});
+        if (!value(out.members.back().value, true, depth))
           return false;
       } else {
         ignored = JsonValue();

@@ -8,10 +8,11 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
-#include <utility>
 #include <vector>
 
 namespace prism::render {
+
+struct JsonMember;
 
 struct JsonValue
 {
@@ -24,8 +25,16 @@ struct JsonValue
   bool overflow{false};
   uint64_t magnitude{0};
   std::string text; // a number as written (at most 40 characters kept)
-  std::vector<JsonValue> items;                           // arrays
-  std::vector<std::pair<std::string, JsonValue>> members; // objects
+  std::vector<JsonValue> items;    // arrays
+  std::vector<JsonMember> members; // objects
+
+  // Defined below, where JsonMember is complete (clang requires it).
+  JsonValue();
+  JsonValue(const JsonValue &);
+  JsonValue(JsonValue &&) noexcept;
+  JsonValue &operator=(const JsonValue &);
+  JsonValue &operator=(JsonValue &&) noexcept;
+  ~JsonValue();
 
   bool isObject() const
   {
@@ -39,6 +48,19 @@ struct JsonValue
   // nullptr; nullptr for non-objects too.
   const JsonValue *find(std::string_view key) const;
 };
+
+struct JsonMember
+{
+  std::string name;
+  JsonValue value;
+};
+
+inline JsonValue::JsonValue() = default;
+inline JsonValue::JsonValue(const JsonValue &) = default;
+inline JsonValue::JsonValue(JsonValue &&) noexcept = default;
+inline JsonValue &JsonValue::operator=(const JsonValue &) = default;
+inline JsonValue &JsonValue::operator=(JsonValue &&) noexcept = default;
+inline JsonValue::~JsonValue() = default;
 
 struct JsonDocument
 {
