@@ -34,6 +34,7 @@ using scenes::operator*;
 
 // Caps that keep a corrupt count from turning into a huge allocation.
 constexpr size_t kMaxAccessorElements = size_t(1) << 28;
+constexpr size_t kMaxZeroAccessorElements = size_t(1) << 24;
 constexpr size_t kMaxNodeVisits = 10'000'000;
 
 // Extensions whose meaning we render (or can safely read as plain data).
@@ -311,20 +312,22 @@ bool readAccessor(const tinygltf::Model &model,
     return false;
   }
   const size_t elementSize = size_t(components) * size_t(componentSize);
-  out.assign(a.count * size_t(components), T(0));
+  // The data must be in the file before anything is allocated for it, so a
+  // few bytes claiming 2^28 elements cost nothing.
+  const unsigned char *bytes = nullptr;
+  size_t stride = elementSize;
   if (a.bufferView >= 0 && a.count > 0) {
     const tinygltf::BufferView *view =
         size_t(a.bufferView) < model.bufferViews.size()
             ? &model.bufferViews[size_t(a.bufferView)]
             : nullptr;
-    const size_t stride =
-        view && view->byteStride ? view->byteStride : elementSize;
+    stride = view && view->byteStride ? view->byteStride : elementSize;
     if (stride < elementSize || stride > 4096) {
       error = name + ": byte stride " + std::to_string(stride)
               + " does not fit its elements";
       return false;
     }
-    const unsigned char *bytes = viewBytes(model,
+    bytes = viewBytes(model,
         a.bufferView,
         a.byteOffset,
         (a.count - 1) * stride + elementSize,
@@ -333,6 +336,15 @@ bool readAccessor(const tinygltf::Model &model,
       error = name + ": " + error;
       return false;
     }
+  } else if (a.count > kMaxZeroAccessorElements) {
+    // Without a buffer view the elements are zeros (plus sparse values):
+    // nothing in the file backs the count.
+    error = name + " has no buffer view and an implausible count ("
+            + std::to_string(a.count) + ")";
+    return false;
+  }
+  out.assign(a.count * size_t(components), T(0));
+  if (bytes) {
     for (size_t i = 0; i < a.count; i++)
       for (int c = 0; c < components; c++)
         out[i * size_t(components) + size_t(c)] = T(decodeComponent(

@@ -22,7 +22,9 @@ the outputs are committed, so this only reruns when the assets change):
                         tinygltf's int cast turned into mesh 0),
                         scene-past-end.gltf ("scene": 5 of 1),
                         material-index-2pow32.glb (a primitive's material
-                        2^32 + 1 inside a GLB's JSON chunk)
+                        2^32 + 1 inside a GLB's JSON chunk),
+                        huge-zero-accessor.gltf (POSITION without a buffer
+                        view claiming 2^28 - 1 elements: nothing backs them)
   OBJ numbers           nonfinite.obj (nan, inf and 1e39 vertices beside a
                         good quad), huge-index.obj (vertex 2^63),
                         wrapping-index.obj (vertex 2^32 + 1, which a 32-bit
@@ -342,6 +344,10 @@ def main():
     past_end["scene"] = 5
     write("scene-past-end.gltf", json.dumps(past_end))
     write("material-index-2pow32.glb", material_index_glb())
+    zeros = json.loads(plane_scene())
+    del zeros["accessors"][0]["bufferView"]
+    zeros["accessors"][0]["count"] = 2 ** 28 - 1
+    write("huge-zero-accessor.gltf", json.dumps(zeros))
     write("bad-index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n")
     write("garbage.obj", bytes((i * 37 + 11) % 256 for i in range(512)))
     write("nonfinite.obj", NONFINITE_OBJ)
