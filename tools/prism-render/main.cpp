@@ -516,6 +516,19 @@ int run(int argc, char **argv)
   std::vector<double> frameSeconds;
   if (options.benchFrames > 0)
     frames = options.benchFrames;
+  // Rays the renderer traced (its "raysTraced" property, where it has one).
+  auto raysTraced = [&](uint64_t &rays) {
+    return anariGetProperty(device,
+               renderer,
+               "raysTraced",
+               ANARI_UINT64,
+               &rays,
+               sizeof(rays),
+               ANARI_NO_WAIT)
+           != 0;
+  };
+  uint64_t raysBefore = 0;
+  const bool countsRays = raysTraced(raysBefore);
   {
     Progress progress(
         showProgress, frames, options.benchFrames > 0 ? "frames" : "samples");
@@ -584,6 +597,14 @@ int run(int argc, char **argv)
         sorted.front() * 1e3,
         median * 1e3,
         sorted.back() * 1e3);
+    uint64_t raysAfter = 0;
+    if (countsRays && raysTraced(raysAfter) && renderSeconds > 0.0) {
+      const double rays = double(raysAfter - raysBefore);
+      std::printf("%s: %.0f rays traced, %.2f Mrays/s\n",
+          options.scene.c_str(),
+          rays,
+          rays / renderSeconds * 1e-6);
+    }
   }
   if (!options.quiet) {
     for (const OutputImage &image : images)

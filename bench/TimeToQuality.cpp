@@ -1,0 +1,310 @@
+// prism-bench-convergence: how fast the path tracer reaches a clean image.
+// The Cornell box demo is accumulated frame by frame; at every power of two
+// samples per pixel its RMSE against a high-sample reference of its own
+// (computed once, cached in the build tree) is printed with the time spent
+// so far, then the log-log slope of error over samples and the time to
+// reach fixed RMSE levels, as medians over runs. Never a test: it prints.
+#include "DemoScenes.h"
+
+#include <anari/anari.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Options
+{
+  uint32_t width{512}, height{512};
+  uint32_t maxSamples{256};
+  uint32_t referenceSamples{4096};
+  int runs{3};
+  int maxPathLength{8};
+  std::string cache; // folder for the reference; default beside the binary
+};
+
+const float kLevels[] = {0.05f, 0.02f, 0.015f, 0.01f};
+
+class Renderer
+{
+ public:
+  explicit Renderer(const Options &options) : m_options(options)
+  {
+    m_library = anariLoadLibrary("prism", nullptr, nullptr);
+    if (!m_library) {
+      std::fprintf(stderr, "cannot load the prism library\n");
+      std::exit(1);
+    }
+    m_device = anariNewDevice(m_library, "default");
+    const auto *demo = prism::scenes::findDemoScene("cornell-box");
+    m_scene = demo->build(m_device);
+    m_camera = anariNewCamera(m_device, "perspective");
+    const auto &c = m_scene.camera;
+    const float direction[3] = {
+        c.at[0] - c.eye[0], c.at[1] - c.eye[1], c.at[2] - c.eye[2]};
+    const float fovy = c.fovyDegrees * 3.14159265f / 180.f;
+    const float aspect = float(options.width) / float(options.height);
+    anariSetParameter(
+        m_device, m_camera, "position", ANARI_FLOAT32_VEC3, c.eye.data());
+    anariSetParameter(
+        m_device, m_camera, "direction", ANARI_FLOAT32_VEC3, direction);
+    anariSetParameter(
+        m_device, m_camera, "up", ANARI_FLOAT32_VEC3, c.up.data());
+    anariSetParameter(m_device, m_camera, "fovy", ANARI_FLOAT32, &fovy);
+    anariSetParameter(m_device, m_camera, "aspect", ANARI_FLOAT32, &aspect);
+    anariCommitParameters(m_device, m_camera);
+    m_renderer = anariNewRenderer(m_device, "pathtracer");
+    anariSetParameter(m_device,
+        m_renderer,
+        "maxPathLength",
+        ANARI_INT32,
+        &options.maxPathLength);
+    anariCommitParameters(m_device, m_renderer);
+  }
+  ~Renderer()
+  {
+    for (ANARIObject o : {(ANARIObject)m_camera,
+             (ANARIObject)m_renderer,
+             (ANARIObject)m_scene.world})
+      anariRelease(m_device, o);
+    anariRelease(m_device, m_device);
+    anariUnloadLibrary(m_library);
+  }
+
+  // A fresh accumulating frame (its first sample restarts the average).
+  ANARIFrame newFrame() const
+  {
+    ANARIFrame frame = anariNewFrame(m_device);
+    const uint32_t size[2] = {m_options.width, m_options.height};
+    const ANARIDataType color = ANARI_FLOAT32_VEC4;
+    const uint8_t on = 1;
+    anariSetParameter(m_device, frame, "size", ANARI_UINT32_VEC2, size);
+    anariSetParameter(
+        m_device, frame, "channel.color", ANARI_DATA_TYPE, &color);
+    anariSetParameter(m_device, frame, "accumulation", ANARI_BOOL, &on);
+    anariSetParameter(m_device, frame, "world", ANARI_WORLD, &m_scene.world);
+    anariSetParameter(m_device, frame, "camera", ANARI_CAMERA, &m_camera);
+    anariSetParameter(m_device, frame, "renderer", ANARI_RENDERER, &m_renderer);
+    anariCommitParameters(m_device, frame);
+    return frame;
+  }
+  // Renders one more sample; returns its wall time in seconds.
+  double addSample(ANARIFrame frame) const
+  {
+    const auto start = Clock::now();
+    anariRenderFrame(m_device, frame);
+    anariFrameReady(m_device, frame, ANARI_WAIT);
+    return std::chrono::duration<double>(Clock::now() - start).count();
+  }
+  std::vector<float> color(ANARIFrame frame) const
+  {
+    uint32_t w = 0, h = 0;
+    ANARIDataType type = ANARI_UNKNOWN;
+    auto *pixels = (const float *)anariMapFrame(
+        m_device, frame, "channel.color", &w, &h, &type);
+    std::vector<float> out;
+    if (pixels && type == ANARI_FLOAT32_VEC4)
+      out.assign(pixels, pixels + size_t(w) * h * 4);
+    anariUnmapFrame(m_device, frame, "channel.color");
+    return out;
+  }
+  void release(ANARIFrame frame) const
+  {
+    anariRelease(m_device, frame);
+  }
+
+ private:
+  const Options &m_options;
+  ANARILibrary m_library{nullptr};
+  ANARIDevice m_device{nullptr};
+  prism::scenes::Scene m_scene;
+  ANARICamera m_camera{nullptr};
+  ANARIRenderer m_renderer{nullptr};
+};
+
+double rmse(const std::vector<float> &a, const std::vector<float> &b)
+{
+  double sum = 0.0;
+  for (size_t i = 0; i < a.size(); i += 4)
+    for (int c = 0; c < 3; c++) {
+      const double d = double(a[i + c]) - double(b[i + c]);
+      sum += d * d;
+    }
+  return std::sqrt(sum / (3.0 * double(a.size() / 4)));
+}
+
+std::vector<float> reference(
+    const Renderer &renderer, const Options &options, const char *argv0)
+{
+  std::filesystem::path folder = options.cache;
+  if (folder.empty())
+    folder = std::filesystem::absolute(argv0).parent_path() / "bench-cache";
+  const std::filesystem::path path =
+      folder
+      / ("cornell-box-" + std::to_string(options.width) + "x"
+          + std::to_string(options.height) + "-depth"
+          + std::to_string(options.maxPathLength) + "-"
+          + std::to_string(options.referenceSamples) + "spp.f32");
+  const size_t floats = size_t(options.width) * options.height * 4;
+  std::vector<float> image(floats);
+  std::ifstream in(path, std::ios::binary);
+  if (in.read((char *)image.data(), std::streamsize(floats * sizeof(float)))) {
+    std::printf("reference: %s (cached)\n", path.c_str());
+    return image;
+  }
+  std::printf("reference: rendering %u spp once into %s ...\n",
+      options.referenceSamples,
+      path.c_str());
+  std::fflush(stdout);
+  ANARIFrame frame = renderer.newFrame();
+  for (uint32_t s = 0; s < options.referenceSamples; s++)
+    renderer.addSample(frame);
+  image = renderer.color(frame);
+  renderer.release(frame);
+  std::filesystem::create_directories(folder);
+  std::ofstream(path, std::ios::binary)
+      .write((const char *)image.data(),
+          std::streamsize(image.size() * sizeof(float)));
+  return image;
+}
+
+struct Point
+{
+  uint32_t samples;
+  double error, seconds;
+};
+
+// Least-squares slope of log(error) over log(samples), from 4 spp on
+// (the first samples are dominated by the pixel-centre sample).
+double slope(const std::vector<Point> &points)
+{
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  int n = 0;
+  for (const Point &p : points) {
+    if (p.samples < 4)
+      continue;
+    const double x = std::log(double(p.samples)), y = std::log(p.error);
+    sx += x, sy += y, sxx += x * x, sxy += x * y, n++;
+  }
+  return n > 1 ? (n * sxy - sx * sy) / (n * sxx - sx * sx) : 0.0;
+}
+
+// Seconds until the error first falls to `level`, interpolated log-log
+// between the measured points; negative if never.
+double timeTo(const std::vector<Point> &points, double level)
+{
+  for (size_t i = 0; i < points.size(); i++) {
+    if (points[i].error > level)
+      continue;
+    if (i == 0)
+      return points[0].seconds;
+    const Point &a = points[i - 1], &b = points[i];
+    const double f = std::log(a.error / level) / std::log(a.error / b.error);
+    return std::exp(std::log(a.seconds) + f * std::log(b.seconds / a.seconds));
+  }
+  return -1.0;
+}
+
+double median(std::vector<double> values)
+{
+  std::sort(values.begin(), values.end());
+  return values.empty() ? 0.0 : values[values.size() / 2];
+}
+
+Options parseOptions(int argc, char **argv)
+{
+  Options options;
+  for (int i = 1; i < argc; i++) {
+    const std::string arg = argv[i];
+    const bool hasValue = i + 1 < argc;
+    if (arg == "--quick") {
+      options.width = options.height = 128;
+      options.maxSamples = 64;
+      options.referenceSamples = 1024;
+      options.runs = 1;
+    } else if (arg == "--runs" && hasValue) {
+      options.runs = std::max(1, std::atoi(argv[++i]));
+    } else if (arg == "--max-spp" && hasValue) {
+      options.maxSamples = uint32_t(std::max(1, std::atoi(argv[++i])));
+    } else if (arg == "--reference-spp" && hasValue) {
+      options.referenceSamples = uint32_t(std::max(16, std::atoi(argv[++i])));
+    } else if (arg == "--max-path-length" && hasValue) {
+      options.maxPathLength = std::max(1, std::atoi(argv[++i]));
+    } else if (arg == "--cache" && hasValue) {
+      options.cache = argv[++i];
+    } else if (arg == "--size" && hasValue
+               && std::sscanf(
+                      argv[i + 1], "%ux%u", &options.width, &options.height)
+                      == 2) {
+      i++;
+    } else {
+      std::fprintf(stderr,
+          "usage: prism-bench-convergence [--quick] [--runs N] [--size WxH] "
+          "[--max-spp N] [--reference-spp N] [--max-path-length N] "
+          "[--cache FOLDER]\n");
+      std::exit(2);
+    }
+  }
+  return options;
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+  const Options options = parseOptions(argc, argv);
+  std::printf(
+      "prism-bench-convergence: Cornell box %ux%u, maxPathLength %d, "
+      "%u hardware threads\n",
+      options.width,
+      options.height,
+      options.maxPathLength,
+      std::thread::hardware_concurrency());
+  const Renderer renderer(options);
+  const std::vector<float> ref = reference(renderer, options, argv[0]);
+
+  std::vector<double> slopes;
+  std::vector<std::vector<double>> times(std::size(kLevels));
+  for (int run = 0; run < options.runs; run++) {
+    std::vector<Point> points;
+    ANARIFrame frame = renderer.newFrame();
+    double seconds = 0.0;
+    for (uint32_t s = 1; s <= options.maxSamples; s++) {
+      seconds += renderer.addSample(frame);
+      if ((s & (s - 1)) == 0)
+        points.push_back({s, rmse(renderer.color(frame), ref), seconds});
+    }
+    renderer.release(frame);
+    std::printf("\nrun %d\n  spp      RMSE    seconds\n", run + 1);
+    for (const Point &p : points)
+      std::printf("%5u  %8.5f  %9.3f\n", p.samples, p.error, p.seconds);
+    slopes.push_back(slope(points));
+    for (size_t l = 0; l < std::size(kLevels); l++)
+      times[l].push_back(timeTo(points, kLevels[l]));
+  }
+  std::printf("\nmedian of %d runs: slope %.3f (error ~ N^%.3f)\n",
+      options.runs,
+      median(slopes),
+      median(slopes));
+  for (size_t l = 0; l < std::size(kLevels); l++) {
+    const double t = median(times[l]);
+    if (t < 0)
+      std::printf("  RMSE %.3f: not reached within %u spp\n",
+          kLevels[l],
+          options.maxSamples);
+    else
+      std::printf("  RMSE %.3f reached in %.2f s\n", kLevels[l], t);
+  }
+  return 0;
+}
