@@ -116,16 +116,7 @@ class DeviceOwnership : public PrismDeviceTest
   std::vector<float> render(ANARIFrame frame)
   {
     anariRenderFrame(m_device, frame);
-    anariFrameReady(m_device, frame, ANARI_WAIT);
-    uint32_t w = 0, h = 0;
-    ANARIDataType type = ANARI_UNKNOWN;
-    auto *pixels = (const float *)anariMapFrame(
-        m_device, frame, "channel.color", &w, &h, &type);
-    std::vector<float> out;
-    if (pixels && type == ANARI_FLOAT32_VEC4)
-      out.assign(pixels, pixels + size_t(w) * h * 4);
-    anariUnmapFrame(m_device, frame, "channel.color");
-    return out;
+    return colorPixels(frame);
   }
 
   static const float *centre(const std::vector<float> &image)

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -101,8 +102,9 @@ class PrismDeviceTest : public ::testing::Test
     return renderer;
   }
 
-  // The first pixel of a FLOAT32_VEC4 color channel after waiting.
-  std::vector<float> firstPixel(ANARIFrame frame)
+  // Every pixel of a FLOAT32_VEC4 color channel after waiting (empty if
+  // it cannot be mapped as that).
+  std::vector<float> colorPixels(ANARIFrame frame)
   {
     anariFrameReady(m_device, frame, ANARI_WAIT);
     uint32_t w = 0, h = 0;
@@ -110,10 +112,17 @@ class PrismDeviceTest : public ::testing::Test
     auto *pixels = (const float *)anariMapFrame(
         m_device, frame, "channel.color", &w, &h, &type);
     std::vector<float> out;
-    if (pixels)
-      out.assign(pixels, pixels + 4);
+    if (pixels && type == ANARI_FLOAT32_VEC4)
+      out.assign(pixels, pixels + size_t(w) * h * 4);
     anariUnmapFrame(m_device, frame, "channel.color");
     return out;
+  }
+  // The first pixel of it.
+  std::vector<float> firstPixel(ANARIFrame frame)
+  {
+    std::vector<float> all = colorPixels(frame);
+    all.resize(std::min<size_t>(all.size(), 4));
+    return all;
   }
 
   StatusRecorder m_status;

@@ -48,15 +48,7 @@ TEST_F(RendererParameters, DeclaredDefaultsAreTheDefaults)
   auto render = [&](ANARIRenderer renderer) {
     ANARIFrame frame = newFrameOf(world, camera, renderer, 16, 16);
     anariRenderFrame(m_device, frame);
-    anariFrameReady(m_device, frame, ANARI_WAIT);
-    uint32_t w = 0, h = 0;
-    ANARIDataType type = ANARI_UNKNOWN;
-    auto *pixels = (const float *)anariMapFrame(
-        m_device, frame, "channel.color", &w, &h, &type);
-    std::vector<float> image;
-    if (pixels)
-      image.assign(pixels, pixels + size_t(w) * h * 4);
-    anariUnmapFrame(m_device, frame, "channel.color");
+    std::vector<float> image = colorPixels(frame);
     anariRelease(m_device, frame);
     return image;
   };
