@@ -26,10 +26,22 @@ constexpr uint16_t kMaxLayers = 64;
 
 // Decision `stream` of the path: a 2D pair of the pixel's low-discrepancy
 // sequences, its own for each stream (docs/sampling.md).
+uint32_t streamSeed(const PathState &path, uint32_t stream)
+{
+  return mixBits(path.seed + (stream + 1u) * 0x9e3779b9u);
+}
 float2 random2(const PathState &path, uint32_t stream)
 {
-  return sobolSample2D(
-      path.sampleIndex, mixBits(path.seed + (stream + 1u) * 0x9e3779b9u));
+  return sobolSample2D(path.sampleIndex, streamSeed(path, stream));
+}
+// One coordinate of random2(path, stream), for one-dimensional decisions.
+float randomX(const PathState &path, uint32_t stream)
+{
+  return sobolSampleX(path.sampleIndex, streamSeed(path, stream));
+}
+float randomY(const PathState &path, uint32_t stream)
+{
+  return sobolSampleY(path.sampleIndex, streamSeed(path, stream));
 }
 
 // False when the ray (unit `direction`) surely passes the light's bounds
@@ -288,7 +300,7 @@ bool PathTracer::passThrough(Bounce &b, rt::RayQueue &next) const
   // layer its own random number).
   PathState &path = b.path;
   if (!(b.shading.opacity < 1.f)
-      || random2(path, kOpacityStreams + path.layer + 97u * path.bounce).x
+      || randomX(path, kOpacityStreams + path.layer + 97u * path.bounce)
              < b.shading.opacity) {
     path.layer = 0;
     return false;
@@ -340,14 +352,16 @@ PathTracer::Scattering PathTracer::scatteringAt(const Bounce &b) const
       b.shading.hasNormalMap ? normalMapped(
           surface, b.hit, unbent, b.shading.normalMap, towardsViewer)
                              : unbent;
-  Scattering out{ShadingFrame::fromNormal(normal), b.shading.bsdf};
+  const ShadingFrame frame = ShadingFrame::fromNormal(normal);
+  BsdfInputs inputs = b.shading.bsdf;
   // The coat's normal map bends the geometry's normal on its own.
   if (b.shading.hasCoatNormalMap)
-    out.bsdfInputs.clearcoatNormal = out.frame.toLocal(normalMapped(
+    inputs.clearcoatNormal = frame.toLocal(normalMapped(
         surface, b.hit, unbent, b.shading.coatNormalMap, towardsViewer));
-  out.wo = out.frame.toLocal(towardsViewer);
-  out.offset = 1e-4f * std::max(1.f, b.hit.t);
-  return out;
+  return Scattering{frame,
+      Bsdf(inputs),
+      frame.toLocal(towardsViewer),
+      1e-4f * std::max(1.f, b.hit.t)};
 }
 
 void PathTracer::nextEvent(const RenderContext &context,
@@ -359,14 +373,14 @@ void PathTracer::nextEvent(const RenderContext &context,
   // One light, chosen by power; its shadow ray joins the bounce's shadow
   // queue, its contribution counts if nothing blocks it.
   const LightSelector &selector = context.world->lightSelector();
-  const Bsdf bsdf(scattering.bsdfInputs);
+  const Bsdf &bsdf = scattering.bsdf;
   if (selector.empty() || !bsdf.hasNonDeltaLobes())
     return;
   const PathState &path = b.path;
   const uint32_t stream = uint32_t(path.bounce) * kStreamsPerBounce;
   float pickProbability = 0.f;
   const PlacedLight &light = *context.world->lights()[selector.pick(
-      random2(path, stream + 2).x, pickProbability)];
+      randomX(path, stream + 2), pickProbability)];
   const LightSample ls =
       light.sample(b.surface.position, random2(path, stream + 3));
   if (!(ls.pdf > 0.f) || !(maxComponent(ls.radiance) > 0.f))
@@ -400,9 +414,9 @@ void PathTracer::scatter(
   // Continue the path by sampling the BSDF.
   PathState &path = b.path;
   const uint32_t stream = uint32_t(path.bounce) * kStreamsPerBounce;
-  const Bsdf bsdf(scattering.bsdfInputs);
+  const Bsdf &bsdf = scattering.bsdf;
   const float2 direction = random2(path, stream);
-  const float lobe = random2(path, stream + 1).x;
+  const float lobe = randomX(path, stream + 1);
   const BsdfSample bs = bsdf.sample(scattering.wo, direction, lobe);
   if (!bs.valid())
     return;
@@ -441,7 +455,7 @@ bool PathTracer::survivesRoulette(PathState &path, uint32_t stream) const
   if (path.bounce <= 3)
     return true;
   const float survive = std::min(0.95f, maxComponent(path.throughput));
-  if (random2(path, stream + 4).y >= survive)
+  if (randomY(path, stream + 4) >= survive)
     return false;
   path.throughput = path.throughput / survive;
   return true;

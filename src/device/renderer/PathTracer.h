@@ -11,6 +11,7 @@
 #pragma once
 
 #include "../material/MaterialShading.h"
+#include "../shading/Bsdf.h"
 #include "../shading/Sampling.h"
 #include "Renderer.h"
 #include "SurfaceHit.h"
@@ -74,14 +75,14 @@ class PathTracer : public Renderer
     SurfaceHit surface;
     MaterialShading shading;
   };
-  // Where the BSDF sits: its frame (normal maps applied), inputs, the
+  // Where the BSDF sits: its frame (normal maps applied), the BSDF, the
   // direction towards the viewer and how far new rays start off.
   struct Scattering
   {
     ShadingFrame frame;
-    BsdfInputs bsdfInputs;
-    float3 wo{0.f, 0.f, 1.f};
-    float offset{0.f};
+    Bsdf bsdf;
+    float3 wo;
+    float offset;
   };
   // Stages: what the ray hit and the material there; light reached along
   // the ray (and the background or ambient light on a miss); stochastic

@@ -23,19 +23,53 @@ inline uint32_t reverseBits(uint32_t bits)
   return ((bits & 0x55555555u) << 1) | ((bits & 0xaaaaaaaau) >> 1);
 }
 
-// An Owen scramble of the bits of `x` read from the most significant one:
-// each bit flipped by a hash of the bits above it (Laine and Karras's
-// permutation on the reversed bits, with Vegdahl's constants).
-inline uint32_t nestedUniformScramble(uint32_t x, uint32_t seed)
+// Laine and Karras's permutation with Vegdahl's constants: each bit is
+// flipped by a hash of the bits below it. On bit-reversed values that is an
+// Owen scramble (each binary digit flipped by the digits above it).
+inline uint32_t laineKarras(uint32_t x, uint32_t seed)
 {
-  x = reverseBits(x);
   x += seed;
   x ^= x * 0x6c50b47cu;
   x ^= x * 0xb82f1e52u;
   x ^= x * 0xc7afe638u;
   x ^= x * 0x8d22f6e6u;
-  return reverseBits(x);
+  return x;
 }
+
+// An Owen scramble of the bits of `x` read from the most significant one.
+inline uint32_t nestedUniformScramble(uint32_t x, uint32_t seed)
+{
+  return reverseBits(laineKarras(reverseBits(x), seed));
+}
+
+namespace detail {
+
+// Sobol's second dimension (direction numbers of x + 1: v_0 = 1/2,
+// v_j = v_(j-1) ^ (v_(j-1) >> 1)), bit-reversed, as XOR tables per byte of
+// the index: four lookups instead of a loop over 32 bits.
+struct SobolTables
+{
+  uint32_t byte[4][256];
+  constexpr SobolTables() : byte{}
+  {
+    uint32_t direction[32]{};
+    uint32_t v = 0x80000000u;
+    for (int j = 0; j < 32; j++, v ^= v >> 1) {
+      uint32_t reversed = 0;
+      for (int b = 0; b < 32; b++)
+        reversed |= ((v >> b) & 1u) << (31 - b);
+      direction[j] = reversed;
+    }
+    for (int b = 0; b < 4; b++)
+      for (uint32_t value = 0; value < 256; value++)
+        for (int k = 0; k < 8; k++)
+          if (value & (1u << k))
+            byte[b][value] ^= direction[8 * b + k];
+  }
+};
+inline constexpr SobolTables kSobolTables{};
+
+} // namespace detail
 
 // The first two dimensions of Sobol's sequence (a (0,2)-sequence in base
 // 2), as 32-bit fixed-point fractions.
@@ -43,28 +77,47 @@ inline uint32_t sobolDimension0(uint32_t index)
 {
   return reverseBits(index);
 }
+inline uint32_t sobolDimension1Reversed(uint32_t index)
+{
+  const auto &t = detail::kSobolTables.byte;
+  return t[0][index & 0xffu] ^ t[1][(index >> 8) & 0xffu]
+         ^ t[2][(index >> 16) & 0xffu] ^ t[3][index >> 24];
+}
 inline uint32_t sobolDimension1(uint32_t index)
 {
-  // Direction numbers of x + 1: v_0 = 1/2, v_j = v_(j-1) ^ (v_(j-1) >> 1).
-  uint32_t v = 0x80000000u, result = 0;
-  for (; index; index >>= 1, v ^= v >> 1) {
-    if (index & 1u)
-      result ^= v;
-  }
-  return result;
+  return reverseBits(sobolDimension1Reversed(index));
 }
 
-// Sample `index` of the sequence with this seed, in [0,1)^2.
+// Sample `index` of the sequence with this seed, in [0,1)^2: the index
+// shuffled by an Owen scramble, both coordinates Owen-scrambled. Written
+// in the bit-reversed domain the scrambles work in, so four bit reversals
+// do what seven would.
 inline float2 sobolSample2D(uint32_t index, uint32_t seed)
 {
   const uint32_t shuffled = nestedUniformScramble(index, seed);
-  const uint32_t x =
-      nestedUniformScramble(sobolDimension0(shuffled), mixBits(seed ^ 0x1u));
-  const uint32_t y =
-      nestedUniformScramble(sobolDimension1(shuffled), mixBits(seed ^ 0x2u));
+  // nestedUniformScramble(sobolDimension0(i), s) is reverse(LK(i, s)).
+  const uint32_t x = reverseBits(laineKarras(shuffled, mixBits(seed ^ 0x1u)));
+  const uint32_t y = reverseBits(
+      laineKarras(sobolDimension1Reversed(shuffled), mixBits(seed ^ 0x2u)));
   // The top 24 bits: exact in a float, and never 1.
   return {
       float(x >> 8) * (1.f / 16777216.f), float(y >> 8) * (1.f / 16777216.f)};
+}
+
+// One coordinate of sobolSample2D(index, seed), for one-dimensional
+// decisions: half the work.
+inline float sobolSampleX(uint32_t index, uint32_t seed)
+{
+  const uint32_t shuffled = nestedUniformScramble(index, seed);
+  const uint32_t x = reverseBits(laineKarras(shuffled, mixBits(seed ^ 0x1u)));
+  return float(x >> 8) * (1.f / 16777216.f);
+}
+inline float sobolSampleY(uint32_t index, uint32_t seed)
+{
+  const uint32_t shuffled = nestedUniformScramble(index, seed);
+  const uint32_t y = reverseBits(
+      laineKarras(sobolDimension1Reversed(shuffled), mixBits(seed ^ 0x2u)));
+  return float(y >> 8) * (1.f / 16777216.f);
 }
 
 // The seed of decision `dimension` of pixel (x, y): the same for every
