@@ -605,6 +605,7 @@ class GltfImporter
   std::map<std::pair<int, bool>, ANARIArray2D> m_images;
   std::set<std::string> m_noted;
   uint32_t m_surfaceIds{0};
+  bool m_emissiveMaterial{false}; // a drawn material emits light
 };
 
 GltfImporter::~GltfImporter()
@@ -985,6 +986,8 @@ ANARIMaterial GltfImporter::newMaterial(int index, bool vertexColors)
   if (m.emissiveFactor.size() == 3)
     for (int i = 0; i < 3; i++)
       emissive[i] = float(m.emissiveFactor[size_t(i)]) * emissiveStrength;
+  if (emissive[0] > 0.f || emissive[1] > 0.f || emissive[2] > 0.f)
+    m_emissiveMaterial = true;
   setColor(material, "emissive", emissive, textureRef(m.emissiveTexture), true);
 
   if (m.alphaMode == "MASK") {
@@ -1518,6 +1521,8 @@ LoadResult GltfImporter::load()
   placeCamera();
   std::vector<ANARIObject> lights;
   placeLights(lights);
+  // Without lights or emissive materials the tool lights the file itself.
+  scene.emitsLight = m_emissiveMaterial || !lights.empty();
   scenes::finishWorld(m_device, scene, {}, instances, lights);
   return std::move(m_result);
 }

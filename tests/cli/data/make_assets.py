@@ -25,6 +25,12 @@ the outputs are committed, so this only reruns when the assets change):
                         2^32 + 1 inside a GLB's JSON chunk),
                         huge-zero-accessor.gltf (POSITION without a buffer
                         view claiming 2^28 - 1 elements: nothing backs them)
+  default lighting      lightless-box.gltf (a textured box, no lights: lit by
+                        the tool's studio by default, black with --env
+                        none), lit-box.gltf (the box under a directional
+                        light along -z), emissive-box.gltf (an emissive box,
+                        no lights), red-sky.hdr (8x4, radiance (1, 0, 0)
+                        everywhere), glowing.obj/.mtl (a quad with Ke)
   OBJ numbers           nonfinite.obj (nan, inf and 1e39 vertices beside a
                         good quad), huge-index.obj (vertex 2^63),
                         wrapping-index.obj (vertex 2^32 + 1, which a 32-bit
@@ -203,6 +209,116 @@ def textured_scene(binary):
     return b"glTF" + struct.pack("<II", 2, 12 + len(body)) + body
 
 
+def data_uri(kind, payload):
+    return "data:%s;base64,%s" % (kind, base64.b64encode(payload).decode())
+
+
+def finish_gltf(gltf, buf):
+    """Adds the buffer (as a data URI), views and accessors; JSON text."""
+    gltf["bufferViews"] = buf.views
+    gltf["accessors"] = buf.accessors
+    gltf["buffers"] = [{"byteLength": len(buf.data),
+                        "uri": data_uri("application/octet-stream",
+                                        bytes(buf.data))}]
+    return json.dumps(gltf, indent=1)
+
+
+# The faces of an axis-aligned cube: (normal, u axis, v axis); v grows down
+# the image in glTF, so the v axis points down each face.
+CUBE_FACES = [((0, 0, 1), (1, 0, 0), (0, -1, 0)),
+              ((0, 0, -1), (-1, 0, 0), (0, -1, 0)),
+              ((1, 0, 0), (0, 0, -1), (0, -1, 0)),
+              ((-1, 0, 0), (0, 0, 1), (0, -1, 0)),
+              ((0, 1, 0), (1, 0, 0), (0, 0, 1)),
+              ((0, -1, 0), (1, 0, 0), (0, 0, -1))]
+
+
+def cube_primitive(buf, half=0.5):
+    """A cube of 24 vertices (normals and uvs per face), 12 triangles."""
+    positions, normals, uvs, indices = [], [], [], []
+    for n, u, v in CUBE_FACES:
+        base = len(positions)
+        for su, sv in ((-1, -1), (1, -1), (1, 1), (-1, 1)):
+            positions.append(tuple(half * (n[i] + su * u[i] + sv * v[i])
+                                   for i in range(3)))
+            normals.append(tuple(float(c) for c in n))
+            uvs.append(((su + 1) / 2.0, (sv + 1) / 2.0))
+        # (u, v) with v pointing down the face is clockwise seen from
+        # outside, so the corners go 0, 3, 2 / 0, 2, 1 to face out.
+        indices += [base, base + 3, base + 2, base, base + 2, base + 1]
+    return {"attributes": {
+        "POSITION": buf.accessor("f", FLOAT, "VEC3", positions, bounds=True),
+        "NORMAL": buf.accessor("f", FLOAT, "VEC3", normals),
+        "TEXCOORD_0": buf.accessor("f", FLOAT, "VEC2", uvs)},
+        "indices": buf.accessor("H", USHORT, "SCALAR", indices)}
+
+
+def box_scene(kind):
+    """The lighting tests' box: 'lightless' (textured, nothing emits),
+    'lit' (plus a directional light shining along -z) or 'emissive'."""
+    buf = Buffer()
+    primitive = cube_primitive(buf)
+    primitive["material"] = 0
+    material = {"pbrMetallicRoughness": {
+        "baseColorTexture": {"index": 0},
+        "metallicFactor": 0.0, "roughnessFactor": 0.6}}
+    gltf = {
+        "asset": {"version": "2.0", "generator": "prism tests/cli/data/make_assets.py"},
+        "scene": 0,
+        "scenes": [{"nodes": [0]}],
+        "nodes": [{"name": "box", "mesh": 0}],
+        "meshes": [{"primitives": [primitive]}],
+        "materials": [material],
+        "textures": [{"source": 0}],
+        "images": [{"uri": data_uri("image/png", checker_png())}],
+    }
+    if kind == "lit":
+        gltf["extensionsUsed"] = ["KHR_lights_punctual"]
+        gltf["scenes"][0]["nodes"].append(1)
+        # A light node's default direction is -z.
+        gltf["nodes"].append({"name": "light",
+                              "extensions": {"KHR_lights_punctual": {"light": 0}}})
+        gltf["extensions"] = {"KHR_lights_punctual": {"lights": [
+            {"type": "directional", "intensity": 3.0}]}}
+    elif kind == "emissive":
+        material["emissiveFactor"] = [1.0, 0.5, 0.2]
+    return finish_gltf(gltf, buf)
+
+
+def rgbe(r, g, b):
+    """One Radiance RGBE pixel (shared exponent)."""
+    top = max(r, g, b)
+    if top < 1e-32:
+        return bytes(4)
+    mantissa, exponent = math.frexp(top)
+    scale = mantissa * 256.0 / top
+    return bytes((int(r * scale), int(g * scale), int(b * scale),
+                  exponent + 128))
+
+
+def uniform_hdr(width, height, rgb):
+    """A Radiance .hdr (flat, not run-length encoded) of one radiance."""
+    header = b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y %d +X %d\n" % (
+        height, width)
+    return header + rgbe(*rgb) * (width * height)
+
+
+GLOWING_OBJ = """# A quad whose material emits (Ke): the scene lights itself.
+mtllib glowing.mtl
+v -1 -1 0
+v  1 -1 0
+v  1  1 0
+v -1  1 0
+usemtl glow
+f 1 2 3 4
+"""
+
+GLOWING_MTL = """newmtl glow
+Kd 0.5 0.5 0.5
+Ke 2 1 0.5
+"""
+
+
 def plane_scene():
     buf = Buffer()
     quad, indices = quad_accessors(buf, half=2.0)
@@ -324,6 +440,11 @@ def main():
     write("expected-depth-32.pfm", expected_depth(32, 3.0, 30.0))
     write("cube.obj", CUBE_OBJ)
     write("cube.mtl", CUBE_MTL)
+    for kind in ("lightless", "lit", "emissive"):
+        write(kind + "-box.gltf", box_scene(kind))
+    write("red-sky.hdr", uniform_hdr(8, 4, (1.0, 0.0, 0.0)))
+    write("glowing.obj", GLOWING_OBJ)
+    write("glowing.mtl", GLOWING_MTL)
 
     # Bad inputs, each broken in one way.
     write("corrupt.gltf", '{"asset": {"version": "2.0"}, "meshes": [ this is not json')
