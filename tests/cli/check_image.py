@@ -16,6 +16,8 @@ applies to the region set before it:
   --max-diff V      no |value - reference| in the region exceeds V
   --max-rel-diff V  no |value - reference| exceeds V * max(reference, 0.05)
   --ratio R T       every value is R times the reference within T (relative)
+  --mean-diff-above V  the mean |value - reference| over the region is above
+                    V (the images differ there)
 
 Exits 1 with one line per failed assertion, 0 when all hold.
 """
@@ -120,6 +122,13 @@ def main(argv):
             if top > limit:
                 failures.append("%s: a value is %g, above %g"
                                 % (where(), top, limit))
+        elif option == "--mean-diff-above":
+            diffs = [abs(value(px) - value(expected[y][x]))
+                     for x, y, px in pixels()]
+            mean = sum(diffs) / len(diffs)
+            if not mean > limit:
+                failures.append("%s: mean difference %g from the reference "
+                                "is not above %g" % (where(), mean, limit))
         elif option in ("--max-diff", "--max-rel-diff"):
             worst, at = 0.0, None
             for x, y, px in pixels():

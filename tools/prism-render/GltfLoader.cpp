@@ -6,6 +6,7 @@
 #include "Math.h"
 #include "Objects.h"
 #include "SceneFile.h"
+#include "TangentGeneration.h"
 
 // The glTF parser is Debian's libtinygltf (shared library): only the
 // declarations are compiled here, so neither its JSON parser nor its copy of
@@ -532,6 +533,60 @@ bool writeWholeFile(std::string *,
     void *)
 {
   return false;
+}
+
+// ---- tangents -------------------------------------------------------------
+
+// The texture coordinate set a material's normal map (or clearcoat normal
+// map) reads, or -1 when it has none.
+int normalMapTexCoord(const tinygltf::Material &m)
+{
+  if (m.normalTexture.index >= 0)
+    return textureRef(m.normalTexture).texCoord;
+  const TextureRef coat =
+      textureRef(extension(m.extensions, "KHR_materials_clearcoat"),
+          "clearcoatNormalTexture");
+  return coat.valid() ? coat.texCoord : -1;
+}
+
+// MikkTSpace tangents for every triangle corner. Without NORMAL the
+// surface is flat-shaded (glTF), so each corner takes its face's normal.
+std::vector<Vec4> cornerTangents(const std::vector<float> &positions,
+    const std::vector<float> *normals,
+    const std::vector<float> &uvs,
+    const std::vector<std::array<uint32_t, 3>> &triangles)
+{
+  auto position = [&](uint32_t v) {
+    return Vec3{positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]};
+  };
+  auto uv = [&](uint32_t v) {
+    return Vec2{uvs[2 * v], uvs[2 * v + 1]};
+  };
+  std::vector<Vec3> p, n;
+  std::vector<Vec2> t;
+  if (normals) {
+    for (size_t v = 0; v < positions.size() / 3; v++) {
+      p.push_back(position(uint32_t(v)));
+      n.push_back(
+          {(*normals)[3 * v], (*normals)[3 * v + 1], (*normals)[3 * v + 2]});
+      t.push_back(uv(uint32_t(v)));
+    }
+    return generateTangents(p, n, t, triangles);
+  }
+  std::vector<std::array<uint32_t, 3>> corners;
+  for (const auto &triangle : triangles) {
+    const Vec3 a = position(triangle[0]), b = position(triangle[1]),
+               c = position(triangle[2]);
+    const Vec3 faceNormal = scenes::normalize(scenes::cross(b - a, c - a));
+    const uint32_t first = uint32_t(p.size());
+    for (uint32_t v : triangle) {
+      p.push_back(position(v));
+      n.push_back(faceNormal);
+      t.push_back(uv(v));
+    }
+    corners.push_back({first, first + 1, first + 2});
+  }
+  return generateTangents(p, n, t, corners);
 }
 
 // ---- the importer ---------------------------------------------------------
@@ -1196,10 +1251,12 @@ bool GltfImporter::buildPrimitive(int meshIndex,
       {"TEXCOORD_1", "vertex.attribute1", 2, 2},
       {"TEXCOORD_2", "vertex.attribute2", 2, 2},
       {"TEXCOORD_3", "vertex.attribute3", 2, 2}};
+  // NORMAL and TEXCOORD_n, kept for tangent generation.
+  std::map<std::string, std::vector<float>> kept;
   for (const Optional &o : optional) {
     if (attribute(o.gltf) < 0)
       continue;
-    std::vector<float> values;
+    std::vector<float> &values = kept[o.gltf];
     if (!readAccessor(m_model,
             attribute(o.gltf),
             o.minComponents,
@@ -1234,6 +1291,28 @@ bool GltfImporter::buildPrimitive(int meshIndex,
       materialIndex >= 0 && size_t(materialIndex) < m_model.materials.size()
           ? &m_model.materials[size_t(materialIndex)]
           : nullptr;
+  // glTF: a normal-mapped primitive without TANGENT gets MikkTSpace
+  // tangents, one per triangle corner (mirrored UVs split vertices).
+  const int tangentTexCoord = gm ? normalMapTexCoord(*gm) : -1;
+  if (tangentTexCoord >= 0 && attribute("TANGENT") < 0) {
+    const auto uvs = kept.find("TEXCOORD_" + std::to_string(tangentTexCoord));
+    if (uvs == kept.end()) {
+      note("a normal map uses TEXCOORD_" + std::to_string(tangentTexCoord)
+           + ", which its primitive does not have; tangents come from the "
+             "device");
+    } else {
+      const auto normals = kept.find("NORMAL");
+      const std::vector<Vec4> tangents = cornerTangents(positions,
+          normals == kept.end() ? nullptr : &normals->second,
+          uvs->second,
+          triangles);
+      scenes::setArray(m_device,
+          geometry,
+          "faceVarying.tangent",
+          ANARI_FLOAT32_VEC4,
+          tangents);
+    }
+  }
   bool vertexColors = false;
   if (attribute("COLOR_0") >= 0) {
     if (gm && gm->pbrMetallicRoughness.baseColorTexture.index >= 0) {

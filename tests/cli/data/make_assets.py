@@ -31,6 +31,14 @@ the outputs are committed, so this only reruns when the assets change):
                         light along -z), emissive-box.gltf (an emissive box,
                         no lights), red-sky.hdr (8x4, radiance (1, 0, 0)
                         everywhere), glowing.obj/.mtl (a quad with Ke)
+  normal maps           normal-mapped-plane.gltf: a plane of two UV islands,
+                        the right one mirrored in TEXCOORD_1 (which the
+                        normal map reads; TEXCOORD_0 is a plain planar map),
+                        no TANGENT, lit by a directional light from the
+                        upper right; -tangents.gltf: the same with the
+                        analytic TANGENT (left (1, 0, 0, -1), right
+                        (-1, 0, 0, 1)); -unmirrored.gltf: the right island's
+                        TANGENT wrong on purpose (as if not mirrored)
   OBJ numbers           nonfinite.obj (nan, inf and 1e39 vertices beside a
                         good quad), huge-index.obj (vertex 2^63),
                         wrapping-index.obj (vertex 2^32 + 1, which a 32-bit
@@ -319,6 +327,66 @@ Ke 2 1 0.5
 """
 
 
+def normal_png(nx, ny, nz):
+    """A 4x4 tangent-space normal map of one normal (n * 0.5 + 0.5)."""
+    texel = tuple(int(round((c * 0.5 + 0.5) * 255)) for c in (nx, ny, nz)) + (255,)
+    return png_rgba(4, 4, [[texel] * 4 for _ in range(4)])
+
+
+def normal_mapped_plane(tangents):
+    """A 2x2 plane at z = 0 facing +z of two quads (UV islands). TEXCOORD_1
+    runs u along +x on the left island and along -x on the right (mirrored),
+    v down (-y) on both; the normal map reads TEXCOORD_1. `tangents`: None,
+    'analytic' (what a correct generator must give: T along increasing u, w
+    such that cross(N, T) * w runs along increasing v) or 'unmirrored' (the
+    right island's tangent as if it were not mirrored)."""
+    buf = Buffer()
+    positions, uv0, uv1, tangent = [], [], [], []
+    for island, (x0, x1) in enumerate(((-1.0, 0.0), (0.0, 1.0))):
+        for x, y in ((x0, -1.0), (x1, -1.0), (x1, 1.0), (x0, 1.0)):
+            positions.append((x, y, 0.0))
+            uv0.append(((x + 1) / 2, (1 - y) / 2))
+            u = x + 1 if island == 0 else 1 - x
+            uv1.append((u, (1 - y) / 2))
+            if island == 0 or tangents == "unmirrored":
+                tangent.append((1.0, 0.0, 0.0, -1.0))
+            else:
+                tangent.append((-1.0, 0.0, 0.0, 1.0))
+    attributes = {
+        "POSITION": buf.accessor("f", FLOAT, "VEC3", positions, bounds=True),
+        "NORMAL": buf.accessor("f", FLOAT, "VEC3", [(0.0, 0.0, 1.0)] * 8),
+        "TEXCOORD_0": buf.accessor("f", FLOAT, "VEC2", uv0),
+        "TEXCOORD_1": buf.accessor("f", FLOAT, "VEC2", uv1)}
+    if tangents:
+        attributes["TANGENT"] = buf.accessor("f", FLOAT, "VEC4", tangent)
+    indices = buf.accessor("H", USHORT, "SCALAR",
+                           [0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7])
+    # A normal tilted towards +u and +v (0.48, 0.36, 0.8): each island
+    # leans its own way, so a wrong tangent or sign shows.
+    gltf = {
+        "asset": {"version": "2.0", "generator": "prism tests/cli/data/make_assets.py"},
+        "extensionsUsed": ["KHR_lights_punctual"],
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1, 2]}],
+        "nodes": [{"mesh": 0},
+                  {"camera": 0, "translation": [0.0, 0.0, 3.0]},
+                  {"rotation": [-0.2126, 0.3172, 0.0735, 0.9212],
+                   "extensions": {"KHR_lights_punctual": {"light": 0}}}],
+        "meshes": [{"primitives": [{"attributes": attributes,
+                                    "indices": indices, "material": 0}]}],
+        "materials": [{"normalTexture": {"index": 0, "texCoord": 1},
+                       "pbrMetallicRoughness": {"metallicFactor": 0.0,
+                                                "roughnessFactor": 0.7}}],
+        "textures": [{"source": 0}],
+        "images": [{"uri": data_uri("image/png", normal_png(0.48, 0.36, 0.8))}],
+        "cameras": [{"type": "perspective", "perspective": {
+            "yfov": 0.8, "aspectRatio": 1.0, "znear": 0.1}}],
+        "extensions": {"KHR_lights_punctual": {"lights": [
+            {"type": "directional", "intensity": 2.0}]}},
+    }
+    return finish_gltf(gltf, buf)
+
+
 def plane_scene():
     buf = Buffer()
     quad, indices = quad_accessors(buf, half=2.0)
@@ -444,6 +512,10 @@ def main():
         write(kind + "-box.gltf", box_scene(kind))
     write("red-sky.hdr", uniform_hdr(8, 4, (1.0, 0.0, 0.0)))
     write("glowing.obj", GLOWING_OBJ)
+    write("normal-mapped-plane.gltf", normal_mapped_plane(None))
+    write("normal-mapped-plane-tangents.gltf", normal_mapped_plane("analytic"))
+    write("normal-mapped-plane-unmirrored.gltf",
+          normal_mapped_plane("unmirrored"))
     write("glowing.mtl", GLOWING_MTL)
 
     # Bad inputs, each broken in one way.
