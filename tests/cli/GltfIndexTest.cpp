@@ -222,9 +222,13 @@ TEST(GltfJson, KeepsIntegersExactly)
   EXPECT_EQ(d.text(a[4]), "1.0");
   EXPECT_EQ(d.text(a[5]), "2e3");
   EXPECT_EQ(d.text(a[6]), "0");
-  // String values are not kept.
-  EXPECT_TRUE(d.root.at("s").is_string());
-  EXPECT_EQ(d.root.at("s").get<std::string>(), "");
+  // Strings are decoded; long ones keep their first 256 bytes.
+  EXPECT_EQ(d.root.at("s").get<std::string>(), "x\"\u00e9\U0001F600");
+  const GltfJson uri =
+      parseGltfJson("{\"uri\": \"data:" + std::string(100000, 'A') + "\"}");
+  ASSERT_TRUE(uri.ok()) << uri.error;
+  EXPECT_EQ(
+      uri.root.at("uri").get<std::string>(), "data:" + std::string(251, 'A'));
 }
 
 // The text of a duplicated key's float is the kept (last) one's.

@@ -9,6 +9,7 @@
 #                   otherwise the EXISTS files must be absent
 #   EXPECT_STDERR   regex stderr must match
 #   REJECT_STDERR   regex stderr must not match
+#   STDERR_LINES    how many lines stderr must have
 #   EXPECT_STDOUT   regex stdout must match
 #   EXISTS          files that must exist afterwards
 #   ABSENT          files that must not exist afterwards (no partial output)
@@ -104,6 +105,13 @@ elseif(NOT status STREQUAL EXPECT_EXIT)
 endif()
 if(DEFINED EXPECT_STDERR AND NOT stderr MATCHES "${EXPECT_STDERR}")
   message(FATAL_ERROR "stderr does not match '${EXPECT_STDERR}'")
+endif()
+if(DEFINED STDERR_LINES)
+  string(REGEX MATCHALL "\n" newlines "${stderr}")
+  list(LENGTH newlines lines)
+  if(NOT lines EQUAL STDERR_LINES)
+    message(FATAL_ERROR "stderr has ${lines} lines, not ${STDERR_LINES}")
+  endif()
 endif()
 if(DEFINED REJECT_STDERR AND stderr MATCHES "${REJECT_STDERR}")
   message(FATAL_ERROR "stderr matches '${REJECT_STDERR}', but must not")

@@ -11,6 +11,8 @@ namespace {
 
 using Json = nlohmann::json;
 
+constexpr size_t kKeptStringLength = 256;
+
 // Builds the document from nlohmann's SAX events: its own DOM builder would
 // drop the text of float literals (2^64 + 1 must be quoted as written) and
 // keep every string value.
@@ -40,9 +42,12 @@ class Builder
     m_floats.emplace_back(childPointer(), text);
     return add(Json(value));
   }
-  bool string(std::string &)
+  bool string(std::string &value)
   {
-    return add(Json(Json::value_t::string));
+    // Names, MIME types and file names fit; data URIs are cut short.
+    if (value.size() > kKeptStringLength)
+      value.resize(kKeptStringLength);
+    return add(Json(std::move(value)));
   }
   bool binary(Json::binary_t &)
   {
@@ -551,6 +556,11 @@ std::string checkGltfIndices(std::string_view json)
   const GltfJson document = parseGltfJson(json);
   if (!document.ok())
     return "cannot check its indices: " + document.error;
+  return checkGltfIndices(document);
+}
+
+std::string checkGltfIndices(const GltfJson &document)
+{
   return Checker(document).run();
 }
 

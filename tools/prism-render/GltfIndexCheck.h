@@ -30,8 +30,9 @@ namespace prism::render {
 // tinygltf uses too): integers are kept exactly (number_unsigned up to
 // 2^64 - 1, number_integer for negatives); numbers written with a fraction
 // or exponent, or too large for 64 bits, are floats whose text as written
-// is kept in `literals`, so messages quote the file. String values are not
-// stored (read as ""), so a large data URI costs no memory here; keys are.
+// is kept in `literals`, so messages quote the file. String values keep
+// their first 256 bytes (extension names, MIME types and file names fit; a
+// large data URI costs no memory here).
 struct GltfJson
 {
   nlohmann::json root;
@@ -54,6 +55,8 @@ GltfJson parseGltfJson(std::string_view text, size_t maxDepth = 512);
 // string when every index is in range, else one problem, e.g.
 // "nodes[0].mesh is 4294967296, but the file has 1 mesh".
 std::string checkGltfIndices(std::string_view json);
+// The same for a document already parsed.
+std::string checkGltfIndices(const GltfJson &document);
 
 // The JSON chunk of a GLB file (empty when `glb` has none).
 std::string_view glbJsonChunk(std::string_view glb);

@@ -2,6 +2,7 @@
 
 #include "DemoScenes.h"
 #include "GltfIndexCheck.h"
+#include "GltfSupport.h"
 #include "ImageIO.h"
 #include "Math.h"
 #include "Objects.h"
@@ -37,21 +38,6 @@ using scenes::operator*;
 constexpr size_t kMaxAccessorElements = size_t(1) << 28;
 constexpr size_t kMaxZeroAccessorElements = size_t(1) << 24;
 constexpr size_t kMaxNodeVisits = 10'000'000;
-
-// Extensions whose meaning we render (or can safely read as plain data).
-const std::set<std::string> kSupportedExtensions = {
-    "KHR_materials_clearcoat",
-    "KHR_materials_emissive_strength",
-    "KHR_materials_ior",
-    "KHR_materials_iridescence",
-    "KHR_materials_sheen",
-    "KHR_materials_specular",
-    "KHR_materials_transmission",
-    "KHR_materials_volume",
-    "KHR_texture_transform",
-    "KHR_lights_punctual",
-    "KHR_mesh_quantization",
-};
 
 // ---- JSON values (tinygltf::Value asserts on wrong-kind lookups) ----------
 
@@ -497,12 +483,30 @@ OutputMap normalMap(float scale)
   return map;
 }
 
-// ---- files a glTF names (tinygltf's filesystem callbacks) -----------------
+// ---- files a glTF names (tinygltf's callbacks) -----------------------------
 
-bool fileExists(const std::string &path, void *options)
+// What tinygltf's file and image callbacks share with the importer: what
+// may be read, and why files and images could not be (so a missing texture
+// is one line naming its reason, not tinygltf's three).
+struct FileAccess
 {
-  return static_cast<const GltfOptions *>(options)->readExternalFiles
-         && isRegularFile(path);
+  const GltfOptions *options;
+  std::map<std::string, std::string> unreadableFiles; // path -> why
+  std::map<int, std::string> unusableImages;          // index -> why
+};
+
+bool fileExists(const std::string &path, void *user)
+{
+  auto *access = static_cast<FileAccess *>(user);
+  if (!access->options->readExternalFiles) {
+    access->unreadableFiles[path] = "external files are not read here";
+    return false;
+  }
+  if (!isRegularFile(path)) {
+    access->unreadableFiles[path] = "no such file";
+    return false;
+  }
+  return true;
 }
 
 std::string expandFilePath(const std::string &path, void *)
@@ -514,11 +518,12 @@ std::string expandFilePath(const std::string &path, void *)
 bool readWholeFile(std::vector<unsigned char> *out,
     std::string *error,
     const std::string &path,
-    void *options)
+    void *user)
 {
+  auto *access = static_cast<FileAccess *>(user);
   std::string bytes, why = "external files are not read here";
-  if (!static_cast<const GltfOptions *>(options)->readExternalFiles
-      || !readSceneFile(path, bytes, why)) {
+  if (!access->options->readExternalFiles || !readSceneFile(path, bytes, why)) {
+    access->unreadableFiles[path] = why;
     if (error)
       *error += "cannot read '" + path + "': " + why + "\n";
     return false;
@@ -533,6 +538,51 @@ bool writeWholeFile(std::string *,
     void *)
 {
   return false;
+}
+
+// Decodes images with tinygltf's stb, except KTX2 (KHR_texture_basisu,
+// unsupported; files that need it were refused already): an image that
+// cannot be decoded is left empty and noted once where a texture uses it,
+// as a missing file is, instead of failing the whole file.
+bool loadImage(tinygltf::Image *image,
+    const int index,
+    std::string *,
+    std::string *,
+    int width,
+    int height,
+    const unsigned char *bytes,
+    int size,
+    void *user)
+{
+  auto *access = static_cast<FileAccess *>(user);
+  if (isKtx2(bytes, size_t(std::max(size, 0)))) {
+    access->unusableImages[index] =
+        "a KTX2 image (KHR_texture_basisu), which prism-render does not "
+        "decode";
+    return true;
+  }
+  std::string error, warning;
+  if (!tinygltf::LoadImageData(image,
+          index,
+          &error,
+          &warning,
+          width,
+          height,
+          bytes,
+          size,
+          nullptr)) {
+    image->image.clear();
+    access->unusableImages[index] = "not a PNG or JPEG image stb can decode";
+  }
+  return true;
+}
+
+// tinygltf's warnings about images that are reported per image instead.
+bool isImageWarning(const std::string &line)
+{
+  return line.starts_with("File not found : ")
+         || line.starts_with("Failed to load external 'uri' for image[")
+         || line.starts_with("Image data is empty for image[");
 }
 
 // ---- tangents -------------------------------------------------------------
@@ -636,6 +686,7 @@ class GltfImporter
   ANARISampler newSampler(
       const TextureRef &ref, bool srgb, const OutputMap &output);
   ANARIArray2D imageArray(int image, bool srgb);
+  std::string whyUnusable(int image) const;
   void placeCamera();
   void placeLights(std::vector<ANARIObject> &lights);
   void note(const std::string &text);
@@ -645,6 +696,7 @@ class GltfImporter
   const std::string &m_bytes;
   std::string m_path;
   GltfOptions m_options;
+  FileAccess m_access{&m_options, {}, {}};
   LoadResult m_result;
   tinygltf::Model m_model;
 
@@ -695,12 +747,24 @@ bool GltfImporter::parse()
   // The magic decides, not the extension: misnamed files still load.
   const bool binary =
       m_bytes.size() >= 4 && std::memcmp(m_bytes.data(), "glTF", 4) == 0;
+  // Our own reading of the JSON, first: a file that depends on an extension
+  // we lack is refused by that extension's name before tinygltf trips over
+  // what the extension leaves out. JSON that does not parse is left to
+  // tinygltf's message.
+  const GltfJson json =
+      parseGltfJson(binary ? glbJsonChunk(m_bytes) : std::string_view(m_bytes));
+  if (json.ok()) {
+    const std::string unsupported = unsupportedGltfDependency(json.root);
+    if (!unsupported.empty())
+      return fail(unsupported);
+  }
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks({&fileExists,
       &expandFilePath,
       &readWholeFile,
       &writeWholeFile,
-      &m_options});
+      &m_access});
+  loader.SetImageLoader(&loadImage, &m_access);
   // tinygltf joins URIs to the folder without its trailing '/'.
   const size_t slash = m_path.find_last_of('/');
   const std::string baseDirectory =
@@ -723,7 +787,7 @@ bool GltfImporter::parse()
     line = warning.substr(0, end);
     warning =
         end == std::string::npos ? std::string() : warning.substr(end + 1);
-    if (!line.empty())
+    if (!line.empty() && !isImageWarning(line))
       note(line);
   }
   if (!ok) {
@@ -735,16 +799,13 @@ bool GltfImporter::parse()
     return false;
   }
   // tinygltf narrowed every index to int: check them as the file wrote them.
-  const std::string badIndex = checkGltfIndices(
-      binary ? glbJsonChunk(m_bytes) : std::string_view(m_bytes));
+  const std::string badIndex = json.ok()
+                                   ? checkGltfIndices(json)
+                                   : "cannot check its indices: " + json.error;
   if (!badIndex.empty())
     return fail(badIndex);
-  for (const std::string &required : m_model.extensionsRequired)
-    if (!kSupportedExtensions.count(required))
-      return fail("requires extension " + required
-                  + ", which prism-render does not support");
   for (const std::string &used : m_model.extensionsUsed)
-    if (!kSupportedExtensions.count(used))
+    if (!isSupportedGltfExtension(used))
       note("extension " + used + " is not supported and is ignored");
   return true;
 }
@@ -791,6 +852,19 @@ bool GltfImporter::traverse(int index, const Mat4d &parent)
   return true;
 }
 
+std::string GltfImporter::whyUnusable(int index) const
+{
+  if (auto found = m_access.unusableImages.find(index);
+      found != m_access.unusableImages.end())
+    return found->second;
+  const tinygltf::Image &image = m_model.images[size_t(index)];
+  // tinygltf joined the URI to the file's folder (and decoded %-escapes).
+  for (const auto &[path, why] : m_access.unreadableFiles)
+    if (!image.uri.empty() && path.ends_with(image.uri))
+      return why;
+  return image.uri.empty() ? "no image data" : "its file cannot be read";
+}
+
 ANARIArray2D GltfImporter::imageArray(int index, bool srgb)
 {
   const auto key = std::make_pair(index, srgb);
@@ -812,7 +886,8 @@ ANARIArray2D GltfImporter::imageArray(int index, bool srgb)
   if (image.image.empty() || w == 0 || h == 0 || c < 1 || c > 4
       || (image.bits != 8 && image.bits != 16)
       || image.image.size() != w * h * c * bytesPerComponent) {
-    note(what + " could not be loaded; textures using it are left out");
+    note(what + " could not be loaded (" + whyUnusable(index)
+         + "); textures using it are left out");
     return array = nullptr;
   }
   // Expand to RGBA (grey replicated) so every slot reads the channels the

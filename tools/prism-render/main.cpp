@@ -352,7 +352,12 @@ int run(int argc, char **argv)
   // Scene files without lights would render black with the path tracer:
   // light them the way glTF viewers do, and say so.
   const bool explicitEnvironment = options.environment != "studio";
-  if (!scene.emitsLight && options.environment != "none") {
+  const bool hdri = scenes::hasSubtype(device, ANARI_LIGHT, "hdri");
+  if (!scene.emitsLight && options.environment != "none" && !hdri) {
+    console::warning(
+        "the scene has no lights and the device has no hdri light "
+        "(KHR_LIGHT_HDRI) to light it with; it renders unlit");
+  } else if (!scene.emitsLight && options.environment != "none") {
     const EnvironmentChoice choice{options.environment,
         options.environmentIntensity,
         options.environmentRotateDegrees};

@@ -24,7 +24,8 @@ the outputs are committed, so this only reruns when the assets change):
                         material-index-2pow32.glb (a primitive's material
                         2^32 + 1 inside a GLB's JSON chunk),
                         huge-zero-accessor.gltf (POSITION without a buffer
-                        view claiming 2^28 - 1 elements: nothing backs them)
+                        view claiming 2^28 - 1 elements: nothing backs them),
+                        missing-texture.gltf (its PNG does not exist)
   default lighting      lightless-box.gltf (a textured box, no lights: lit by
                         the tool's studio by default, black with --env
                         none), lit-box.gltf (the box under a directional
@@ -39,6 +40,13 @@ the outputs are committed, so this only reruns when the assets change):
                         analytic TANGENT (left (1, 0, 0, -1), right
                         (-1, 0, 0, 1)); -unmirrored.gltf: the right island's
                         TANGENT wrong on purpose (as if not mirrored)
+  unsupported           draco-*.gltf (KHR_draco_mesh_compression), basisu-*.gltf
+  extensions            (KHR_texture_basisu; the KTX2 image is only the magic
+                        number), meshopt-*.gltf (EXT_meshopt_compression):
+                        -required (in extensionsRequired), -no-fallback (only
+                        used, but a primitive or texture depends on it),
+                        -fallback (only used, with the uncompressed data or
+                        a PNG: renders)
   OBJ numbers           nonfinite.obj (nan, inf and 1e39 vertices beside a
                         good quad), huge-index.obj (vertex 2^63),
                         wrapping-index.obj (vertex 2^32 + 1, which a 32-bit
@@ -404,6 +412,52 @@ def plane_scene():
     return json.dumps(gltf, indent=1)
 
 
+KTX2_MAGIC = bytes((0xAB, 0x4B, 0x54, 0x58, 0x20, 0x32, 0x30, 0xBB,
+                    0x0D, 0x0A, 0x1A, 0x0A))
+
+
+def unsupported_extension_file(extension, case):
+    """plane.gltf depending on `extension` in one of three ways: 'required'
+    (listed in extensionsRequired, no fallback), 'no-fallback' (only in
+    extensionsUsed, but a primitive or texture cannot do without it) or
+    'fallback' (only used, uncompressed data or a PNG beside it)."""
+    gltf = json.loads(plane_scene())
+    gltf["extensionsUsed"] = [extension]
+    if case == "required":
+        gltf["extensionsRequired"] = [extension]
+    primitive = gltf["meshes"][0]["primitives"][0]
+    if extension == "KHR_draco_mesh_compression":
+        primitive["extensions"] = {extension: {
+            "bufferView": 0, "attributes": {"POSITION": 0}}}
+        if case != "fallback":
+            for accessor in gltf["accessors"]:
+                del accessor["bufferView"]
+    elif extension == "KHR_texture_basisu":
+        primitive["material"] = 0
+        gltf["materials"] = [{"pbrMetallicRoughness": {
+            "baseColorTexture": {"index": 0}}}]
+        gltf["images"] = [{"uri": data_uri("image/ktx2", KTX2_MAGIC + bytes(20))}]
+        texture = {"extensions": {extension: {"source": 0}}}
+        if case == "fallback":
+            gltf["images"].append({"uri": "checker.png"})
+            texture["source"] = 1
+        gltf["textures"] = [texture]
+    elif extension == "EXT_meshopt_compression":
+        # The views keep pointing at buffer 0; in the dependent cases that
+        # is a placeholder for the decompressed data, nothing in it.
+        size = gltf["buffers"][0]["byteLength"]
+        compressed = {"buffer": 0, "byteLength": size, "byteStride": 12,
+                      "mode": "ATTRIBUTES", "count": 4}
+        gltf["bufferViews"][0]["extensions"] = {extension: compressed}
+        if case != "fallback":
+            gltf["buffers"].insert(0, {"byteLength": size, "extensions": {
+                extension: {"fallback": True}}})
+            for view in gltf["bufferViews"]:
+                view["buffer"] = 0
+            compressed["buffer"] = 1
+    return json.dumps(gltf, indent=1)
+
+
 def material_index_glb():
     """plane_scene as a GLB whose primitive names material 2^32 + 1 (of 1)."""
     buf = Buffer()
@@ -513,6 +567,12 @@ def main():
     write("red-sky.hdr", uniform_hdr(8, 4, (1.0, 0.0, 0.0)))
     write("glowing.obj", GLOWING_OBJ)
     write("normal-mapped-plane.gltf", normal_mapped_plane(None))
+    for extension, stem in (("KHR_draco_mesh_compression", "draco"),
+                            ("KHR_texture_basisu", "basisu"),
+                            ("EXT_meshopt_compression", "meshopt")):
+        for case in ("required", "no-fallback", "fallback"):
+            write("%s-%s.gltf" % (stem, case),
+                  unsupported_extension_file(extension, case))
     write("normal-mapped-plane-tangents.gltf", normal_mapped_plane("analytic"))
     write("normal-mapped-plane-unmirrored.gltf",
           normal_mapped_plane("unmirrored"))
@@ -541,6 +601,12 @@ def main():
     del zeros["accessors"][0]["bufferView"]
     zeros["accessors"][0]["count"] = 2 ** 28 - 1
     write("huge-zero-accessor.gltf", json.dumps(zeros))
+    missing_texture = json.loads(unsupported_extension_file(
+        "KHR_texture_basisu", "fallback"))
+    del missing_texture["extensionsUsed"]
+    missing_texture["images"] = [{"uri": "no-such-texture.png"}]
+    missing_texture["textures"] = [{"source": 0}]
+    write("missing-texture.gltf", json.dumps(missing_texture, indent=1))
     write("bad-index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n")
     write("garbage.obj", bytes((i * 37 + 11) % 256 for i in range(512)))
     write("nonfinite.obj", NONFINITE_OBJ)
