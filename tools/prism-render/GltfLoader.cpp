@@ -1129,19 +1129,21 @@ ANARIMaterial GltfImporter::newMaterial(int index, bool vertexColors)
     scenes::setString(m_device, material, "alphaMode", "opaque");
   }
 
-  if (const tinygltf::Value *e =
-          extension(m.extensions, "KHR_materials_specular")) {
-    setScalar(material,
-        "specular",
-        float(number(e, "specularFactor", 1.0)),
-        textureRef(e, "specularTexture"),
-        3);
-    setColor(material,
-        "specularColor",
-        vec3(e, "specularColorFactor", {1.f, 1.f, 1.f}),
-        textureRef(e, "specularColorTexture"),
-        false);
-  }
+  // Without KHR_materials_specular glTF means specularFactor 1 and
+  // specularColorFactor 1 (the dielectric's F0 comes from ior alone), where
+  // ANARI's `specular` defaults to 0: no dielectric reflection at all.
+  const tinygltf::Value *specular =
+      extension(m.extensions, "KHR_materials_specular");
+  setScalar(material,
+      "specular",
+      float(number(specular, "specularFactor", 1.0)),
+      textureRef(specular, "specularTexture"),
+      3);
+  setColor(material,
+      "specularColor",
+      vec3(specular, "specularColorFactor", {1.f, 1.f, 1.f}),
+      textureRef(specular, "specularColorTexture"),
+      false);
   if (const tinygltf::Value *e =
           extension(m.extensions, "KHR_materials_clearcoat")) {
     setScalar(material,
@@ -1166,8 +1168,14 @@ ANARIMaterial GltfImporter::newMaterial(int index, bool vertexColors)
       }
     }
   }
-  if (const tinygltf::Value *e = extension(m.extensions, "KHR_materials_ior"))
-    scenes::setFloat(m_device, material, "ior", float(number(e, "ior", 1.5)));
+  // glTF's ior is 1.5 without KHR_materials_ior (ANARI's default too, set
+  // anyway: it is what the file means). Every other extension's absence
+  // means what ANARI's defaults mean (clearcoat, transmission, thickness,
+  // sheen and iridescence 0, attenuation none).
+  scenes::setFloat(m_device,
+      material,
+      "ior",
+      float(number(extension(m.extensions, "KHR_materials_ior"), "ior", 1.5)));
   if (const tinygltf::Value *e =
           extension(m.extensions, "KHR_materials_transmission"))
     setScalar(material,

@@ -40,6 +40,13 @@ the outputs are committed, so this only reruns when the assets change):
                         analytic TANGENT (left (1, 0, 0, -1), right
                         (-1, 0, 0, 1)); -unmirrored.gltf: the right island's
                         TANGENT wrong on purpose (as if not mirrored)
+  Fresnel               fresnel-plane.gltf: a 200x200 smooth black dielectric
+                        plane (no material extensions) seen from 1 unit above
+                        at 20 degrees down (yfov 0.5); white-sky.hdr (8x4,
+                        radiance 1 everywhere); expected-fresnel-48.pfm: the
+                        glTF BRDF's answer for a 48x48 view, Schlick's
+                        F = 0.04 + 0.96 (1 - cos)^5 of each ray averaged over
+                        its pixel (the reflection sees the sky, 1)
   unsupported           draco-*.gltf (KHR_draco_mesh_compression), basisu-*.gltf
   extensions            (KHR_texture_basisu; the KTX2 image is only the magic
                         number), meshopt-*.gltf (EXT_meshopt_compression):
@@ -395,6 +402,69 @@ def normal_mapped_plane(tangents):
     return finish_gltf(gltf, buf)
 
 
+FRESNEL_PITCH = math.radians(20.0)  # camera looks this far below the horizon
+FRESNEL_YFOV = 0.5
+
+
+def fresnel_plane():
+    buf = Buffer()
+    half = 100.0
+    attributes = {
+        "POSITION": buf.accessor("f", FLOAT, "VEC3",
+                                 [(-half, 0.0, half), (half, 0.0, half),
+                                  (half, 0.0, -half), (-half, 0.0, -half)],
+                                 bounds=True),
+        "NORMAL": buf.accessor("f", FLOAT, "VEC3", [(0.0, 1.0, 0.0)] * 4)}
+    indices = buf.accessor("H", USHORT, "SCALAR", [0, 1, 2, 0, 2, 3])
+    a = -FRESNEL_PITCH / 2
+    gltf = {
+        "asset": {"version": "2.0", "generator": "prism tests/cli/data/make_assets.py"},
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1]}],
+        "nodes": [{"mesh": 0},
+                  {"camera": 0, "translation": [0.0, 1.0, 0.0],
+                   "rotation": [math.sin(a), 0.0, 0.0, math.cos(a)]}],
+        "meshes": [{"primitives": [{"attributes": attributes,
+                                    "indices": indices, "material": 0}]}],
+        # A plain glTF dielectric: black, smooth, no extensions.
+        "materials": [{"pbrMetallicRoughness": {
+            "baseColorFactor": [0.0, 0.0, 0.0, 1.0],
+            "metallicFactor": 0.0, "roughnessFactor": 0.0}}],
+        "cameras": [{"type": "perspective", "perspective": {
+            "yfov": FRESNEL_YFOV, "aspectRatio": 1.0, "znear": 0.01}}],
+    }
+    return finish_gltf(gltf, buf)
+
+
+def expected_fresnel(size, subsamples=16):
+    """What the glTF BRDF gives fresnel_plane() under a sky of radiance 1:
+    a smooth dielectric (ior 1.5, specular 1) reflects Schlick's
+    F = 0.04 + 0.96 (1 - cos)^5 of the sky, cos between the ray and the
+    normal; each pixel the mean over a subsamples^2 grid. PFM, bottom row
+    first."""
+    t = math.tan(FRESNEL_YFOV / 2)
+    forward = (0.0, -math.sin(FRESNEL_PITCH), -math.cos(FRESNEL_PITCH))
+    up = (0.0, math.cos(FRESNEL_PITCH), -math.sin(FRESNEL_PITCH))
+    right = (1.0, 0.0, 0.0)
+    rows = []
+    for y in range(size):  # y = 0 is the bottom row
+        row = []
+        for x in range(size):
+            total = 0.0
+            for sy in range(subsamples):
+                for sx in range(subsamples):
+                    u = ((x + (sx + 0.5) / subsamples) / size - 0.5) * 2 * t
+                    v = ((y + (sy + 0.5) / subsamples) / size - 0.5) * 2 * t
+                    d = [forward[i] + u * right[i] + v * up[i] for i in range(3)]
+                    cos = -d[1] / math.sqrt(sum(c * c for c in d))
+                    total += 0.04 + 0.96 * (1.0 - cos) ** 5
+            f = total / subsamples ** 2
+            row += [f, f, f]
+        rows += row
+    header = b"PF\n%d %d\n-1.0\n" % (size, size)
+    return header + struct.pack("<%df" % len(rows), *rows)
+
+
 def plane_scene():
     buf = Buffer()
     quad, indices = quad_accessors(buf, half=2.0)
@@ -565,6 +635,9 @@ def main():
     for kind in ("lightless", "lit", "emissive"):
         write(kind + "-box.gltf", box_scene(kind))
     write("red-sky.hdr", uniform_hdr(8, 4, (1.0, 0.0, 0.0)))
+    write("white-sky.hdr", uniform_hdr(8, 4, (1.0, 1.0, 1.0)))
+    write("fresnel-plane.gltf", fresnel_plane())
+    write("expected-fresnel-48.pfm", expected_fresnel(48))
     write("glowing.obj", GLOWING_OBJ)
     write("normal-mapped-plane.gltf", normal_mapped_plane(None))
     for extension, stem in (("KHR_draco_mesh_compression", "draco"),
