@@ -143,6 +143,50 @@ TEST_F(MaterialExtensionsTest, CameraRaysPassBackFaces)
   EXPECT_TRUE(problems().empty());
 }
 
+TEST_F(MaterialExtensionsTest, InstancedBackFacesFollowTheTransform)
+{
+  // The occluder in a group placed by a mirror (z -> -z) or a half turn
+  // about x: its object-space front (+z) faces down in the world, so the
+  // camera above sees through it; with its object front -z, it faces up
+  // and is seen. (glTF: under a negative determinant the front faces run
+  // clockwise in the world, i.e. stay the object's counter-clockwise side.)
+  const float mirror[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1};
+  const float halfTurn[16] = {1, 0, 0, 0, 0, -1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1};
+  for (const float *transform : {mirror, halfTurn})
+    for (const bool objectUp : {true, false}) {
+      ANARISurface receiver = surface(
+          square(0.f, 20.f, 0.f, true), matte(0.6f, 0.6f, 0.6f), kReceiver);
+      ANARISurface occluder = surface(square(10.f, 10.f, -1.f, objectUp),
+          matteSided(0.3f, false),
+          kOccluder);
+      ANARIGroup group = anariNewGroup(m_device);
+      setArray(group,
+          "surface",
+          anariNewArray1D(
+              m_device, &occluder, nullptr, nullptr, ANARI_SURFACE, 1));
+      anariCommitParameters(m_device, group);
+      anariRelease(m_device, occluder);
+      ANARIInstance instance = anariNewInstance(m_device, "transform");
+      anariSetParameter(m_device, instance, "group", ANARI_GROUP, &group);
+      anariSetParameter(
+          m_device, instance, "transform", ANARI_FLOAT32_MAT4, transform);
+      anariCommitParameters(m_device, instance);
+      anariRelease(m_device, group);
+      ANARIWorld w = world({receiver});
+      setArray(w,
+          "instance",
+          anariNewArray1D(
+              m_device, &instance, nullptr, nullptr, ANARI_INSTANCE, 1));
+      anariRelease(m_device, instance);
+      anariCommitParameters(m_device, w);
+      EXPECT_TRUE(
+          allIds(look(w, 1.5f, "raycast"), objectUp ? kReceiver : kOccluder))
+          << (transform == mirror ? "mirror" : "half turn") << " " << objectUp;
+      anariRelease(m_device, w);
+    }
+  EXPECT_TRUE(problems().empty());
+}
+
 TEST_F(MaterialExtensionsTest, ShadowRaysPassBackFaces)
 {
   // Shadow rays run from the receiver up to the light: they meet the
