@@ -672,6 +672,10 @@ class GltfImporter
       std::vector<ANARIObject> &surfaces,
       scenes::Bounds &bounds);
   ANARIMaterial material(int index, bool vertexColors);
+  // What the device offers beyond ANARI 1.1 for glTF (docs/extensions.md).
+  bool m_unlitMaterials{false};
+  bool m_baseColorFactor{false};
+  bool m_singleSided{false};
   ANARIMaterial newMaterial(int index, bool vertexColors);
   void setScalar(ANARIMaterial material,
       const char *name,
@@ -683,8 +687,24 @@ class GltfImporter
       const Vec3 &factor,
       const TextureRef &texture,
       bool skipBlack);
-  ANARISampler newSampler(
-      const TextureRef &ref, bool srgb, const OutputMap &output);
+  // A sampler of texture `ref` (or of `baked`, an image made from it, with
+  // its mapping and sampler settings).
+  ANARISampler newSampler(const TextureRef &ref,
+      bool srgb,
+      const OutputMap &output,
+      ANARIArray2D baked = nullptr);
+  // The texels of image `index` as stored (0-1, RGBA; grey replicated), or
+  // false when it could not be loaded.
+  bool imageTexels(
+      int index, size_t &width, size_t &height, std::vector<Vec4> &texels);
+  void setBaseColor(ANARIMaterial material,
+      const Vec4 &factor,
+      ANARISampler sampler,
+      bool textured,
+      bool vertexColors);
+  void setSpecularGlossiness(ANARIMaterial material,
+      const tinygltf::Value &extension,
+      bool vertexColors);
   ANARIArray2D imageArray(int image, bool srgb);
   std::string whyUnusable(int image) const;
   void placeCamera();
@@ -930,8 +950,10 @@ ANARIArray2D GltfImporter::imageArray(int index, bool srgb)
   return array;
 }
 
-ANARISampler GltfImporter::newSampler(
-    const TextureRef &ref, bool srgb, const OutputMap &output)
+ANARISampler GltfImporter::newSampler(const TextureRef &ref,
+    bool srgb,
+    const OutputMap &output,
+    ANARIArray2D baked)
 {
   if (size_t(ref.texture) >= m_model.textures.size()) {
     note("texture " + std::to_string(ref.texture)
@@ -944,7 +966,7 @@ ANARISampler GltfImporter::newSampler(
     return nullptr;
   }
   const tinygltf::Texture &texture = m_model.textures[size_t(ref.texture)];
-  ANARIArray2D image = imageArray(texture.source, srgb);
+  ANARIArray2D image = baked ? baked : imageArray(texture.source, srgb);
   if (!image)
     return nullptr;
   ANARISampler sampler = anariNewSampler(m_device, "image2D");
@@ -1034,6 +1056,283 @@ void GltfImporter::setColor(ANARIMaterial material,
   }
 }
 
+void GltfImporter::setBaseColor(ANARIMaterial material,
+    const Vec4 &factor,
+    ANARISampler sampler,
+    bool textured,
+    bool vertexColors)
+{
+  if (sampler) {
+    // The sampled alpha (times the factor's) becomes the opacity; vertex
+    // colors multiply the sampled color (PRISM_MATERIAL_BASE_COLOR_FACTOR).
+    scenes::setObject(m_device, material, "baseColor", ANARI_SAMPLER, sampler);
+    anariRelease(m_device, sampler);
+    if (vertexColors)
+      scenes::setString(m_device, material, "baseColorFactor", "color");
+  } else if (vertexColors) {
+    scenes::setString(m_device, material, "baseColor", "color");
+    // Untextured, the vertex colors carry the factor already; a texture
+    // that could not be loaded leaves its factor to multiply them.
+    if (textured && m_baseColorFactor) {
+      scenes::setVec3(m_device,
+          material,
+          "baseColorFactor",
+          {factor[0], factor[1], factor[2]});
+      scenes::setFloat(m_device, material, "opacity", factor[3]);
+    }
+  } else {
+    scenes::setVec3(
+        m_device, material, "baseColor", {factor[0], factor[1], factor[2]});
+    scenes::setFloat(m_device, material, "opacity", factor[3]);
+  }
+}
+
+bool GltfImporter::imageTexels(
+    int index, size_t &width, size_t &height, std::vector<Vec4> &texels)
+{
+  if (index < 0 || size_t(index) >= m_model.images.size())
+    return false;
+  const tinygltf::Image &image = m_model.images[size_t(index)];
+  width = size_t(std::max(image.width, 0));
+  height = size_t(std::max(image.height, 0));
+  const size_t c = size_t(std::max(image.component, 0));
+  const size_t bytes = image.bits == 16 ? 2 : 1;
+  if (image.image.empty() || width == 0 || height == 0 || c < 1 || c > 4
+      || (image.bits != 8 && image.bits != 16)
+      || image.image.size() != width * height * c * bytes)
+    return false;
+  texels.assign(width * height, Vec4{0.f, 0.f, 0.f, 1.f});
+  for (size_t p = 0; p < width * height; p++)
+    for (size_t ch = 0; ch < 4; ch++) {
+      if ((c == 1 || c == 3) && ch == 3)
+        continue;
+      const size_t source = c <= 2 ? (ch < 3 ? 0 : 1) : ch;
+      const size_t i = p * c + source;
+      if (bytes == 2) {
+        uint16_t v;
+        std::memcpy(&v, image.image.data() + 2 * i, 2);
+        texels[p][ch] = float(v / 65535.0);
+      } else {
+        texels[p][ch] = float(image.image[i] / 255.0);
+      }
+    }
+  return true;
+}
+
+// ---- KHR_materials_pbrSpecularGlossiness -----------------------------------
+
+namespace {
+
+// The published conversion from specular-glossiness to metallic-roughness
+// (Khronos, KHR_materials_pbrSpecularGlossiness "convert between
+// workflows"), in linear color:
+//   s = 1 - max(specular)
+//   metallic = 0 if brightness(specular) < 0.04, else the root in [0, 1] of
+//     0.04 m^2 + (brightness(diffuse) s / 0.96 + brightness(specular)
+//     - 0.08) m + (0.04 - brightness(specular)) = 0
+//   base = mix(diffuse s / 0.96 / max(1 - m, eps),
+//              (specular - 0.04 (1 - m)) / max(m, eps), m^2), clamped
+//   opacity = diffuse alpha, roughness = 1 - glossiness
+// with brightness(c) = sqrt(0.299 r^2 + 0.587 g^2 + 0.114 b^2).
+struct MetallicRoughness
+{
+  Vec4 baseColor; // linear rgb, alpha
+  float metallic;
+  float roughness;
+};
+
+MetallicRoughness fromSpecularGlossiness(
+    const Vec4 &diffuse, const Vec3 &specular, float glossiness)
+{
+  constexpr float kDielectric = 0.04f, kEpsilon = 1e-6f;
+  auto brightness = [](float r, float g, float b) {
+    return std::sqrt(0.299f * r * r + 0.587f * g * g + 0.114f * b * b);
+  };
+  const float diffuseBrightness =
+      brightness(diffuse[0], diffuse[1], diffuse[2]);
+  const float specularBrightness =
+      brightness(specular[0], specular[1], specular[2]);
+  const float oneMinusSpecular =
+      1.f - std::max(specular[0], std::max(specular[1], specular[2]));
+  float metallic = 0.f;
+  if (specularBrightness >= kDielectric) {
+    const float a = kDielectric;
+    const float b = diffuseBrightness * oneMinusSpecular / (1.f - kDielectric)
+                    + specularBrightness - 2.f * kDielectric;
+    const float c = kDielectric - specularBrightness;
+    const float d = std::max(b * b - 4.f * a * c, 0.f);
+    metallic = std::clamp((-b + std::sqrt(d)) / (2.f * a), 0.f, 1.f);
+  }
+  MetallicRoughness out;
+  for (int i = 0; i < 3; i++) {
+    const float fromDiffuse = diffuse[size_t(i)] * oneMinusSpecular
+                              / (1.f - kDielectric)
+                              / std::max(1.f - metallic, kEpsilon);
+    const float fromSpecular =
+        (specular[size_t(i)] - kDielectric * (1.f - metallic))
+        / std::max(metallic, kEpsilon);
+    const float t = metallic * metallic;
+    out.baseColor[size_t(i)] =
+        std::clamp(fromDiffuse + (fromSpecular - fromDiffuse) * t, 0.f, 1.f);
+  }
+  out.baseColor[3] = diffuse[3];
+  out.metallic = metallic;
+  out.roughness = std::clamp(1.f - glossiness, 0.f, 1.f);
+  return out;
+}
+
+Vec4 vec4(const tinygltf::Value *object, const char *key, const Vec4 &fallback)
+{
+  const tinygltf::Value *v = object ? member(*object, key) : nullptr;
+  if (!v || !v->IsArray() || v->ArrayLen() != 4)
+    return fallback;
+  Vec4 out;
+  for (int i = 0; i < 4; i++) {
+    if (!v->Get(i).IsNumber())
+      return fallback;
+    out[size_t(i)] = float(v->Get(i).GetNumberAsDouble());
+  }
+  return out;
+}
+
+bool sameMapping(const TextureRef &a, const TextureRef &b)
+{
+  return a.texCoord == b.texCoord && a.transformed == b.transformed
+         && a.offset[0] == b.offset[0] && a.offset[1] == b.offset[1]
+         && a.rotation == b.rotation && a.scale[0] == b.scale[0]
+         && a.scale[1] == b.scale[1];
+}
+
+} // namespace
+
+void GltfImporter::setSpecularGlossiness(
+    ANARIMaterial material, const tinygltf::Value &extension, bool vertexColors)
+{
+  const Vec4 diffuseFactor =
+      vec4(&extension, "diffuseFactor", {1.f, 1.f, 1.f, 1.f});
+  const Vec3 specularFactor =
+      vec3(&extension, "specularFactor", {1.f, 1.f, 1.f});
+  const float glossinessFactor =
+      float(number(&extension, "glossinessFactor", 1.0));
+  const TextureRef diffuseRef = textureRef(&extension, "diffuseTexture");
+  const TextureRef specularRef =
+      textureRef(&extension, "specularGlossinessTexture");
+
+  // Texels of each texture (sRGB color decoded; glossiness is linear).
+  struct Source
+  {
+    size_t width{0}, height{0};
+    std::vector<Vec4> texels;
+  };
+  auto load = [&](const TextureRef &ref, Source &source) {
+    if (!ref.valid() || size_t(ref.texture) >= m_model.textures.size())
+      return false;
+    const int image = m_model.textures[size_t(ref.texture)].source;
+    if (!imageTexels(image, source.width, source.height, source.texels)) {
+      note("image " + std::to_string(image) + " could not be loaded ("
+           + whyUnusable(image) + "); textures using it are left out");
+      return false;
+    }
+    for (Vec4 &t : source.texels)
+      for (int i = 0; i < 3; i++)
+        t[size_t(i)] = image::linearFromSrgb(t[size_t(i)]);
+    return true;
+  };
+  Source diffuse, specular;
+  const bool hasDiffuse = load(diffuseRef, diffuse);
+  const bool hasSpecular = load(specularRef, specular);
+
+  if (!hasDiffuse && !hasSpecular) {
+    const MetallicRoughness converted =
+        fromSpecularGlossiness(diffuseFactor, specularFactor, glossinessFactor);
+    setBaseColor(material,
+        converted.baseColor,
+        nullptr,
+        diffuseRef.valid(),
+        vertexColors);
+    if (vertexColors && !diffuseRef.valid()) {
+      // The vertex colors multiply the converted color.
+      scenes::setVec3(m_device,
+          material,
+          "baseColorFactor",
+          {converted.baseColor[0],
+              converted.baseColor[1],
+              converted.baseColor[2]});
+      scenes::setFloat(m_device, material, "opacity", converted.baseColor[3]);
+    }
+    scenes::setFloat(m_device, material, "metallic", converted.metallic);
+    scenes::setFloat(m_device, material, "roughness", converted.roughness);
+    return;
+  }
+  // Textured: the conversion is not linear, so it is baked texel by texel
+  // into a base color image and a metallic-roughness image (G roughness,
+  // B metallic) at the larger texture's size, both read through the
+  // diffuse texture's mapping (else the specular-glossiness one's).
+  const TextureRef &mapping = hasDiffuse ? diffuseRef : specularRef;
+  if (hasDiffuse && hasSpecular && !sameMapping(diffuseRef, specularRef))
+    note(
+        "KHR_materials_pbrSpecularGlossiness textures with different "
+        "texture coordinates or transforms are converted through the "
+        "diffuse texture's");
+  const size_t width = std::max(diffuse.width, specular.width);
+  const size_t height = std::max(diffuse.height, specular.height);
+  auto at = [](const Source &source, size_t x, size_t y, size_t w, size_t h) {
+    const size_t sx = std::min(source.width - 1, x * source.width / w);
+    const size_t sy = std::min(source.height - 1, y * source.height / h);
+    return source.texels[sy * source.width + sx];
+  };
+  std::vector<Vec4> baseTexels(width * height),
+      metallicRoughness(width * height);
+  for (size_t y = 0; y < height; y++)
+    for (size_t x = 0; x < width; x++) {
+      Vec4 d = diffuseFactor;
+      if (hasDiffuse) {
+        const Vec4 t = at(diffuse, x, y, width, height);
+        for (int i = 0; i < 4; i++)
+          d[size_t(i)] *= t[size_t(i)];
+      }
+      Vec3 sp = specularFactor;
+      float gloss = glossinessFactor;
+      if (hasSpecular) {
+        const Vec4 t = at(specular, x, y, width, height);
+        for (int i = 0; i < 3; i++)
+          sp[size_t(i)] *= t[size_t(i)];
+        gloss *= t[3];
+      }
+      const MetallicRoughness converted = fromSpecularGlossiness(d, sp, gloss);
+      baseTexels[y * width + x] = converted.baseColor;
+      metallicRoughness[y * width + x] = {
+          0.f, converted.roughness, converted.metallic, 1.f};
+    }
+  ANARIArray2D baseImage = scenes::newArray2D(m_device,
+      ANARI_FLOAT32_VEC4,
+      baseTexels.data(),
+      width,
+      height,
+      sizeof(Vec4));
+  ANARIArray2D mrImage = scenes::newArray2D(m_device,
+      ANARI_FLOAT32_VEC4,
+      metallicRoughness.data(),
+      width,
+      height,
+      sizeof(Vec4));
+  setBaseColor(material,
+      {1.f, 1.f, 1.f, 1.f},
+      newSampler(mapping, false, scaleMap({1.f, 1.f, 1.f, 1.f}), baseImage),
+      true,
+      vertexColors);
+  for (auto [name, channel] : {std::pair{"metallic", 2}, {"roughness", 1}}) {
+    ANARISampler sampler =
+        newSampler(mapping, false, channelMap(channel, 1.f), mrImage);
+    if (sampler) {
+      scenes::setObject(m_device, material, name, ANARI_SAMPLER, sampler);
+      anariRelease(m_device, sampler);
+    }
+  }
+  anariRelease(m_device, baseImage);
+  anariRelease(m_device, mrImage);
+}
+
 ANARIMaterial GltfImporter::material(int index, bool vertexColors)
 {
   const auto key = std::make_pair(index, vertexColors);
@@ -1054,38 +1353,52 @@ ANARIMaterial GltfImporter::newMaterial(int index, bool vertexColors)
           ? m_model.materials[size_t(index)]
           : kDefault;
   const tinygltf::PbrMetallicRoughness &pbr = m.pbrMetallicRoughness;
-  Vec4 base{1.f, 1.f, 1.f, 1.f};
-  if (pbr.baseColorFactor.size() == 4)
-    for (int i = 0; i < 4; i++)
-      base[i] = float(pbr.baseColorFactor[size_t(i)]);
-
-  const TextureRef baseTexture = textureRef(pbr.baseColorTexture);
-  ANARISampler baseSampler = baseTexture.valid()
-                                 ? newSampler(baseTexture, true, scaleMap(base))
-                                 : nullptr;
-  if (baseSampler) {
-    // The sampled alpha (times the factor's) becomes the opacity.
-    scenes::setObject(
-        m_device, material, "baseColor", ANARI_SAMPLER, baseSampler);
-    anariRelease(m_device, baseSampler);
-  } else if (vertexColors) {
-    // The geometry's vertex.color already carries the factor.
-    scenes::setString(m_device, material, "baseColor", "color");
+  if (const tinygltf::Value *specularGlossiness =
+          extension(m.extensions, "KHR_materials_pbrSpecularGlossiness")) {
+    setSpecularGlossiness(material, *specularGlossiness, vertexColors);
   } else {
-    scenes::setVec3(
-        m_device, material, "baseColor", {base[0], base[1], base[2]});
-    scenes::setFloat(m_device, material, "opacity", base[3]);
+    Vec4 base{1.f, 1.f, 1.f, 1.f};
+    if (pbr.baseColorFactor.size() == 4)
+      for (int i = 0; i < 4; i++)
+        base[i] = float(pbr.baseColorFactor[size_t(i)]);
+    const TextureRef baseTexture = textureRef(pbr.baseColorTexture);
+    setBaseColor(material,
+        base,
+        baseTexture.valid() ? newSampler(baseTexture, true, scaleMap(base))
+                            : nullptr,
+        baseTexture.valid(),
+        vertexColors);
+    setScalar(material,
+        "metallic",
+        float(pbr.metallicFactor),
+        textureRef(pbr.metallicRoughnessTexture),
+        2);
+    setScalar(material,
+        "roughness",
+        float(pbr.roughnessFactor),
+        textureRef(pbr.metallicRoughnessTexture),
+        1);
   }
-  setScalar(material,
-      "metallic",
-      float(pbr.metallicFactor),
-      textureRef(pbr.metallicRoughnessTexture),
-      2);
-  setScalar(material,
-      "roughness",
-      float(pbr.roughnessFactor),
-      textureRef(pbr.metallicRoughnessTexture),
-      1);
+  if (extension(m.extensions, "KHR_materials_unlit")) {
+    if (m_unlitMaterials) {
+      const bool on = true;
+      anariSetParameter(m_device, material, "unlit", ANARI_BOOL, &on);
+    } else {
+      note(
+          "the device does not implement PRISM_MATERIAL_UNLIT; unlit "
+          "(KHR_materials_unlit) materials are shaded as lit");
+    }
+  }
+  // glTF surfaces are single-sided unless their material says otherwise.
+  if (m_singleSided) {
+    const bool doubleSided = m.doubleSided;
+    anariSetParameter(
+        m_device, material, "doubleSided", ANARI_BOOL, &doubleSided);
+  } else if (!m.doubleSided) {
+    note(
+        "the device does not implement PRISM_MATERIAL_DOUBLE_SIDED; "
+        "single-sided materials show their back faces");
+  }
   if (m.normalTexture.index >= 0) {
     ANARISampler normal = newSampler(textureRef(m.normalTexture),
         false,
@@ -1397,11 +1710,21 @@ bool GltfImporter::buildPrimitive(int meshIndex,
     }
   }
   bool vertexColors = false;
+  // glTF multiplies COLOR_0 into the base color. Alone with the base color
+  // factor, the factor goes into the colors here; with a texture (or a
+  // converted specular-glossiness color) the device multiplies them
+  // (PRISM_MATERIAL_BASE_COLOR_FACTOR).
+  const bool specularGlossiness =
+      gm && extension(gm->extensions, "KHR_materials_pbrSpecularGlossiness");
+  const bool deviceMultiplies =
+      specularGlossiness
+      || (gm && gm->pbrMetallicRoughness.baseColorTexture.index >= 0);
   if (attribute("COLOR_0") >= 0) {
-    if (gm && gm->pbrMetallicRoughness.baseColorTexture.index >= 0) {
+    if (deviceMultiplies && !m_baseColorFactor) {
       note(
-          "vertex colors together with a base color texture are not "
-          "supported; COLOR_0 is ignored there");
+          "the device does not implement PRISM_MATERIAL_BASE_COLOR_FACTOR; "
+          "vertex colors (COLOR_0) are ignored where a base color texture "
+          "or specular-glossiness color would multiply them");
     } else {
       std::vector<float> colors;
       if (!readAccessor(
@@ -1416,7 +1739,8 @@ bool GltfImporter::buildPrimitive(int meshIndex,
       // ANARI multiplies nothing into an attribute color, so the base color
       // factor goes into the colors here.
       Vec4 factor{1.f, 1.f, 1.f, 1.f};
-      if (gm && gm->pbrMetallicRoughness.baseColorFactor.size() == 4)
+      if (gm && !deviceMultiplies
+          && gm->pbrMetallicRoughness.baseColorFactor.size() == 4)
         for (int i = 0; i < 4; i++)
           factor[i] =
               float(gm->pbrMetallicRoughness.baseColorFactor[size_t(i)]);
@@ -1631,6 +1955,12 @@ LoadResult GltfImporter::load()
 
   const bool transformArrays =
       scenes::hasExtension(m_device, "ANARI_KHR_INSTANCE_TRANSFORM_ARRAY");
+  m_unlitMaterials =
+      scenes::hasExtension(m_device, "ANARI_PRISM_MATERIAL_UNLIT");
+  m_baseColorFactor =
+      scenes::hasExtension(m_device, "ANARI_PRISM_MATERIAL_BASE_COLOR_FACTOR");
+  m_singleSided =
+      scenes::hasExtension(m_device, "ANARI_PRISM_MATERIAL_DOUBLE_SIDED");
   std::vector<ANARIObject> instances;
   for (const auto &[meshIndex, placements] : m_meshPlacements) {
     if (!buildMeshGroup(meshIndex)) {

@@ -47,6 +47,17 @@ the outputs are committed, so this only reruns when the assets change):
                         glTF BRDF's answer for a 48x48 view, Schlick's
                         F = 0.04 + 0.96 (1 - cos)^5 of each ray averaged over
                         its pixel (the reflection sees the sky, 1)
+  material extensions   unlit.gltf (a checker quad, KHR_materials_unlit, under a
+                        strong light), vertex-color-texture.gltf (the checker
+                        times COLOR_0 (0.5, 1, 0.25)), spec-gloss.gltf (four
+                        KHR_materials_pbrSpecularGlossiness quads: chrome,
+                        black plastic (specular 0.04), a colored dielectric
+                        and a textured one), single-sided.gltf (two quads
+                        turned away from the camera, the left single-sided),
+                        expected-*.pfm for each: what an exact answer gives
+                        (linear texel colors, products, the published
+                        specular-glossiness conversion); all seen through an
+                        orthographic camera that the quads fill exactly
   unsupported           draco-*.gltf (KHR_draco_mesh_compression), basisu-*.gltf
   extensions            (KHR_texture_basisu; the KTX2 image is only the magic
                         number), meshopt-*.gltf (EXT_meshopt_compression):
@@ -465,6 +476,182 @@ def expected_fresnel(size, subsamples=16):
     return header + struct.pack("<%df" % len(rows), *rows)
 
 
+def linear(c8):
+    """An 8-bit sRGB value as linear."""
+    c = c8 / 255.0
+    return c / 12.92 if c <= 0.04045 else ((c + 0.055) / 1.055) ** 2.4
+
+
+CHECKER_QUADRANTS = {(0, 0): (220, 30, 30), (1, 0): (30, 200, 60),
+                     (0, 1): (40, 60, 220), (1, 1): (240, 220, 40)}
+
+
+def checker_linear(u, v):
+    """checker.png's linear color at texture coordinates (u, v), v down."""
+    c = CHECKER_QUADRANTS[(min(int(u * 2), 1), min(int(v * 2), 1))]
+    return tuple(linear(x) for x in c)
+
+
+def quads_gltf(quads, materials, images=None, extensions_used=None,
+               lights=False, view_half=1.0):
+    """Unit-textured 2 * half squares at z = 0, each (cx, cy, half, material,
+    facing_camera, color or None), seen by an orthographic camera at z = 3
+    whose view (2 * view_half square) they fill."""
+    buf = Buffer()
+    primitives = []
+    for cx, cy, half, material, facing, color in quads:
+        corners = [(cx - half, cy - half), (cx + half, cy - half),
+                   (cx + half, cy + half), (cx - half, cy + half)]
+        attributes = {
+            "POSITION": buf.accessor("f", FLOAT, "VEC3",
+                                     [(x, y, 0.0) for x, y in corners],
+                                     bounds=True),
+            "NORMAL": buf.accessor("f", FLOAT, "VEC3",
+                                   [(0.0, 0.0, 1.0 if facing else -1.0)] * 4),
+            "TEXCOORD_0": buf.accessor("f", FLOAT, "VEC2",
+                                       [(0.0, 1.0), (1.0, 1.0), (1.0, 0.0),
+                                        (0.0, 0.0)])}
+        if color:
+            attributes["COLOR_0"] = buf.accessor("f", FLOAT, "VEC4",
+                                                 [color] * 4)
+        order = [0, 1, 2, 0, 2, 3] if facing else [0, 2, 1, 0, 3, 2]
+        primitives.append({"attributes": attributes, "material": material,
+                           "indices": buf.accessor("H", USHORT, "SCALAR", order)})
+    gltf = {
+        "asset": {"version": "2.0", "generator": "prism tests/cli/data/make_assets.py"},
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1]}],
+        "nodes": [{"mesh": 0}, {"camera": 0, "translation": [0.0, 0.0, 3.0]}],
+        "meshes": [{"primitives": primitives}],
+        "materials": materials,
+        "cameras": [{"type": "orthographic", "orthographic": {
+            "xmag": view_half, "ymag": view_half, "znear": 0.1, "zfar": 10.0}}],
+    }
+    if images:
+        gltf["images"] = [{"uri": data_uri("image/png", png)} for png in images]
+        gltf["textures"] = [{"source": i, "sampler": 0}
+                            for i in range(len(images))]
+        gltf["samplers"] = [{"magFilter": 9728, "minFilter": 9728}]
+    if extensions_used:
+        gltf["extensionsUsed"] = list(extensions_used)
+    if lights:
+        gltf.setdefault("extensionsUsed", []).append("KHR_lights_punctual")
+        gltf["scenes"][0]["nodes"].append(2)
+        gltf["nodes"].append({"extensions": {"KHR_lights_punctual": {"light": 0}}})
+        gltf["extensions"] = {"KHR_lights_punctual": {"lights": [
+            {"type": "directional", "intensity": 10.0}]}}
+    return finish_gltf(gltf, buf)
+
+
+def expected_image(size, view_half, color_at):
+    """PFM (bottom row first) of color_at(x, y) at each pixel centre, in
+    world units on the z = 0 plane the orthographic camera sees."""
+    values = []
+    for row in range(size):
+        for col in range(size):
+            x = ((col + 0.5) / size * 2 - 1) * view_half
+            y = ((row + 0.5) / size * 2 - 1) * view_half
+            values += list(color_at(x, y))
+    header = b"PF\n%d %d\n-1.0\n" % (size, size)
+    return header + struct.pack("<%df" % len(values), *values)
+
+
+def unlit_files():
+    material = {"pbrMetallicRoughness": {"baseColorTexture": {"index": 0},
+                                         "metallicFactor": 0.0},
+                "extensions": {"KHR_materials_unlit": {}}}
+    scene = quads_gltf([(0, 0, 1, 0, True, None)], [material],
+                       images=[checker_png()],
+                       extensions_used=["KHR_materials_unlit"], lights=True)
+    expected = expected_image(32, 1.0, lambda x, y: checker_linear(
+        (x + 1) / 2, (1 - y) / 2))
+    return scene, expected
+
+
+VERTEX_COLOR = (0.5, 1.0, 0.25, 1.0)
+
+
+def vertex_color_files():
+    material = {"pbrMetallicRoughness": {"baseColorTexture": {"index": 0},
+                                         "metallicFactor": 0.0}}
+    scene = quads_gltf([(0, 0, 1, 0, True, VERTEX_COLOR)], [material],
+                       images=[checker_png()])
+    expected = expected_image(32, 1.0, lambda x, y: tuple(
+        c * k for c, k in zip(checker_linear((x + 1) / 2, (1 - y) / 2),
+                              VERTEX_COLOR)))
+    return scene, expected
+
+
+def spec_gloss_base(diffuse, specular, glossiness):
+    """The published specular-glossiness to metallic-roughness conversion
+    (linear colors): (base rgb, metallic, roughness)."""
+    def brightness(c):
+        return math.sqrt(0.299 * c[0] ** 2 + 0.587 * c[1] ** 2
+                         + 0.114 * c[2] ** 2)
+    d, sp = brightness(diffuse), brightness(specular)
+    one_minus = 1 - max(specular)
+    metallic = 0.0
+    if sp >= 0.04:
+        a, b, c = 0.04, d * one_minus / 0.96 + sp - 0.08, 0.04 - sp
+        metallic = min(max((-b + math.sqrt(max(b * b - 4 * a * c, 0))) / (2 * a),
+                           0.0), 1.0)
+    base = []
+    for i in range(3):
+        from_diffuse = diffuse[i] * one_minus / 0.96 / max(1 - metallic, 1e-6)
+        from_specular = (specular[i] - 0.04 * (1 - metallic)) / max(metallic, 1e-6)
+        t = metallic * metallic
+        base.append(min(max(from_diffuse + (from_specular - from_diffuse) * t,
+                            0.0), 1.0))
+    return tuple(base), metallic, 1 - glossiness
+
+
+SPEC_GLOSS = [  # (cx, cy, diffuse, specular, glossiness, textured)
+    (-1, 1, (0.0, 0.0, 0.0), (1.0, 1.0, 1.0), 1.0, False),   # chrome
+    (1, 1, (0.0, 0.0, 0.0), (0.04, 0.04, 0.04), 1.0, False),  # black plastic
+    (-1, -1, (0.5, 0.25, 0.1), (0.04, 0.04, 0.04), 0.5, False),
+    (1, -1, (1.0, 1.0, 1.0), (1.0, 1.0, 1.0), 1.0, True),     # textured
+]
+
+
+def spec_gloss_files():
+    # The textured quad: diffuse checker.png; specular-glossiness a 2x2
+    # image of black specular (sRGB 0) and glossiness 1.
+    black_glossy = png_rgba(2, 2, [[(0, 0, 0, 255)] * 2] * 2)
+    materials, quads = [], []
+    for i, (cx, cy, diffuse, specular, gloss, textured) in enumerate(SPEC_GLOSS):
+        ext = {"diffuseFactor": list(diffuse) + [1.0],
+               "specularFactor": list(specular), "glossinessFactor": gloss}
+        if textured:
+            ext["diffuseTexture"] = {"index": 0}
+            ext["specularGlossinessTexture"] = {"index": 1}
+        materials.append({"extensions": {
+            "KHR_materials_pbrSpecularGlossiness": ext}})
+        quads.append((cx, cy, 1, i, True, None))
+    scene = quads_gltf(quads, materials, images=[checker_png(), black_glossy],
+                       extensions_used=["KHR_materials_pbrSpecularGlossiness"],
+                       view_half=2.0)
+
+    def base_at(x, y):
+        for cx, cy, diffuse, specular, gloss, textured in SPEC_GLOSS:
+            if abs(x - cx) < 1 and abs(y - cy) < 1:
+                if textured:
+                    diffuse = checker_linear((x - cx + 1) / 2, (cy + 1 - y) / 2)
+                    specular = (0.0, 0.0, 0.0)
+                return spec_gloss_base(diffuse, specular, gloss)[0]
+        return (0.0, 0.0, 0.0)
+    return scene, expected_image(32, 2.0, base_at)
+
+
+def single_sided_file():
+    red = {"pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.1, 0.1, 1.0],
+                                    "metallicFactor": 0.0}}
+    both = dict(red, doubleSided=True)
+    # Both turned away from the camera: the left (single-sided, glTF's
+    # default) is invisible, the right (doubleSided) shows its back.
+    return quads_gltf([(-1, 0, 1, 0, False, None), (1, 0, 1, 1, False, None)],
+                      [red, both], view_half=2.0)
+
+
 def plane_scene():
     buf = Buffer()
     quad, indices = quad_accessors(buf, half=2.0)
@@ -640,6 +827,12 @@ def main():
     write("expected-fresnel-48.pfm", expected_fresnel(48))
     write("glowing.obj", GLOWING_OBJ)
     write("normal-mapped-plane.gltf", normal_mapped_plane(None))
+    for stem, files in (("unlit", unlit_files()),
+                        ("vertex-color-texture", vertex_color_files()),
+                        ("spec-gloss", spec_gloss_files())):
+        write(stem + ".gltf", files[0])
+        write("expected-%s-32.pfm" % stem, files[1])
+    write("single-sided.gltf", single_sided_file())
     for extension, stem in (("KHR_draco_mesh_compression", "draco"),
                             ("KHR_texture_basisu", "basisu"),
                             ("EXT_meshopt_compression", "meshopt")):
