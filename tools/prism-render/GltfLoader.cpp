@@ -38,6 +38,9 @@ using scenes::operator*;
 constexpr size_t kMaxAccessorElements = size_t(1) << 28;
 constexpr size_t kMaxZeroAccessorElements = size_t(1) << 24;
 constexpr size_t kMaxNodeVisits = 10'000'000;
+// Radius of the spheres and curves glTF points and lines become, as a
+// fraction of the scene's diagonal (about 2 pixels across at 1000 pixels).
+constexpr float kPointAndLineRadius = 0.001f;
 
 // ---- JSON values (tinygltf::Value asserts on wrong-kind lookups) ----------
 
@@ -673,6 +676,11 @@ class GltfImporter
       scenes::Bounds &bounds);
   ANARIMaterial material(int index, bool vertexColors);
   // What the device offers beyond ANARI 1.1 for glTF (docs/extensions.md).
+  // Sphere and curve radius for glTF points and lines, in the object space
+  // of the mesh being built (see kPointAndLineRadius).
+  float m_objectRadius{0.f};
+  float m_worldRadius{0.f};
+  void choosePointAndLineRadius();
   bool m_unlitMaterials{false};
   bool m_baseColorFactor{false};
   bool m_singleSided{false};
@@ -1567,9 +1575,23 @@ bool GltfImporter::buildPrimitive(int meshIndex,
                             + std::to_string(primitiveIndex);
   const int mode =
       primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
-  if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP
+  const bool points = mode == TINYGLTF_MODE_POINTS;
+  const bool lines = mode == TINYGLTF_MODE_LINE
+                     || mode == TINYGLTF_MODE_LINE_LOOP
+                     || mode == TINYGLTF_MODE_LINE_STRIP;
+  if (!points && !lines && mode != TINYGLTF_MODE_TRIANGLES
+      && mode != TINYGLTF_MODE_TRIANGLE_STRIP
       && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
-    note("points and lines are not supported; such primitives are left out");
+    note("primitive mode " + std::to_string(mode)
+         + " is not a glTF mode; such primitives are left out");
+    return true;
+  }
+  const char *subtype = points ? "sphere" : lines ? "curve" : "triangle";
+  if ((points || lines)
+      && !scenes::hasSubtype(m_device, ANARI_GEOMETRY, subtype)) {
+    note(std::string("the device has no ") + subtype
+         + " geometry (KHR_GEOMETRY_" + (points ? "SPHERE" : "CURVE") + "); "
+         + (points ? "points" : "lines") + " are left out");
     return true;
   }
   if (!primitive.targets.empty())
@@ -1604,8 +1626,28 @@ bool GltfImporter::buildPrimitive(int meshIndex,
     if (i >= vertexCount)
       return fail(where + " has an index (" + std::to_string(i) + ") past its "
                   + std::to_string(vertexCount) + " vertices");
+  // Points become spheres and lines round curves, over their vertices
+  // rearranged in drawing order (`order`); a curve segment runs from each
+  // of `segmentStarts` to the next vertex.
+  std::vector<uint32_t> order, segmentStarts;
   std::vector<std::array<uint32_t, 3>> triangles;
-  if (mode == TINYGLTF_MODE_TRIANGLES) {
+  if (points) {
+    order = indices;
+  } else if (mode == TINYGLTF_MODE_LINE) {
+    for (size_t i = 0; i + 1 < indices.size(); i += 2) {
+      segmentStarts.push_back(uint32_t(order.size()));
+      order.push_back(indices[i]);
+      order.push_back(indices[i + 1]);
+    }
+  } else if (lines) {
+    if (indices.size() >= 2) {
+      order = indices;
+      if (mode == TINYGLTF_MODE_LINE_LOOP)
+        order.push_back(indices[0]);
+      for (size_t i = 0; i + 1 < order.size(); i++)
+        segmentStarts.push_back(uint32_t(i));
+    }
+  } else if (mode == TINYGLTF_MODE_TRIANGLES) {
     for (size_t i = 0; i + 2 < indices.size(); i += 3)
       triangles.push_back({indices[i], indices[i + 1], indices[i + 2]});
   } else {
@@ -1618,21 +1660,43 @@ bool GltfImporter::buildPrimitive(int meshIndex,
         triangles.push_back({indices[i - 1], indices[i - 2], indices[i]});
     }
   }
-  if (triangles.empty())
+  if (triangles.empty() && (points ? order.empty() : segmentStarts.empty()))
     return true;
+  // Per-vertex values as the geometry gets them: for points and lines in
+  // drawing order.
+  const size_t geometryVertices = order.empty() ? vertexCount : order.size();
+  auto arranged = [&](const std::vector<float> &values, size_t components) {
+    if (order.empty())
+      return values;
+    std::vector<float> out(order.size() * components);
+    for (size_t v = 0; v < order.size(); v++)
+      std::copy_n(
+          &values[order[v] * components], components, &out[v * components]);
+    return out;
+  };
 
-  ANARIGeometry geometry = anariNewGeometry(m_device, "triangle");
+  ANARIGeometry geometry = anariNewGeometry(m_device, subtype);
+  const std::vector<float> placed = arranged(positions, 3);
   scenes::setArray(m_device,
       geometry,
       "vertex.position",
       ANARI_FLOAT32_VEC3,
-      std::vector<Vec3>((const Vec3 *)positions.data(),
-          (const Vec3 *)positions.data() + vertexCount));
-  scenes::setArray(
-      m_device, geometry, "primitive.index", ANARI_UINT32_VEC3, triangles);
-  for (size_t v = 0; v < vertexCount; v++)
-    bounds.extend(
-        Vec3{positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]});
+      std::vector<Vec3>((const Vec3 *)placed.data(),
+          (const Vec3 *)placed.data() + geometryVertices));
+  const float radius = points || lines ? m_objectRadius : 0.f;
+  if (points || lines)
+    scenes::setFloat(m_device, geometry, "radius", radius);
+  if (lines)
+    scenes::setArray(
+        m_device, geometry, "primitive.index", ANARI_UINT32, segmentStarts);
+  else if (!points)
+    scenes::setArray(
+        m_device, geometry, "primitive.index", ANARI_UINT32_VEC3, triangles);
+  for (size_t v = 0; v < geometryVertices; v++)
+    for (float side : {-radius, radius})
+      bounds.extend(Vec3{placed[3 * v] + side,
+          placed[3 * v + 1] + side,
+          placed[3 * v + 2] + side});
 
   // Optional attributes: (glTF name, ANARI name, components, type).
   struct Optional
@@ -1650,7 +1714,8 @@ bool GltfImporter::buildPrimitive(int meshIndex,
   // NORMAL and TEXCOORD_n, kept for tangent generation.
   std::map<std::string, std::vector<float>> kept;
   for (const Optional &o : optional) {
-    if (attribute(o.gltf) < 0)
+    // Spheres and round curves have their own normals.
+    if (attribute(o.gltf) < 0 || ((points || lines) && o.minComponents != 2))
       continue;
     std::vector<float> &values = kept[o.gltf];
     if (!readAccessor(m_model,
@@ -1669,10 +1734,11 @@ bool GltfImporter::buildPrimitive(int meshIndex,
           where + " " + o.gltf + " has a different count than POSITION");
     }
     const ANARIDataType type = ANARIDataType(ANARI_FLOAT32 + components - 1);
+    const std::vector<float> data = arranged(values, size_t(components));
     ANARIArray1D array = scenes::newArray1D(m_device,
         type,
-        values.data(),
-        vertexCount,
+        data.data(),
+        geometryVertices,
         sizeof(float) * size_t(components));
     anariSetParameter(m_device, geometry, o.anari, ANARI_ARRAY1D, &array);
     anariRelease(m_device, array);
@@ -1689,7 +1755,8 @@ bool GltfImporter::buildPrimitive(int meshIndex,
           : nullptr;
   // glTF: a normal-mapped primitive without TANGENT gets MikkTSpace
   // tangents, one per triangle corner (mirrored UVs split vertices).
-  const int tangentTexCoord = gm ? normalMapTexCoord(*gm) : -1;
+  const int tangentTexCoord =
+      gm && !triangles.empty() ? normalMapTexCoord(*gm) : -1;
   if (tangentTexCoord >= 0 && attribute("TANGENT") < 0) {
     const auto uvs = kept.find("TEXCOORD_" + std::to_string(tangentTexCoord));
     if (uvs == kept.end()) {
@@ -1744,12 +1811,13 @@ bool GltfImporter::buildPrimitive(int meshIndex,
         for (int i = 0; i < 4; i++)
           factor[i] =
               float(gm->pbrMetallicRoughness.baseColorFactor[size_t(i)]);
-      std::vector<Vec4> rgba(vertexCount);
-      for (size_t v = 0; v < vertexCount; v++)
+      const std::vector<float> ordered = arranged(colors, size_t(components));
+      std::vector<Vec4> rgba(geometryVertices);
+      for (size_t v = 0; v < geometryVertices; v++)
         for (int i = 0; i < 4; i++)
           rgba[v][i] =
               factor[i]
-              * (i < components ? colors[v * size_t(components) + size_t(i)]
+              * (i < components ? ordered[v * size_t(components) + size_t(i)]
                                 : 1.f);
       scenes::setArray(
           m_device, geometry, "vertex.color", ANARI_FLOAT32_VEC4, rgba);
@@ -1773,11 +1841,81 @@ bool GltfImporter::buildPrimitive(int meshIndex,
   return true;
 }
 
+void GltfImporter::choosePointAndLineRadius()
+{
+  // glTF points and lines have no width: spheres and curves get a radius
+  // of kPointAndLineRadius times the diagonal of the world bounds of every
+  // placed mesh (from POSITION's min and max, else its values), so they
+  // show about 2 pixels wide in a 1000-pixel view framed to the scene.
+  bool needed = false;
+  for (const auto &[meshIndex, placements] : m_meshPlacements)
+    for (const tinygltf::Primitive &p :
+        m_model.meshes[size_t(meshIndex)].primitives)
+      needed |=
+          p.mode >= TINYGLTF_MODE_POINTS && p.mode <= TINYGLTF_MODE_LINE_STRIP;
+  if (!needed)
+    return;
+  scenes::Bounds world;
+  for (const auto &[meshIndex, placements] : m_meshPlacements)
+    for (const tinygltf::Primitive &p :
+        m_model.meshes[size_t(meshIndex)].primitives) {
+      const auto found = p.attributes.find("POSITION");
+      if (found == p.attributes.end() || found->second < 0
+          || size_t(found->second) >= m_model.accessors.size())
+        continue;
+      const tinygltf::Accessor &a = m_model.accessors[size_t(found->second)];
+      scenes::Bounds local;
+      if (a.minValues.size() == 3 && a.maxValues.size() == 3) {
+        local.extend(Vec3{float(a.minValues[0]),
+            float(a.minValues[1]),
+            float(a.minValues[2])});
+        local.extend(Vec3{float(a.maxValues[0]),
+            float(a.maxValues[1]),
+            float(a.maxValues[2])});
+      } else {
+        std::vector<float> values;
+        int components = 0;
+        std::string error; // reported when the primitive is built
+        if (readAccessor(
+                m_model, found->second, 3, 3, values, components, error))
+          for (size_t v = 0; v + 2 < values.size(); v += 3)
+            local.extend(Vec3{values[v], values[v + 1], values[v + 2]});
+      }
+      if (local.empty())
+        continue;
+      for (const Placement &placement : placements) {
+        const Mat4 m = toFloat(placement.worldFromObject);
+        for (int corner = 0; corner < 8; corner++)
+          world.extend(scenes::transformPoint(m,
+              {(corner & 1) ? local.upper[0] : local.lower[0],
+                  (corner & 2) ? local.upper[1] : local.lower[1],
+                  (corner & 4) ? local.upper[2] : local.lower[2]}));
+      }
+    }
+  const float diagonal =
+      world.empty() ? 0.f : scenes::length(world.upper - world.lower);
+  m_worldRadius = diagonal > 0.f && std::isfinite(diagonal)
+                      ? kPointAndLineRadius * diagonal
+                      : kPointAndLineRadius;
+}
+
 bool GltfImporter::buildMeshGroup(int meshIndex)
 {
   std::vector<ANARIObject> surfaces;
   scenes::Bounds bounds;
   const tinygltf::Mesh &mesh = m_model.meshes[size_t(meshIndex)];
+  // The world radius at the mesh's first placement's scale.
+  m_objectRadius = m_worldRadius;
+  if (const auto placed = m_meshPlacements.find(meshIndex);
+      placed != m_meshPlacements.end() && !placed->second.empty()) {
+    const Mat4d &m = placed->second.front().worldFromObject;
+    const double det = m[0] * (m[5] * m[10] - m[9] * m[6])
+                       - m[4] * (m[1] * m[10] - m[9] * m[2])
+                       + m[8] * (m[1] * m[6] - m[5] * m[2]);
+    const double scale = std::cbrt(std::fabs(det));
+    if (scale > 0.0 && std::isfinite(scale))
+      m_objectRadius = float(m_worldRadius / scale);
+  }
   for (size_t p = 0; p < mesh.primitives.size(); p++) {
     if (!buildPrimitive(meshIndex, int(p), surfaces, bounds)) {
       for (ANARIObject s : surfaces)
@@ -1961,6 +2099,7 @@ LoadResult GltfImporter::load()
       scenes::hasExtension(m_device, "ANARI_PRISM_MATERIAL_BASE_COLOR_FACTOR");
   m_singleSided =
       scenes::hasExtension(m_device, "ANARI_PRISM_MATERIAL_DOUBLE_SIDED");
+  choosePointAndLineRadius();
   std::vector<ANARIObject> instances;
   for (const auto &[meshIndex, placements] : m_meshPlacements) {
     if (!buildMeshGroup(meshIndex)) {

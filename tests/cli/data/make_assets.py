@@ -58,6 +58,14 @@ the outputs are committed, so this only reruns when the assets change):
                         (linear texel colors, products, the published
                         specular-glossiness conversion); all seen through an
                         orthographic camera that the quads fill exactly
+  points and lines      points-lines.gltf: one mesh under a node scaled by 2
+                        (positions halved) of POINTS (red, green and blue at
+                        x = -0.1, 0, 0.1 and a white one far off at (5, 5):
+                        the scene's diagonal is 7.23, so spheres and curves
+                        get radius 0.00723), a LINE_STRIP (yellow, y = -0.1),
+                        LINES (magenta, x = 0.12) and a LINE_LOOP (a cyan
+                        square whose closing edge is its left side), seen
+                        by an orthographic camera over [-0.15, 0.15]^2
   unsupported           draco-*.gltf (KHR_draco_mesh_compression), basisu-*.gltf
   extensions            (KHR_texture_basisu; the KTX2 image is only the magic
                         number), meshopt-*.gltf (EXT_meshopt_compression):
@@ -652,6 +660,46 @@ def single_sided_file():
                       [red, both], view_half=2.0)
 
 
+def points_lines_file():
+    buf = Buffer()
+
+    def primitive(mode, points, material, colors=None):
+        # The node scales by 2: positions are stored halved.
+        attributes = {"POSITION": buf.accessor(
+            "f", FLOAT, "VEC3", [(x / 2, y / 2, 0.0) for x, y in points],
+            bounds=True)}
+        if colors:
+            attributes["COLOR_0"] = buf.accessor("f", FLOAT, "VEC3", colors)
+        return {"attributes": attributes, "mode": mode, "material": material}
+    primitives = [
+        primitive(0, [(-0.1, 0.0), (0.0, 0.0), (0.1, 0.0), (5.0, 5.0)], 0,
+                  [(1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0),
+                   (1.0, 1.0, 1.0)]),
+        primitive(3, [(-0.1, -0.1), (0.0, -0.1), (0.1, -0.1)], 1),
+        primitive(1, [(0.12, 0.05), (0.12, 0.12)], 2),
+        primitive(2, [(-0.12, 0.06), (-0.06, 0.06), (-0.06, 0.12),
+                      (-0.12, 0.12)], 3),
+    ]
+
+    def flat(r, g, b):
+        return {"pbrMetallicRoughness": {"baseColorFactor": [r, g, b, 1.0],
+                                         "metallicFactor": 0.0},
+                "doubleSided": True}
+    gltf = {
+        "asset": {"version": "2.0", "generator": "prism tests/cli/data/make_assets.py"},
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1]}],
+        "nodes": [{"mesh": 0, "scale": [2.0, 2.0, 2.0]},
+                  {"camera": 0, "translation": [0.0, 0.0, 3.0]}],
+        "meshes": [{"primitives": primitives}],
+        "materials": [flat(1, 1, 1), flat(1, 1, 0), flat(1, 0, 1),
+                      flat(0, 1, 1)],
+        "cameras": [{"type": "orthographic", "orthographic": {
+            "xmag": 0.15, "ymag": 0.15, "znear": 0.1, "zfar": 10.0}}],
+    }
+    return finish_gltf(gltf, buf)
+
+
 def plane_scene():
     buf = Buffer()
     quad, indices = quad_accessors(buf, half=2.0)
@@ -833,6 +881,7 @@ def main():
         write(stem + ".gltf", files[0])
         write("expected-%s-32.pfm" % stem, files[1])
     write("single-sided.gltf", single_sided_file())
+    write("points-lines.gltf", points_lines_file())
     for extension, stem in (("KHR_draco_mesh_compression", "draco"),
                             ("KHR_texture_basisu", "basisu"),
                             ("EXT_meshopt_compression", "meshopt")):
