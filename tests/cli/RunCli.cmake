@@ -18,6 +18,8 @@
 #   DIFF_ARGS       extra image-diff arguments (e.g. --tolerance-rmse|1e-5)
 #   UPDATABLE       when set and PRISM_UPDATE_REFERENCES=1 is in the
 #                   environment, outputs replace their references instead
+#   INTERRUPT_AFTER seconds after which the run gets SIGINT (Ctrl-C), by
+#                   coreutils' timeout
 #   FIRST_ARGS      arguments of an earlier run in the same folder (must
 #                   succeed), e.g. to write a reference for CHECK
 #   PYTHON, CHECK_SCRIPT, CHECK
@@ -71,7 +73,11 @@ if(firstArgs)
   endif()
 endif()
 
-execute_process(COMMAND "${TOOL}" ${args}
+set(command "${TOOL}" ${args})
+if(INTERRUPT_AFTER)
+  set(command timeout --preserve-status -s INT ${INTERRUPT_AFTER} ${command})
+endif()
+execute_process(COMMAND ${command}
   WORKING_DIRECTORY "${WORKDIR}"
   RESULT_VARIABLE status
   OUTPUT_VARIABLE stdout

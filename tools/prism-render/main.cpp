@@ -26,10 +26,13 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <memory>
+#include <mutex>
 #include <numbers>
 #include <set>
 #include <thread>
@@ -45,6 +48,44 @@ using scenes::operator*;
 
 constexpr int kExitFailure = 1; // the scene, the device or the output failed
 constexpr int kExitUsage = 2;   // the command line asks for the impossible
+constexpr int kExitInterrupted = 128 + SIGINT; // Ctrl-C, as shells report it
+
+// Set by the SIGINT handler; the render loop stops at the next check.
+volatile std::sig_atomic_t g_interrupted = 0;
+
+extern "C" void onInterrupt(int)
+{
+  g_interrupted = 1;
+  // A second Ctrl-C ends the process at once.
+  std::signal(SIGINT, SIG_DFL);
+}
+
+// Counts the frames the device reports done (KHR_FRAME_COMPLETION_CALLBACK).
+// NOTE: onFrame runs on a device thread.
+class FrameCompletions
+{
+ public:
+  static void onFrame(const void *user, ANARIDevice, ANARIFrame)
+  {
+    auto *self = (FrameCompletions *)user;
+    {
+      std::lock_guard lock(self->m_mutex);
+      self->m_done++;
+    }
+    self->m_changed.notify_all();
+  }
+  // Whether `count` frames are done, waiting at most `timeout` for it.
+  bool waitFor(uint64_t count, std::chrono::milliseconds timeout)
+  {
+    std::unique_lock lock(m_mutex);
+    return m_changed.wait_for(lock, timeout, [&] { return m_done >= count; });
+  }
+
+ private:
+  std::mutex m_mutex;
+  std::condition_variable m_changed;
+  uint64_t m_done{0};
+};
 
 struct StatusState
 {
@@ -264,6 +305,14 @@ int run(int argc, char **argv)
         tbb::global_control::max_allowed_parallelism, options.threads);
 #endif
 
+  // Ctrl-C from here on: the run stops, says so and writes nothing.
+  std::signal(SIGINT, onInterrupt);
+  auto interrupted = []() {
+    return g_interrupted != 0;
+  };
+  const std::string interruptedMessage =
+      "interrupted (Ctrl-C); no image written";
+
   Session session;
   session.status.verbose = options.verbose;
   session.library = anariLoadLibrary(
@@ -342,6 +391,8 @@ int run(int argc, char **argv)
   }
   scenes::Scene &scene = loaded.scene;
   session.keep(scene.world);
+  if (interrupted())
+    return fail(interruptedMessage, kExitInterrupted);
   for (const std::string &note : scene.notes)
     console::warning(note);
   if (!loaded.ok())
@@ -513,6 +564,26 @@ int run(int argc, char **argv)
           + std::to_string(options.samplesPerPixel));
     }
   }
+  // Devices that call back when a frame is done let the loop wait for that
+  // and still notice Ctrl-C; bench runs wait plainly, to time frames alone
+  // (Ctrl-C stops them between frames).
+  FrameCompletions completions;
+  const bool watchCompletion =
+      options.benchFrames == 0 && has("ANARI_KHR_FRAME_COMPLETION_CALLBACK");
+  if (watchCompletion) {
+    const ANARIFrameCompletionCallback callback = &FrameCompletions::onFrame;
+    anariSetParameter(device,
+        frame,
+        "frameCompletionCallback",
+        ANARI_FRAME_COMPLETION_CALLBACK,
+        &callback);
+    // VOID_POINTER values are passed as the pointer itself (spec).
+    anariSetParameter(device,
+        frame,
+        "frameCompletionCallbackUserData",
+        ANARI_VOID_POINTER,
+        &completions);
+  }
   anariCommitParameters(device, frame);
 
   const bool showProgress = !options.quiet && console::stderrIsTerminal();
@@ -525,10 +596,33 @@ int run(int argc, char **argv)
     Progress progress(
         showProgress, frames, options.benchFrames > 0 ? "frames" : "samples");
     const auto start = std::chrono::steady_clock::now();
-    for (uint32_t i = 0; i < frames; i++) {
+    for (uint32_t i = 0; i < frames && !interrupted(); i++) {
       const auto frameStart = std::chrono::steady_clock::now();
       anariRenderFrame(device, frame);
-      if (showProgress) {
+      if (watchCompletion) {
+        // Woken by the device when the frame is done, and every 20 ms to
+        // see whether Ctrl-C came or the progress bar should move.
+        while (!completions.waitFor(i + 1, std::chrono::milliseconds(20))) {
+          if (interrupted()) {
+            anariDiscardFrame(device, frame);
+            break;
+          }
+          if (!showProgress)
+            continue;
+          float partial = 0.f;
+          anariGetProperty(device,
+              frame,
+              "renderProgress",
+              ANARI_FLOAT32,
+              &partial,
+              sizeof(partial),
+              ANARI_NO_WAIT);
+          progress.update(i + std::clamp(double(partial), 0.0, 1.0));
+        }
+        anariFrameReady(device, frame, ANARI_WAIT);
+        if (showProgress && !interrupted())
+          progress.update(i + 1);
+      } else if (showProgress) {
         while (!anariFrameReady(device, frame, ANARI_NO_WAIT)) {
           float partial = 0.f;
           anariGetProperty(device,
@@ -554,6 +648,8 @@ int run(int argc, char **argv)
             .count();
     progress.finish();
   }
+  if (interrupted())
+    return fail(interruptedMessage, kExitInterrupted);
   if (session.status.errors.load() > errorsBeforeRender)
     return fail(
         "the device reported errors while rendering (see above); "
