@@ -75,7 +75,10 @@ endif()
 
 set(command "${TOOL}" ${args})
 if(INTERRUPT_AFTER)
-  set(command timeout --preserve-status -s INT ${INTERRUPT_AFTER} ${command})
+  # --foreground: the signal goes to the tool alone, once, as a terminal's
+  # Ctrl-C does.
+  set(command timeout --foreground --preserve-status -s INT ${INTERRUPT_AFTER}
+    ${command})
 endif()
 execute_process(COMMAND ${command}
   WORKING_DIRECTORY "${WORKDIR}"

@@ -16,6 +16,8 @@
 
 #include <anari/anari.h>
 
+#include <unistd.h>
+
 #ifdef PRISM_RENDER_HAS_TBB
 #include <tbb/global_control.h>
 #endif
@@ -30,6 +32,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <memory>
 #include <mutex>
@@ -52,12 +55,23 @@ constexpr int kExitInterrupted = 128 + SIGINT; // Ctrl-C, as shells report it
 
 // Set by the SIGINT handler; the render loop stops at the next check.
 volatile std::sig_atomic_t g_interrupted = 0;
+std::atomic<long long> g_firstInterruptMs{0};
 
 extern "C" void onInterrupt(int)
 {
-  g_interrupted = 1;
-  // A second Ctrl-C ends the process at once.
-  std::signal(SIGINT, SIG_DFL);
+  // Only async-signal-safe calls here.
+  timespec now{};
+  clock_gettime(CLOCK_MONOTONIC, &now);
+  const long long ms = now.tv_sec * 1000ll + now.tv_nsec / 1000000;
+  if (!g_interrupted) {
+    g_firstInterruptMs = ms;
+    g_interrupted = 1;
+  } else if (ms - g_firstInterruptMs >= 1000) {
+    // Ctrl-C again, a second later: end the process at once. (Sooner, it
+    // is the same Ctrl-C delivered twice, as wrappers that signal both the
+    // process and its group do.)
+    _exit(kExitInterrupted);
+  }
 }
 
 // Counts the frames the device reports done (KHR_FRAME_COMPLETION_CALLBACK).
@@ -219,6 +233,8 @@ int fail(const std::string &message, int code = kExitFailure)
 
 int run(int argc, char **argv)
 {
+  // Ctrl-C from here on: the run stops, says so and writes nothing.
+  std::signal(SIGINT, onInterrupt);
   const ParseResult parsed = parseOptions(argc, argv);
   if (!parsed.ok()) {
     console::error(parsed.error);
@@ -305,8 +321,6 @@ int run(int argc, char **argv)
         tbb::global_control::max_allowed_parallelism, options.threads);
 #endif
 
-  // Ctrl-C from here on: the run stops, says so and writes nothing.
-  std::signal(SIGINT, onInterrupt);
   auto interrupted = []() {
     return g_interrupted != 0;
   };
