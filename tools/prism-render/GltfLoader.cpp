@@ -2146,7 +2146,7 @@ LoadResult GltfImporter::load()
     }
   }
   if (instances.empty()) {
-    fail("the scene has no triangles to render");
+    fail("the scene has no triangles, points or lines to render");
     return std::move(m_result);
   }
   placeCamera();
