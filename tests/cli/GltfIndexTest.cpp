@@ -1,7 +1,6 @@
-// glTF indices checked as the JSON writes them (GltfIndexCheck), and the
-// small JSON reader under it.
+// glTF indices checked as the JSON writes them (GltfIndexCheck), and how
+// it reads the JSON (nlohmann's parser, integers exact, literals kept).
 #include "GltfIndexCheck.h"
-#include "JsonDocument.h"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +12,8 @@ namespace {
 using namespace prism::render;
 
 // A file with one of everything that holds an index; each $name is replaced
-// by the value the test gives, or 0.
+// by the value the test gives, or 0. (The extras hold 1e308, not 1e999:
+// nlohmann's parser, tinygltf's too, refuses a float that overflows.)
 const char *kTemplate = R"({
   "asset": {"version": "2.0"},
   "scene": $scene,
@@ -32,7 +32,7 @@ const char *kTemplate = R"({
                                                   "texCoord": $texCoord}},
     "extensions": {"KHR_materials_clearcoat": {
       "clearcoatTexture": {"index": $clearcoatTexture}}},
-    "extras": {"anything": [1e999, "\u0000", {"index": -5}]}}],
+    "extras": {"anything": [1e308, "\u0000", {"index": -5}]}}],
   "textures": [{"sampler": $sampler, "source": $source,
                 "extensions": {"EXT_texture_webp": {"source": $webp}}}],
   "samplers": [{"magFilter": $magFilter}],
@@ -198,31 +198,49 @@ TEST(GltfIndexCheck, GlbJsonChunk)
   EXPECT_EQ(glbJsonChunk("glTF"), "");
 }
 
-TEST(JsonDocument, KeepsIntegersExactly)
+TEST(GltfJson, KeepsIntegersExactly)
 {
-  const JsonDocument d = parseJson(
+  const GltfJson d = parseGltfJson(
       "\xEF\xBB\xBF{\"a\": [0, -3, 18446744073709551615, "
       "18446744073709551616, 1.0, 2e3, -0], \"s\": "
       "\"x\\\"\\u00e9\\ud83d\\ude00\"}");
   ASSERT_TRUE(d.ok()) << d.error;
-  const JsonValue *a = d.root.find("a");
-  ASSERT_TRUE(a && a->isArray());
-  ASSERT_EQ(a->items.size(), 7u);
-  EXPECT_TRUE(a->items[0].integer);
-  EXPECT_EQ(a->items[0].magnitude, 0u);
-  EXPECT_TRUE(a->items[1].negative);
-  EXPECT_EQ(a->items[1].magnitude, 3u);
-  EXPECT_EQ(a->items[2].magnitude, UINT64_MAX);
-  EXPECT_FALSE(a->items[2].overflow);
-  EXPECT_TRUE(a->items[3].overflow);
-  EXPECT_EQ(a->items[3].text, "18446744073709551616");
-  EXPECT_FALSE(a->items[4].integer);
-  EXPECT_FALSE(a->items[5].integer);
-  EXPECT_TRUE(a->items[6].negative);
-  EXPECT_EQ(d.root.find("s")->kind, JsonValue::Kind::String);
+  const nlohmann::json &a = d.root.at("a");
+  ASSERT_TRUE(a.is_array());
+  ASSERT_EQ(a.size(), 7u);
+  EXPECT_TRUE(a[0].is_number_unsigned());
+  EXPECT_EQ(a[0].get<uint64_t>(), 0u);
+  EXPECT_TRUE(a[1].is_number_integer() && !a[1].is_number_unsigned());
+  EXPECT_EQ(a[1].get<int64_t>(), -3);
+  EXPECT_TRUE(a[2].is_number_unsigned());
+  EXPECT_EQ(a[2].get<uint64_t>(), UINT64_MAX);
+  // Beyond 64 bits: a float, quoted as written.
+  EXPECT_TRUE(a[3].is_number_float());
+  EXPECT_EQ(d.text(a[3]), "18446744073709551616");
+  EXPECT_EQ(d.text(a[2]), "18446744073709551615");
+  EXPECT_TRUE(a[4].is_number_float());
+  EXPECT_EQ(d.text(a[4]), "1.0");
+  EXPECT_EQ(d.text(a[5]), "2e3");
+  EXPECT_EQ(d.text(a[6]), "0");
+  // Strings are decoded; long ones keep their first 256 bytes.
+  EXPECT_EQ(d.root.at("s").get<std::string>(), "x\"\u00e9\U0001F600");
+  const GltfJson uri =
+      parseGltfJson("{\"uri\": \"data:" + std::string(100000, 'A') + "\"}");
+  ASSERT_TRUE(uri.ok()) << uri.error;
+  EXPECT_EQ(
+      uri.root.at("uri").get<std::string>(), "data:" + std::string(251, 'A'));
 }
 
-TEST(JsonDocument, RejectsWhatIsNotJson)
+// The text of a duplicated key's float is the kept (last) one's.
+TEST(GltfJson, LiteralsFollowTheKeptDuplicate)
+{
+  const GltfJson d = parseGltfJson(R"({"a": 1.50, "b": [2.0], "a": 3.25})");
+  ASSERT_TRUE(d.ok()) << d.error;
+  EXPECT_EQ(d.text(d.root.at("a")), "3.25");
+  EXPECT_EQ(d.text(d.root.at("b")[0]), "2.0");
+}
+
+TEST(GltfJson, RejectsWhatIsNotJson)
 {
   for (const char *bad : {"",
            "{",
@@ -237,11 +255,14 @@ TEST(JsonDocument, RejectsWhatIsNotJson)
            "{} x",
            "nul",
            "\"\t\""})
-    EXPECT_FALSE(parseJson(bad).ok()) << bad;
-  // Nesting is bounded (the reader recurses).
-  EXPECT_TRUE(parseJson(std::string(100, '[') + std::string(100, ']')).ok());
-  const JsonDocument deep =
-      parseJson(std::string(100000, '[') + std::string(100000, ']'));
+    EXPECT_FALSE(parseGltfJson(bad).ok()) << bad;
+  EXPECT_NE(checkGltfIndices("{\"scene\": ").find("cannot check its indices"),
+      std::string::npos);
+  // Nesting is bounded.
+  EXPECT_TRUE(
+      parseGltfJson(std::string(100, '[') + std::string(100, ']')).ok());
+  const GltfJson deep =
+      parseGltfJson(std::string(100000, '[') + std::string(100000, ']'));
   EXPECT_NE(
       deep.error.find("nested deeper than 512 levels"), std::string::npos);
 }

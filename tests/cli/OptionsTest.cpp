@@ -1,12 +1,14 @@
 // prism-render's pieces that need no device: the command line, --param value
 // parsing, camera framing and the progress line.
 #include "CameraFraming.h"
+#include "Math.h"
 #include "Options.h"
 #include "Progress.h"
 #include "RendererParameters.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <vector>
@@ -150,15 +152,52 @@ TEST(CameraFraming, FitsTheBoundsAndHonoursOverrides)
   bounds.extend(prism::scenes::Vec3{-1.f, -1.f, -1.f});
   bounds.extend(prism::scenes::Vec3{1.f, 1.f, 1.f});
   Options options;
-  const CameraSetup framed = frameCamera({}, bounds, 1.f, options);
-  EXPECT_TRUE(framed.framed);
-  EXPECT_FLOAT_EQ(framed.at[0], 0.f);
-  // The bounding sphere (radius sqrt 3) fits the 40 degree field of view.
-  const float distance =
-      std::sqrt(framed.eye[0] * framed.eye[0] + framed.eye[1] * framed.eye[1]
-                + framed.eye[2] * framed.eye[2]);
-  EXPECT_NEAR(
-      distance, std::sqrt(3.f) / std::sin(20.f * 3.14159265f / 180.f), 1e-3f);
+  // A box, a flat panel and a long rod, in wide and tall images: every
+  // corner inside the frame's kFill, the tighter direction filled to it,
+  // the projection centred.
+  auto check = [&](const prism::scenes::Bounds &box, float aspect) {
+    const CameraSetup framed = frameCamera({}, box, aspect, options);
+    EXPECT_TRUE(framed.framed);
+    using prism::scenes::Vec3;
+    auto sub = [](const Vec3 &a, const Vec3 &b) {
+      return Vec3{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+    };
+    const Vec3 forward = prism::scenes::normalize(sub(framed.at, framed.eye));
+    const Vec3 right =
+        prism::scenes::normalize(prism::scenes::cross(forward, framed.up));
+    const Vec3 up = prism::scenes::cross(right, forward);
+    const float tanY = std::tan(framed.fovyDegrees * 3.14159265f / 360.f);
+    const float tanX = tanY * aspect;
+    float lowX = 1e9f, highX = -1e9f, lowY = 1e9f, highY = -1e9f;
+    for (int c = 0; c < 8; c++) {
+      const Vec3 corner{(c & 1) ? box.upper[0] : box.lower[0],
+          (c & 2) ? box.upper[1] : box.lower[1],
+          (c & 4) ? box.upper[2] : box.lower[2]};
+      const Vec3 p = sub(corner, framed.eye);
+      const float depth = prism::scenes::dot(p, forward);
+      ASSERT_GT(depth, 0.f);
+      const float x = prism::scenes::dot(p, right) / (depth * tanX);
+      const float y = prism::scenes::dot(p, up) / (depth * tanY);
+      lowX = std::min(lowX, x), highX = std::max(highX, x);
+      lowY = std::min(lowY, y), highY = std::max(highY, y);
+    }
+    // Inside the fill (a little slack for the centring's last shift).
+    EXPECT_LE(std::max({-lowX, highX, -lowY, highY}), kFill + 0.01f);
+    // Tight: the box spans kFill of the frame along one direction.
+    EXPECT_GT(std::max(highX - lowX, highY - lowY), 2.f * kFill - 0.03f);
+    EXPECT_NEAR(lowX + highX, 0.f, 0.02f);
+    EXPECT_NEAR(lowY + highY, 0.f, 0.02f);
+  };
+  check(bounds, 1.f);
+  check(bounds, 16.f / 9.f);
+  prism::scenes::Bounds panel;
+  panel.extend(prism::scenes::Vec3{-3.f, -2.f, 0.f});
+  panel.extend(prism::scenes::Vec3{3.f, 2.f, 0.f});
+  check(panel, 4.f / 3.f);
+  prism::scenes::Bounds rod;
+  rod.extend(prism::scenes::Vec3{-0.1f, -5.f, 10.f});
+  rod.extend(prism::scenes::Vec3{0.1f, 5.f, 10.2f});
+  check(rod, 0.5f);
 
   prism::scenes::SuggestedCamera suggested;
   suggested.valid = true;

@@ -8,6 +8,8 @@
 #                   also passes (for features a device may gain later);
 #                   otherwise the EXISTS files must be absent
 #   EXPECT_STDERR   regex stderr must match
+#   REJECT_STDERR   regex stderr must not match
+#   STDERR_LINES    how many lines stderr must have
 #   EXPECT_STDOUT   regex stdout must match
 #   EXISTS          files that must exist afterwards
 #   ABSENT          files that must not exist afterwards (no partial output)
@@ -16,6 +18,13 @@
 #   DIFF_ARGS       extra image-diff arguments (e.g. --tolerance-rmse|1e-5)
 #   UPDATABLE       when set and PRISM_UPDATE_REFERENCES=1 is in the
 #                   environment, outputs replace their references instead
+#   INTERRUPT_AFTER seconds after which the run gets SIGINT (Ctrl-C), by
+#                   coreutils' timeout
+#   FIRST_ARGS      arguments of an earlier run in the same folder (must
+#                   succeed), e.g. to write a reference for CHECK
+#   PYTHON, CHECK_SCRIPT, CHECK
+#                   after the run, `PYTHON CHECK_SCRIPT CHECK...` (the
+#                   image assertions of check_image.py) must succeed
 # Every listed output is deleted first, so a stale file never passes.
 cmake_minimum_required(VERSION 3.25)
 
@@ -33,6 +42,8 @@ split(exists "${EXISTS}")
 split(absent "${ABSENT}")
 split(compare "${COMPARE}")
 split(diffArgs "${DIFF_ARGS}")
+split(firstArgs "${FIRST_ARGS}")
+split(check "${CHECK}")
 
 file(MAKE_DIRECTORY "${WORKDIR}")
 set(outputs ${exists} ${absent})
@@ -48,7 +59,28 @@ foreach(output IN LISTS outputs)
   file(REMOVE "${WORKDIR}/${output}")
 endforeach()
 
-execute_process(COMMAND "${TOOL}" ${args}
+if(firstArgs)
+  execute_process(COMMAND "${TOOL}" ${firstArgs}
+    WORKING_DIRECTORY "${WORKDIR}"
+    RESULT_VARIABLE firstStatus
+    OUTPUT_VARIABLE firstOut
+    ERROR_VARIABLE firstErr
+    TIMEOUT 300)
+  message("$ prism-render ${firstArgs}\nexit status: ${firstStatus}\n"
+    "stdout:\n${firstOut}\nstderr:\n${firstErr}")
+  if(NOT firstStatus EQUAL 0)
+    message(FATAL_ERROR "the first run failed")
+  endif()
+endif()
+
+set(command "${TOOL}" ${args})
+if(INTERRUPT_AFTER)
+  # --foreground: the signal goes to the tool alone, once, as a terminal's
+  # Ctrl-C does.
+  set(command timeout --foreground --preserve-status -s INT ${INTERRUPT_AFTER}
+    ${command})
+endif()
+execute_process(COMMAND ${command}
   WORKING_DIRECTORY "${WORKDIR}"
   RESULT_VARIABLE status
   OUTPUT_VARIABLE stdout
@@ -82,6 +114,16 @@ elseif(NOT status STREQUAL EXPECT_EXIT)
 endif()
 if(DEFINED EXPECT_STDERR AND NOT stderr MATCHES "${EXPECT_STDERR}")
   message(FATAL_ERROR "stderr does not match '${EXPECT_STDERR}'")
+endif()
+if(DEFINED STDERR_LINES)
+  string(REGEX MATCHALL "\n" newlines "${stderr}")
+  list(LENGTH newlines lines)
+  if(NOT lines EQUAL STDERR_LINES)
+    message(FATAL_ERROR "stderr has ${lines} lines, not ${STDERR_LINES}")
+  endif()
+endif()
+if(DEFINED REJECT_STDERR AND stderr MATCHES "${REJECT_STDERR}")
+  message(FATAL_ERROR "stderr matches '${REJECT_STDERR}', but must not")
 endif()
 if(DEFINED EXPECT_STDOUT AND NOT stdout MATCHES "${EXPECT_STDOUT}")
   message(FATAL_ERROR "stdout does not match '${EXPECT_STDOUT}'")
@@ -126,4 +168,16 @@ if(compareLength GREATER 0)
         "(see ${WORKDIR}/${stem}.diff.png)")
     endif()
   endforeach()
+endif()
+
+if(check)
+  execute_process(COMMAND "${PYTHON}" "${CHECK_SCRIPT}" ${check}
+    WORKING_DIRECTORY "${WORKDIR}"
+    RESULT_VARIABLE checkStatus
+    OUTPUT_VARIABLE checkOut
+    ERROR_VARIABLE checkErr)
+  message("check_image.py ${check}:\n${checkOut}${checkErr}")
+  if(NOT checkStatus EQUAL 0)
+    message(FATAL_ERROR "the image assertions failed (see above)")
+  endif()
 endif()

@@ -18,10 +18,15 @@ struct CameraSetup
   bool framed{false}; // true when placed from the bounds
 };
 
+// How much of the frame (of its narrower side) a framed scene's bounds
+// fill: a margin of 4 % on each side.
+constexpr float kFill = 0.92f;
+
 // The camera for an image of `aspect` (width / height). Without a scene
-// camera the view looks at the center of `bounds` from the front (+z),
-// slightly from above and the right, far enough back that the bounding
-// sphere fits both fields of view. Empty bounds frame the unit cube.
+// camera the view looks at `bounds` from the front (+z), slightly from above
+// and the right, centred and just far enough back that the box's eight
+// corners fill kFill of the frame along its tighter direction. Empty bounds
+// frame the unit cube.
 CameraSetup frameCamera(const scenes::SuggestedCamera &suggested,
     const scenes::Bounds &bounds,
     float aspect,

@@ -1,5 +1,6 @@
 #include "DefaultEnvironment.h"
 
+#include "Objects.h"
 #include "TextureFile.h"
 
 #include <algorithm>
@@ -121,12 +122,11 @@ Environment makeEnvironment(
       }
     out.description = "the environment '" + choice.source + "'";
   }
-  ANARIArray2D radiance = anariNewArray2D(
-      device, nullptr, nullptr, nullptr, ANARI_FLOAT32_VEC3, width, height);
-  auto *mapped = (Vec3 *)anariMapArray(device, radiance);
-  if (mapped)
-    std::copy(texels.begin(), texels.end(), mapped);
-  anariUnmapArray(device, radiance);
+  // A shared array over memory the tool owns: mapping a managed array
+  // would trust the device to hand out enough memory (the tests' recording
+  // device maps 256 bytes).
+  ANARIArray2D radiance = scenes::newArray2D(
+      device, ANARI_FLOAT32_VEC3, texels.data(), width, height, sizeof(Vec3));
   out.light = anariNewLight(device, "hdri");
   const Vec3 direction = centreDirection(up, choice.rotateDegrees);
   anariSetParameter(device, out.light, "radiance", ANARI_ARRAY2D, &radiance);
@@ -142,15 +142,8 @@ Environment makeEnvironment(
 
 void lightWorldWith(ANARIDevice device, ANARIWorld world, ANARILight light)
 {
-  ANARIArray1D lights =
-      anariNewArray1D(device, nullptr, nullptr, nullptr, ANARI_LIGHT, 1);
-  auto *handles = (ANARILight *)anariMapArray(device, lights);
-  if (handles)
-    handles[0] = light;
-  anariUnmapArray(device, lights);
-  anariSetParameter(device, world, "light", ANARI_ARRAY1D, &lights);
+  scenes::setObjectArray(device, world, "light", ANARI_LIGHT, {light});
   anariCommitParameters(device, world);
-  anariRelease(device, lights);
 }
 
 } // namespace prism::render

@@ -2,10 +2,12 @@
 
 #include "DemoScenes.h"
 #include "GltfIndexCheck.h"
+#include "GltfSupport.h"
 #include "ImageIO.h"
 #include "Math.h"
 #include "Objects.h"
 #include "SceneFile.h"
+#include "TangentGeneration.h"
 
 // The glTF parser is Debian's libtinygltf (shared library): only the
 // declarations are compiled here, so neither its JSON parser nor its copy of
@@ -36,21 +38,9 @@ using scenes::operator*;
 constexpr size_t kMaxAccessorElements = size_t(1) << 28;
 constexpr size_t kMaxZeroAccessorElements = size_t(1) << 24;
 constexpr size_t kMaxNodeVisits = 10'000'000;
-
-// Extensions whose meaning we render (or can safely read as plain data).
-const std::set<std::string> kSupportedExtensions = {
-    "KHR_materials_clearcoat",
-    "KHR_materials_emissive_strength",
-    "KHR_materials_ior",
-    "KHR_materials_iridescence",
-    "KHR_materials_sheen",
-    "KHR_materials_specular",
-    "KHR_materials_transmission",
-    "KHR_materials_volume",
-    "KHR_texture_transform",
-    "KHR_lights_punctual",
-    "KHR_mesh_quantization",
-};
+// Radius of the spheres and curves glTF points and lines become, as a
+// fraction of the scene's diagonal (about 2 pixels across at 1000 pixels).
+constexpr float kPointAndLineRadius = 0.001f;
 
 // ---- JSON values (tinygltf::Value asserts on wrong-kind lookups) ----------
 
@@ -496,12 +486,30 @@ OutputMap normalMap(float scale)
   return map;
 }
 
-// ---- files a glTF names (tinygltf's filesystem callbacks) -----------------
+// ---- files a glTF names (tinygltf's callbacks) -----------------------------
 
-bool fileExists(const std::string &path, void *options)
+// What tinygltf's file and image callbacks share with the importer: what
+// may be read, and why files and images could not be (so a missing texture
+// is one line naming its reason, not tinygltf's three).
+struct FileAccess
 {
-  return static_cast<const GltfOptions *>(options)->readExternalFiles
-         && isRegularFile(path);
+  const GltfOptions *options;
+  std::map<std::string, std::string> unreadableFiles; // path -> why
+  std::map<int, std::string> unusableImages;          // index -> why
+};
+
+bool fileExists(const std::string &path, void *user)
+{
+  auto *access = static_cast<FileAccess *>(user);
+  if (!access->options->readExternalFiles) {
+    access->unreadableFiles[path] = "external files are not read here";
+    return false;
+  }
+  if (!isRegularFile(path)) {
+    access->unreadableFiles[path] = "no such file";
+    return false;
+  }
+  return true;
 }
 
 std::string expandFilePath(const std::string &path, void *)
@@ -513,11 +521,12 @@ std::string expandFilePath(const std::string &path, void *)
 bool readWholeFile(std::vector<unsigned char> *out,
     std::string *error,
     const std::string &path,
-    void *options)
+    void *user)
 {
+  auto *access = static_cast<FileAccess *>(user);
   std::string bytes, why = "external files are not read here";
-  if (!static_cast<const GltfOptions *>(options)->readExternalFiles
-      || !readSceneFile(path, bytes, why)) {
+  if (!access->options->readExternalFiles || !readSceneFile(path, bytes, why)) {
+    access->unreadableFiles[path] = why;
     if (error)
       *error += "cannot read '" + path + "': " + why + "\n";
     return false;
@@ -532,6 +541,105 @@ bool writeWholeFile(std::string *,
     void *)
 {
   return false;
+}
+
+// Decodes images with tinygltf's stb, except KTX2 (KHR_texture_basisu,
+// unsupported; files that need it were refused already): an image that
+// cannot be decoded is left empty and noted once where a texture uses it,
+// as a missing file is, instead of failing the whole file.
+bool loadImage(tinygltf::Image *image,
+    const int index,
+    std::string *,
+    std::string *,
+    int width,
+    int height,
+    const unsigned char *bytes,
+    int size,
+    void *user)
+{
+  auto *access = static_cast<FileAccess *>(user);
+  if (isKtx2(bytes, size_t(std::max(size, 0)))) {
+    access->unusableImages[index] =
+        "a KTX2 image (KHR_texture_basisu), which prism-render does not "
+        "decode";
+    return true;
+  }
+  std::string error, warning;
+  if (!tinygltf::LoadImageData(image,
+          index,
+          &error,
+          &warning,
+          width,
+          height,
+          bytes,
+          size,
+          nullptr)) {
+    image->image.clear();
+    access->unusableImages[index] = "not a PNG or JPEG image stb can decode";
+  }
+  return true;
+}
+
+// tinygltf's warnings about images that are reported per image instead.
+bool isImageWarning(const std::string &line)
+{
+  return line.starts_with("File not found : ")
+         || line.starts_with("Failed to load external 'uri' for image[")
+         || line.starts_with("Image data is empty for image[");
+}
+
+// ---- tangents -------------------------------------------------------------
+
+// The texture coordinate set a material's normal map (or clearcoat normal
+// map) reads, or -1 when it has none.
+int normalMapTexCoord(const tinygltf::Material &m)
+{
+  if (m.normalTexture.index >= 0)
+    return textureRef(m.normalTexture).texCoord;
+  const TextureRef coat =
+      textureRef(extension(m.extensions, "KHR_materials_clearcoat"),
+          "clearcoatNormalTexture");
+  return coat.valid() ? coat.texCoord : -1;
+}
+
+// MikkTSpace tangents for every triangle corner. Without NORMAL the
+// surface is flat-shaded (glTF), so each corner takes its face's normal.
+std::vector<Vec4> cornerTangents(const std::vector<float> &positions,
+    const std::vector<float> *normals,
+    const std::vector<float> &uvs,
+    const std::vector<std::array<uint32_t, 3>> &triangles)
+{
+  auto position = [&](uint32_t v) {
+    return Vec3{positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]};
+  };
+  auto uv = [&](uint32_t v) {
+    return Vec2{uvs[2 * v], uvs[2 * v + 1]};
+  };
+  std::vector<Vec3> p, n;
+  std::vector<Vec2> t;
+  if (normals) {
+    for (size_t v = 0; v < positions.size() / 3; v++) {
+      p.push_back(position(uint32_t(v)));
+      n.push_back(
+          {(*normals)[3 * v], (*normals)[3 * v + 1], (*normals)[3 * v + 2]});
+      t.push_back(uv(uint32_t(v)));
+    }
+    return generateTangents(p, n, t, triangles);
+  }
+  std::vector<std::array<uint32_t, 3>> corners;
+  for (const auto &triangle : triangles) {
+    const Vec3 a = position(triangle[0]), b = position(triangle[1]),
+               c = position(triangle[2]);
+    const Vec3 faceNormal = scenes::normalize(scenes::cross(b - a, c - a));
+    const uint32_t first = uint32_t(p.size());
+    for (uint32_t v : triangle) {
+      p.push_back(position(v));
+      n.push_back(faceNormal);
+      t.push_back(uv(v));
+    }
+    corners.push_back({first, first + 1, first + 2});
+  }
+  return generateTangents(p, n, t, corners);
 }
 
 // ---- the importer ---------------------------------------------------------
@@ -567,6 +675,15 @@ class GltfImporter
       std::vector<ANARIObject> &surfaces,
       scenes::Bounds &bounds);
   ANARIMaterial material(int index, bool vertexColors);
+  // What the device offers beyond ANARI 1.1 for glTF (docs/extensions.md).
+  // Sphere and curve radius for glTF points and lines, in the object space
+  // of the mesh being built (see kPointAndLineRadius).
+  float m_objectRadius{0.f};
+  float m_worldRadius{0.f};
+  void choosePointAndLineRadius();
+  bool m_unlitMaterials{false};
+  bool m_baseColorFactor{false};
+  bool m_singleSided{false};
   ANARIMaterial newMaterial(int index, bool vertexColors);
   void setScalar(ANARIMaterial material,
       const char *name,
@@ -578,9 +695,26 @@ class GltfImporter
       const Vec3 &factor,
       const TextureRef &texture,
       bool skipBlack);
-  ANARISampler newSampler(
-      const TextureRef &ref, bool srgb, const OutputMap &output);
+  // A sampler of texture `ref` (or of `baked`, an image made from it, with
+  // its mapping and sampler settings).
+  ANARISampler newSampler(const TextureRef &ref,
+      bool srgb,
+      const OutputMap &output,
+      ANARIArray2D baked = nullptr);
+  // The texels of image `index` as stored (0-1, RGBA; grey replicated), or
+  // false when it could not be loaded.
+  bool imageTexels(
+      int index, size_t &width, size_t &height, std::vector<Vec4> &texels);
+  void setBaseColor(ANARIMaterial material,
+      const Vec4 &factor,
+      ANARISampler sampler,
+      bool textured,
+      bool vertexColors);
+  void setSpecularGlossiness(ANARIMaterial material,
+      const tinygltf::Value &extension,
+      bool vertexColors);
   ANARIArray2D imageArray(int image, bool srgb);
+  std::string whyUnusable(int image) const;
   void placeCamera();
   void placeLights(std::vector<ANARIObject> &lights);
   void note(const std::string &text);
@@ -590,6 +724,7 @@ class GltfImporter
   const std::string &m_bytes;
   std::string m_path;
   GltfOptions m_options;
+  FileAccess m_access{&m_options, {}, {}};
   LoadResult m_result;
   tinygltf::Model m_model;
 
@@ -605,6 +740,7 @@ class GltfImporter
   std::map<std::pair<int, bool>, ANARIArray2D> m_images;
   std::set<std::string> m_noted;
   uint32_t m_surfaceIds{0};
+  bool m_emissiveMaterial{false}; // a drawn material emits light
 };
 
 GltfImporter::~GltfImporter()
@@ -639,12 +775,24 @@ bool GltfImporter::parse()
   // The magic decides, not the extension: misnamed files still load.
   const bool binary =
       m_bytes.size() >= 4 && std::memcmp(m_bytes.data(), "glTF", 4) == 0;
+  // Our own reading of the JSON, first: a file that depends on an extension
+  // we lack is refused by that extension's name before tinygltf trips over
+  // what the extension leaves out. JSON that does not parse is left to
+  // tinygltf's message.
+  const GltfJson json =
+      parseGltfJson(binary ? glbJsonChunk(m_bytes) : std::string_view(m_bytes));
+  if (json.ok()) {
+    const std::string unsupported = unsupportedGltfDependency(json.root);
+    if (!unsupported.empty())
+      return fail(unsupported);
+  }
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks({&fileExists,
       &expandFilePath,
       &readWholeFile,
       &writeWholeFile,
-      &m_options});
+      &m_access});
+  loader.SetImageLoader(&loadImage, &m_access);
   // tinygltf joins URIs to the folder without its trailing '/'.
   const size_t slash = m_path.find_last_of('/');
   const std::string baseDirectory =
@@ -667,7 +815,7 @@ bool GltfImporter::parse()
     line = warning.substr(0, end);
     warning =
         end == std::string::npos ? std::string() : warning.substr(end + 1);
-    if (!line.empty())
+    if (!line.empty() && !isImageWarning(line))
       note(line);
   }
   if (!ok) {
@@ -679,16 +827,13 @@ bool GltfImporter::parse()
     return false;
   }
   // tinygltf narrowed every index to int: check them as the file wrote them.
-  const std::string badIndex = checkGltfIndices(
-      binary ? glbJsonChunk(m_bytes) : std::string_view(m_bytes));
+  const std::string badIndex = json.ok()
+                                   ? checkGltfIndices(json)
+                                   : "cannot check its indices: " + json.error;
   if (!badIndex.empty())
     return fail(badIndex);
-  for (const std::string &required : m_model.extensionsRequired)
-    if (!kSupportedExtensions.count(required))
-      return fail("requires extension " + required
-                  + ", which prism-render does not support");
   for (const std::string &used : m_model.extensionsUsed)
-    if (!kSupportedExtensions.count(used))
+    if (!isSupportedGltfExtension(used))
       note("extension " + used + " is not supported and is ignored");
   return true;
 }
@@ -735,6 +880,19 @@ bool GltfImporter::traverse(int index, const Mat4d &parent)
   return true;
 }
 
+std::string GltfImporter::whyUnusable(int index) const
+{
+  if (auto found = m_access.unusableImages.find(index);
+      found != m_access.unusableImages.end())
+    return found->second;
+  const tinygltf::Image &image = m_model.images[size_t(index)];
+  // tinygltf joined the URI to the file's folder (and decoded %-escapes).
+  for (const auto &[path, why] : m_access.unreadableFiles)
+    if (!image.uri.empty() && path.ends_with(image.uri))
+      return why;
+  return image.uri.empty() ? "no image data" : "its file cannot be read";
+}
+
 ANARIArray2D GltfImporter::imageArray(int index, bool srgb)
 {
   const auto key = std::make_pair(index, srgb);
@@ -756,7 +914,8 @@ ANARIArray2D GltfImporter::imageArray(int index, bool srgb)
   if (image.image.empty() || w == 0 || h == 0 || c < 1 || c > 4
       || (image.bits != 8 && image.bits != 16)
       || image.image.size() != w * h * c * bytesPerComponent) {
-    note(what + " could not be loaded; textures using it are left out");
+    note(what + " could not be loaded (" + whyUnusable(index)
+         + "); textures using it are left out");
     return array = nullptr;
   }
   // Expand to RGBA (grey replicated) so every slot reads the channels the
@@ -799,8 +958,10 @@ ANARIArray2D GltfImporter::imageArray(int index, bool srgb)
   return array;
 }
 
-ANARISampler GltfImporter::newSampler(
-    const TextureRef &ref, bool srgb, const OutputMap &output)
+ANARISampler GltfImporter::newSampler(const TextureRef &ref,
+    bool srgb,
+    const OutputMap &output,
+    ANARIArray2D baked)
 {
   if (size_t(ref.texture) >= m_model.textures.size()) {
     note("texture " + std::to_string(ref.texture)
@@ -813,7 +974,7 @@ ANARISampler GltfImporter::newSampler(
     return nullptr;
   }
   const tinygltf::Texture &texture = m_model.textures[size_t(ref.texture)];
-  ANARIArray2D image = imageArray(texture.source, srgb);
+  ANARIArray2D image = baked ? baked : imageArray(texture.source, srgb);
   if (!image)
     return nullptr;
   ANARISampler sampler = anariNewSampler(m_device, "image2D");
@@ -903,6 +1064,283 @@ void GltfImporter::setColor(ANARIMaterial material,
   }
 }
 
+void GltfImporter::setBaseColor(ANARIMaterial material,
+    const Vec4 &factor,
+    ANARISampler sampler,
+    bool textured,
+    bool vertexColors)
+{
+  if (sampler) {
+    // The sampled alpha (times the factor's) becomes the opacity; vertex
+    // colors multiply the sampled color (PRISM_MATERIAL_BASE_COLOR_FACTOR).
+    scenes::setObject(m_device, material, "baseColor", ANARI_SAMPLER, sampler);
+    anariRelease(m_device, sampler);
+    if (vertexColors)
+      scenes::setString(m_device, material, "baseColorFactor", "color");
+  } else if (vertexColors) {
+    scenes::setString(m_device, material, "baseColor", "color");
+    // Untextured, the vertex colors carry the factor already; a texture
+    // that could not be loaded leaves its factor to multiply them.
+    if (textured && m_baseColorFactor) {
+      scenes::setVec3(m_device,
+          material,
+          "baseColorFactor",
+          {factor[0], factor[1], factor[2]});
+      scenes::setFloat(m_device, material, "opacity", factor[3]);
+    }
+  } else {
+    scenes::setVec3(
+        m_device, material, "baseColor", {factor[0], factor[1], factor[2]});
+    scenes::setFloat(m_device, material, "opacity", factor[3]);
+  }
+}
+
+bool GltfImporter::imageTexels(
+    int index, size_t &width, size_t &height, std::vector<Vec4> &texels)
+{
+  if (index < 0 || size_t(index) >= m_model.images.size())
+    return false;
+  const tinygltf::Image &image = m_model.images[size_t(index)];
+  width = size_t(std::max(image.width, 0));
+  height = size_t(std::max(image.height, 0));
+  const size_t c = size_t(std::max(image.component, 0));
+  const size_t bytes = image.bits == 16 ? 2 : 1;
+  if (image.image.empty() || width == 0 || height == 0 || c < 1 || c > 4
+      || (image.bits != 8 && image.bits != 16)
+      || image.image.size() != width * height * c * bytes)
+    return false;
+  texels.assign(width * height, Vec4{0.f, 0.f, 0.f, 1.f});
+  for (size_t p = 0; p < width * height; p++)
+    for (size_t ch = 0; ch < 4; ch++) {
+      if ((c == 1 || c == 3) && ch == 3)
+        continue;
+      const size_t source = c <= 2 ? (ch < 3 ? 0 : 1) : ch;
+      const size_t i = p * c + source;
+      if (bytes == 2) {
+        uint16_t v;
+        std::memcpy(&v, image.image.data() + 2 * i, 2);
+        texels[p][ch] = float(v / 65535.0);
+      } else {
+        texels[p][ch] = float(image.image[i] / 255.0);
+      }
+    }
+  return true;
+}
+
+// ---- KHR_materials_pbrSpecularGlossiness -----------------------------------
+
+namespace {
+
+// The published conversion from specular-glossiness to metallic-roughness
+// (Khronos, KHR_materials_pbrSpecularGlossiness "convert between
+// workflows"), in linear color:
+//   s = 1 - max(specular)
+//   metallic = 0 if brightness(specular) < 0.04, else the root in [0, 1] of
+//     0.04 m^2 + (brightness(diffuse) s / 0.96 + brightness(specular)
+//     - 0.08) m + (0.04 - brightness(specular)) = 0
+//   base = mix(diffuse s / 0.96 / max(1 - m, eps),
+//              (specular - 0.04 (1 - m)) / max(m, eps), m^2), clamped
+//   opacity = diffuse alpha, roughness = 1 - glossiness
+// with brightness(c) = sqrt(0.299 r^2 + 0.587 g^2 + 0.114 b^2).
+struct MetallicRoughness
+{
+  Vec4 baseColor; // linear rgb, alpha
+  float metallic;
+  float roughness;
+};
+
+MetallicRoughness fromSpecularGlossiness(
+    const Vec4 &diffuse, const Vec3 &specular, float glossiness)
+{
+  constexpr float kDielectric = 0.04f, kEpsilon = 1e-6f;
+  auto brightness = [](float r, float g, float b) {
+    return std::sqrt(0.299f * r * r + 0.587f * g * g + 0.114f * b * b);
+  };
+  const float diffuseBrightness =
+      brightness(diffuse[0], diffuse[1], diffuse[2]);
+  const float specularBrightness =
+      brightness(specular[0], specular[1], specular[2]);
+  const float oneMinusSpecular =
+      1.f - std::max(specular[0], std::max(specular[1], specular[2]));
+  float metallic = 0.f;
+  if (specularBrightness >= kDielectric) {
+    const float a = kDielectric;
+    const float b = diffuseBrightness * oneMinusSpecular / (1.f - kDielectric)
+                    + specularBrightness - 2.f * kDielectric;
+    const float c = kDielectric - specularBrightness;
+    const float d = std::max(b * b - 4.f * a * c, 0.f);
+    metallic = std::clamp((-b + std::sqrt(d)) / (2.f * a), 0.f, 1.f);
+  }
+  MetallicRoughness out;
+  for (int i = 0; i < 3; i++) {
+    const float fromDiffuse = diffuse[size_t(i)] * oneMinusSpecular
+                              / (1.f - kDielectric)
+                              / std::max(1.f - metallic, kEpsilon);
+    const float fromSpecular =
+        (specular[size_t(i)] - kDielectric * (1.f - metallic))
+        / std::max(metallic, kEpsilon);
+    const float t = metallic * metallic;
+    out.baseColor[size_t(i)] =
+        std::clamp(fromDiffuse + (fromSpecular - fromDiffuse) * t, 0.f, 1.f);
+  }
+  out.baseColor[3] = diffuse[3];
+  out.metallic = metallic;
+  out.roughness = std::clamp(1.f - glossiness, 0.f, 1.f);
+  return out;
+}
+
+Vec4 vec4(const tinygltf::Value *object, const char *key, const Vec4 &fallback)
+{
+  const tinygltf::Value *v = object ? member(*object, key) : nullptr;
+  if (!v || !v->IsArray() || v->ArrayLen() != 4)
+    return fallback;
+  Vec4 out;
+  for (int i = 0; i < 4; i++) {
+    if (!v->Get(i).IsNumber())
+      return fallback;
+    out[size_t(i)] = float(v->Get(i).GetNumberAsDouble());
+  }
+  return out;
+}
+
+bool sameMapping(const TextureRef &a, const TextureRef &b)
+{
+  return a.texCoord == b.texCoord && a.transformed == b.transformed
+         && a.offset[0] == b.offset[0] && a.offset[1] == b.offset[1]
+         && a.rotation == b.rotation && a.scale[0] == b.scale[0]
+         && a.scale[1] == b.scale[1];
+}
+
+} // namespace
+
+void GltfImporter::setSpecularGlossiness(
+    ANARIMaterial material, const tinygltf::Value &extension, bool vertexColors)
+{
+  const Vec4 diffuseFactor =
+      vec4(&extension, "diffuseFactor", {1.f, 1.f, 1.f, 1.f});
+  const Vec3 specularFactor =
+      vec3(&extension, "specularFactor", {1.f, 1.f, 1.f});
+  const float glossinessFactor =
+      float(number(&extension, "glossinessFactor", 1.0));
+  const TextureRef diffuseRef = textureRef(&extension, "diffuseTexture");
+  const TextureRef specularRef =
+      textureRef(&extension, "specularGlossinessTexture");
+
+  // Texels of each texture (sRGB color decoded; glossiness is linear).
+  struct Source
+  {
+    size_t width{0}, height{0};
+    std::vector<Vec4> texels;
+  };
+  auto load = [&](const TextureRef &ref, Source &source) {
+    if (!ref.valid() || size_t(ref.texture) >= m_model.textures.size())
+      return false;
+    const int image = m_model.textures[size_t(ref.texture)].source;
+    if (!imageTexels(image, source.width, source.height, source.texels)) {
+      note("image " + std::to_string(image) + " could not be loaded ("
+           + whyUnusable(image) + "); textures using it are left out");
+      return false;
+    }
+    for (Vec4 &t : source.texels)
+      for (int i = 0; i < 3; i++)
+        t[size_t(i)] = image::linearFromSrgb(t[size_t(i)]);
+    return true;
+  };
+  Source diffuse, specular;
+  const bool hasDiffuse = load(diffuseRef, diffuse);
+  const bool hasSpecular = load(specularRef, specular);
+
+  if (!hasDiffuse && !hasSpecular) {
+    const MetallicRoughness converted =
+        fromSpecularGlossiness(diffuseFactor, specularFactor, glossinessFactor);
+    setBaseColor(material,
+        converted.baseColor,
+        nullptr,
+        diffuseRef.valid(),
+        vertexColors);
+    if (vertexColors && !diffuseRef.valid()) {
+      // The vertex colors multiply the converted color.
+      scenes::setVec3(m_device,
+          material,
+          "baseColorFactor",
+          {converted.baseColor[0],
+              converted.baseColor[1],
+              converted.baseColor[2]});
+      scenes::setFloat(m_device, material, "opacity", converted.baseColor[3]);
+    }
+    scenes::setFloat(m_device, material, "metallic", converted.metallic);
+    scenes::setFloat(m_device, material, "roughness", converted.roughness);
+    return;
+  }
+  // Textured: the conversion is not linear, so it is baked texel by texel
+  // into a base color image and a metallic-roughness image (G roughness,
+  // B metallic) at the larger texture's size, both read through the
+  // diffuse texture's mapping (else the specular-glossiness one's).
+  const TextureRef &mapping = hasDiffuse ? diffuseRef : specularRef;
+  if (hasDiffuse && hasSpecular && !sameMapping(diffuseRef, specularRef))
+    note(
+        "KHR_materials_pbrSpecularGlossiness textures with different "
+        "texture coordinates or transforms are converted through the "
+        "diffuse texture's");
+  const size_t width = std::max(diffuse.width, specular.width);
+  const size_t height = std::max(diffuse.height, specular.height);
+  auto at = [](const Source &source, size_t x, size_t y, size_t w, size_t h) {
+    const size_t sx = std::min(source.width - 1, x * source.width / w);
+    const size_t sy = std::min(source.height - 1, y * source.height / h);
+    return source.texels[sy * source.width + sx];
+  };
+  std::vector<Vec4> baseTexels(width * height),
+      metallicRoughness(width * height);
+  for (size_t y = 0; y < height; y++)
+    for (size_t x = 0; x < width; x++) {
+      Vec4 d = diffuseFactor;
+      if (hasDiffuse) {
+        const Vec4 t = at(diffuse, x, y, width, height);
+        for (int i = 0; i < 4; i++)
+          d[size_t(i)] *= t[size_t(i)];
+      }
+      Vec3 sp = specularFactor;
+      float gloss = glossinessFactor;
+      if (hasSpecular) {
+        const Vec4 t = at(specular, x, y, width, height);
+        for (int i = 0; i < 3; i++)
+          sp[size_t(i)] *= t[size_t(i)];
+        gloss *= t[3];
+      }
+      const MetallicRoughness converted = fromSpecularGlossiness(d, sp, gloss);
+      baseTexels[y * width + x] = converted.baseColor;
+      metallicRoughness[y * width + x] = {
+          0.f, converted.roughness, converted.metallic, 1.f};
+    }
+  ANARIArray2D baseImage = scenes::newArray2D(m_device,
+      ANARI_FLOAT32_VEC4,
+      baseTexels.data(),
+      width,
+      height,
+      sizeof(Vec4));
+  ANARIArray2D mrImage = scenes::newArray2D(m_device,
+      ANARI_FLOAT32_VEC4,
+      metallicRoughness.data(),
+      width,
+      height,
+      sizeof(Vec4));
+  setBaseColor(material,
+      {1.f, 1.f, 1.f, 1.f},
+      newSampler(mapping, false, scaleMap({1.f, 1.f, 1.f, 1.f}), baseImage),
+      true,
+      vertexColors);
+  for (auto [name, channel] : {std::pair{"metallic", 2}, {"roughness", 1}}) {
+    ANARISampler sampler =
+        newSampler(mapping, false, channelMap(channel, 1.f), mrImage);
+    if (sampler) {
+      scenes::setObject(m_device, material, name, ANARI_SAMPLER, sampler);
+      anariRelease(m_device, sampler);
+    }
+  }
+  anariRelease(m_device, baseImage);
+  anariRelease(m_device, mrImage);
+}
+
 ANARIMaterial GltfImporter::material(int index, bool vertexColors)
 {
   const auto key = std::make_pair(index, vertexColors);
@@ -923,38 +1361,52 @@ ANARIMaterial GltfImporter::newMaterial(int index, bool vertexColors)
           ? m_model.materials[size_t(index)]
           : kDefault;
   const tinygltf::PbrMetallicRoughness &pbr = m.pbrMetallicRoughness;
-  Vec4 base{1.f, 1.f, 1.f, 1.f};
-  if (pbr.baseColorFactor.size() == 4)
-    for (int i = 0; i < 4; i++)
-      base[i] = float(pbr.baseColorFactor[size_t(i)]);
-
-  const TextureRef baseTexture = textureRef(pbr.baseColorTexture);
-  ANARISampler baseSampler = baseTexture.valid()
-                                 ? newSampler(baseTexture, true, scaleMap(base))
-                                 : nullptr;
-  if (baseSampler) {
-    // The sampled alpha (times the factor's) becomes the opacity.
-    scenes::setObject(
-        m_device, material, "baseColor", ANARI_SAMPLER, baseSampler);
-    anariRelease(m_device, baseSampler);
-  } else if (vertexColors) {
-    // The geometry's vertex.color already carries the factor.
-    scenes::setString(m_device, material, "baseColor", "color");
+  if (const tinygltf::Value *specularGlossiness =
+          extension(m.extensions, "KHR_materials_pbrSpecularGlossiness")) {
+    setSpecularGlossiness(material, *specularGlossiness, vertexColors);
   } else {
-    scenes::setVec3(
-        m_device, material, "baseColor", {base[0], base[1], base[2]});
-    scenes::setFloat(m_device, material, "opacity", base[3]);
+    Vec4 base{1.f, 1.f, 1.f, 1.f};
+    if (pbr.baseColorFactor.size() == 4)
+      for (int i = 0; i < 4; i++)
+        base[i] = float(pbr.baseColorFactor[size_t(i)]);
+    const TextureRef baseTexture = textureRef(pbr.baseColorTexture);
+    setBaseColor(material,
+        base,
+        baseTexture.valid() ? newSampler(baseTexture, true, scaleMap(base))
+                            : nullptr,
+        baseTexture.valid(),
+        vertexColors);
+    setScalar(material,
+        "metallic",
+        float(pbr.metallicFactor),
+        textureRef(pbr.metallicRoughnessTexture),
+        2);
+    setScalar(material,
+        "roughness",
+        float(pbr.roughnessFactor),
+        textureRef(pbr.metallicRoughnessTexture),
+        1);
   }
-  setScalar(material,
-      "metallic",
-      float(pbr.metallicFactor),
-      textureRef(pbr.metallicRoughnessTexture),
-      2);
-  setScalar(material,
-      "roughness",
-      float(pbr.roughnessFactor),
-      textureRef(pbr.metallicRoughnessTexture),
-      1);
+  if (extension(m.extensions, "KHR_materials_unlit")) {
+    if (m_unlitMaterials) {
+      const bool on = true;
+      anariSetParameter(m_device, material, "unlit", ANARI_BOOL, &on);
+    } else {
+      note(
+          "the device does not implement PRISM_MATERIAL_UNLIT; unlit "
+          "(KHR_materials_unlit) materials are shaded as lit");
+    }
+  }
+  // glTF surfaces are single-sided unless their material says otherwise.
+  if (m_singleSided) {
+    const bool doubleSided = m.doubleSided;
+    anariSetParameter(
+        m_device, material, "doubleSided", ANARI_BOOL, &doubleSided);
+  } else if (!m.doubleSided) {
+    note(
+        "the device does not implement PRISM_MATERIAL_DOUBLE_SIDED; "
+        "single-sided materials show their back faces");
+  }
   if (m.normalTexture.index >= 0) {
     ANARISampler normal = newSampler(textureRef(m.normalTexture),
         false,
@@ -985,6 +1437,8 @@ ANARIMaterial GltfImporter::newMaterial(int index, bool vertexColors)
   if (m.emissiveFactor.size() == 3)
     for (int i = 0; i < 3; i++)
       emissive[i] = float(m.emissiveFactor[size_t(i)]) * emissiveStrength;
+  if (emissive[0] > 0.f || emissive[1] > 0.f || emissive[2] > 0.f)
+    m_emissiveMaterial = true;
   setColor(material, "emissive", emissive, textureRef(m.emissiveTexture), true);
 
   if (m.alphaMode == "MASK") {
@@ -996,19 +1450,21 @@ ANARIMaterial GltfImporter::newMaterial(int index, bool vertexColors)
     scenes::setString(m_device, material, "alphaMode", "opaque");
   }
 
-  if (const tinygltf::Value *e =
-          extension(m.extensions, "KHR_materials_specular")) {
-    setScalar(material,
-        "specular",
-        float(number(e, "specularFactor", 1.0)),
-        textureRef(e, "specularTexture"),
-        3);
-    setColor(material,
-        "specularColor",
-        vec3(e, "specularColorFactor", {1.f, 1.f, 1.f}),
-        textureRef(e, "specularColorTexture"),
-        false);
-  }
+  // Without KHR_materials_specular glTF means specularFactor 1 and
+  // specularColorFactor 1 (the dielectric's F0 comes from ior alone), where
+  // ANARI's `specular` defaults to 0: no dielectric reflection at all.
+  const tinygltf::Value *specular =
+      extension(m.extensions, "KHR_materials_specular");
+  setScalar(material,
+      "specular",
+      float(number(specular, "specularFactor", 1.0)),
+      textureRef(specular, "specularTexture"),
+      3);
+  setColor(material,
+      "specularColor",
+      vec3(specular, "specularColorFactor", {1.f, 1.f, 1.f}),
+      textureRef(specular, "specularColorTexture"),
+      false);
   if (const tinygltf::Value *e =
           extension(m.extensions, "KHR_materials_clearcoat")) {
     setScalar(material,
@@ -1033,8 +1489,14 @@ ANARIMaterial GltfImporter::newMaterial(int index, bool vertexColors)
       }
     }
   }
-  if (const tinygltf::Value *e = extension(m.extensions, "KHR_materials_ior"))
-    scenes::setFloat(m_device, material, "ior", float(number(e, "ior", 1.5)));
+  // glTF's ior is 1.5 without KHR_materials_ior (ANARI's default too, set
+  // anyway: it is what the file means). Every other extension's absence
+  // means what ANARI's defaults mean (clearcoat, transmission, thickness,
+  // sheen and iridescence 0, attenuation none).
+  scenes::setFloat(m_device,
+      material,
+      "ior",
+      float(number(extension(m.extensions, "KHR_materials_ior"), "ior", 1.5)));
   if (const tinygltf::Value *e =
           extension(m.extensions, "KHR_materials_transmission"))
     setScalar(material,
@@ -1113,9 +1575,23 @@ bool GltfImporter::buildPrimitive(int meshIndex,
                             + std::to_string(primitiveIndex);
   const int mode =
       primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
-  if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP
+  const bool points = mode == TINYGLTF_MODE_POINTS;
+  const bool lines = mode == TINYGLTF_MODE_LINE
+                     || mode == TINYGLTF_MODE_LINE_LOOP
+                     || mode == TINYGLTF_MODE_LINE_STRIP;
+  if (!points && !lines && mode != TINYGLTF_MODE_TRIANGLES
+      && mode != TINYGLTF_MODE_TRIANGLE_STRIP
       && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
-    note("points and lines are not supported; such primitives are left out");
+    note("primitive mode " + std::to_string(mode)
+         + " is not a glTF mode; such primitives are left out");
+    return true;
+  }
+  const char *subtype = points ? "sphere" : lines ? "curve" : "triangle";
+  if ((points || lines)
+      && !scenes::hasSubtype(m_device, ANARI_GEOMETRY, subtype)) {
+    note(std::string("the device has no ") + subtype
+         + " geometry (KHR_GEOMETRY_" + (points ? "SPHERE" : "CURVE") + "); "
+         + (points ? "points" : "lines") + " are left out");
     return true;
   }
   if (!primitive.targets.empty())
@@ -1150,8 +1626,28 @@ bool GltfImporter::buildPrimitive(int meshIndex,
     if (i >= vertexCount)
       return fail(where + " has an index (" + std::to_string(i) + ") past its "
                   + std::to_string(vertexCount) + " vertices");
+  // Points become spheres and lines round curves, over their vertices
+  // rearranged in drawing order (`order`); a curve segment runs from each
+  // of `segmentStarts` to the next vertex.
+  std::vector<uint32_t> order, segmentStarts;
   std::vector<std::array<uint32_t, 3>> triangles;
-  if (mode == TINYGLTF_MODE_TRIANGLES) {
+  if (points) {
+    order = indices;
+  } else if (mode == TINYGLTF_MODE_LINE) {
+    for (size_t i = 0; i + 1 < indices.size(); i += 2) {
+      segmentStarts.push_back(uint32_t(order.size()));
+      order.push_back(indices[i]);
+      order.push_back(indices[i + 1]);
+    }
+  } else if (lines) {
+    if (indices.size() >= 2) {
+      order = indices;
+      if (mode == TINYGLTF_MODE_LINE_LOOP)
+        order.push_back(indices[0]);
+      for (size_t i = 0; i + 1 < order.size(); i++)
+        segmentStarts.push_back(uint32_t(i));
+    }
+  } else if (mode == TINYGLTF_MODE_TRIANGLES) {
     for (size_t i = 0; i + 2 < indices.size(); i += 3)
       triangles.push_back({indices[i], indices[i + 1], indices[i + 2]});
   } else {
@@ -1164,21 +1660,43 @@ bool GltfImporter::buildPrimitive(int meshIndex,
         triangles.push_back({indices[i - 1], indices[i - 2], indices[i]});
     }
   }
-  if (triangles.empty())
+  if (triangles.empty() && (points ? order.empty() : segmentStarts.empty()))
     return true;
+  // Per-vertex values as the geometry gets them: for points and lines in
+  // drawing order.
+  const size_t geometryVertices = order.empty() ? vertexCount : order.size();
+  auto arranged = [&](const std::vector<float> &values, size_t components) {
+    if (order.empty())
+      return values;
+    std::vector<float> out(order.size() * components);
+    for (size_t v = 0; v < order.size(); v++)
+      std::copy_n(
+          &values[order[v] * components], components, &out[v * components]);
+    return out;
+  };
 
-  ANARIGeometry geometry = anariNewGeometry(m_device, "triangle");
+  ANARIGeometry geometry = anariNewGeometry(m_device, subtype);
+  const std::vector<float> placed = arranged(positions, 3);
   scenes::setArray(m_device,
       geometry,
       "vertex.position",
       ANARI_FLOAT32_VEC3,
-      std::vector<Vec3>((const Vec3 *)positions.data(),
-          (const Vec3 *)positions.data() + vertexCount));
-  scenes::setArray(
-      m_device, geometry, "primitive.index", ANARI_UINT32_VEC3, triangles);
-  for (size_t v = 0; v < vertexCount; v++)
-    bounds.extend(
-        Vec3{positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]});
+      std::vector<Vec3>((const Vec3 *)placed.data(),
+          (const Vec3 *)placed.data() + geometryVertices));
+  const float radius = points || lines ? m_objectRadius : 0.f;
+  if (points || lines)
+    scenes::setFloat(m_device, geometry, "radius", radius);
+  if (lines)
+    scenes::setArray(
+        m_device, geometry, "primitive.index", ANARI_UINT32, segmentStarts);
+  else if (!points)
+    scenes::setArray(
+        m_device, geometry, "primitive.index", ANARI_UINT32_VEC3, triangles);
+  for (size_t v = 0; v < geometryVertices; v++)
+    for (float side : {-radius, radius})
+      bounds.extend(Vec3{placed[3 * v] + side,
+          placed[3 * v + 1] + side,
+          placed[3 * v + 2] + side});
 
   // Optional attributes: (glTF name, ANARI name, components, type).
   struct Optional
@@ -1193,10 +1711,13 @@ bool GltfImporter::buildPrimitive(int meshIndex,
       {"TEXCOORD_1", "vertex.attribute1", 2, 2},
       {"TEXCOORD_2", "vertex.attribute2", 2, 2},
       {"TEXCOORD_3", "vertex.attribute3", 2, 2}};
+  // NORMAL and TEXCOORD_n, kept for tangent generation.
+  std::map<std::string, std::vector<float>> kept;
   for (const Optional &o : optional) {
-    if (attribute(o.gltf) < 0)
+    // Spheres and round curves have their own normals.
+    if (attribute(o.gltf) < 0 || ((points || lines) && o.minComponents != 2))
       continue;
-    std::vector<float> values;
+    std::vector<float> &values = kept[o.gltf];
     if (!readAccessor(m_model,
             attribute(o.gltf),
             o.minComponents,
@@ -1213,10 +1734,11 @@ bool GltfImporter::buildPrimitive(int meshIndex,
           where + " " + o.gltf + " has a different count than POSITION");
     }
     const ANARIDataType type = ANARIDataType(ANARI_FLOAT32 + components - 1);
+    const std::vector<float> data = arranged(values, size_t(components));
     ANARIArray1D array = scenes::newArray1D(m_device,
         type,
-        values.data(),
-        vertexCount,
+        data.data(),
+        geometryVertices,
         sizeof(float) * size_t(components));
     anariSetParameter(m_device, geometry, o.anari, ANARI_ARRAY1D, &array);
     anariRelease(m_device, array);
@@ -1231,12 +1753,45 @@ bool GltfImporter::buildPrimitive(int meshIndex,
       materialIndex >= 0 && size_t(materialIndex) < m_model.materials.size()
           ? &m_model.materials[size_t(materialIndex)]
           : nullptr;
+  // glTF: a normal-mapped primitive without TANGENT gets MikkTSpace
+  // tangents, one per triangle corner (mirrored UVs split vertices).
+  const int tangentTexCoord =
+      gm && !triangles.empty() ? normalMapTexCoord(*gm) : -1;
+  if (tangentTexCoord >= 0 && attribute("TANGENT") < 0) {
+    const auto uvs = kept.find("TEXCOORD_" + std::to_string(tangentTexCoord));
+    if (uvs == kept.end()) {
+      note("a normal map uses TEXCOORD_" + std::to_string(tangentTexCoord)
+           + ", which its primitive does not have; tangents come from the "
+             "device");
+    } else {
+      const auto normals = kept.find("NORMAL");
+      const std::vector<Vec4> tangents = cornerTangents(positions,
+          normals == kept.end() ? nullptr : &normals->second,
+          uvs->second,
+          triangles);
+      scenes::setArray(m_device,
+          geometry,
+          "faceVarying.tangent",
+          ANARI_FLOAT32_VEC4,
+          tangents);
+    }
+  }
   bool vertexColors = false;
+  // glTF multiplies COLOR_0 into the base color. Alone with the base color
+  // factor, the factor goes into the colors here; with a texture (or a
+  // converted specular-glossiness color) the device multiplies them
+  // (PRISM_MATERIAL_BASE_COLOR_FACTOR).
+  const bool specularGlossiness =
+      gm && extension(gm->extensions, "KHR_materials_pbrSpecularGlossiness");
+  const bool deviceMultiplies =
+      specularGlossiness
+      || (gm && gm->pbrMetallicRoughness.baseColorTexture.index >= 0);
   if (attribute("COLOR_0") >= 0) {
-    if (gm && gm->pbrMetallicRoughness.baseColorTexture.index >= 0) {
+    if (deviceMultiplies && !m_baseColorFactor) {
       note(
-          "vertex colors together with a base color texture are not "
-          "supported; COLOR_0 is ignored there");
+          "the device does not implement PRISM_MATERIAL_BASE_COLOR_FACTOR; "
+          "vertex colors (COLOR_0) are ignored where a base color texture "
+          "or specular-glossiness color would multiply them");
     } else {
       std::vector<float> colors;
       if (!readAccessor(
@@ -1251,16 +1806,18 @@ bool GltfImporter::buildPrimitive(int meshIndex,
       // ANARI multiplies nothing into an attribute color, so the base color
       // factor goes into the colors here.
       Vec4 factor{1.f, 1.f, 1.f, 1.f};
-      if (gm && gm->pbrMetallicRoughness.baseColorFactor.size() == 4)
+      if (gm && !deviceMultiplies
+          && gm->pbrMetallicRoughness.baseColorFactor.size() == 4)
         for (int i = 0; i < 4; i++)
           factor[i] =
               float(gm->pbrMetallicRoughness.baseColorFactor[size_t(i)]);
-      std::vector<Vec4> rgba(vertexCount);
-      for (size_t v = 0; v < vertexCount; v++)
+      const std::vector<float> ordered = arranged(colors, size_t(components));
+      std::vector<Vec4> rgba(geometryVertices);
+      for (size_t v = 0; v < geometryVertices; v++)
         for (int i = 0; i < 4; i++)
           rgba[v][i] =
               factor[i]
-              * (i < components ? colors[v * size_t(components) + size_t(i)]
+              * (i < components ? ordered[v * size_t(components) + size_t(i)]
                                 : 1.f);
       scenes::setArray(
           m_device, geometry, "vertex.color", ANARI_FLOAT32_VEC4, rgba);
@@ -1284,11 +1841,81 @@ bool GltfImporter::buildPrimitive(int meshIndex,
   return true;
 }
 
+void GltfImporter::choosePointAndLineRadius()
+{
+  // glTF points and lines have no width: spheres and curves get a radius
+  // of kPointAndLineRadius times the diagonal of the world bounds of every
+  // placed mesh (from POSITION's min and max, else its values), so they
+  // show about 2 pixels wide in a 1000-pixel view framed to the scene.
+  bool needed = false;
+  for (const auto &[meshIndex, placements] : m_meshPlacements)
+    for (const tinygltf::Primitive &p :
+        m_model.meshes[size_t(meshIndex)].primitives)
+      needed |=
+          p.mode >= TINYGLTF_MODE_POINTS && p.mode <= TINYGLTF_MODE_LINE_STRIP;
+  if (!needed)
+    return;
+  scenes::Bounds world;
+  for (const auto &[meshIndex, placements] : m_meshPlacements)
+    for (const tinygltf::Primitive &p :
+        m_model.meshes[size_t(meshIndex)].primitives) {
+      const auto found = p.attributes.find("POSITION");
+      if (found == p.attributes.end() || found->second < 0
+          || size_t(found->second) >= m_model.accessors.size())
+        continue;
+      const tinygltf::Accessor &a = m_model.accessors[size_t(found->second)];
+      scenes::Bounds local;
+      if (a.minValues.size() == 3 && a.maxValues.size() == 3) {
+        local.extend(Vec3{float(a.minValues[0]),
+            float(a.minValues[1]),
+            float(a.minValues[2])});
+        local.extend(Vec3{float(a.maxValues[0]),
+            float(a.maxValues[1]),
+            float(a.maxValues[2])});
+      } else {
+        std::vector<float> values;
+        int components = 0;
+        std::string error; // reported when the primitive is built
+        if (readAccessor(
+                m_model, found->second, 3, 3, values, components, error))
+          for (size_t v = 0; v + 2 < values.size(); v += 3)
+            local.extend(Vec3{values[v], values[v + 1], values[v + 2]});
+      }
+      if (local.empty())
+        continue;
+      for (const Placement &placement : placements) {
+        const Mat4 m = toFloat(placement.worldFromObject);
+        for (int corner = 0; corner < 8; corner++)
+          world.extend(scenes::transformPoint(m,
+              {(corner & 1) ? local.upper[0] : local.lower[0],
+                  (corner & 2) ? local.upper[1] : local.lower[1],
+                  (corner & 4) ? local.upper[2] : local.lower[2]}));
+      }
+    }
+  const float diagonal =
+      world.empty() ? 0.f : scenes::length(world.upper - world.lower);
+  m_worldRadius = diagonal > 0.f && std::isfinite(diagonal)
+                      ? kPointAndLineRadius * diagonal
+                      : kPointAndLineRadius;
+}
+
 bool GltfImporter::buildMeshGroup(int meshIndex)
 {
   std::vector<ANARIObject> surfaces;
   scenes::Bounds bounds;
   const tinygltf::Mesh &mesh = m_model.meshes[size_t(meshIndex)];
+  // The world radius at the mesh's first placement's scale.
+  m_objectRadius = m_worldRadius;
+  if (const auto placed = m_meshPlacements.find(meshIndex);
+      placed != m_meshPlacements.end() && !placed->second.empty()) {
+    const Mat4d &m = placed->second.front().worldFromObject;
+    const double det = m[0] * (m[5] * m[10] - m[9] * m[6])
+                       - m[4] * (m[1] * m[10] - m[9] * m[2])
+                       + m[8] * (m[1] * m[6] - m[5] * m[2]);
+    const double scale = std::cbrt(std::fabs(det));
+    if (scale > 0.0 && std::isfinite(scale))
+      m_objectRadius = float(m_worldRadius / scale);
+  }
   for (size_t p = 0; p < mesh.primitives.size(); p++) {
     if (!buildPrimitive(meshIndex, int(p), surfaces, bounds)) {
       for (ANARIObject s : surfaces)
@@ -1466,6 +2093,13 @@ LoadResult GltfImporter::load()
 
   const bool transformArrays =
       scenes::hasExtension(m_device, "ANARI_KHR_INSTANCE_TRANSFORM_ARRAY");
+  m_unlitMaterials =
+      scenes::hasExtension(m_device, "ANARI_PRISM_MATERIAL_UNLIT");
+  m_baseColorFactor =
+      scenes::hasExtension(m_device, "ANARI_PRISM_MATERIAL_BASE_COLOR_FACTOR");
+  m_singleSided =
+      scenes::hasExtension(m_device, "ANARI_PRISM_MATERIAL_DOUBLE_SIDED");
+  choosePointAndLineRadius();
   std::vector<ANARIObject> instances;
   for (const auto &[meshIndex, placements] : m_meshPlacements) {
     if (!buildMeshGroup(meshIndex)) {
@@ -1512,12 +2146,14 @@ LoadResult GltfImporter::load()
     }
   }
   if (instances.empty()) {
-    fail("the scene has no triangles to render");
+    fail("the scene has no triangles, points or lines to render");
     return std::move(m_result);
   }
   placeCamera();
   std::vector<ANARIObject> lights;
   placeLights(lights);
+  // Without lights or emissive materials the tool lights the file itself.
+  scene.emitsLight = m_emissiveMaterial || !lights.empty();
   scenes::finishWorld(m_device, scene, {}, instances, lights);
   return std::move(m_result);
 }

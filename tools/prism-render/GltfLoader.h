@@ -1,14 +1,20 @@
 // glTF 2.0 (.gltf, .glb; via tinygltf) to an ANARI world:
-// - each mesh becomes one group (one surface per triangle primitive), and
-//   every node using the mesh places that shared group: one `transform`
-//   instance with an array of matrices when the device has
-//   KHR_INSTANCE_TRANSFORM_ARRAY, one instance per node otherwise;
-// - materials become `physicallyBased` with the spec's glTF mapping:
-//   factors scale textures through the samplers' outTransform, channels are
-//   swizzled the same way (roughness G, metallic B, occlusion R, ...),
-//   KHR_texture_transform becomes inTransform/inOffset, and the
-//   KHR_materials_* extensions map onto their parameters;
-// - cameras and KHR_lights_punctual come out in world space.
+// - each mesh becomes one group (one surface per primitive: triangles,
+//   points as spheres, lines as curves), and every node using the mesh
+//   places that shared group: one `transform` instance with an array of
+//   matrices when the device has KHR_INSTANCE_TRANSFORM_ARRAY, one instance
+//   per node otherwise; normal-mapped primitives without TANGENT get
+//   MikkTSpace tangents;
+// - materials become `physicallyBased` with the spec's glTF mapping and
+//   glTF's defaults (specular 1): factors scale textures through the
+//   samplers' outTransform, channels are swizzled the same way (roughness G,
+//   metallic B, occlusion R, ...), KHR_texture_transform becomes
+//   inTransform/inOffset, the KHR_materials_* extensions map onto their
+//   parameters, specular-glossiness is converted, and unlit, COLOR_0 times
+//   a texture and doubleSided use prism's extensions (docs/extensions.md);
+// - cameras and KHR_lights_punctual come out in world space; the scene
+//   says whether anything emits light.
+// Files that need Draco, KTX2 or meshopt are refused by name (GltfSupport.h).
 // Every index is checked in the JSON as written (GltfIndexCheck.h) and every
 // accessor bounds-checked: a corrupt file is an error, never a crash or
 // another object silently used.

@@ -65,6 +65,7 @@ class ObjImporter
   std::string m_path;
   LoadResult m_result;
   bool m_hasColors{false};
+  bool m_emissiveMaterial{false}; // a material with Ke emits light
   std::vector<tinyobj::material_t> m_materials;
   std::map<std::string, ANARIArray2D> m_textures; // nullptr: unreadable
 };
@@ -204,6 +205,8 @@ LoadResult ObjImporter::load()
   for (auto &[name, array] : m_textures)
     if (array)
       anariRelease(m_device, array);
+  // OBJ has no lights: only emissive (Ke) materials light the scene.
+  scene.emitsLight = m_emissiveMaterial;
   scenes::finishWorld(m_device, scene, surfaces, {}, {});
   return std::move(m_result);
 }
@@ -294,8 +297,10 @@ ANARIMaterial ObjImporter::newMaterial(const tinyobj::material_t *m)
     scenes::setString(m_device, material, "alphaMode", "blend");
   }
   const Vec3 emission{m->emission[0], m->emission[1], m->emission[2]};
-  if (emission[0] > 0.f || emission[1] > 0.f || emission[2] > 0.f)
+  if (emission[0] > 0.f || emission[1] > 0.f || emission[2] > 0.f) {
     scenes::setVec3(m_device, material, "emissive", emission);
+    m_emissiveMaterial = true;
+  }
   if (m->ior > 1.f)
     scenes::setFloat(m_device, material, "ior", float(m->ior));
   if (!m->bump_texname.empty() || !m->normal_texname.empty()

@@ -16,6 +16,8 @@
 
 #include <anari/anari.h>
 
+#include <unistd.h>
+
 #ifdef PRISM_RENDER_HAS_TBB
 #include <tbb/global_control.h>
 #endif
@@ -26,10 +28,14 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <memory>
+#include <mutex>
 #include <numbers>
 #include <set>
 #include <thread>
@@ -45,6 +51,55 @@ using scenes::operator*;
 
 constexpr int kExitFailure = 1; // the scene, the device or the output failed
 constexpr int kExitUsage = 2;   // the command line asks for the impossible
+constexpr int kExitInterrupted = 128 + SIGINT; // Ctrl-C, as shells report it
+
+// Set by the SIGINT handler; the render loop stops at the next check.
+volatile std::sig_atomic_t g_interrupted = 0;
+std::atomic<long long> g_firstInterruptMs{0};
+
+extern "C" void onInterrupt(int)
+{
+  // Only async-signal-safe calls here.
+  timespec now{};
+  clock_gettime(CLOCK_MONOTONIC, &now);
+  const long long ms = now.tv_sec * 1000ll + now.tv_nsec / 1000000;
+  if (!g_interrupted) {
+    g_firstInterruptMs = ms;
+    g_interrupted = 1;
+  } else if (ms - g_firstInterruptMs >= 1000) {
+    // Ctrl-C again, a second later: end the process at once. (Sooner, it
+    // is the same Ctrl-C delivered twice, as wrappers that signal both the
+    // process and its group do.)
+    _exit(kExitInterrupted);
+  }
+}
+
+// Counts the frames the device reports done (KHR_FRAME_COMPLETION_CALLBACK).
+// NOTE: onFrame runs on a device thread.
+class FrameCompletions
+{
+ public:
+  static void onFrame(const void *user, ANARIDevice, ANARIFrame)
+  {
+    auto *self = (FrameCompletions *)user;
+    {
+      std::lock_guard lock(self->m_mutex);
+      self->m_done++;
+    }
+    self->m_changed.notify_all();
+  }
+  // Whether `count` frames are done, waiting at most `timeout` for it.
+  bool waitFor(uint64_t count, std::chrono::milliseconds timeout)
+  {
+    std::unique_lock lock(m_mutex);
+    return m_changed.wait_for(lock, timeout, [&] { return m_done >= count; });
+  }
+
+ private:
+  std::mutex m_mutex;
+  std::condition_variable m_changed;
+  uint64_t m_done{0};
+};
 
 struct StatusState
 {
@@ -178,6 +233,8 @@ int fail(const std::string &message, int code = kExitFailure)
 
 int run(int argc, char **argv)
 {
+  // Ctrl-C from here on: the run stops, says so and writes nothing.
+  std::signal(SIGINT, onInterrupt);
   const ParseResult parsed = parseOptions(argc, argv);
   if (!parsed.ok()) {
     console::error(parsed.error);
@@ -264,6 +321,12 @@ int run(int argc, char **argv)
         tbb::global_control::max_allowed_parallelism, options.threads);
 #endif
 
+  auto interrupted = []() {
+    return g_interrupted != 0;
+  };
+  const std::string interruptedMessage =
+      "interrupted (Ctrl-C); no image written";
+
   Session session;
   session.status.verbose = options.verbose;
   session.library = anariLoadLibrary(
@@ -342,6 +405,8 @@ int run(int argc, char **argv)
   }
   scenes::Scene &scene = loaded.scene;
   session.keep(scene.world);
+  if (interrupted())
+    return fail(interruptedMessage, kExitInterrupted);
   for (const std::string &note : scene.notes)
     console::warning(note);
   if (!loaded.ok())
@@ -352,7 +417,12 @@ int run(int argc, char **argv)
   // Scene files without lights would render black with the path tracer:
   // light them the way glTF viewers do, and say so.
   const bool explicitEnvironment = options.environment != "studio";
-  if (!scene.emitsLight && options.environment != "none") {
+  const bool hdri = scenes::hasSubtype(device, ANARI_LIGHT, "hdri");
+  if (!scene.emitsLight && options.environment != "none" && !hdri) {
+    console::warning(
+        "the scene has no lights and the device has no hdri light "
+        "(KHR_LIGHT_HDRI) to light it with; it renders unlit");
+  } else if (!scene.emitsLight && options.environment != "none") {
     const EnvironmentChoice choice{options.environment,
         options.environmentIntensity,
         options.environmentRotateDegrees};
@@ -508,6 +578,26 @@ int run(int argc, char **argv)
           + std::to_string(options.samplesPerPixel));
     }
   }
+  // Devices that call back when a frame is done let the loop wait for that
+  // and still notice Ctrl-C; bench runs wait plainly, to time frames alone
+  // (Ctrl-C stops them between frames).
+  FrameCompletions completions;
+  const bool watchCompletion =
+      options.benchFrames == 0 && has("ANARI_KHR_FRAME_COMPLETION_CALLBACK");
+  if (watchCompletion) {
+    const ANARIFrameCompletionCallback callback = &FrameCompletions::onFrame;
+    anariSetParameter(device,
+        frame,
+        "frameCompletionCallback",
+        ANARI_FRAME_COMPLETION_CALLBACK,
+        &callback);
+    // VOID_POINTER values are passed as the pointer itself (spec).
+    anariSetParameter(device,
+        frame,
+        "frameCompletionCallbackUserData",
+        ANARI_VOID_POINTER,
+        &completions);
+  }
   anariCommitParameters(device, frame);
 
   const bool showProgress = !options.quiet && console::stderrIsTerminal();
@@ -533,10 +623,33 @@ int run(int argc, char **argv)
     Progress progress(
         showProgress, frames, options.benchFrames > 0 ? "frames" : "samples");
     const auto start = std::chrono::steady_clock::now();
-    for (uint32_t i = 0; i < frames; i++) {
+    for (uint32_t i = 0; i < frames && !interrupted(); i++) {
       const auto frameStart = std::chrono::steady_clock::now();
       anariRenderFrame(device, frame);
-      if (showProgress) {
+      if (watchCompletion) {
+        // Woken by the device when the frame is done, and every 20 ms to
+        // see whether Ctrl-C came or the progress bar should move.
+        while (!completions.waitFor(i + 1, std::chrono::milliseconds(20))) {
+          if (interrupted()) {
+            anariDiscardFrame(device, frame);
+            break;
+          }
+          if (!showProgress)
+            continue;
+          float partial = 0.f;
+          anariGetProperty(device,
+              frame,
+              "renderProgress",
+              ANARI_FLOAT32,
+              &partial,
+              sizeof(partial),
+              ANARI_NO_WAIT);
+          progress.update(i + std::clamp(double(partial), 0.0, 1.0));
+        }
+        anariFrameReady(device, frame, ANARI_WAIT);
+        if (showProgress && !interrupted())
+          progress.update(i + 1);
+      } else if (showProgress) {
         while (!anariFrameReady(device, frame, ANARI_NO_WAIT)) {
           float partial = 0.f;
           anariGetProperty(device,
@@ -562,6 +675,8 @@ int run(int argc, char **argv)
             .count();
     progress.finish();
   }
+  if (interrupted())
+    return fail(interruptedMessage, kExitInterrupted);
   if (session.status.errors.load() > errorsBeforeRender)
     return fail(
         "the device reported errors while rendering (see above); "

@@ -83,7 +83,10 @@ enum : int {
   kKhrSpatialFieldStructuredRegularFilterCubic = 60,
   kKhrSpatialFieldUnstructured = 61,
   kKhrVolumeTransferFunction1d = 62,
-  kPrismRenderers = 63,
+  kPrismMaterialBaseColorFactor = 63,
+  kPrismMaterialDoubleSided = 64,
+  kPrismMaterialUnlit = 65,
+  kPrismRenderers = 66,
 };
 
 // Type lists, ANARI_UNKNOWN-terminated.
@@ -2346,6 +2349,8 @@ constexpr float kDefault25_color[] = {0.8f, 0.8f, 0.8f};
 constexpr float kDefault25_opacity[] = {1.f};
 // alphaCutoff default: ANARI_FLOAT32
 constexpr float kDefault25_alphaCutoff[] = {0.5f};
+// doubleSided default: ANARI_BOOL
+alignas(4) constexpr int8_t kDefault25_doubleSided[] = {1, 0, 0, 0};
 // clang-format on
 constexpr ValueEntry kValues25_alphaMode[] = {
     {"opaque", ANARI_UNKNOWN, kKhrMaterialMatte},
@@ -2379,7 +2384,13 @@ constexpr ParameterEntry kParameters25[] = {
         .types = {kTypeList6, 1},
         .description = "cutoff for alpha mask mode",
         .defaultValue = kDefault25_alphaCutoff,
-        .extension = kKhrMaterialMatte}};
+        .extension = kKhrMaterialMatte},
+    {.name = "doubleSided",
+        .types = {kTypeList16, 1},
+        .description = "false: back faces are invisible to every ray",
+        .defaultValue = kDefault25_doubleSided,
+        .extension = kPrismMaterialDoubleSided}};
+constexpr int kContributors25[] = {kPrismMaterialDoubleSided};
 
 // ANARI_MATERIAL "physicallyBased": ANARI_KHR_MATERIAL_PHYSICALLY_BASED
 // clang-format off
@@ -2424,6 +2435,12 @@ constexpr float kDefault26_iridescence[] = {0.f};
 constexpr float kDefault26_iridescenceIor[] = {1.3f};
 // iridescenceThickness default: ANARI_FLOAT32
 constexpr float kDefault26_iridescenceThickness[] = {0.f};
+// baseColorFactor default: ANARI_FLOAT32_VEC3
+constexpr float kDefault26_baseColorFactor[] = {1.f, 1.f, 1.f};
+// doubleSided default: ANARI_BOOL
+alignas(4) constexpr int8_t kDefault26_doubleSided[] = {1, 0, 0, 0};
+// unlit default: ANARI_BOOL
+alignas(4) constexpr int8_t kDefault26_unlit[] = {0, 0, 0, 0};
 // clang-format on
 constexpr ValueEntry kValues26_alphaMode[] = {
     {"opaque", ANARI_UNKNOWN, kKhrMaterialPhysicallyBased},
@@ -2569,7 +2586,30 @@ constexpr ParameterEntry kParameters26[] = {
         .tags = kTags_attribute,
         .description = "iridescence thickness",
         .defaultValue = kDefault26_iridescenceThickness,
-        .extension = kKhrMaterialPhysicallyBased}};
+        .extension = kKhrMaterialPhysicallyBased},
+    {.name = "baseColorFactor",
+        .types = {kTypeList37, 3},
+        .tags = kTags_attribute_color,
+        .description =
+            "multiplies baseColor component by component: a constant, a "
+            "sampler or a surface attribute (e.g. \"color\")",
+        .defaultValue = kDefault26_baseColorFactor,
+        .extension = kPrismMaterialBaseColorFactor},
+    {.name = "doubleSided",
+        .types = {kTypeList16, 1},
+        .description = "false: back faces are invisible to every ray",
+        .defaultValue = kDefault26_doubleSided,
+        .extension = kPrismMaterialDoubleSided},
+    {.name = "unlit",
+        .types = {kTypeList16, 1},
+        .description =
+            "show the base color as is (emitted, no BSDF); every other input "
+            "but opacity, alphaMode and alphaCutoff is ignored",
+        .defaultValue = kDefault26_unlit,
+        .extension = kPrismMaterialUnlit}};
+constexpr int kContributors26[] = {kPrismMaterialBaseColorFactor,
+    kPrismMaterialDoubleSided,
+    kPrismMaterialUnlit};
 
 // ANARI_RENDERER "default": core
 // clang-format off
@@ -3734,8 +3774,11 @@ const char *const kExtensions[] = {"ANARI_EXT_SAMPLER_COMPRESSED_FORMAT_ASTC",
     "ANARI_KHR_SPATIAL_FIELD_STRUCTURED_REGULAR_FILTER_CUBIC",
     "ANARI_KHR_SPATIAL_FIELD_UNSTRUCTURED",
     "ANARI_KHR_VOLUME_TRANSFER_FUNCTION1D",
+    "ANARI_PRISM_MATERIAL_BASE_COLOR_FACTOR",
+    "ANARI_PRISM_MATERIAL_DOUBLE_SIDED",
+    "ANARI_PRISM_MATERIAL_UNLIT",
     "ANARI_PRISM_RENDERERS"};
-const size_t kExtensionCount = 64;
+const size_t kExtensionCount = 67;
 
 const char *const kAttributes[] = {"color",
     "worldPosition",
@@ -3924,13 +3967,15 @@ const ObjectEntry kObjects[] = {
         .subtype = "matte",
         .description = "matte material object",
         .extension = kKhrMaterialMatte,
-        .parameters = {kParameters25, 5}},
+        .contributors = {kContributors25, 1},
+        .parameters = {kParameters25, 6}},
     // ANARI_MATERIAL "physicallyBased"
     {.type = ANARI_MATERIAL,
         .subtype = "physicallyBased",
         .description = "physically based material object",
         .extension = kKhrMaterialPhysicallyBased,
-        .parameters = {kParameters26, 25}},
+        .contributors = {kContributors26, 3},
+        .parameters = {kParameters26, 28}},
     // ANARI_RENDERER "default"
     {.type = ANARI_RENDERER,
         .subtype = "default",

@@ -71,6 +71,12 @@ class Material : public Object
   {
     return m_alphaCutoff;
   }
+  // PRISM_MATERIAL_DOUBLE_SIDED: false when back faces must be invisible to
+  // every ray (glTF's doubleSided: false).
+  bool doubleSided() const
+  {
+    return m_doubleSided;
+  }
 
  protected:
   // Reads alphaMode and alphaCutoff, which every subtype understands; an
@@ -89,6 +95,12 @@ class Material : public Object
     }
     m_alphaCutoff = read<float>("alphaCutoff", ANARI_FLOAT32, 0.5f);
   }
+  // Reads doubleSided (PRISM_MATERIAL_DOUBLE_SIDED), which every subtype
+  // understands.
+  void readDoubleSided()
+  {
+    m_doubleSided = readBool("doubleSided", true);
+  }
 
   // MaterialInput::read() uses the protected parameter readers.
   template <typename T>
@@ -98,6 +110,7 @@ class Material : public Object
   bool m_readsAttributes{false};
   AlphaMode m_alphaMode{AlphaMode::Opaque};
   float m_alphaCutoff{0.5f};
+  bool m_doubleSided{true};
 };
 
 // The material of `subtype`, or NULL if the device does not implement it.

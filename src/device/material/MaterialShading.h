@@ -14,7 +14,10 @@ struct MaterialShading
   // How much of the surface rays see (alphaMode applied).
   float opacity{1.f};
   float3 emissive{0.f, 0.f, 0.f}; // radiance, W/sr/m^2
-  float occlusion{1.f};           // of ambient light only
+  // What the albedo channel (and the denoiser's guide) shows: the BSDF's
+  // base color, or the color an unlit surface shows (PRISM_MATERIAL_UNLIT).
+  float3 albedo{1.f, 1.f, 1.f};
+  float occlusion{1.f}; // of ambient light only
   // Tangent-space normal maps, when the material has them.
   bool hasNormalMap{false};
   float3 normalMap{0.f, 0.f, 1.f};

@@ -11,6 +11,7 @@ void Matte::commitParameters()
   m_colorReadsAttributes = !m_color.isConstant() || !m_opacity.isConstant();
   m_readsAttributes = m_colorReadsAttributes;
   readAlphaMode();
+  readDoubleSided();
 }
 
 float4 Matte::baseColorAndOpacity(const AttributeValues &attributes) const
@@ -26,6 +27,7 @@ MaterialShading Matte::shade(const AttributeValues &attributes) const
   const float4 base = baseColorAndOpacity(attributes);
   MaterialShading out;
   out.bsdf = matteBsdfInputs(xyz(base));
+  out.albedo = xyz(base);
   out.opacity = coverage(base.w);
   return out;
 }

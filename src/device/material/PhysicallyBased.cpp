@@ -19,9 +19,11 @@ void PhysicallyBased::commitParameters()
     field = Input::read(*this, name, field.constant(), accepts);
   };
   input(in.baseColor, "baseColor");
+  input(in.baseColorFactor, "baseColorFactor");
   input(in.opacity, "opacity");
-  m_colorReadsAttributes =
-      !in.baseColor.isConstant() || !in.opacity.isConstant();
+  m_colorReadsAttributes = !in.baseColor.isConstant()
+                           || !in.baseColorFactor.isConstant()
+                           || !in.opacity.isConstant();
   input(in.metallic, "metallic");
   input(in.roughness, "roughness");
   input(in.normal, "normal", InputAccepts::SamplerOnly);
@@ -35,6 +37,8 @@ void PhysicallyBased::commitParameters()
         "nothing");
   input(in.occlusion, "occlusion", InputAccepts::SamplerOnly);
   readAlphaMode();
+  readDoubleSided();
+  in.unlit = readBool("unlit", false);
   input(in.specular, "specular");
   input(in.specularColor, "specularColor");
   input(in.clearcoat, "clearcoat");
@@ -70,7 +74,8 @@ void PhysicallyBased::commitParameters()
 float4 PhysicallyBased::baseColorAndOpacity(
     const AttributeValues &attributes) const
 {
-  const float4 color = m_inputs.baseColor.evaluateFloat4(attributes);
+  const float4 color = m_inputs.baseColor.evaluateFloat4(attributes)
+                       * m_inputs.baseColorFactor.evaluateFloat4(attributes);
   float opacity = m_inputs.opacity.evaluate(attributes);
   // Spec 5.11.2: a sampled or attribute baseColor's fourth component scales
   // the opacity only when alphaMode is not opaque.
@@ -81,9 +86,12 @@ float4 PhysicallyBased::baseColorAndOpacity(
 
 MaterialShading PhysicallyBased::shade(const AttributeValues &attributes) const
 {
+  if (m_inputs.unlit)
+    return shadeUnlit(attributes);
   const Values values = evaluate(attributes);
   MaterialShading out;
   out.bsdf = physicallyBasedBsdfInputs(values);
+  out.albedo = values.baseColor;
   out.emissive = values.emissive;
   out.occlusion = clamp(values.occlusion, 0.f, 1.f);
   out.hasCoatNormalMap = values.clearcoat > 0.f
@@ -100,8 +108,29 @@ MaterialShading PhysicallyBased::shade(const AttributeValues &attributes) const
   return out;
 }
 
+MaterialShading PhysicallyBased::shadeUnlit(
+    const AttributeValues &attributes) const
+{
+  // The base color seen as is: emitted over a BSDF that reflects nothing,
+  // so lights change nothing on it; it is also what the albedo shows, so
+  // the denoiser keeps its texture.
+  const float4 base = baseColorAndOpacity(attributes);
+  MaterialShading out;
+  out.bsdf.baseColor = {0.f, 0.f, 0.f};
+  out.bsdf.metallic = 0.f;
+  out.bsdf.specular = 0.f;
+  out.emissive = usableEmission(xyz(base));
+  out.albedo = xyz(base);
+  out.opacity = coverage(base.w);
+  return out;
+}
+
 bool PhysicallyBased::constantEmission(float3 &radiance) const
 {
+  // Unlit surfaces are seen, not sampled as lights: they would take light
+  // samples from the scene's real lights.
+  if (m_inputs.unlit)
+    return false;
   // Textured emission varies over the surface: rays find it alone.
   if (m_inputs.emissive.source() != MaterialInput<float3>::Source::Constant)
     return false;

@@ -1,7 +1,10 @@
 // The physicallyBased material (spec 5.11.2): glTF's metallic-roughness BRDF
 // with the specular, clearcoat, transmission, volume, sheen and iridescence
-// extensions. This object only resolves its parameters; a path tracer
-// evaluates the lobes from inputs() or evaluate().
+// extensions, and prism's glTF extras: baseColorFactor
+// (PRISM_MATERIAL_BASE_COLOR_FACTOR), unlit (PRISM_MATERIAL_UNLIT) and
+// doubleSided (PRISM_MATERIAL_DOUBLE_SIDED, in Material). This object only
+// resolves its parameters; a path tracer evaluates the lobes from inputs() or
+// evaluate().
 #pragma once
 
 #include "MaterialInput.h"
@@ -18,6 +21,9 @@ class PhysicallyBased : public Material
   struct Inputs
   {
     MaterialInput<float3> baseColor{float3{1.f, 1.f, 1.f}};
+    // PRISM_MATERIAL_BASE_COLOR_FACTOR: multiplies baseColor (all four
+    // components).
+    MaterialInput<float3> baseColorFactor{float3{1.f, 1.f, 1.f}};
     MaterialInput<float> opacity{1.f};
     MaterialInput<float> metallic{1.f};
     MaterialInput<float> roughness{1.f};
@@ -41,6 +47,8 @@ class PhysicallyBased : public Material
     MaterialInput<float> iridescence{0.f};
     float iridescenceIor{1.3f};
     MaterialInput<float> iridescenceThickness{0.f};
+    // PRISM_MATERIAL_UNLIT: the base color emitted over a black BSDF.
+    bool unlit{false};
   };
 
   // The inputs resolved at one hit; opacity already includes baseColor's
@@ -91,6 +99,8 @@ class PhysicallyBased : public Material
   void commitParameters() override;
 
  private:
+  MaterialShading shadeUnlit(const AttributeValues &attributes) const;
+
   Inputs m_inputs;
 };
 

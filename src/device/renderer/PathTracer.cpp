@@ -323,7 +323,7 @@ void PathTracer::recordFirstHit(Bounce &b) const
     return;
   path.sample.depth = b.hit.t;
   path.sample.normal = b.surface.shadingNormal;
-  path.sample.albedo = b.shading.bsdf.baseColor;
+  path.sample.albedo = b.shading.albedo;
   path.sample.primitiveId = b.surface.attributes.primitiveId;
   path.sample.objectId = b.surface.surface->id();
   path.sample.instanceId = b.surface.placement->instanceId;
@@ -418,7 +418,8 @@ void PathTracer::scatter(
   const float2 direction = random2(path, stream);
   const float lobe = randomX(path, stream + 1);
   const BsdfSample bs = bsdf.sample(scattering.wo, direction, lobe);
-  if (!bs.valid())
+  // A black BSDF (e.g. an unlit surface) ends the path.
+  if (!bs.valid() || !(maxComponent(bs.weight) > 0.f))
     return;
   path.throughput = path.throughput * bs.weight;
   path.previousPdf = bs.pdf;

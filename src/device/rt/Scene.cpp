@@ -188,11 +188,24 @@ PRISM_SAME_OFFSET(geometryId, hit.geomID);
 PRISM_SAME_OFFSET(instanceId, hit.instID);
 #undef PRISM_SAME_OFFSET
 
-void attach(RTCScene scene, RTCGeometry geometry, uint32_t id)
+// Embree filter: rejects hits on a geometry's back side (the ray along its
+// geometric normal). Ray and normal are in the same space (the instance's,
+// under instancing), and the sign of their dot product is the same in every
+// space, so mirroring transforms need no care.
+void rejectBackFaces(const RTCFilterFunctionNArguments *args)
 {
-  rtcCommitGeometry(geometry);
-  rtcAttachGeometryByID(scene, geometry, id);
-  rtcReleaseGeometry(geometry);
+  for (unsigned i = 0; i < args->N; i++) {
+    if (args->valid[i] != -1)
+      continue;
+    const float facing = RTCRayN_dir_x(args->ray, args->N, i)
+                             * RTCHitN_Ng_x(args->hit, args->N, i)
+                         + RTCRayN_dir_y(args->ray, args->N, i)
+                               * RTCHitN_Ng_y(args->hit, args->N, i)
+                         + RTCRayN_dir_z(args->ray, args->N, i)
+                               * RTCHitN_Ng_z(args->hit, args->N, i);
+    if (facing > 0.f)
+      args->valid[i] = 0;
+  }
 }
 
 Hit toHit(const RTCRayHit &rh)
@@ -229,6 +242,7 @@ void Scene::clear()
     rtcReleaseScene(m_scene);
   m_rayRange = kLargestCoordinate;
   m_interpolatedVertices.clear();
+  m_attached.clear();
   m_scene = m_context.isValid() ? rtcNewScene(m_context.handle()) : nullptr;
   if (m_scene) {
     rtcSetSceneBuildQuality(m_scene, RTC_BUILD_QUALITY_HIGH);
@@ -284,7 +298,7 @@ void Scene::addMesh(uint32_t id,
       0,
       corners * sizeof(uint32_t),
       primitiveCount);
-  attach(m_scene, g, id);
+  attach(g, id);
 }
 
 void Scene::addTriangles(uint32_t id,
@@ -337,7 +351,7 @@ void Scene::addSpheres(uint32_t id, const float4 *centerAndRadius, size_t count)
       0,
       sizeof(float4),
       count);
-  attach(m_scene, g, id);
+  attach(g, id);
 }
 
 void Scene::addRoundCurves(uint32_t id,
@@ -366,7 +380,7 @@ void Scene::addRoundCurves(uint32_t id,
       0,
       sizeof(uint32_t),
       segmentCount);
-  attach(m_scene, g, id);
+  attach(g, id);
 }
 
 void Scene::addUser(uint32_t id, const UserGeometry *geometry, size_t count)
@@ -379,7 +393,7 @@ void Scene::addUser(uint32_t id, const UserGeometry *geometry, size_t count)
   rtcSetGeometryBoundsFunction(g, userBounds, nullptr);
   rtcSetGeometryIntersectFunction(g, userIntersect);
   rtcSetGeometryOccludedFunction(g, userOccluded);
-  attach(m_scene, g, id);
+  attach(g, id);
 }
 
 void Scene::addInstance(
@@ -392,7 +406,7 @@ void Scene::addInstance(
   rtcSetGeometryInstancedScene(g, child.m_scene);
   rtcSetGeometryTransform(
       g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, &worldFromObject);
-  attach(m_scene, g, id);
+  attach(g, id);
   m_rayRange = std::min(m_rayRange, worldRayRange(inverse(worldFromObject)));
 }
 
@@ -426,7 +440,28 @@ void Scene::addInstance(
     m_rayRange =
         std::min(m_rayRange, worldRayRange(inverse(worldFromObject.at(time))));
   }
-  attach(m_scene, g, id);
+  attach(g, id);
+}
+
+void Scene::attach(RTCGeometry geometry, uint32_t id)
+{
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometryByID(m_scene, geometry, id);
+  rtcReleaseGeometry(geometry);
+  if (id >= m_attached.size())
+    m_attached.resize(size_t(id) + 1, false);
+  m_attached[id] = true;
+}
+
+void Scene::cullBackFaces(uint32_t id)
+{
+  // Geometry that added nothing (empty, invalid) has no Embree geometry.
+  if (!m_scene || id >= m_attached.size() || !m_attached[id])
+    return;
+  RTCGeometry geometry = rtcGetGeometry(m_scene, id);
+  rtcSetGeometryIntersectFilterFunction(geometry, rejectBackFaces);
+  rtcSetGeometryOccludedFilterFunction(geometry, rejectBackFaces);
+  rtcCommitGeometry(geometry);
 }
 
 void Scene::commit()

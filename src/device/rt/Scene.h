@@ -14,6 +14,7 @@
 #include <vector>
 
 struct RTCSceneTy;
+struct RTCGeometryTy;
 
 namespace prism {
 class MotionTransform;
@@ -79,6 +80,11 @@ class Scene
       const uint32_t *segmentStarts,
       size_t segmentCount);
   void addUser(uint32_t id, const UserGeometry *geometry, size_t count);
+  // Makes geometry `id` (already added) single-sided: every ray passes
+  // through the side its geometric normal points away from (for triangles
+  // and quads, where the corners run clockwise). Embree-native geometry
+  // only; user geometry stays two-sided.
+  void cullBackFaces(uint32_t id);
   // `child` placed by `worldFromObject`; `child` must be committed first.
   void addInstance(
       uint32_t id, const Scene &child, const mat3x4 &worldFromObject);
@@ -115,6 +121,8 @@ class Scene
   void intersect(RayHitPacket &packet, const int active[kPacketSize]) const;
 
  private:
+  // Commits `geometry` and attaches it as `id`, handing over our reference.
+  void attach(RTCGeometryTy *geometry, uint32_t id);
   // Marks the queue's rays beyond rayRange() untraceable.
   void confine(RayQueue &queue) const;
   // Triangles (3 indices per primitive) or quads (4), sharing the arrays.
@@ -131,6 +139,7 @@ class Scene
   // Vertices interpolated between keys where Embree's time steps fall
   // between them; kept until clear().
   std::vector<std::vector<float3>> m_interpolatedVertices;
+  std::vector<bool> m_attached; // by geometry id
 };
 
 } // namespace prism::rt

@@ -24,7 +24,55 @@ the outputs are committed, so this only reruns when the assets change):
                         material-index-2pow32.glb (a primitive's material
                         2^32 + 1 inside a GLB's JSON chunk),
                         huge-zero-accessor.gltf (POSITION without a buffer
-                        view claiming 2^28 - 1 elements: nothing backs them)
+                        view claiming 2^28 - 1 elements: nothing backs them),
+                        missing-texture.gltf (its PNG does not exist)
+  default lighting      lightless-box.gltf (a textured box, no lights: lit by
+                        the tool's studio by default, black with --env
+                        none), lit-box.gltf (the box under a directional
+                        light along -z), emissive-box.gltf (an emissive box,
+                        no lights), red-sky.hdr (8x4, radiance (1, 0, 0)
+                        everywhere), glowing.obj/.mtl (a quad with Ke)
+  normal maps           normal-mapped-plane.gltf: a plane of two UV islands,
+                        the right one mirrored in TEXCOORD_1 (which the
+                        normal map reads; TEXCOORD_0 is a plain planar map),
+                        no TANGENT, lit by a directional light from the
+                        upper right; -tangents.gltf: the same with the
+                        analytic TANGENT (left (1, 0, 0, -1), right
+                        (-1, 0, 0, 1)); -unmirrored.gltf: the right island's
+                        TANGENT wrong on purpose (as if not mirrored)
+  Fresnel               fresnel-plane.gltf: a 200x200 smooth black dielectric
+                        plane (no material extensions) seen from 1 unit above
+                        at 20 degrees down (yfov 0.5); white-sky.hdr (8x4,
+                        radiance 1 everywhere); expected-fresnel-48.pfm: the
+                        glTF BRDF's answer for a 48x48 view, Schlick's
+                        F = 0.04 + 0.96 (1 - cos)^5 of each ray averaged over
+                        its pixel (the reflection sees the sky, 1)
+  material extensions   unlit.gltf (a checker quad, KHR_materials_unlit, under a
+                        strong light), vertex-color-texture.gltf (the checker
+                        times COLOR_0 (0.5, 1, 0.25)), spec-gloss.gltf (four
+                        KHR_materials_pbrSpecularGlossiness quads: chrome,
+                        black plastic (specular 0.04), a colored dielectric
+                        and a textured one), single-sided.gltf (two quads
+                        turned away from the camera, the left single-sided),
+                        expected-*.pfm for each: what an exact answer gives
+                        (linear texel colors, products, the published
+                        specular-glossiness conversion); all seen through an
+                        orthographic camera that the quads fill exactly
+  points and lines      points-lines.gltf: one mesh under a node scaled by 2
+                        (positions halved) of POINTS (red, green and blue at
+                        x = -0.1, 0, 0.1 and a white one far off at (5, 5):
+                        the scene's diagonal is 7.23, so spheres and curves
+                        get radius 0.00723), a LINE_STRIP (yellow, y = -0.1),
+                        LINES (magenta, x = 0.12) and a LINE_LOOP (a cyan
+                        square whose closing edge is its left side), seen
+                        by an orthographic camera over [-0.15, 0.15]^2
+  unsupported           draco-*.gltf (KHR_draco_mesh_compression), basisu-*.gltf
+  extensions            (KHR_texture_basisu; the KTX2 image is only the magic
+                        number), meshopt-*.gltf (EXT_meshopt_compression):
+                        -required (in extensionsRequired), -no-fallback (only
+                        used, but a primitive or texture depends on it),
+                        -fallback (only used, with the uncompressed data or
+                        a PNG: renders)
   OBJ numbers           nonfinite.obj (nan, inf and 1e39 vertices beside a
                         good quad), huge-index.obj (vertex 2^63),
                         wrapping-index.obj (vertex 2^32 + 1, which a 32-bit
@@ -203,6 +251,455 @@ def textured_scene(binary):
     return b"glTF" + struct.pack("<II", 2, 12 + len(body)) + body
 
 
+def data_uri(kind, payload):
+    return "data:%s;base64,%s" % (kind, base64.b64encode(payload).decode())
+
+
+def finish_gltf(gltf, buf):
+    """Adds the buffer (as a data URI), views and accessors; JSON text."""
+    gltf["bufferViews"] = buf.views
+    gltf["accessors"] = buf.accessors
+    gltf["buffers"] = [{"byteLength": len(buf.data),
+                        "uri": data_uri("application/octet-stream",
+                                        bytes(buf.data))}]
+    return json.dumps(gltf, indent=1)
+
+
+# The faces of an axis-aligned cube: (normal, u axis, v axis); v grows down
+# the image in glTF, so the v axis points down each face.
+CUBE_FACES = [((0, 0, 1), (1, 0, 0), (0, -1, 0)),
+              ((0, 0, -1), (-1, 0, 0), (0, -1, 0)),
+              ((1, 0, 0), (0, 0, -1), (0, -1, 0)),
+              ((-1, 0, 0), (0, 0, 1), (0, -1, 0)),
+              ((0, 1, 0), (1, 0, 0), (0, 0, 1)),
+              ((0, -1, 0), (1, 0, 0), (0, 0, -1))]
+
+
+def cube_primitive(buf, half=0.5):
+    """A cube of 24 vertices (normals and uvs per face), 12 triangles."""
+    positions, normals, uvs, indices = [], [], [], []
+    for n, u, v in CUBE_FACES:
+        base = len(positions)
+        for su, sv in ((-1, -1), (1, -1), (1, 1), (-1, 1)):
+            positions.append(tuple(half * (n[i] + su * u[i] + sv * v[i])
+                                   for i in range(3)))
+            normals.append(tuple(float(c) for c in n))
+            uvs.append(((su + 1) / 2.0, (sv + 1) / 2.0))
+        # (u, v) with v pointing down the face is clockwise seen from
+        # outside, so the corners go 0, 3, 2 / 0, 2, 1 to face out.
+        indices += [base, base + 3, base + 2, base, base + 2, base + 1]
+    return {"attributes": {
+        "POSITION": buf.accessor("f", FLOAT, "VEC3", positions, bounds=True),
+        "NORMAL": buf.accessor("f", FLOAT, "VEC3", normals),
+        "TEXCOORD_0": buf.accessor("f", FLOAT, "VEC2", uvs)},
+        "indices": buf.accessor("H", USHORT, "SCALAR", indices)}
+
+
+def box_scene(kind):
+    """The lighting tests' box: 'lightless' (textured, nothing emits),
+    'lit' (plus a directional light shining along -z) or 'emissive'."""
+    buf = Buffer()
+    primitive = cube_primitive(buf)
+    primitive["material"] = 0
+    material = {"pbrMetallicRoughness": {
+        "baseColorTexture": {"index": 0},
+        "metallicFactor": 0.0, "roughnessFactor": 0.6}}
+    gltf = {
+        "asset": {"version": "2.0", "generator": "prism tests/cli/data/make_assets.py"},
+        "scene": 0,
+        "scenes": [{"nodes": [0]}],
+        "nodes": [{"name": "box", "mesh": 0}],
+        "meshes": [{"primitives": [primitive]}],
+        "materials": [material],
+        "textures": [{"source": 0}],
+        "images": [{"uri": data_uri("image/png", checker_png())}],
+    }
+    if kind == "lit":
+        gltf["extensionsUsed"] = ["KHR_lights_punctual"]
+        gltf["scenes"][0]["nodes"].append(1)
+        # A light node's default direction is -z.
+        gltf["nodes"].append({"name": "light",
+                              "extensions": {"KHR_lights_punctual": {"light": 0}}})
+        gltf["extensions"] = {"KHR_lights_punctual": {"lights": [
+            {"type": "directional", "intensity": 3.0}]}}
+    elif kind == "emissive":
+        material["emissiveFactor"] = [1.0, 0.5, 0.2]
+    return finish_gltf(gltf, buf)
+
+
+def rgbe(r, g, b):
+    """One Radiance RGBE pixel (shared exponent)."""
+    top = max(r, g, b)
+    if top < 1e-32:
+        return bytes(4)
+    mantissa, exponent = math.frexp(top)
+    scale = mantissa * 256.0 / top
+    return bytes((int(r * scale), int(g * scale), int(b * scale),
+                  exponent + 128))
+
+
+def uniform_hdr(width, height, rgb):
+    """A Radiance .hdr (flat, not run-length encoded) of one radiance."""
+    header = b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y %d +X %d\n" % (
+        height, width)
+    return header + rgbe(*rgb) * (width * height)
+
+
+GLOWING_OBJ = """# A quad whose material emits (Ke): the scene lights itself.
+mtllib glowing.mtl
+v -1 -1 0
+v  1 -1 0
+v  1  1 0
+v -1  1 0
+usemtl glow
+f 1 2 3 4
+"""
+
+GLOWING_MTL = """newmtl glow
+Kd 0.5 0.5 0.5
+Ke 2 1 0.5
+"""
+
+
+def normal_png(nx, ny, nz):
+    """A 4x4 tangent-space normal map of one normal (n * 0.5 + 0.5)."""
+    texel = tuple(int(round((c * 0.5 + 0.5) * 255)) for c in (nx, ny, nz)) + (255,)
+    return png_rgba(4, 4, [[texel] * 4 for _ in range(4)])
+
+
+def normal_mapped_plane(tangents):
+    """A 2x2 plane at z = 0 facing +z of two quads (UV islands). TEXCOORD_1
+    runs u along +x on the left island and along -x on the right (mirrored),
+    v down (-y) on both; the normal map reads TEXCOORD_1. `tangents`: None,
+    'analytic' (what a correct generator must give: T along increasing u, w
+    such that cross(N, T) * w runs along increasing v) or 'unmirrored' (the
+    right island's tangent as if it were not mirrored)."""
+    buf = Buffer()
+    positions, uv0, uv1, tangent = [], [], [], []
+    for island, (x0, x1) in enumerate(((-1.0, 0.0), (0.0, 1.0))):
+        for x, y in ((x0, -1.0), (x1, -1.0), (x1, 1.0), (x0, 1.0)):
+            positions.append((x, y, 0.0))
+            uv0.append(((x + 1) / 2, (1 - y) / 2))
+            u = x + 1 if island == 0 else 1 - x
+            uv1.append((u, (1 - y) / 2))
+            if island == 0 or tangents == "unmirrored":
+                tangent.append((1.0, 0.0, 0.0, -1.0))
+            else:
+                tangent.append((-1.0, 0.0, 0.0, 1.0))
+    attributes = {
+        "POSITION": buf.accessor("f", FLOAT, "VEC3", positions, bounds=True),
+        "NORMAL": buf.accessor("f", FLOAT, "VEC3", [(0.0, 0.0, 1.0)] * 8),
+        "TEXCOORD_0": buf.accessor("f", FLOAT, "VEC2", uv0),
+        "TEXCOORD_1": buf.accessor("f", FLOAT, "VEC2", uv1)}
+    if tangents:
+        attributes["TANGENT"] = buf.accessor("f", FLOAT, "VEC4", tangent)
+    indices = buf.accessor("H", USHORT, "SCALAR",
+                           [0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7])
+    # A normal tilted towards +u and +v (0.48, 0.36, 0.8): each island
+    # leans its own way, so a wrong tangent or sign shows.
+    gltf = {
+        "asset": {"version": "2.0", "generator": "prism tests/cli/data/make_assets.py"},
+        "extensionsUsed": ["KHR_lights_punctual"],
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1, 2]}],
+        "nodes": [{"mesh": 0},
+                  {"camera": 0, "translation": [0.0, 0.0, 3.0]},
+                  {"rotation": [-0.2126, 0.3172, 0.0735, 0.9212],
+                   "extensions": {"KHR_lights_punctual": {"light": 0}}}],
+        "meshes": [{"primitives": [{"attributes": attributes,
+                                    "indices": indices, "material": 0}]}],
+        "materials": [{"normalTexture": {"index": 0, "texCoord": 1},
+                       "pbrMetallicRoughness": {"metallicFactor": 0.0,
+                                                "roughnessFactor": 0.7}}],
+        "textures": [{"source": 0}],
+        "images": [{"uri": data_uri("image/png", normal_png(0.48, 0.36, 0.8))}],
+        "cameras": [{"type": "perspective", "perspective": {
+            "yfov": 0.8, "aspectRatio": 1.0, "znear": 0.1}}],
+        "extensions": {"KHR_lights_punctual": {"lights": [
+            {"type": "directional", "intensity": 2.0}]}},
+    }
+    return finish_gltf(gltf, buf)
+
+
+FRESNEL_PITCH = math.radians(20.0)  # camera looks this far below the horizon
+FRESNEL_YFOV = 0.5
+
+
+def fresnel_plane():
+    buf = Buffer()
+    half = 100.0
+    attributes = {
+        "POSITION": buf.accessor("f", FLOAT, "VEC3",
+                                 [(-half, 0.0, half), (half, 0.0, half),
+                                  (half, 0.0, -half), (-half, 0.0, -half)],
+                                 bounds=True),
+        "NORMAL": buf.accessor("f", FLOAT, "VEC3", [(0.0, 1.0, 0.0)] * 4)}
+    indices = buf.accessor("H", USHORT, "SCALAR", [0, 1, 2, 0, 2, 3])
+    a = -FRESNEL_PITCH / 2
+    gltf = {
+        "asset": {"version": "2.0", "generator": "prism tests/cli/data/make_assets.py"},
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1]}],
+        "nodes": [{"mesh": 0},
+                  {"camera": 0, "translation": [0.0, 1.0, 0.0],
+                   "rotation": [math.sin(a), 0.0, 0.0, math.cos(a)]}],
+        "meshes": [{"primitives": [{"attributes": attributes,
+                                    "indices": indices, "material": 0}]}],
+        # A plain glTF dielectric: black, smooth, no extensions.
+        "materials": [{"pbrMetallicRoughness": {
+            "baseColorFactor": [0.0, 0.0, 0.0, 1.0],
+            "metallicFactor": 0.0, "roughnessFactor": 0.0}}],
+        "cameras": [{"type": "perspective", "perspective": {
+            "yfov": FRESNEL_YFOV, "aspectRatio": 1.0, "znear": 0.01}}],
+    }
+    return finish_gltf(gltf, buf)
+
+
+def expected_fresnel(size, subsamples=16):
+    """What the glTF BRDF gives fresnel_plane() under a sky of radiance 1:
+    a smooth dielectric (ior 1.5, specular 1) reflects Schlick's
+    F = 0.04 + 0.96 (1 - cos)^5 of the sky, cos between the ray and the
+    normal; each pixel the mean over a subsamples^2 grid. PFM, bottom row
+    first."""
+    t = math.tan(FRESNEL_YFOV / 2)
+    forward = (0.0, -math.sin(FRESNEL_PITCH), -math.cos(FRESNEL_PITCH))
+    up = (0.0, math.cos(FRESNEL_PITCH), -math.sin(FRESNEL_PITCH))
+    right = (1.0, 0.0, 0.0)
+    rows = []
+    for y in range(size):  # y = 0 is the bottom row
+        row = []
+        for x in range(size):
+            total = 0.0
+            for sy in range(subsamples):
+                for sx in range(subsamples):
+                    u = ((x + (sx + 0.5) / subsamples) / size - 0.5) * 2 * t
+                    v = ((y + (sy + 0.5) / subsamples) / size - 0.5) * 2 * t
+                    d = [forward[i] + u * right[i] + v * up[i] for i in range(3)]
+                    cos = -d[1] / math.sqrt(sum(c * c for c in d))
+                    total += 0.04 + 0.96 * (1.0 - cos) ** 5
+            f = total / subsamples ** 2
+            row += [f, f, f]
+        rows += row
+    header = b"PF\n%d %d\n-1.0\n" % (size, size)
+    return header + struct.pack("<%df" % len(rows), *rows)
+
+
+def linear(c8):
+    """An 8-bit sRGB value as linear."""
+    c = c8 / 255.0
+    return c / 12.92 if c <= 0.04045 else ((c + 0.055) / 1.055) ** 2.4
+
+
+CHECKER_QUADRANTS = {(0, 0): (220, 30, 30), (1, 0): (30, 200, 60),
+                     (0, 1): (40, 60, 220), (1, 1): (240, 220, 40)}
+
+
+def checker_linear(u, v):
+    """checker.png's linear color at texture coordinates (u, v), v down."""
+    c = CHECKER_QUADRANTS[(min(int(u * 2), 1), min(int(v * 2), 1))]
+    return tuple(linear(x) for x in c)
+
+
+def quads_gltf(quads, materials, images=None, extensions_used=None,
+               lights=False, view_half=1.0):
+    """Unit-textured 2 * half squares at z = 0, each (cx, cy, half, material,
+    facing_camera, color or None), seen by an orthographic camera at z = 3
+    whose view (2 * view_half square) they fill."""
+    buf = Buffer()
+    primitives = []
+    for cx, cy, half, material, facing, color in quads:
+        corners = [(cx - half, cy - half), (cx + half, cy - half),
+                   (cx + half, cy + half), (cx - half, cy + half)]
+        attributes = {
+            "POSITION": buf.accessor("f", FLOAT, "VEC3",
+                                     [(x, y, 0.0) for x, y in corners],
+                                     bounds=True),
+            "NORMAL": buf.accessor("f", FLOAT, "VEC3",
+                                   [(0.0, 0.0, 1.0 if facing else -1.0)] * 4),
+            "TEXCOORD_0": buf.accessor("f", FLOAT, "VEC2",
+                                       [(0.0, 1.0), (1.0, 1.0), (1.0, 0.0),
+                                        (0.0, 0.0)])}
+        if color:
+            attributes["COLOR_0"] = buf.accessor("f", FLOAT, "VEC4",
+                                                 [color] * 4)
+        order = [0, 1, 2, 0, 2, 3] if facing else [0, 2, 1, 0, 3, 2]
+        primitives.append({"attributes": attributes, "material": material,
+                           "indices": buf.accessor("H", USHORT, "SCALAR", order)})
+    gltf = {
+        "asset": {"version": "2.0", "generator": "prism tests/cli/data/make_assets.py"},
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1]}],
+        "nodes": [{"mesh": 0}, {"camera": 0, "translation": [0.0, 0.0, 3.0]}],
+        "meshes": [{"primitives": primitives}],
+        "materials": materials,
+        "cameras": [{"type": "orthographic", "orthographic": {
+            "xmag": view_half, "ymag": view_half, "znear": 0.1, "zfar": 10.0}}],
+    }
+    if images:
+        gltf["images"] = [{"uri": data_uri("image/png", png)} for png in images]
+        gltf["textures"] = [{"source": i, "sampler": 0}
+                            for i in range(len(images))]
+        gltf["samplers"] = [{"magFilter": 9728, "minFilter": 9728}]
+    if extensions_used:
+        gltf["extensionsUsed"] = list(extensions_used)
+    if lights:
+        gltf.setdefault("extensionsUsed", []).append("KHR_lights_punctual")
+        gltf["scenes"][0]["nodes"].append(2)
+        gltf["nodes"].append({"extensions": {"KHR_lights_punctual": {"light": 0}}})
+        gltf["extensions"] = {"KHR_lights_punctual": {"lights": [
+            {"type": "directional", "intensity": 10.0}]}}
+    return finish_gltf(gltf, buf)
+
+
+def expected_image(size, view_half, color_at):
+    """PFM (bottom row first) of color_at(x, y) at each pixel centre, in
+    world units on the z = 0 plane the orthographic camera sees."""
+    values = []
+    for row in range(size):
+        for col in range(size):
+            x = ((col + 0.5) / size * 2 - 1) * view_half
+            y = ((row + 0.5) / size * 2 - 1) * view_half
+            values += list(color_at(x, y))
+    header = b"PF\n%d %d\n-1.0\n" % (size, size)
+    return header + struct.pack("<%df" % len(values), *values)
+
+
+def unlit_files():
+    material = {"pbrMetallicRoughness": {"baseColorTexture": {"index": 0},
+                                         "metallicFactor": 0.0},
+                "extensions": {"KHR_materials_unlit": {}}}
+    scene = quads_gltf([(0, 0, 1, 0, True, None)], [material],
+                       images=[checker_png()],
+                       extensions_used=["KHR_materials_unlit"], lights=True)
+    expected = expected_image(32, 1.0, lambda x, y: checker_linear(
+        (x + 1) / 2, (1 - y) / 2))
+    return scene, expected
+
+
+VERTEX_COLOR = (0.5, 1.0, 0.25, 1.0)
+
+
+def vertex_color_files():
+    material = {"pbrMetallicRoughness": {"baseColorTexture": {"index": 0},
+                                         "metallicFactor": 0.0}}
+    scene = quads_gltf([(0, 0, 1, 0, True, VERTEX_COLOR)], [material],
+                       images=[checker_png()])
+    expected = expected_image(32, 1.0, lambda x, y: tuple(
+        c * k for c, k in zip(checker_linear((x + 1) / 2, (1 - y) / 2),
+                              VERTEX_COLOR)))
+    return scene, expected
+
+
+def spec_gloss_base(diffuse, specular, glossiness):
+    """The published specular-glossiness to metallic-roughness conversion
+    (linear colors): (base rgb, metallic, roughness)."""
+    def brightness(c):
+        return math.sqrt(0.299 * c[0] ** 2 + 0.587 * c[1] ** 2
+                         + 0.114 * c[2] ** 2)
+    d, sp = brightness(diffuse), brightness(specular)
+    one_minus = 1 - max(specular)
+    metallic = 0.0
+    if sp >= 0.04:
+        a, b, c = 0.04, d * one_minus / 0.96 + sp - 0.08, 0.04 - sp
+        metallic = min(max((-b + math.sqrt(max(b * b - 4 * a * c, 0))) / (2 * a),
+                           0.0), 1.0)
+    base = []
+    for i in range(3):
+        from_diffuse = diffuse[i] * one_minus / 0.96 / max(1 - metallic, 1e-6)
+        from_specular = (specular[i] - 0.04 * (1 - metallic)) / max(metallic, 1e-6)
+        t = metallic * metallic
+        base.append(min(max(from_diffuse + (from_specular - from_diffuse) * t,
+                            0.0), 1.0))
+    return tuple(base), metallic, 1 - glossiness
+
+
+SPEC_GLOSS = [  # (cx, cy, diffuse, specular, glossiness, textured)
+    (-1, 1, (0.0, 0.0, 0.0), (1.0, 1.0, 1.0), 1.0, False),   # chrome
+    (1, 1, (0.0, 0.0, 0.0), (0.04, 0.04, 0.04), 1.0, False),  # black plastic
+    (-1, -1, (0.5, 0.25, 0.1), (0.04, 0.04, 0.04), 0.5, False),
+    (1, -1, (1.0, 1.0, 1.0), (1.0, 1.0, 1.0), 1.0, True),     # textured
+]
+
+
+def spec_gloss_files():
+    # The textured quad: diffuse checker.png; specular-glossiness a 2x2
+    # image of black specular (sRGB 0) and glossiness 1.
+    black_glossy = png_rgba(2, 2, [[(0, 0, 0, 255)] * 2] * 2)
+    materials, quads = [], []
+    for i, (cx, cy, diffuse, specular, gloss, textured) in enumerate(SPEC_GLOSS):
+        ext = {"diffuseFactor": list(diffuse) + [1.0],
+               "specularFactor": list(specular), "glossinessFactor": gloss}
+        if textured:
+            ext["diffuseTexture"] = {"index": 0}
+            ext["specularGlossinessTexture"] = {"index": 1}
+        materials.append({"extensions": {
+            "KHR_materials_pbrSpecularGlossiness": ext}})
+        quads.append((cx, cy, 1, i, True, None))
+    scene = quads_gltf(quads, materials, images=[checker_png(), black_glossy],
+                       extensions_used=["KHR_materials_pbrSpecularGlossiness"],
+                       view_half=2.0)
+
+    def base_at(x, y):
+        for cx, cy, diffuse, specular, gloss, textured in SPEC_GLOSS:
+            if abs(x - cx) < 1 and abs(y - cy) < 1:
+                if textured:
+                    diffuse = checker_linear((x - cx + 1) / 2, (cy + 1 - y) / 2)
+                    specular = (0.0, 0.0, 0.0)
+                return spec_gloss_base(diffuse, specular, gloss)[0]
+        return (0.0, 0.0, 0.0)
+    return scene, expected_image(32, 2.0, base_at)
+
+
+def single_sided_file():
+    red = {"pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.1, 0.1, 1.0],
+                                    "metallicFactor": 0.0}}
+    both = dict(red, doubleSided=True)
+    # Both turned away from the camera: the left (single-sided, glTF's
+    # default) is invisible, the right (doubleSided) shows its back.
+    return quads_gltf([(-1, 0, 1, 0, False, None), (1, 0, 1, 1, False, None)],
+                      [red, both], view_half=2.0)
+
+
+def points_lines_file():
+    buf = Buffer()
+
+    def primitive(mode, points, material, colors=None):
+        # The node scales by 2: positions are stored halved.
+        attributes = {"POSITION": buf.accessor(
+            "f", FLOAT, "VEC3", [(x / 2, y / 2, 0.0) for x, y in points],
+            bounds=True)}
+        if colors:
+            attributes["COLOR_0"] = buf.accessor("f", FLOAT, "VEC3", colors)
+        return {"attributes": attributes, "mode": mode, "material": material}
+    primitives = [
+        primitive(0, [(-0.1, 0.0), (0.0, 0.0), (0.1, 0.0), (5.0, 5.0)], 0,
+                  [(1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0),
+                   (1.0, 1.0, 1.0)]),
+        primitive(3, [(-0.1, -0.1), (0.0, -0.1), (0.1, -0.1)], 1),
+        primitive(1, [(0.12, 0.05), (0.12, 0.12)], 2),
+        primitive(2, [(-0.12, 0.06), (-0.06, 0.06), (-0.06, 0.12),
+                      (-0.12, 0.12)], 3),
+    ]
+
+    def flat(r, g, b):
+        return {"pbrMetallicRoughness": {"baseColorFactor": [r, g, b, 1.0],
+                                         "metallicFactor": 0.0},
+                "doubleSided": True}
+    gltf = {
+        "asset": {"version": "2.0", "generator": "prism tests/cli/data/make_assets.py"},
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1]}],
+        "nodes": [{"mesh": 0, "scale": [2.0, 2.0, 2.0]},
+                  {"camera": 0, "translation": [0.0, 0.0, 3.0]}],
+        "meshes": [{"primitives": primitives}],
+        "materials": [flat(1, 1, 1), flat(1, 1, 0), flat(1, 0, 1),
+                      flat(0, 1, 1)],
+        "cameras": [{"type": "orthographic", "orthographic": {
+            "xmag": 0.15, "ymag": 0.15, "znear": 0.1, "zfar": 10.0}}],
+    }
+    return finish_gltf(gltf, buf)
+
+
 def plane_scene():
     buf = Buffer()
     quad, indices = quad_accessors(buf, half=2.0)
@@ -217,6 +714,52 @@ def plane_scene():
                      "data:application/octet-stream;base64,"
                      + base64.b64encode(bytes(buf.data)).decode()}],
     }
+    return json.dumps(gltf, indent=1)
+
+
+KTX2_MAGIC = bytes((0xAB, 0x4B, 0x54, 0x58, 0x20, 0x32, 0x30, 0xBB,
+                    0x0D, 0x0A, 0x1A, 0x0A))
+
+
+def unsupported_extension_file(extension, case):
+    """plane.gltf depending on `extension` in one of three ways: 'required'
+    (listed in extensionsRequired, no fallback), 'no-fallback' (only in
+    extensionsUsed, but a primitive or texture cannot do without it) or
+    'fallback' (only used, uncompressed data or a PNG beside it)."""
+    gltf = json.loads(plane_scene())
+    gltf["extensionsUsed"] = [extension]
+    if case == "required":
+        gltf["extensionsRequired"] = [extension]
+    primitive = gltf["meshes"][0]["primitives"][0]
+    if extension == "KHR_draco_mesh_compression":
+        primitive["extensions"] = {extension: {
+            "bufferView": 0, "attributes": {"POSITION": 0}}}
+        if case != "fallback":
+            for accessor in gltf["accessors"]:
+                del accessor["bufferView"]
+    elif extension == "KHR_texture_basisu":
+        primitive["material"] = 0
+        gltf["materials"] = [{"pbrMetallicRoughness": {
+            "baseColorTexture": {"index": 0}}}]
+        gltf["images"] = [{"uri": data_uri("image/ktx2", KTX2_MAGIC + bytes(20))}]
+        texture = {"extensions": {extension: {"source": 0}}}
+        if case == "fallback":
+            gltf["images"].append({"uri": "checker.png"})
+            texture["source"] = 1
+        gltf["textures"] = [texture]
+    elif extension == "EXT_meshopt_compression":
+        # The views keep pointing at buffer 0; in the dependent cases that
+        # is a placeholder for the decompressed data, nothing in it.
+        size = gltf["buffers"][0]["byteLength"]
+        compressed = {"buffer": 0, "byteLength": size, "byteStride": 12,
+                      "mode": "ATTRIBUTES", "count": 4}
+        gltf["bufferViews"][0]["extensions"] = {extension: compressed}
+        if case != "fallback":
+            gltf["buffers"].insert(0, {"byteLength": size, "extensions": {
+                extension: {"fallback": True}}})
+            for view in gltf["bufferViews"]:
+                view["buffer"] = 0
+            compressed["buffer"] = 1
     return json.dumps(gltf, indent=1)
 
 
@@ -324,6 +867,31 @@ def main():
     write("expected-depth-32.pfm", expected_depth(32, 3.0, 30.0))
     write("cube.obj", CUBE_OBJ)
     write("cube.mtl", CUBE_MTL)
+    for kind in ("lightless", "lit", "emissive"):
+        write(kind + "-box.gltf", box_scene(kind))
+    write("red-sky.hdr", uniform_hdr(8, 4, (1.0, 0.0, 0.0)))
+    write("white-sky.hdr", uniform_hdr(8, 4, (1.0, 1.0, 1.0)))
+    write("fresnel-plane.gltf", fresnel_plane())
+    write("expected-fresnel-48.pfm", expected_fresnel(48))
+    write("glowing.obj", GLOWING_OBJ)
+    write("normal-mapped-plane.gltf", normal_mapped_plane(None))
+    for stem, files in (("unlit", unlit_files()),
+                        ("vertex-color-texture", vertex_color_files()),
+                        ("spec-gloss", spec_gloss_files())):
+        write(stem + ".gltf", files[0])
+        write("expected-%s-32.pfm" % stem, files[1])
+    write("single-sided.gltf", single_sided_file())
+    write("points-lines.gltf", points_lines_file())
+    for extension, stem in (("KHR_draco_mesh_compression", "draco"),
+                            ("KHR_texture_basisu", "basisu"),
+                            ("EXT_meshopt_compression", "meshopt")):
+        for case in ("required", "no-fallback", "fallback"):
+            write("%s-%s.gltf" % (stem, case),
+                  unsupported_extension_file(extension, case))
+    write("normal-mapped-plane-tangents.gltf", normal_mapped_plane("analytic"))
+    write("normal-mapped-plane-unmirrored.gltf",
+          normal_mapped_plane("unmirrored"))
+    write("glowing.mtl", GLOWING_MTL)
 
     # Bad inputs, each broken in one way.
     write("corrupt.gltf", '{"asset": {"version": "2.0"}, "meshes": [ this is not json')
@@ -348,6 +916,12 @@ def main():
     del zeros["accessors"][0]["bufferView"]
     zeros["accessors"][0]["count"] = 2 ** 28 - 1
     write("huge-zero-accessor.gltf", json.dumps(zeros))
+    missing_texture = json.loads(unsupported_extension_file(
+        "KHR_texture_basisu", "fallback"))
+    del missing_texture["extensionsUsed"]
+    missing_texture["images"] = [{"uri": "no-such-texture.png"}]
+    missing_texture["textures"] = [{"source": 0}]
+    write("missing-texture.gltf", json.dumps(missing_texture, indent=1))
     write("bad-index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n")
     write("garbage.obj", bytes((i * 37 + 11) % 256 for i in range(512)))
     write("nonfinite.obj", NONFINITE_OBJ)

@@ -466,6 +466,97 @@ TEST_F(MaterialTest, PhysicallyBasedMapsAcceptOnlySamplers)
   EXPECT_TRUE(reported({"'attenuationDistance'", "ANARI_STRING"}));
 }
 
+// ---------------------------------------------------------------------------
+// prism's glTF extensions
+
+TEST_F(MaterialTest, BaseColorFactorMultipliesTheBaseColor)
+{
+  // PRISM_MATERIAL_BASE_COLOR_FACTOR: a sampled base color times the vertex
+  // colors, as glTF multiplies a base color texture by COLOR_0.
+  Transform *texture = transform("attribute0", kIdentityMat4, kZero);
+  auto *pbr = make<PhysicallyBased>();
+  set(pbr, "baseColor", texture);
+  set(pbr, "baseColorFactor", "color");
+  set(pbr, "alphaMode", "blend");
+  commit(pbr);
+  EXPECT_TRUE(pbr->colorReadsAttributes());
+  AttributeValues hit;
+  hit[Attribute::Attribute0] = {0.5f, 1.f, 0.25f, 0.5f};
+  hit[Attribute::Color] = {0.5f, 0.25f, 1.f, 0.5f};
+  EXPECT_EQ(
+      pbr->baseColorAndOpacity(hit), (float4{0.25f, 0.25f, 0.25f, 0.25f}));
+  EXPECT_EQ(pbr->evaluate(hit).baseColor, (float3{0.25f, 0.25f, 0.25f}));
+  // Opaque: the alphas multiply, but only blend and mask use them.
+  set(pbr, "alphaMode", "opaque");
+  commit(pbr);
+  EXPECT_EQ(pbr->baseColorAndOpacity(hit).w, 1.f);
+  // A constant factor (alpha 1) scales a constant base color.
+  auto *constant = make<PhysicallyBased>();
+  set(constant, "baseColor", float3{0.5f, 0.5f, 1.f});
+  set(constant, "baseColorFactor", float3{0.5f, 1.f, 0.25f});
+  commit(constant);
+  EXPECT_FALSE(constant->colorReadsAttributes());
+  EXPECT_EQ(
+      constant->baseColorAndOpacity({}), (float4{0.25f, 0.5f, 0.25f, 1.f}));
+  EXPECT_TRUE(m_messages.empty()) << m_messages.front();
+}
+
+TEST_F(MaterialTest, UnlitEmitsItsBaseColorOverABlackBsdf)
+{
+  // PRISM_MATERIAL_UNLIT: the base color (times the factor) is emitted,
+  // the BSDF reflects nothing, the albedo is the base color, and the
+  // surface is not a light to sample.
+  auto *pbr = make<PhysicallyBased>();
+  set(pbr, "baseColor", "color");
+  set(pbr, "baseColorFactor", float3{1.f, 0.5f, 0.5f});
+  set(pbr, "emissive", float3{5.f, 5.f, 5.f}); // ignored when unlit
+  set(pbr, "opacity", 0.5f);
+  set(pbr, "alphaMode", "blend");
+  const bool on = true;
+  set(pbr, "unlit", ANARI_BOOL, &on);
+  commit(pbr);
+  const AttributeValues hit = with(Attribute::Color, {0.2f, 0.4f, 0.8f, 1.f});
+  const MaterialShading shading = pbr->shade(hit);
+  EXPECT_EQ(shading.emissive, (float3{0.2f, 0.2f, 0.4f}));
+  EXPECT_EQ(shading.albedo, (float3{0.2f, 0.2f, 0.4f}));
+  EXPECT_EQ(shading.opacity, 0.5f);
+  EXPECT_FALSE(shading.hasNormalMap);
+  const Bsdf bsdf(shading.bsdf);
+  const float3 wo = normalize(float3{0.3f, 0.1f, 1.f});
+  for (const float3 wi : {float3{0.f, 0.f, 1.f},
+           normalize(float3{-0.3f, -0.1f, 1.f}),
+           normalize(float3{0.5f, 0.5f, 0.2f})})
+    EXPECT_EQ(bsdf.eval(wo, wi), (float3{0.f, 0.f, 0.f}));
+  const BsdfSample sample = bsdf.sample(wo, {0.3f, 0.6f}, 0.5f);
+  EXPECT_TRUE(!sample.valid() || maxComponent(sample.weight) == 0.f);
+  float3 radiance;
+  EXPECT_FALSE(pbr->constantEmission(radiance));
+  // Not unlit: the same inputs shade as usual.
+  const bool off = false;
+  set(pbr, "unlit", ANARI_BOOL, &off);
+  commit(pbr);
+  EXPECT_EQ(pbr->shade(hit).emissive, (float3{5.f, 5.f, 5.f}));
+  EXPECT_TRUE(m_messages.empty()) << m_messages.front();
+}
+
+TEST_F(MaterialTest, DoubleSidedByDefault)
+{
+  auto *matte = make<Matte>();
+  auto *pbr = make<PhysicallyBased>();
+  commit(matte);
+  commit(pbr);
+  EXPECT_TRUE(matte->doubleSided());
+  EXPECT_TRUE(pbr->doubleSided());
+  const bool off = false;
+  set(matte, "doubleSided", ANARI_BOOL, &off);
+  set(pbr, "doubleSided", ANARI_BOOL, &off);
+  commit(matte);
+  commit(pbr);
+  EXPECT_FALSE(matte->doubleSided());
+  EXPECT_FALSE(pbr->doubleSided());
+  EXPECT_TRUE(m_messages.empty()) << m_messages.front();
+}
+
 TEST_F(MaterialTest, WorksThroughTheDeviceApi)
 {
   ANARISampler sampler = m_device.newSampler("transform");
