@@ -102,11 +102,18 @@ void Device::releaseAllObjects()
         "device released with " + std::to_string(leaked.size())
             + " object(s) the application did not release: " + list);
   }
-  // Break every reference between objects first, then drop the public ones:
-  // each object is then freed exactly once, whatever the reference graph.
-  for (Object *object : leaked)
+  // Every object, held by the application or not (reference cycles keep
+  // objects alive that no handle names). Break every reference between
+  // them first, then drop the public ones: each object is then freed
+  // exactly once, whatever the reference graph.
+  std::vector<Object *> all;
+  {
+    std::lock_guard lock(m_objectsMutex);
+    all.assign(m_objects.begin(), m_objects.end());
+  }
+  for (Object *object : all)
     object->retainInternal();
-  for (Object *object : leaked)
+  for (Object *object : all)
     object->dropReferences();
   for (Object *object : leaked) {
     m_handles.remove(object->handle());
@@ -115,8 +122,20 @@ void Device::releaseAllObjects()
       object->releaseInternal();
     }
   }
-  for (Object *object : leaked)
+  for (Object *object : all)
     object->releaseInternal();
+}
+
+void Device::objectCreated(Object *object)
+{
+  std::lock_guard lock(m_objectsMutex);
+  m_objects.insert(object);
+}
+
+void Device::objectDestroyed(Object *object)
+{
+  std::lock_guard lock(m_objectsMutex);
+  m_objects.erase(object);
 }
 
 // Status ///////////////////////////////////////////////////////////////////
@@ -139,11 +158,44 @@ void Device::reportStatus(ANARIObject source,
   }
 }
 
+void Device::reportException(const char *function) const noexcept
+{
+  try {
+    try {
+      throw;
+    } catch (const std::bad_alloc &) {
+      reportStatus(this_device(),
+          ANARI_DEVICE,
+          ANARI_SEVERITY_ERROR,
+          ANARI_STATUS_OUT_OF_MEMORY,
+          std::string(function) + ": out of memory; the call had no effect");
+    } catch (const std::exception &e) {
+      reportStatus(this_device(),
+          ANARI_DEVICE,
+          ANARI_SEVERITY_ERROR,
+          ANARI_STATUS_UNKNOWN_ERROR,
+          std::string(function) + ": internal error: " + e.what());
+    }
+  } catch (...) {
+    // Nothing may cross the C boundary, not even a failed report.
+  }
+}
+
 // Handles //////////////////////////////////////////////////////////////////
 
 Object *Device::lookup(ANARIObject handle) const
 {
   return m_handles.find(handle);
+}
+
+const char *Device::whyNotLive(ANARIObject handle) const
+{
+  if (!handle)
+    return "object handle is NULL";
+  if (m_handles.isForeign(handle))
+    return "handle belongs to another device";
+  return "handle is not a live object of this device (released, or never "
+         "created)";
 }
 
 Object *Device::checked(ANARIObject handle,
@@ -156,10 +208,7 @@ Object *Device::checked(ANARIObject handle,
         ANARI_OBJECT,
         ANARI_SEVERITY_ERROR,
         ANARI_STATUS_INVALID_ARGUMENT,
-        std::string(function)
-            + (handle ? ": handle is not a live object of this device "
-                        "(released, or from another device)"
-                      : ": object handle is NULL"));
+        std::string(function) + ": " + whyNotLive(handle));
     return nullptr;
   }
   if (types.size() == 0
@@ -189,66 +238,108 @@ Handle Device::create(ANARIDataType type, const char *subtype)
 }
 
 ANARIGeometry Device::newGeometry(const char *subtype)
-{
+try {
   return create<ANARIGeometry>(ANARI_GEOMETRY, subtype);
+} catch (...) {
+  reportException("anariNewGeometry");
+  return nullptr;
 }
 ANARIMaterial Device::newMaterial(const char *subtype)
-{
+try {
   return create<ANARIMaterial>(ANARI_MATERIAL, subtype);
+} catch (...) {
+  reportException("anariNewMaterial");
+  return nullptr;
 }
 ANARISampler Device::newSampler(const char *subtype)
-{
+try {
   return create<ANARISampler>(ANARI_SAMPLER, subtype);
+} catch (...) {
+  reportException("anariNewSampler");
+  return nullptr;
 }
 ANARISurface Device::newSurface()
-{
+try {
   return create<ANARISurface>(ANARI_SURFACE, nullptr);
+} catch (...) {
+  reportException("anariNewSurface");
+  return nullptr;
 }
 ANARISpatialField Device::newSpatialField(const char *subtype)
-{
+try {
   return create<ANARISpatialField>(ANARI_SPATIAL_FIELD, subtype);
+} catch (...) {
+  reportException("anariNewSpatialField");
+  return nullptr;
 }
 ANARIVolume Device::newVolume(const char *subtype)
-{
+try {
   return create<ANARIVolume>(ANARI_VOLUME, subtype);
+} catch (...) {
+  reportException("anariNewVolume");
+  return nullptr;
 }
 ANARILight Device::newLight(const char *subtype)
-{
+try {
   return create<ANARILight>(ANARI_LIGHT, subtype);
+} catch (...) {
+  reportException("anariNewLight");
+  return nullptr;
 }
 ANARIGroup Device::newGroup()
-{
+try {
   return create<ANARIGroup>(ANARI_GROUP, nullptr);
+} catch (...) {
+  reportException("anariNewGroup");
+  return nullptr;
 }
 ANARIInstance Device::newInstance(const char *subtype)
-{
+try {
   return create<ANARIInstance>(ANARI_INSTANCE, subtype);
+} catch (...) {
+  reportException("anariNewInstance");
+  return nullptr;
 }
 ANARIWorld Device::newWorld()
-{
+try {
   return create<ANARIWorld>(ANARI_WORLD, nullptr);
+} catch (...) {
+  reportException("anariNewWorld");
+  return nullptr;
 }
 ANARICamera Device::newCamera(const char *subtype)
-{
+try {
   return create<ANARICamera>(ANARI_CAMERA, subtype);
+} catch (...) {
+  reportException("anariNewCamera");
+  return nullptr;
 }
 ANARIRenderer Device::newRenderer(const char *subtype)
-{
+try {
   return create<ANARIRenderer>(ANARI_RENDERER, subtype);
+} catch (...) {
+  reportException("anariNewRenderer");
+  return nullptr;
 }
 ANARIFrame Device::newFrame()
-{
+try {
   return create<ANARIFrame>(ANARI_FRAME, nullptr);
+} catch (...) {
+  reportException("anariNewFrame");
+  return nullptr;
 }
 
 ANARIObject Device::newObject(const char *objectType, const char *subtype)
-{
+try {
   reportStatus(nullptr,
       ANARI_OBJECT,
       ANARI_SEVERITY_WARNING,
       ANARI_STATUS_INVALID_ARGUMENT,
       std::string("anariNewObject: unknown object type '")
           + (objectType ? objectType : "") + "'");
+  return nullptr;
+} catch (...) {
+  reportException("anariNewObject");
   return nullptr;
 }
 
@@ -293,10 +384,13 @@ ANARIArray1D Device::newArray1D(const void *appMemory,
     const void *userData,
     ANARIDataType elementType,
     uint64_t numItems1)
-{
+try {
   const uint64_t size[3] = {numItems1, 1, 1};
   return (ANARIArray1D)newArray(
       appMemory, deleter, userData, elementType, 1, size);
+} catch (...) {
+  reportException("anariNewArray1D");
+  return nullptr;
 }
 
 ANARIArray2D Device::newArray2D(const void *appMemory,
@@ -305,10 +399,13 @@ ANARIArray2D Device::newArray2D(const void *appMemory,
     ANARIDataType elementType,
     uint64_t numItems1,
     uint64_t numItems2)
-{
+try {
   const uint64_t size[3] = {numItems1, numItems2, 1};
   return (ANARIArray2D)newArray(
       appMemory, deleter, userData, elementType, 2, size);
+} catch (...) {
+  reportException("anariNewArray2D");
+  return nullptr;
 }
 
 ANARIArray3D Device::newArray3D(const void *appMemory,
@@ -318,14 +415,17 @@ ANARIArray3D Device::newArray3D(const void *appMemory,
     uint64_t numItems1,
     uint64_t numItems2,
     uint64_t numItems3)
-{
+try {
   const uint64_t size[3] = {numItems1, numItems2, numItems3};
   return (ANARIArray3D)newArray(
       appMemory, deleter, userData, elementType, 3, size);
+} catch (...) {
+  reportException("anariNewArray3D");
+  return nullptr;
 }
 
 void *Device::mapArray(ANARIArray handle)
-{
+try {
   auto *array = (Array *)checked(
       handle, "anariMapArray", {ANARI_ARRAY1D, ANARI_ARRAY2D, ANARI_ARRAY3D});
   if (!array)
@@ -338,10 +438,13 @@ void *Device::mapArray(ANARIArray handle)
   // Writes must not race a frame reading the array.
   waitForFrames();
   return array->map();
+} catch (...) {
+  reportException("anariMapArray");
+  return nullptr;
 }
 
 void Device::unmapArray(ANARIArray handle)
-{
+try {
   auto *array = (Array *)checked(
       handle, "anariUnmapArray", {ANARI_ARRAY1D, ANARI_ARRAY2D, ANARI_ARRAY3D});
   if (!array)
@@ -353,6 +456,9 @@ void Device::unmapArray(ANARIArray handle)
     return;
   }
   array->unmap();
+} catch (...) {
+  reportException("anariUnmapArray");
+  return;
 }
 
 // Parameters ///////////////////////////////////////////////////////////////
@@ -365,7 +471,7 @@ bool Device::isMappedParameter(Object *object, const std::string &name) const
 
 void Device::setParameter(
     ANARIObject handle, const char *name, ANARIDataType type, const void *mem)
-{
+try {
   if (handle == (ANARIObject)this_device()) {
     setDeviceParameter(name, type, mem);
     return;
@@ -395,9 +501,9 @@ void Device::setParameter(
     if (valueHandle && !value) {
       object->report(ANARI_SEVERITY_ERROR,
           ANARI_STATUS_INVALID_ARGUMENT,
-          "anariSetParameter: parameter '%s' names a handle that is not a "
-          "live object of this device",
-          name);
+          "anariSetParameter: parameter '%s' is not set: %s",
+          name,
+          whyNotLive(valueHandle));
       return;
     }
     if (!value) {
@@ -425,6 +531,9 @@ void Device::setParameter(
     return;
   }
   object->stageParameter(name, Parameter::make(type, mem, value));
+} catch (...) {
+  reportException("anariSetParameter");
+  return;
 }
 
 void Device::setDeviceParameter(
@@ -450,7 +559,7 @@ void Device::setDeviceParameter(
 }
 
 void Device::unsetParameter(ANARIObject handle, const char *name)
-{
+try {
   if (handle == (ANARIObject)this_device())
     return;
   Object *object = checked(handle, "anariUnsetParameter");
@@ -464,14 +573,20 @@ void Device::unsetParameter(ANARIObject handle, const char *name)
     return;
   }
   object->unstageParameter(name);
+} catch (...) {
+  reportException("anariUnsetParameter");
+  return;
 }
 
 void Device::unsetAllParameters(ANARIObject handle)
-{
+try {
   if (handle == (ANARIObject)this_device())
     return;
   if (Object *object = checked(handle, "anariUnsetAllParameters"))
     object->unstageAllParameters();
+} catch (...) {
+  reportException("anariUnsetAllParameters");
+  return;
 }
 
 void *Device::mapParameterArray(ANARIObject handle,
@@ -523,7 +638,7 @@ void *Device::mapParameterArray1D(ANARIObject object,
     ANARIDataType elementType,
     uint64_t numElements1,
     uint64_t *elementStride)
-{
+try {
   const uint64_t size[3] = {numElements1, 1, 1};
   return mapParameterArray(object,
       name,
@@ -532,6 +647,9 @@ void *Device::mapParameterArray1D(ANARIObject object,
       size,
       elementStride,
       "anariMapParameterArray1D");
+} catch (...) {
+  reportException("anariMapParameterArray1D");
+  return nullptr;
 }
 
 void *Device::mapParameterArray2D(ANARIObject object,
@@ -540,7 +658,7 @@ void *Device::mapParameterArray2D(ANARIObject object,
     uint64_t numElements1,
     uint64_t numElements2,
     uint64_t *elementStride)
-{
+try {
   const uint64_t size[3] = {numElements1, numElements2, 1};
   return mapParameterArray(object,
       name,
@@ -549,6 +667,9 @@ void *Device::mapParameterArray2D(ANARIObject object,
       size,
       elementStride,
       "anariMapParameterArray2D");
+} catch (...) {
+  reportException("anariMapParameterArray2D");
+  return nullptr;
 }
 
 void *Device::mapParameterArray3D(ANARIObject object,
@@ -558,7 +679,7 @@ void *Device::mapParameterArray3D(ANARIObject object,
     uint64_t numElements2,
     uint64_t numElements3,
     uint64_t *elementStride)
-{
+try {
   const uint64_t size[3] = {numElements1, numElements2, numElements3};
   return mapParameterArray(object,
       name,
@@ -567,10 +688,13 @@ void *Device::mapParameterArray3D(ANARIObject object,
       size,
       elementStride,
       "anariMapParameterArray3D");
+} catch (...) {
+  reportException("anariMapParameterArray3D");
+  return nullptr;
 }
 
 void Device::unmapParameterArray(ANARIObject handle, const char *name)
-{
+try {
   Object *object = checked(handle, "anariUnmapParameterArray");
   if (!object)
     return;
@@ -593,10 +717,13 @@ void Device::unmapParameterArray(ANARIObject handle, const char *name)
   array->unmap();
   object->stageParameter(name, Parameter::make(array->type(), nullptr, array));
   array->releaseInternal();
+} catch (...) {
+  reportException("anariUnmapParameterArray");
+  return;
 }
 
 void Device::commitParameters(ANARIObject handle)
-{
+try {
   if (handle == (ANARIObject)this_device())
     return; // device parameters apply as they are set
   Object *object = checked(handle, "anariCommitParameters");
@@ -606,6 +733,9 @@ void Device::commitParameters(ANARIObject handle)
   object->retainInternal();
   std::lock_guard lock(m_commitMutex);
   m_pendingCommits.push_back(object);
+} catch (...) {
+  reportException("anariCommitParameters");
+  return;
 }
 
 void Device::flushCommits()
@@ -635,8 +765,15 @@ void Device::flushCommitsLocked()
   }
   for (Object *object : unique)
     object->applyCommit();
-  for (Object *object : unique)
-    object->finalize();
+  for (Object *object : unique) {
+    try {
+      object->finalize();
+    } catch (const std::bad_alloc &) {
+      object->report(ANARI_SEVERITY_ERROR,
+          ANARI_STATUS_OUT_OF_MEMORY,
+          "out of memory building the committed object");
+    }
+  }
   for (Object *object : pending)
     object->releaseInternal();
 }
@@ -644,7 +781,7 @@ void Device::flushCommitsLocked()
 // Lifetime /////////////////////////////////////////////////////////////////
 
 void Device::release(ANARIObject handle)
-{
+try {
   if (!handle)
     return; // releasing NULL is not an error (spec 3.5)
   if (handle == (ANARIObject)this_device()) {
@@ -657,19 +794,57 @@ void Device::release(ANARIObject handle)
     return;
   if (object->type() == ANARI_FRAME && object->publicReferences() == 1)
     ((Frame *)object)->abandon();
-  if (object->dropPublicReference() == 0)
+  if (object->dropPublicReference() == 0) {
     m_handles.remove(handle);
+    if (anari::isArray(object->type()) && object->totalReferences() > 1)
+      keepArrayAfterRelease((Array *)object);
+  }
   object->releaseInternal();
+} catch (...) {
+  reportException("anariRelease");
+  return;
+}
+
+void Device::keepArrayAfterRelease(Array *array)
+{
+  if (!array->borrowsApplicationMemory())
+    return;
+  // The application may free the memory as soon as this returns (the SDK's
+  // own scenes do), so no frame may still read it, and objects that use
+  // the array read a copy from now on (spec 3.9: "may result in the
+  // creation of internal copies").
+  auto copy = [&] {
+    try {
+      array->takePrivateCopy();
+    } catch (const std::bad_alloc &) {
+      array->report(ANARI_SEVERITY_ERROR,
+          ANARI_STATUS_OUT_OF_MEMORY,
+          "anariRelease: out of memory copying the released array's data; "
+          "objects using it may read memory the application freed");
+    }
+  };
+  if (m_taskPool.isWorkerThread()) {
+    // From a frame completion callback: that frame has finished and the
+    // next cannot start until the callback returns.
+    copy();
+    return;
+  }
+  std::lock_guard lock(m_flushMutex);
+  waitForFrames();
+  copy();
 }
 
 void Device::retain(ANARIObject handle)
-{
+try {
   if (handle == (ANARIObject)this_device()) {
     m_publicRefs++;
     return;
   }
   if (Object *object = checked(handle, "anariRetain"))
     object->retainPublic();
+} catch (...) {
+  reportException("anariRetain");
+  return;
 }
 
 // Properties ///////////////////////////////////////////////////////////////
@@ -716,7 +891,7 @@ int Device::getProperty(ANARIObject handle,
     void *mem,
     uint64_t size,
     ANARIWaitMask mask)
-{
+try {
   if (handle == (ANARIObject)this_device())
     return getDeviceProperty(name, type, mem, size) ? 1 : 0;
   Object *object = checked(handle, "anariGetProperty");
@@ -728,22 +903,31 @@ int Device::getProperty(ANARIObject handle,
     object->refresh(++m_refreshGeneration);
   }
   return object->getProperty(name, type, mem, size, mask) ? 1 : 0;
+} catch (...) {
+  reportException("anariGetProperty");
+  return 0;
 }
 
 // Introspection ////////////////////////////////////////////////////////////
 
 const char **Device::getObjectSubtypes(ANARIDataType objectType)
-{
+try {
   return introspection::objectSubtypes(objectType);
+} catch (...) {
+  reportException("anariGetObjectSubtypes");
+  return nullptr;
 }
 
 const void *Device::getObjectInfo(ANARIDataType objectType,
     const char *objectSubtype,
     const char *infoName,
     ANARIDataType infoType)
-{
+try {
   return introspection::objectInfo(
       objectType, objectSubtype, infoName, infoType);
+} catch (...) {
+  reportException("anariGetObjectInfo");
+  return nullptr;
 }
 
 const void *Device::getParameterInfo(ANARIDataType objectType,
@@ -752,13 +936,16 @@ const void *Device::getParameterInfo(ANARIDataType objectType,
     ANARIDataType parameterType,
     const char *infoName,
     ANARIDataType infoType)
-{
+try {
   return introspection::parameterInfo(objectType,
       objectSubtype,
       parameterName,
       parameterType,
       infoName,
       infoType);
+} catch (...) {
+  reportException("anariGetParameterInfo");
+  return nullptr;
 }
 
 // Frames ///////////////////////////////////////////////////////////////////
@@ -783,7 +970,7 @@ void Device::waitForFrames()
 }
 
 void Device::renderFrame(ANARIFrame handle)
-{
+try {
   auto *frame = (Frame *)checked(handle, "anariRenderFrame", {ANARI_FRAME});
   if (!frame)
     return;
@@ -794,21 +981,30 @@ void Device::renderFrame(ANARIFrame handle)
   // Rebuild what depends on arrays or children changed since their commit.
   frame->refresh(++m_refreshGeneration);
   frame->renderAsync();
+} catch (...) {
+  reportException("anariRenderFrame");
+  return;
 }
 
 int Device::frameReady(ANARIFrame handle, ANARIWaitMask mask)
-{
+try {
   auto *frame = (Frame *)checked(handle, "anariFrameReady", {ANARI_FRAME});
   if (!frame)
     return 0;
   return frame->ready(mask) ? 1 : 0;
+} catch (...) {
+  reportException("anariFrameReady");
+  return 0;
 }
 
 void Device::discardFrame(ANARIFrame handle)
-{
+try {
   if (auto *frame =
           (Frame *)checked(handle, "anariDiscardFrame", {ANARI_FRAME}))
     frame->discard();
+} catch (...) {
+  reportException("anariDiscardFrame");
+  return;
 }
 
 const void *Device::frameBufferMap(ANARIFrame handle,
@@ -816,7 +1012,7 @@ const void *Device::frameBufferMap(ANARIFrame handle,
     uint32_t *width,
     uint32_t *height,
     ANARIDataType *pixelType)
-{
+try {
   *width = 0;
   *height = 0;
   *pixelType = ANARI_UNKNOWN;
@@ -824,12 +1020,18 @@ const void *Device::frameBufferMap(ANARIFrame handle,
   if (!frame)
     return nullptr;
   return frame->map(channel, *width, *height, *pixelType);
+} catch (...) {
+  reportException("anariMapFrame");
+  return nullptr;
 }
 
 void Device::frameBufferUnmap(ANARIFrame handle, const char *channel)
-{
+try {
   if (auto *frame = (Frame *)checked(handle, "anariUnmapFrame", {ANARI_FRAME}))
     frame->unmap(channel);
+} catch (...) {
+  reportException("anariUnmapFrame");
+  return;
 }
 
 } // namespace prism

@@ -13,6 +13,7 @@
 #include <map>
 #include <mutex>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 namespace prism {
@@ -121,6 +122,13 @@ class Device : public anari::DeviceImpl
   // For objects ////////////////////////////////////////////////////////////
   // The live object behind a handle (NULL for NULL, stale or foreign ones).
   Object *lookup(ANARIObject handle) const;
+  // Why `handle` names no live object of this device, for messages.
+  const char *whyNotLive(ANARIObject handle) const;
+  // Every object of the device, whether the application still holds it or
+  // not (objects kept alive only by others, cycles), so device release can
+  // free them all.
+  void objectCreated(Object *object);
+  void objectDestroyed(Object *object);
   // Sends one message to the application's status callback.
   void reportStatus(ANARIObject source,
       ANARIDataType sourceType,
@@ -171,6 +179,12 @@ class Device : public anari::DeviceImpl
   bool getDeviceProperty(
       const std::string &name, ANARIDataType type, void *mem, uint64_t size);
   void releaseAllObjects();
+  // Reports the exception being handled; every entry point ends in it, so
+  // nothing thrown inside the device reaches the application.
+  void reportException(const char *function) const noexcept;
+  // The application released its last handle to `array` while objects of
+  // the device still use it.
+  void keepArrayAfterRelease(Array *array);
   void flushCommitsLocked();
 
   HandleTable m_handles;
@@ -190,6 +204,9 @@ class Device : public anari::DeviceImpl
   std::mutex m_frameMutex;
   std::condition_variable m_frameDone;
   int m_framesInFlight{0};
+
+  std::mutex m_objectsMutex;
+  std::unordered_set<Object *> m_objects;
 
   mutable std::mutex m_mappedMutex;
   std::map<std::pair<Object *, std::string>, Array *> m_mappedParameters;

@@ -70,7 +70,7 @@ TEST_F(DeviceBadInput, ForeignHandleFromAnotherDevice)
   anariCommitParameters(m_device, foreign);
   EXPECT_TRUE(reported(ANARI_SEVERITY_ERROR,
       ANARI_STATUS_INVALID_ARGUMENT,
-      "not a live object of this device"));
+      "handle belongs to another device"));
   int notAnObject = 0;
   anariCommitParameters(m_device, (ANARIObject)&notAnObject);
   EXPECT_TRUE(reported(ANARI_SEVERITY_ERROR,

@@ -26,6 +26,24 @@ void onComplete(const void *userPtr, ANARIDevice, ANARIFrame frame)
   record->calls++;
 }
 
+// Sets and commits `frame`'s completion callback to onComplete(record).
+void setCompletion(
+    ANARIDevice device, ANARIFrame frame, CompletionRecord &record)
+{
+  ANARIFrameCompletionCallback callback = onComplete;
+  anariSetParameter(device,
+      frame,
+      "frameCompletionCallback",
+      ANARI_FRAME_COMPLETION_CALLBACK,
+      &callback);
+  anariSetParameter(device,
+      frame,
+      "frameCompletionCallbackUserData",
+      ANARI_VOID_POINTER,
+      &record);
+  anariCommitParameters(device, frame);
+}
+
 using DeviceFrame = PrismDeviceTest;
 
 TEST_F(DeviceFrame, CompletionCallbackRunsOnAWorkerBeforeWaitReturns)
@@ -33,18 +51,7 @@ TEST_F(DeviceFrame, CompletionCallbackRunsOnAWorkerBeforeWaitReturns)
   ANARIRenderer renderer = newRenderer(kRed);
   ANARIFrame frame = newFrame(renderer, 16, 16);
   CompletionRecord record;
-  ANARIFrameCompletionCallback callback = onComplete;
-  anariSetParameter(m_device,
-      frame,
-      "frameCompletionCallback",
-      ANARI_FRAME_COMPLETION_CALLBACK,
-      &callback);
-  anariSetParameter(m_device,
-      frame,
-      "frameCompletionCallbackUserData",
-      ANARI_VOID_POINTER,
-      &record);
-  anariCommitParameters(m_device, frame);
+  setCompletion(m_device, frame, record);
   for (int i = 1; i <= 3; i++) {
     anariRenderFrame(m_device, frame);
     EXPECT_EQ(anariFrameReady(m_device, frame, ANARI_WAIT), 1);
@@ -231,6 +238,31 @@ TEST_F(DeviceFrame, ObjectsEditedFromManyThreadsAtOnce)
   }
   for (auto &thread : threads)
     thread.join();
+  EXPECT_TRUE(problems().empty());
+}
+
+// Defect: the worker still touched the frame (callback, condition
+// variable) after anariFrameReady(WAIT) had returned, so a release right
+// after the wait destroyed it under the worker; re-committing the frame
+// raced the worker reading the committed callback. ThreadSanitizer runs it.
+TEST_F(DeviceFrame, ReleasedOrRecommittedRightAfterWait)
+{
+  ANARIRenderer renderer = newRenderer(kRed);
+  CompletionRecord record;
+  for (int i = 0; i < 50; i++) {
+    ANARIFrame frame = newFrame(renderer, 4, 4);
+    setCompletion(m_device, frame, record);
+    for (int again = 0; again < 3; again++) {
+      anariRenderFrame(m_device, frame);
+      anariFrameReady(m_device, frame, ANARI_WAIT);
+      // Recommitted while the worker may still be in the last render's
+      // completion.
+      setCompletion(m_device, frame, record);
+    }
+    anariRelease(m_device, frame);
+  }
+  EXPECT_EQ(record.calls, 150);
+  anariRelease(m_device, renderer);
   EXPECT_TRUE(problems().empty());
 }
 

@@ -61,11 +61,26 @@ class PrismDeviceTest : public ::testing::Test
       uint32_t height,
       ANARIDataType colorType = ANARI_FLOAT32_VEC4)
   {
-    ANARIFrame frame = anariNewFrame(m_device);
     ANARIWorld world = anariNewWorld(m_device);
     ANARICamera camera = anariNewCamera(m_device, "perspective");
     anariCommitParameters(m_device, world);
     anariCommitParameters(m_device, camera);
+    ANARIFrame frame =
+        newFrameOf(world, camera, renderer, width, height, colorType);
+    anariRelease(m_device, world);
+    anariRelease(m_device, camera);
+    return frame;
+  }
+
+  // A committed frame of these objects with one color channel.
+  ANARIFrame newFrameOf(ANARIWorld world,
+      ANARICamera camera,
+      ANARIRenderer renderer,
+      uint32_t width,
+      uint32_t height,
+      ANARIDataType colorType = ANARI_FLOAT32_VEC4)
+  {
+    ANARIFrame frame = anariNewFrame(m_device);
     const uint32_t size[2] = {width, height};
     anariSetParameter(m_device, frame, "world", ANARI_WORLD, &world);
     anariSetParameter(m_device, frame, "camera", ANARI_CAMERA, &camera);
@@ -74,8 +89,6 @@ class PrismDeviceTest : public ::testing::Test
     anariSetParameter(
         m_device, frame, "channel.color", ANARI_DATA_TYPE, &colorType);
     anariCommitParameters(m_device, frame);
-    anariRelease(m_device, world);
-    anariRelease(m_device, camera);
     return frame;
   }
 

@@ -103,6 +103,19 @@ void Array::unmap()
   markChanged();
 }
 
+void Array::takePrivateCopy()
+{
+  if (!borrowsApplicationMemory())
+    return;
+  const size_t bytes = capacity() * m_elementSize;
+  std::unique_ptr<unsigned char[]> copy(new unsigned char[bytes]);
+  std::memcpy(copy.get(), m_appMemory, bytes);
+  m_managed = std::move(copy);
+  m_appMemory = nullptr;
+  // Users that kept pointers into the application's memory re-read.
+  markChanged();
+}
+
 std::vector<Object *> Array::objects() const
 {
   if (!m_isObjectArray)
@@ -117,8 +130,20 @@ void Array::refreshObjectReferences()
   // both sets never reaches a count of zero in between.
   std::vector<Object *> fresh(capacity(), nullptr);
   auto *handles = (const ANARIObject *)storage();
+  uint64_t dead = 0, firstDead = 0;
   for (uint64_t i = 0; i < capacity(); i++) {
-    Object *object = device().lookup(handles[i]);
+    const ANARIObject handle = handles[i];
+    Object *object = nullptr;
+    if (i < m_heldObjects.size() && m_heldObjects[i]
+        && m_heldObjects[i]->handle() == handle) {
+      // Still the object this element held, even if the application has
+      // released its handle since (handles are never reused).
+      object = m_heldObjects[i];
+    } else if (handle) {
+      object = device().lookup(handle);
+      if (!object && dead++ == 0)
+        firstDead = i;
+    }
     if (object) {
       object->retainInternal();
       fresh[i] = object;
@@ -126,6 +151,15 @@ void Array::refreshObjectReferences()
   }
   releaseObjectReferences();
   m_heldObjects = std::move(fresh);
+  if (dead > 0) {
+    report(ANARI_SEVERITY_ERROR,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "element %llu%s: %s; the element is NULL",
+        (unsigned long long)firstDead,
+        dead > 1 ? (" (and " + std::to_string(dead - 1) + " more)").c_str()
+                 : "",
+        device().whyNotLive(handles[firstDead]));
+  }
 }
 
 void Array::releaseObjectReferences()

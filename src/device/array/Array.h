@@ -62,6 +62,16 @@ class Array : public Object
   {
     return m_appMemory != nullptr;
   }
+  // Whether the application gets its memory back when it releases this
+  // array (shared, no deleter: spec 3.9), so objects still using the array
+  // need a copy of their own.
+  bool borrowsApplicationMemory() const
+  {
+    return m_appMemory && !m_deleter;
+  }
+  // Copies the application's memory into the device's and uses the copy
+  // from now on (objects reading the array re-commit). Throws bad_alloc.
+  void takePrivateCopy();
   bool isObjectArray() const
   {
     return m_isObjectArray;

@@ -11,6 +11,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <unistd.h>
 #include <algorithm>
 #include <cstring>
 
@@ -114,6 +115,10 @@ void Frame::renderAsync()
         missing.c_str());
     return;
   }
+  if (!fitsInMemory()) {
+    dropRenderedPixels();
+    return;
+  }
   {
     std::lock_guard lock(m_stateMutex);
     m_rendering = true;
@@ -129,10 +134,72 @@ void Frame::renderAsync()
   m_tilesDone = 0;
   m_start = std::chrono::steady_clock::now();
   device().frameStarted();
-  device().taskPool().run([this] {
-    render();
-    finish();
+  // The task holds the frame: the application may release it as soon as
+  // anariFrameReady returns, while the task is still finishing. The
+  // callback is the one committed now; a later commit may replace it.
+  retainInternal();
+  const Completion completion{m_completionCallback, m_completionUserPtr};
+  device().taskPool().run([this, completion] {
+    try {
+      render();
+    } catch (const std::bad_alloc &) {
+      dropRenderedPixels();
+      report(ANARI_SEVERITY_ERROR,
+          ANARI_STATUS_OUT_OF_MEMORY,
+          "anariRenderFrame: out of memory rendering %ux%u; the frame is "
+          "empty",
+          m_width,
+          m_height);
+    }
+    finish(completion);
+    releaseInternal();
   });
+}
+
+size_t Frame::bytesNeeded() const
+{
+  size_t perPixel = sizeof(float4);
+  for (const auto &[name, channel] : m_channels)
+    perPixel += anari::sizeOf(channel.type);
+  // Working buffers for every channel besides color, as a bound.
+  size_t working = sizeof(float4) + sizeof(float) + 2 * sizeof(float3)
+                   + 3 * sizeof(uint32_t);
+  perPixel += working * (m_accumulation ? 2 : 1);
+  if (m_renderer && m_renderer->denoise())
+    perPixel += 4 * sizeof(float4);
+  return size_t(m_width) * m_height * perPixel;
+}
+
+bool Frame::fitsInMemory()
+{
+  const size_t needed = bytesNeeded();
+  const long pages = sysconf(_SC_PHYS_PAGES);
+  const long pageSize = sysconf(_SC_PAGESIZE);
+  if (pages <= 0 || pageSize <= 0)
+    return true;
+  const size_t available = size_t(pages) * size_t(pageSize);
+  if (needed <= available)
+    return true;
+  constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
+  report(ANARI_SEVERITY_ERROR,
+      ANARI_STATUS_OUT_OF_MEMORY,
+      "anariRenderFrame: a %ux%u frame needs %.1f GiB, more than this "
+      "machine's %.1f GiB of memory; the frame is not rendered",
+      m_width,
+      m_height,
+      double(needed) / kGiB,
+      double(available) / kGiB);
+  return false;
+}
+
+void Frame::dropRenderedPixels()
+{
+  m_buffers = FrameBuffers{};
+  m_accumulated = FrameBuffers{};
+  m_samplesDone = 0;
+  m_accumulatedVersion = ~0ull;
+  for (auto &[name, channel] : m_channels)
+    std::vector<unsigned char>().swap(channel.pixels);
 }
 
 void Frame::render()
@@ -289,7 +356,7 @@ void Frame::denoiseColor()
       it->second.pixels.data());
 }
 
-void Frame::finish()
+void Frame::finish(const Completion &completion)
 {
   m_renders++;
   m_duration =
@@ -298,13 +365,11 @@ void Frame::finish()
   // NOTE: the device stops counting this frame before the continuation runs,
   // so API calls made from the callback never wait on this frame.
   device().frameFinished();
-  if (m_completionCallback)
-    m_completionCallback(
-        m_completionUserPtr, device().this_device(), (ANARIFrame)handle());
-  {
-    std::lock_guard lock(m_stateMutex);
-    m_rendering = false;
-  }
+  if (completion.callback)
+    completion.callback(
+        completion.userPtr, device().this_device(), (ANARIFrame)handle());
+  std::lock_guard lock(m_stateMutex);
+  m_rendering = false;
   m_doneCondition.notify_all();
 }
 

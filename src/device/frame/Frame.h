@@ -65,7 +65,18 @@ class Frame : public Object
   void denoiseColor();
   // Epochs of everything a frame shows: a change restarts accumulation.
   uint64_t sceneVersion() const;
-  void finish();
+  // The memory a render of the committed size and channels takes, and
+  // whether the machine has it (reported when not).
+  size_t bytesNeeded() const;
+  bool fitsInMemory();
+  // Forgets every pixel, so nothing of another size is ever mapped.
+  void dropRenderedPixels();
+  struct Completion
+  {
+    ANARIFrameCompletionCallback callback;
+    const void *userPtr;
+  };
+  void finish(const Completion &completion);
   void waitUntilDone();
 
   // Committed state.

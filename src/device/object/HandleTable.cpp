@@ -1,82 +1,103 @@
 #include "HandleTable.h"
 
+#include <algorithm>
+#include <atomic>
 #include <mutex>
 
 namespace prism {
 namespace {
 
-// Handles look like (generation << 32 | index + 1) with a marker in the top
-// bits so they are never NULL and never look like small integers.
+// Handles look like (marker | serial): never NULL, never small integers,
+// and with 56 bits of serial they cannot run out (2^56 creations at ten
+// million a second take over two centuries).
 constexpr uint64_t kMarker = 0x7f00000000000000ull;
 constexpr uint64_t kMarkerMask = 0xff00000000000000ull;
+constexpr uint64_t kSerialMask = ~kMarkerMask;
+
+std::atomic<uint64_t> g_nextSerial{1};
+
+// Every table of the process, so a lookup that fails can say whether the
+// handle belongs to another device.
+std::mutex g_tablesMutex;
+std::vector<const HandleTable *> &allTables()
+{
+  static std::vector<const HandleTable *> tables;
+  return tables;
+}
 
 } // namespace
 
-bool HandleTable::decode(
-    ANARIObject handle, uint32_t &index, uint32_t &generation)
+HandleTable::HandleTable()
+{
+  std::lock_guard lock(g_tablesMutex);
+  allTables().push_back(this);
+}
+
+HandleTable::~HandleTable()
+{
+  std::lock_guard lock(g_tablesMutex);
+  auto &tables = allTables();
+  tables.erase(std::remove(tables.begin(), tables.end(), this), tables.end());
+}
+
+bool HandleTable::decode(ANARIObject handle, uint64_t &serial)
 {
   const auto bits = uint64_t(uintptr_t(handle));
-  if ((bits & kMarkerMask) != kMarker || (bits & 0xffffffffu) == 0)
-    return false;
-  index = uint32_t(bits & 0xffffffffu) - 1;
-  generation = uint32_t((bits >> 32) & 0xffffffu);
-  return true;
+  serial = bits & kSerialMask;
+  return (bits & kMarkerMask) == kMarker && serial != 0;
 }
 
 ANARIObject HandleTable::add(Object *object)
 {
-  std::unique_lock lock(m_mutex);
-  uint32_t index;
-  if (!m_freeSlots.empty()) {
-    index = m_freeSlots.back();
-    m_freeSlots.pop_back();
-  } else {
-    index = uint32_t(m_slots.size());
-    m_slots.push_back({});
+  const uint64_t serial = g_nextSerial++ & kSerialMask;
+  {
+    std::unique_lock lock(m_mutex);
+    m_objects.emplace(serial, object);
   }
-  Slot &slot = m_slots[index];
-  slot.object = object;
-  const uint64_t bits =
-      kMarker | (uint64_t(slot.generation) << 32) | uint64_t(index + 1);
-  return (ANARIObject)uintptr_t(bits);
+  return (ANARIObject)uintptr_t(kMarker | serial);
 }
 
 Object *HandleTable::find(ANARIObject handle) const
 {
-  uint32_t index, generation;
-  if (!decode(handle, index, generation))
+  uint64_t serial;
+  if (!decode(handle, serial))
     return nullptr;
   std::shared_lock lock(m_mutex);
-  if (index >= m_slots.size())
-    return nullptr;
-  const Slot &slot = m_slots[index];
-  return slot.generation == generation ? slot.object : nullptr;
+  auto it = m_objects.find(serial);
+  return it == m_objects.end() ? nullptr : it->second;
 }
 
 void HandleTable::remove(ANARIObject handle)
 {
-  uint32_t index, generation;
-  if (!decode(handle, index, generation))
+  uint64_t serial;
+  if (!decode(handle, serial))
     return;
   std::unique_lock lock(m_mutex);
-  if (index >= m_slots.size() || m_slots[index].generation != generation)
-    return;
-  Slot &slot = m_slots[index];
-  slot.object = nullptr;
-  slot.generation = (slot.generation + 1) & 0xffffffu;
-  if (slot.generation == 0)
-    slot.generation = 1;
-  m_freeSlots.push_back(index);
+  m_objects.erase(serial);
+}
+
+bool HandleTable::isForeign(ANARIObject handle) const
+{
+  std::lock_guard lock(g_tablesMutex);
+  for (const HandleTable *table : allTables()) {
+    if (table != this && table->find(handle))
+      return true;
+  }
+  return false;
 }
 
 std::vector<Object *> HandleTable::liveObjects() const
 {
-  std::shared_lock lock(m_mutex);
-  std::vector<Object *> out;
-  for (const Slot &slot : m_slots) {
-    if (slot.object)
-      out.push_back(slot.object);
+  std::vector<std::pair<uint64_t, Object *>> live;
+  {
+    std::shared_lock lock(m_mutex);
+    live.assign(m_objects.begin(), m_objects.end());
   }
+  std::sort(live.begin(), live.end()); // in creation order, for reports
+  std::vector<Object *> out;
+  out.reserve(live.size());
+  for (const auto &[serial, object] : live)
+    out.push_back(object);
   return out;
 }
 

@@ -1,12 +1,13 @@
-// Maps the opaque handles given to the application to live objects. A
-// handle encodes a slot and that slot's generation, so a released handle
-// is detected even after its slot (or its memory) has been reused.
+// Maps the opaque handles given to the application to live objects. Every
+// handle is a process-wide serial number, never reused: a released handle,
+// or one of another device, can never name a live object of this one.
 #pragma once
 
 #include "anari/anari.h"
 
 #include <cstdint>
 #include <shared_mutex>
+#include <unordered_map>
 #include <vector>
 
 namespace prism {
@@ -16,24 +17,26 @@ class Object;
 class HandleTable
 {
  public:
+  HandleTable();
+  ~HandleTable();
+  HandleTable(const HandleTable &) = delete;
+  HandleTable &operator=(const HandleTable &) = delete;
+
   ANARIObject add(Object *object);
   // The live object behind `handle`, or NULL for NULL/stale/foreign handles.
   Object *find(ANARIObject handle) const;
   void remove(ANARIObject handle);
+  // Whether `handle` names a live object of another table in this process
+  // (another device's), for telling the application which mistake it made.
+  bool isForeign(ANARIObject handle) const;
   // Every live object (for teardown and leak reports).
   std::vector<Object *> liveObjects() const;
 
  private:
-  struct Slot
-  {
-    Object *object{nullptr};
-    uint32_t generation{1};
-  };
-  static bool decode(ANARIObject handle, uint32_t &index, uint32_t &generation);
+  static bool decode(ANARIObject handle, uint64_t &serial);
 
   mutable std::shared_mutex m_mutex;
-  std::vector<Slot> m_slots;
-  std::vector<uint32_t> m_freeSlots;
+  std::unordered_map<uint64_t, Object *> m_objects;
 };
 
 } // namespace prism

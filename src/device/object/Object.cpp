@@ -10,9 +10,14 @@ namespace prism {
 
 Object::Object(Device &device, ANARIDataType type, std::string subtype)
     : m_device(device), m_type(type), m_subtype(std::move(subtype))
-{}
+{
+  m_device.objectCreated(this);
+}
 
-Object::~Object() = default;
+Object::~Object()
+{
+  m_device.objectDestroyed(this);
+}
 
 void Object::retainPublic()
 {
@@ -25,12 +30,12 @@ uint32_t Object::dropPublicReference()
   return --m_publicRefs;
 }
 
-void Object::retainInternal()
+void Object::retainInternal() const
 {
   m_totalRefs++;
 }
 
-void Object::releaseInternal()
+void Object::releaseInternal() const
 {
   if (--m_totalRefs == 0)
     delete this;
@@ -80,7 +85,21 @@ void Object::applyCommit()
   m_readThisCommit.clear();
   m_dependencies.clear();
   m_name = readString("name", "");
-  commitParameters();
+  try {
+    commitParameters();
+  } catch (const std::bad_alloc &) {
+    // Left as committed with no parameters: for every object that needs
+    // data, that is invalid, and it never renders half-built state.
+    report(ANARI_SEVERITY_ERROR,
+        ANARI_STATUS_OUT_OF_MEMORY,
+        "out of memory committing; the object is reset to its defaults");
+    m_committed.unsetAll();
+    m_dependencies.clear();
+    try {
+      commitParameters();
+    } catch (const std::bad_alloc &) {
+    }
+  }
   reportUnusedParameters();
   m_epoch++;
 }
@@ -154,7 +173,7 @@ Object *Object::readObject(
 void Object::dependOn(Object *object)
 {
   if (object && object != this)
-    m_dependencies.emplace_back(object, object->epoch());
+    m_dependencies.push_back({ObjectRef<Object>(object), object->epoch()});
 }
 
 void Object::refresh(uint64_t generation)

@@ -2,6 +2,7 @@
 // parameters, the pull-model parameter readers, properties and status.
 #pragma once
 
+#include "ObjectRef.h"
 #include "Parameter.h"
 
 #include <atomic>
@@ -49,11 +50,18 @@ class Object
   // positive; the handle is valid while the public count is.
   void retainPublic();
   uint32_t dropPublicReference(); // returns the remaining public count
-  void retainInternal();
-  void releaseInternal();
+  // Internal references are what objects hold on one another; const, since
+  // a holder may see its child as const.
+  void retainInternal() const;
+  void releaseInternal() const;
   uint32_t publicReferences() const
   {
     return m_publicRefs.load();
+  }
+  // Public and internal references together.
+  uint32_t totalReferences() const
+  {
+    return m_totalRefs.load();
   }
 
   // Staging (any thread; never visible to rendering until committed).
@@ -135,7 +143,10 @@ class Object
   // Marks every committed parameter as read (objects that accept anything).
   void readAll();
   // Makes refresh() re-commit this object when `object` changes (objects
-  // read with readObject() are recorded automatically).
+  // read with readObject() are recorded automatically). Until the next
+  // commit, the dependency also keeps `object` alive, so what a commit
+  // derived from it (pointers into it) stays valid whatever the
+  // application releases or remaps meanwhile.
   void dependOn(Object *object);
   // Records that `name` was set with an unsupported type.
   void wrongType(const char *name,
@@ -150,7 +161,7 @@ class Object
   const std::string m_subtype;
   ANARIObject m_handle{nullptr};
   std::atomic<uint32_t> m_publicRefs{1};
-  std::atomic<uint32_t> m_totalRefs{1};
+  mutable std::atomic<uint32_t> m_totalRefs{1};
   std::atomic<uint64_t> m_epoch{0};
 
   mutable std::mutex m_parameterMutex;
@@ -160,7 +171,12 @@ class Object
   bool m_hasPending{false};
   std::set<std::string> m_readThisCommit;
   std::set<std::string> m_warned;
-  std::vector<std::pair<Object *, uint64_t>> m_dependencies; // with epochs
+  struct Dependency
+  {
+    ObjectRef<Object> object;
+    uint64_t epoch;
+  };
+  std::vector<Dependency> m_dependencies;
   uint64_t m_refreshedGeneration{0};
   std::string m_name;
 };

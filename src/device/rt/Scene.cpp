@@ -151,10 +151,10 @@ void setTimeSteps(RTCGeometry geometry, const TimeSteps &steps)
 
 // validRay() without branches, so a packet's lanes are checked together:
 // a magnitude test is false for NaN and infinities too.
-int validLane(const RayHitPacket &p, int i)
+int validLane(const RayHitPacket &p, int i, float range)
 {
-  auto usable = [](float v) {
-    return int(std::abs(v) <= kLargestCoordinate);
+  auto usable = [range](float v) {
+    return int(std::abs(v) <= range);
   };
   const int origin =
       usable(p.originX[i]) & usable(p.originY[i]) & usable(p.originZ[i]);
@@ -227,6 +227,7 @@ void Scene::clear()
 {
   if (m_scene)
     rtcReleaseScene(m_scene);
+  m_rayRange = kLargestCoordinate;
   m_interpolatedVertices.clear();
   m_scene = m_context.isValid() ? rtcNewScene(m_context.handle()) : nullptr;
   if (m_scene) {
@@ -392,6 +393,7 @@ void Scene::addInstance(
   rtcSetGeometryTransform(
       g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, &worldFromObject);
   attach(m_scene, g, id);
+  m_rayRange = std::min(m_rayRange, worldRayRange(inverse(worldFromObject)));
 }
 
 void Scene::addInstance(
@@ -421,6 +423,8 @@ void Scene::addInstance(
       const mat3x4 m = worldFromObject.at(time);
       rtcSetGeometryTransform(g, step, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, &m);
     }
+    m_rayRange =
+        std::min(m_rayRange, worldRayRange(inverse(worldFromObject.at(time))));
   }
   attach(m_scene, g, id);
 }
@@ -450,7 +454,7 @@ bool Scene::intersect(const float3 &origin,
     float time) const
 {
   hit = Hit{};
-  if (!m_scene || !isTraceable(origin, direction, tMin, tMax))
+  if (!m_scene || !isTraceable(origin, direction, tMin, tMax, m_rayRange))
     return false;
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
@@ -474,10 +478,29 @@ bool Scene::intersect(const float3 &origin,
   return hit.found();
 }
 
+void Scene::confine(RayQueue &queue) const
+{
+  if (m_rayRange >= kLargestCoordinate)
+    return; // push() already checked against Embree's own range
+  for (size_t i = 0; i < queue.size(); i++) {
+    const float3 origin{
+        queue.m_originX[i], queue.m_originY[i], queue.m_originZ[i]};
+    const float3 direction{
+        queue.m_directionX[i], queue.m_directionY[i], queue.m_directionZ[i]};
+    if (!isTraceable(
+            origin, direction, queue.m_tMin[i], queue.m_tMax[i], m_rayRange)) {
+      // As push() marks untraceable rays: an empty interval.
+      queue.m_tMin[i] = 1.f;
+      queue.m_tMax[i] = 0.f;
+    }
+  }
+}
+
 void Scene::intersect(RayQueue &queue) const
 {
   if (!m_scene || queue.empty())
     return;
+  confine(queue);
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   context.flags = queue.coherent() ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
@@ -511,6 +534,7 @@ void Scene::occluded(RayQueue &queue) const
 {
   if (!m_scene || queue.empty())
     return;
+  confine(queue);
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   context.flags = queue.coherent() ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
@@ -542,7 +566,7 @@ void Scene::intersect(RayHitPacket &packet, const int active[kPacketSize]) const
     packet.geometryId[i] = RTC_INVALID_GEOMETRY_ID;
     packet.instanceId[i] = RTC_INVALID_GEOMETRY_ID;
     packet.time[i] = validTime(packet.time[i]);
-    valid[i] = active[i] & validLane(packet, i);
+    valid[i] = active[i] & validLane(packet, i, m_rayRange);
   }
   if (!m_scene)
     return;

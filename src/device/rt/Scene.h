@@ -89,6 +89,13 @@ class Scene
   // Builds the BVH; call after adding everything.
   void commit();
   box3 bounds() const;
+  // The largest coordinate of a ray traced here: below Embree's own limit
+  // when an instance's transform would move rays out of its range there
+  // (see worldRayRange()); rays beyond it find nothing.
+  float rayRange() const
+  {
+    return m_rayRange;
+  }
 
   // The closest hit along the ray in (tMin, tMax) at `time` (in the
   // shutter's [0, 1]); false if none.
@@ -108,6 +115,8 @@ class Scene
   void intersect(RayHitPacket &packet, const int active[kPacketSize]) const;
 
  private:
+  // Marks the queue's rays beyond rayRange() untraceable.
+  void confine(RayQueue &queue) const;
   // Triangles (3 indices per primitive) or quads (4), sharing the arrays.
   void addMesh(uint32_t id,
       bool quads,
@@ -118,6 +127,7 @@ class Scene
 
   const Context &m_context;
   RTCSceneTy *m_scene{nullptr};
+  float m_rayRange;
   // Vertices interpolated between keys where Embree's time steps fall
   // between them; kept until clear().
   std::vector<std::vector<float3>> m_interpolatedVertices;

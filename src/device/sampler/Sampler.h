@@ -5,61 +5,13 @@
 #include "../geometry/Attributes.h"
 #include "../math/Vec.h"
 #include "../object/Object.h"
+#include "../object/ObjectRef.h"
 
-#include <utility>
 #include <vector>
 
 namespace prism {
 
 class Array;
-
-// An internal reference on an object: what a parent holds on its children so
-// they outlive frames in flight when the application releases them.
-template <typename T>
-class ObjectRef
-{
- public:
-  ObjectRef() = default;
-  explicit ObjectRef(T *object) : m_object(object)
-  {
-    if (m_object)
-      m_object->retainInternal();
-  }
-  ObjectRef(const ObjectRef &other) : ObjectRef(other.m_object) {}
-  ObjectRef(ObjectRef &&other) noexcept
-      : m_object(std::exchange(other.m_object, nullptr))
-  {}
-  ObjectRef &operator=(ObjectRef other) noexcept
-  {
-    std::swap(m_object, other.m_object);
-    return *this;
-  }
-  ~ObjectRef()
-  {
-    reset();
-  }
-
-  void reset()
-  {
-    if (T *object = std::exchange(m_object, nullptr))
-      object->releaseInternal();
-  }
-  T *get() const
-  {
-    return m_object;
-  }
-  T *operator->() const
-  {
-    return m_object;
-  }
-  explicit operator bool() const
-  {
-    return m_object != nullptr;
-  }
-
- private:
-  T *m_object{nullptr};
-};
 
 // The element types of the spec's "ARRAY of Color" (the sampler JSON lists):
 // UFIXED8/16/32 and FLOAT32 with 1-4 components and the UFIXED8 sRGB types.

@@ -5,6 +5,7 @@
 #include "../light/EmissiveSurface.h"
 #include "../light/Light.h"
 #include "../material/PhysicallyBased.h"
+#include "../rt/RayValidity.h"
 
 #include <algorithm>
 #include <cmath>
@@ -39,6 +40,29 @@ EmitterShape placedEmitterShape(
     }
   }
   return out;
+}
+
+// Whether rays can find a group placed by `worldFromObject`: its surfaces
+// must lie within the range that Embree, moving rays into the group's space,
+// can trace there (rt::worldRayRange()). Transforms with huge or tiny
+// (but finite) entries fail this; rays would overflow inside Embree.
+bool isTraceablePlacement(const box3 &bounds,
+    const mat3x4 &worldFromObject,
+    const mat3x4 &objectFromWorld)
+{
+  const float range = rt::worldRayRange(objectFromWorld);
+  if (!(range > 0.f))
+    return false;
+  for (int corner = 0; corner < 8; corner++) {
+    const float3 p{corner & 1 ? bounds.upper.x : bounds.lower.x,
+        corner & 2 ? bounds.upper.y : bounds.lower.y,
+        corner & 4 ? bounds.upper.z : bounds.lower.z};
+    const float3 placed = transformPoint(worldFromObject, p);
+    if (!(std::abs(placed.x) <= range && std::abs(placed.y) <= range
+            && std::abs(placed.z) <= range))
+      return false;
+  }
+  return true;
 }
 
 } // namespace
@@ -133,11 +157,22 @@ void World::finalize()
     for (const float3 &c : transform.col)
       invertible &=
           std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z);
+    // Surfaces placed in the world directly have no instance to name.
+    const Object &placer = instance ? *(const Object *)instance : *this;
     if (!invertible) {
-      instance->report(ANARI_SEVERITY_WARNING,
+      placer.report(ANARI_SEVERITY_WARNING,
           ANARI_STATUS_INVALID_ARGUMENT,
           "a transform is not invertible (or not finite); that placement is "
           "skipped");
+      return;
+    }
+    if (!isTraceablePlacement(group->bounds(), transform, objectFromWorld)) {
+      placer.report(ANARI_SEVERITY_WARNING,
+          ANARI_STATUS_INVALID_ARGUMENT,
+          "a transform moves its group (or rays into it) beyond the range "
+          "rays can be traced in (coordinates up to %g); that placement is "
+          "skipped",
+          double(rt::kLargestCoordinate));
       return;
     }
     const auto embreeId = uint32_t(m_placements.size());
@@ -199,9 +234,12 @@ void World::placeEmitters()
       continue;
     const Group &group = *placement.group;
     for (uint32_t g = 0; g < group.surfaceCount(); g++) {
+      // A surface recommitted since its group was (the group refreshes
+      // before the frame renders) may have lost its geometry or material.
       const Surface *surface = group.surface(g);
-      const auto *material =
-          surface ? surface->material()->asPhysicallyBased() : nullptr;
+      const auto *material = surface && surface->isValid()
+                                 ? surface->material()->asPhysicallyBased()
+                                 : nullptr;
       if (!material)
         continue;
       const auto &emissive = material->inputs().emissive;
