@@ -98,9 +98,6 @@ const ANARIParameter g_parameterList[] = {
 // Application memory of shared arrays: freed by the deleter, which must run
 // exactly once per array by the time its device is released.
 std::atomic<int64_t> g_sharedLive{0};
-std::mutex g_deferredMutex;
-std::vector<void *> g_deferredFrees; // kAvoidFreeOnDelete
-bool g_deferFrees = false;
 int g_deleterToken;
 
 struct SharedMemory
@@ -132,12 +129,7 @@ void sharedDeleter(const void *userPtr, const void *memory)
     violated("array deleter called twice (or on foreign memory)");
   header->magic = kSharedFreed;
   g_sharedLive--;
-  if (g_deferFrees) {
-    std::lock_guard lock(g_deferredMutex);
-    g_deferredFrees.push_back(header);
-  } else {
-    std::free(header);
-  }
+  std::free(header);
 }
 
 // Introspection, cached per process (the device's answers never change).
@@ -487,8 +479,6 @@ struct Entry
   // Frames: the largest side any size set on it had.
   uint32_t largestSide = 0;
   bool absurdSize = false;
-  // Surfaces: whether a live material was set (kAvoidNullMaterial).
-  bool hasMaterial = false;
 };
 
 struct DeviceSlot
@@ -500,7 +490,7 @@ struct DeviceSlot
 class Interpreter
 {
  public:
-  explicit Interpreter(unsigned avoid) : m_avoid(avoid)
+  Interpreter()
   {
     m_entries.reserve(kMaxObjects + 2 * kMaxNested);
   }
@@ -521,10 +511,6 @@ class Interpreter
   }
 
  private:
-  bool avoid(unsigned what) const
-  {
-    return (m_avoid & what) != 0;
-  }
   void call()
   {
     g_counters.calls++;
@@ -619,8 +605,6 @@ class Interpreter
   }
   ANARIObject foreignHandle(int device, uint8_t index)
   {
-    if (avoid(kAvoidForeignHandles))
-      return nullptr;
     std::vector<const Entry *> matches;
     for (const Entry &e : m_entries) {
       if (e.device != device && isLive(e))
@@ -804,9 +788,7 @@ class Interpreter
       type = other;
       info = nullptr;
     }
-    const bool extremes =
-        twist == Twist::Extreme
-        && !(avoid(kAvoidExtremeTransforms) && e.type == ANARI_INSTANCE);
+    const bool extremes = twist == Twist::Extreme;
     alignas(16) unsigned char buffer[256] = {};
     const void *mem = buffer;
     std::string text;
@@ -838,11 +820,6 @@ class Interpreter
         break;
       }
       std::memcpy(buffer, &h, sizeof(h));
-      if (e.type == ANARI_SURFACE && name == "material") {
-        e.hasMaterial = int(type) == ANARI_MATERIAL && isLiveMaterial(h);
-        if (avoid(kAvoidNullMaterial) && !e.hasMaterial)
-          return;
-      }
     } else if (t == ANARI_STRING) {
       const uint8_t s = p.value();
       if (info && !info->values.empty() && s < 128) {
@@ -927,15 +904,6 @@ class Interpreter
     anariSetParameter(dev, e.handle, name.c_str(), type, mem);
   }
 
-  bool isLiveMaterial(ANARIObject h) const
-  {
-    for (const Entry &e : m_entries) {
-      if (e.handle == h && isLive(e))
-        return e.type == ANARI_MATERIAL;
-    }
-    return false;
-  }
-
   // Keeps frames tiny and sample counts small (one absurd size excepted).
   void limitCost(Entry &e,
       const std::string &name,
@@ -947,7 +915,7 @@ class Interpreter
         && int(type) == ANARI_UINT32_VEC2) {
       uint32_t size[2];
       std::memcpy(size, value, 8);
-      if (twist == Twist::Extreme && !avoid(kAvoidAbsurdFrameSize)) {
+      if (twist == Twist::Extreme) {
         size[0] = size[1] = 100000;
         e.absurdSize = true;
       } else {
@@ -1174,9 +1142,7 @@ class Interpreter
     const bool shared = p.operand() & 1;
     if (full())
       return;
-    const bool extremes = !(avoid(kAvoidExtremeTransforms)
-                            && int(elementType) == ANARI_FLOAT32_MAT4);
-    newArray(device, dimensions, elementType, size, shared, p, extremes);
+    newArray(device, dimensions, elementType, size, shared, p, true);
   }
 
   void setParameter(Payload &p)
@@ -1220,8 +1186,6 @@ class Interpreter
     const bool all = p.operand() & 1;
     if (!e)
       return;
-    if (avoid(kAvoidNullMaterial) && e->type == ANARI_SURFACE)
-      return;
     call();
     if (all) {
       anariUnsetAllParameters(deviceOf(*e), e->handle);
@@ -1237,9 +1201,6 @@ class Interpreter
   {
     Entry *e = entry(p.operand());
     if (!e)
-      return;
-    if (avoid(kAvoidNullMaterial) && e->type == ANARI_SURFACE
-        && !e->hasMaterial)
       return;
     call();
     anariCommitParameters(deviceOf(*e), e->handle);
@@ -1273,18 +1234,13 @@ class Interpreter
     const uint8_t unmap = p.operand();
     if (!e)
       return;
-    const bool objects = anari::isObject(e->elementType);
-    if (objects && avoid(kAvoidObjectArrayRemap))
-      return;
     ANARIDevice dev = deviceOf(*e);
     call();
     void *mapped = anariMapArray(dev, (ANARIArray)e->handle);
     if (mapped && !isLive(*e))
       violated("anariMapArray mapped a released handle");
-    const bool extremes = !(avoid(kAvoidExtremeTransforms)
-                            && int(e->elementType) == ANARI_FLOAT32_MAT4);
     if (mapped && e->capacity)
-      fill(mapped, e->elementType, e->capacity, e->device, p, extremes);
+      fill(mapped, e->elementType, e->capacity, e->device, p, true);
     if (!(unmap & 1)) {
       call();
       anariUnmapArray(dev, (ANARIArray)e->handle);
@@ -1729,8 +1685,6 @@ class Interpreter
   }
   void store(int device, ANARIObject array, ANARIObject element)
   {
-    if (avoid(kAvoidCycles))
-      return;
     ANARIDevice dev = m_devices[device].handle;
     call();
     if (auto *mapped = (ANARIObject *)anariMapArray(dev, (ANARIArray)array))
@@ -1765,17 +1719,15 @@ class Interpreter
       add(g, ANARI_GEOMETRY, device, "sphere");
       ANARIObject a = holderArray(device, ANARI_GEOMETRY);
       store(device, a, g);
-      if (!avoid(kAvoidCycles)) {
-        call();
-        anariSetParameter(dev, g, "primitive.attribute0", ANARI_ARRAY1D, &a);
-      }
+      call();
+      anariSetParameter(dev, g, "primitive.attribute0", ANARI_ARRAY1D, &a);
       call();
       anariCommitParameters(dev, g);
       break;
     }
     case Cycle::MappedParameterHoldsObject: {
       Entry *e = entry(objectSelector);
-      if (!e || avoid(kAvoidCycles))
+      if (!e)
         break;
       ANARIDevice own = deviceOf(*e);
       const ANARIDataType type =
@@ -1823,8 +1775,6 @@ class Interpreter
   {
     call();
     anariSetParameter(deviceOf(e), e.handle, name, type, &h);
-    if (e.type == ANARI_SURFACE && std::string(name) == "material")
-      e.hasMaterial = h != nullptr;
   }
   void commitEntry(Entry &e)
   {
@@ -2066,13 +2016,8 @@ class Interpreter
     // Every device is gone: every deleter must have run, exactly once.
     if (g_sharedLive != 0)
       violated("a shared array's deleter did not run by device release");
-    std::lock_guard lock(g_deferredMutex);
-    for (void *memory : g_deferredFrees)
-      std::free(memory);
-    g_deferredFrees.clear();
   }
 
-  unsigned m_avoid;
   std::vector<DeviceSlot> m_devices;
   std::vector<Entry> m_entries;
   uint64_t m_sink = 0; // keeps reads of returned data from being optimised out
@@ -2090,12 +2035,11 @@ void loadDeviceLibrary()
     violated("anariLoadLibrary(\"prism\") failed");
 }
 
-void runProgram(const uint8_t *data, size_t size, unsigned avoid)
+void runProgram(const uint8_t *data, size_t size)
 {
   loadDeviceLibrary();
-  g_deferFrees = (avoid & kAvoidFreeOnDelete) != 0;
   g_counters.programs++;
-  Interpreter interpreter(avoid);
+  Interpreter interpreter;
   interpreter.run(data, size);
 }
 

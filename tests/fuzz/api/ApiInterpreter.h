@@ -11,26 +11,13 @@
 
 namespace prism::fuzz {
 
-// Known device defects the interpreter can stay clear of while their fixes
-// are pending (PRISM_FUZZ_API_AVOID, a mask of these; 0 in the committed
-// build, so every one of them is exercised).
-enum AvoidMask : unsigned {
-  kAvoidForeignHandles = 1,    // handles of another device
-  kAvoidAbsurdFrameSize = 2,   // frames of 100000x100000
-  kAvoidExtremeTransforms = 4, // 1e30/NaN/inf in instance transforms
-  kAvoidCycles = 8,            // arrays holding themselves or their holder
-  kAvoidObjectArrayRemap = 16, // mapping object arrays again
-  kAvoidNullMaterial = 32,     // committing surfaces without a material
-  kAvoidFreeOnDelete = 64,     // deleters free application memory at the end
-};
-
 // Loads the prism library once per process; it is never unloaded, so its
 // coverage counters stay mapped (call before fuzzing starts, so libFuzzer
 // sees the library's counters from the first input).
 void loadDeviceLibrary();
 // Runs `program` on fresh devices; everything it made is released before it
 // returns.
-void runProgram(const uint8_t *data, size_t size, unsigned avoid);
+void runProgram(const uint8_t *data, size_t size);
 
 // Counters over every program run so far (for the fuzzer's final report).
 struct RunStatistics

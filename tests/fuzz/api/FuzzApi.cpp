@@ -4,17 +4,15 @@
 #include <cstdio>
 #include <cstdlib>
 
-#ifndef PRISM_FUZZ_API_AVOID
-#define PRISM_FUZZ_API_AVOID 0
-#endif
-
 // Sanitizer settings that hold however the target is started (fuzz.sh, the
 // corpus replay test, a developer reproducing a crash by hand).
 extern "C" const char *__asan_default_options()
 {
   // Leaks are checked after each input; a device's own threads and caches
-  // are reachable, so only what an input lost is reported.
-  return "detect_leaks=1:abort_on_error=1";
+  // are reachable, so only what an input lost is reported. Allocation stacks
+  // of 15 frames keep the fuzzer ~15% faster than 30 (override with
+  // ASAN_OPTIONS=malloc_context_size=30 when reproducing).
+  return "detect_leaks=1:abort_on_error=1:malloc_context_size=15";
 }
 
 extern "C" const char *__ubsan_default_options()
@@ -49,6 +47,6 @@ extern "C" int LLVMFuzzerInitialize(int *, char ***)
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-  prism::fuzz::runProgram(data, size, PRISM_FUZZ_API_AVOID);
+  prism::fuzz::runProgram(data, size);
   return 0;
 }
