@@ -476,6 +476,9 @@ struct Entry
   // Arrays made by NewArray and friends: what map returns.
   ANARIDataType elementType = ANARI_UNKNOWN;
   uint64_t capacity = 0;
+  // Shared arrays without a deleter: the application's memory, freed right
+  // after the last release (as the SDK's own scenes do).
+  void *borrowed = nullptr;
   // Frames: the largest side any size set on it had.
   uint32_t largestSide = 0;
   bool absurdSize = false;
@@ -672,13 +675,15 @@ class Interpreter
     }
   }
 
-  // A new array of `dimensions` of `elementType` (sizes 1..16 per side, or
-  // the given ones), appended to the pool. Arrays of arrays nest once.
+  // A new array of `dimensions` of `elementType`, appended to the pool;
+  // `sharing` % 3: managed, shared with a deleter, shared without one (the
+  // memory is freed right after the last release). Arrays of arrays nest
+  // once.
   ANARIObject newArray(int device,
       int dimensions,
       ANARIDataType elementType,
       const uint64_t size[3],
-      bool shared,
+      int sharing,
       Payload &p,
       bool extremes,
       int depth = 0)
@@ -690,11 +695,14 @@ class Interpreter
         count > 0 && elementSize > 0
         && (int(elementType) >= 1000 || anari::isObject(elementType));
     void *memory = nullptr;
-    if (shared && valid)
+    void *borrowed = nullptr;
+    if (sharing % 3 == 1 && valid)
       memory = newSharedMemory(count * elementSize);
+    if (sharing % 3 == 2 && valid)
+      borrowed = std::malloc(count * elementSize);
     std::vector<unsigned char> staging;
-    void *target = memory;
-    if (!memory && valid) {
+    void *target = memory ? memory : borrowed;
+    if (!target && valid) {
       staging.resize(count * elementSize);
       target = staging.data();
     }
@@ -704,8 +712,8 @@ class Interpreter
         // Arrays of arrays (motion.vertex.*): inner arrays of points.
         for (uint64_t i = 0; i < count; i++) {
           const uint64_t inner[3] = {size[0], 1, 1};
-          ANARIObject a = newArray(
-              device, 1, ANARI_FLOAT32_VEC3, inner, false, p, extremes, 1);
+          ANARIObject a =
+              newArray(device, 1, ANARI_FLOAT32_VEC3, inner, 0, p, extremes, 1);
           std::memcpy((unsigned char *)target + i * elementSize, &a, 8);
         }
       } else {
@@ -715,16 +723,17 @@ class Interpreter
     call();
     ANARIObject handle = nullptr;
     const void *deleterUser = &g_deleterToken;
+    const void *application = memory ? memory : borrowed;
     if (dimensions == 1) {
       handle = anariNewArray1D(dev,
-          memory,
+          application,
           memory ? sharedDeleter : nullptr,
           deleterUser,
           elementType,
           size[0]);
     } else if (dimensions == 2) {
       handle = anariNewArray2D(dev,
-          memory,
+          application,
           memory ? sharedDeleter : nullptr,
           deleterUser,
           elementType,
@@ -732,7 +741,7 @@ class Interpreter
           size[1]);
     } else {
       handle = anariNewArray3D(dev,
-          memory,
+          application,
           memory ? sharedDeleter : nullptr,
           deleterUser,
           elementType,
@@ -745,7 +754,11 @@ class Interpreter
       g_sharedLive--;
       std::free((SharedMemory *)memory - 1);
     }
-    if (handle && !memory && target) {
+    if (!handle) {
+      std::free(borrowed);
+      borrowed = nullptr;
+    }
+    if (handle && !memory && !borrowed && target) {
       call();
       if (void *mapped = anariMapArray(dev, (ANARIArray)handle)) {
         std::memcpy(mapped, target, count * elementSize);
@@ -762,11 +775,13 @@ class Interpreter
         call();
         anariRelease(dev, handle);
       }
+      std::free(borrowed);
       return handle;
     }
     Entry &e = add(handle, type, device);
     e.elementType = elementType;
     e.capacity = handle ? count : 0;
+    e.borrowed = borrowed;
     return handle;
   }
 
@@ -964,7 +979,7 @@ class Interpreter
         size[i] = n ? n : 1;
     }
     return newArray(
-        e.device, dimensions, elementType, size, p.value() & 1, p, extremes);
+        e.device, dimensions, elementType, size, p.value(), p, extremes);
   }
 
   const std::vector<ParameterInfo> *parametersOf(const Entry &e)
@@ -1139,10 +1154,10 @@ class Interpreter
       if (i < dimensions)
         size[i] = n % 17;
     }
-    const bool shared = p.operand() & 1;
+    const uint8_t sharing = p.operand();
     if (full())
       return;
-    newArray(device, dimensions, elementType, size, shared, p, true);
+    newArray(device, dimensions, elementType, size, sharing, p, true);
   }
 
   void setParameter(Payload &p)
@@ -1211,10 +1226,35 @@ class Interpreter
     Entry *e = entry(p.operand());
     if (!e)
       return;
+    if (isLive(*e)) {
+      dropReference(*e);
+    } else {
+      call();
+      anariRelease(deviceOf(*e), e->handle); // stale: must be reported
+    }
+  }
+
+  // Releases one of the program's references; after the last, memory the
+  // array borrowed is freed at once (the device must have let go of it or
+  // copied it).
+  void dropReference(Entry &e)
+  {
     call();
-    anariRelease(deviceOf(*e), e->handle);
-    if (e->refs > 0)
-      e->refs--;
+    anariRelease(deviceOf(e), e.handle);
+    if (--e.refs == 0) {
+      std::free(e.borrowed);
+      e.borrowed = nullptr;
+    }
+  }
+  // After a device release: memory its arrays borrowed is the program's.
+  void freeBorrowed(int device)
+  {
+    for (Entry &e : m_entries) {
+      if (e.device == device) {
+        std::free(e.borrowed);
+        e.borrowed = nullptr;
+      }
+    }
   }
 
   void retain(Payload &p)
@@ -1631,10 +1671,12 @@ class Interpreter
 
   void releaseDevice(Payload &p)
   {
-    DeviceSlot &d = m_devices[deviceOperand(p.operand())];
+    const int device = deviceOperand(p.operand());
+    DeviceSlot &d = m_devices[device];
     call();
     anariRelease(d.handle, (ANARIObject)d.handle);
     d.released = true;
+    freeBorrowed(device);
   }
 
   void setDeviceParameter(Payload &p)
@@ -1796,8 +1838,7 @@ class Interpreter
       Payload &p)
   {
     const uint64_t size[3] = {n1, n2, 1};
-    newArray(
-        device, n2 > 1 ? 2 : 1, elementType, size, p.value() & 1, p, false);
+    newArray(device, n2 > 1 ? 2 : 1, elementType, size, p.value(), p, false);
     return m_entries.size() - 1;
   }
   size_t addHolder(int device, ANARIDataType elementType, ANARIObject element)
@@ -1896,7 +1937,7 @@ class Interpreter
     if (hasParameter(m_entries[light], "radiance", ANARI_ARRAY2D)) {
       const uint64_t size[3] = {4, 2, 1};
       ANARIObject radiance =
-          newArray(device, 2, ANARI_FLOAT32_VEC3, size, false, p, false);
+          newArray(device, 2, ANARI_FLOAT32_VEC3, size, 0, p, false);
       setObject(m_entries[light], "radiance", ANARI_ARRAY2D, radiance);
       // The light holds it; the pool keeps an entry, so the count is fixed.
       m_entries.pop_back();
@@ -2000,18 +2041,18 @@ class Interpreter
       waitAll();
     if (!(flags & kLeaveObjectsToDevice)) {
       for (auto it = m_entries.rbegin(); it != m_entries.rend(); ++it) {
-        for (; isLive(*it); it->refs--) {
-          call();
-          anariRelease(deviceOf(*it), it->handle);
-        }
+        while (isLive(*it))
+          dropReference(*it);
       }
     }
-    for (DeviceSlot &d : m_devices) {
+    for (size_t i = 0; i < m_devices.size(); i++) {
+      DeviceSlot &d = m_devices[i];
       if (!d.released) {
         call();
         anariRelease(d.handle, (ANARIObject)d.handle);
         d.released = true;
       }
+      freeBorrowed(int(i));
     }
     // Every device is gone: every deleter must have run, exactly once.
     if (g_sharedLive != 0)

@@ -13,7 +13,7 @@
 // the creating operations, a SetParameter/SetNamedParameter of an array type
 // whose value selector is below 100 creates a fresh array (one entry; an
 // array of arrays first appends its inner arrays). A fresh array's value
-// bytes are [element type][n1][n2][n3][shared][elements...]: the element
+// bytes are [element type][n1][n2][n3][sharing][elements...]: the element
 // type indexes the parameter's accepted ones, sizes are n % 17 (1D), n % 9
 // (2D) or n % 5 (3D), 0 meaning 1.
 #pragma once
@@ -38,8 +38,10 @@ enum class Op : uint8_t {
   // subtype when the name is given, else introspected subtype `subtype`
   // (one past the last: an unknown subtype). twist 1: anariNewObject.
   NewObject,
-  // [device][dimensions][element type][n1][n2][n3][shared][values...]:
-  // element type indexes kElementTypes; sizes are n % 17 (0 is refused).
+  // [device][dimensions][element type][n1][n2][n3][sharing][values...]:
+  // element type indexes kElementTypes; sizes are n % 17 (0 is refused);
+  // sharing % 3: managed, shared with a deleter, shared without one (its
+  // memory freed right after the program's last release of the array).
   NewArray,
   // [object][parameter][twist][values...]: the introspected (name, type)
   // pair `parameter` of the object's subtype with a value drawn from

@@ -15,6 +15,9 @@ namespace {
 
 using Bytes = std::vector<uint8_t>;
 
+// NewArray's sharing operand.
+constexpr uint8_t kManaged = 0, kSharedWithDeleter = 1, kBorrowed = 2;
+
 // Subtype counts and orders as the device introspects them (BuildScene picks
 // subtypes by index; a changed list only changes which scenes the seeds make).
 constexpr int kGeometrySubtypes = 6; // cone curve cylinder quad sphere triangle
@@ -72,7 +75,7 @@ class Seed
       uint64_t n2 = 0,
       uint64_t n3 = 0,
       const Bytes &values = {},
-      bool shared = false,
+      uint8_t sharing = kManaged,
       int device = 0)
   {
     const int dimensions = n3 ? 3 : n2 ? 2 : 1;
@@ -82,7 +85,7 @@ class Seed
         uint8_t(n1),
         uint8_t(n2),
         uint8_t(n3),
-        uint8_t(shared)};
+        sharing};
     m_writer.op(Op::NewArray, p + values);
     const ANARIDataType type = dimensions == 1   ? ANARI_ARRAY1D
                                : dimensions == 2 ? ANARI_ARRAY2D
@@ -421,7 +424,7 @@ void writeGeometries(Corpus &corpus)
   {
     Manual m("quad");
     const int position =
-        m.s.array(ANARI_FLOAT32_VEC3, 4, 0, 0, kQuadPoints, true);
+        m.s.array(ANARI_FLOAT32_VEC3, 4, 0, 0, kQuadPoints, kSharedWithDeleter);
     m.s.setObject(m.geometry, "vertex.position", position);
     m.s.setFresh(m.geometry,
         "primitive.index",
@@ -847,6 +850,33 @@ void writeCorruptions(Corpus &corpus)
     corpus.write("remap-object-arrays", s.bytes());
   }
   {
+    // The SDK's pattern: shared arrays without a deleter, released and their
+    // memory freed before rendering; others with a deleter, released while
+    // in use; then remapped after release.
+    Manual m("triangle");
+    const int position =
+        m.s.array(ANARI_FLOAT32_VEC3, 4, 0, 0, kQuadPoints, kBorrowed);
+    const int index =
+        m.s.array(ANARI_UINT32_VEC3, 2, 0, 0, {0, 1, 2, 0, 2, 3}, kBorrowed);
+    const int color = m.s.array(ANARI_FLOAT32_VEC4,
+        4,
+        0,
+        0,
+        floats({1, 0, 0, 1, 0, 1, 0, 1, 0, 0, 1, 1, 1, 1, 1, 1}),
+        kSharedWithDeleter);
+    m.s.setObject(m.geometry, "vertex.position", position);
+    m.s.setObject(m.geometry, "primitive.index", index);
+    m.s.setObject(m.geometry, "vertex.color", color);
+    m.s.release(position);
+    m.s.release(index);
+    m.s.release(color);
+    m.finish("matte", "raycast");
+    m.s.render(0);
+    m.s.op(Op::MapArray, {uint8_t(position), 0, 16, 16, 16});
+    m.s.render(0);
+    corpus.write("shared-arrays-released", m.s.bytes());
+  }
+  {
     // Release everything in the middle of a frame; render, map, discard in
     // odd orders; a frame released without waiting.
     Seed s(kNoFinalWait);
@@ -947,7 +977,7 @@ void writeCorruptions(Corpus &corpus)
           t % 3 ? 2 : 0,
           t % 3 == 2 ? 2 : 0,
           {},
-          t % 2);
+          uint8_t(t % 3));
     const int empty = s.array(ANARI_FLOAT32, 0);
     s.op(Op::MapArray, {0, 1});
     s.op(Op::MapArray, {0, 0});
