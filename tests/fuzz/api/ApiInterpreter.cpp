@@ -90,6 +90,7 @@ void frameCompleted(const void *userPtr, ANARIDevice device, ANARIFrame frame)
 void noFunction() {}
 void noDeleter(const void *, const void *) {}
 unsigned char g_userBuffer[256];
+const float kOne = 1.f;
 const char *g_stringList[] = {"a", "b", nullptr};
 const ANARIDataType g_typeList[] = {ANARI_FLOAT32, ANARI_UNKNOWN};
 const ANARIParameter g_parameterList[] = {
@@ -462,6 +463,29 @@ void writeScalar(
     break;
   }
   }
+}
+
+// Every plain data type (any array may hold them).
+const std::vector<ANARIDataType> &numericTypes()
+{
+  static const std::vector<ANARIDataType> types = [] {
+    std::vector<ANARIDataType> out;
+    for (int t = 1000; t < 2300; t++) {
+      if (anari::isValidDataType(t) && anari::sizeOf(t) > 0)
+        out.push_back(t);
+    }
+    return out;
+  }();
+  return types;
+}
+
+// An element type selector: kElementTypes, or from kAnyElementType on any
+// plain data type.
+ANARIDataType elementTypeOf(uint8_t s)
+{
+  if (s < kAnyElementType)
+    return kElementTypes[s % kElementTypeCount];
+  return numericTypes()[(s - kAnyElementType) % numericTypes().size()];
 }
 
 // The interpreter /////////////////////////////////////////////////////////
@@ -1046,6 +1070,8 @@ class Interpreter
       return churn(p);
     case Op::WaitAll:
       return waitAll();
+    case Op::LibraryQuery:
+      return libraryQuery(p);
     case Op::Count:
       return;
     }
@@ -1146,8 +1172,7 @@ class Interpreter
   {
     const int device = deviceOperand(p.operand());
     const int dimensions = 1 + p.operand() % 3;
-    const ANARIDataType elementType =
-        kElementTypes[p.operand() % kElementTypeCount];
+    const ANARIDataType elementType = elementTypeOf(p.operand());
     uint64_t size[3] = {1, 1, 1};
     for (int i = 0; i < 3; i++) {
       const uint8_t n = p.operand();
@@ -1320,8 +1345,8 @@ class Interpreter
     const ParameterInfo *info = list && !list->empty() && index != 255
                                     ? &(*list)[index % list->size()]
                                     : nullptr;
-    ANARIDataType elementType = kElementTypes[typeSelector % kElementTypeCount];
-    if (info && !info->elementTypes.empty() && typeSelector < 128)
+    ANARIDataType elementType = elementTypeOf(typeSelector);
+    if (info && !info->elementTypes.empty() && typeSelector < 64)
       elementType =
           info->elementTypes[typeSelector % info->elementTypes.size()];
     if (int(elementType) == ANARI_ARRAY1D)
@@ -2022,6 +2047,50 @@ class Interpreter
           create(dev, type, hasSubtypes(type) ? subtype.c_str() : nullptr);
       call();
       anariRelease(dev, h);
+    }
+  }
+
+  // The library's entry points: device subtypes and extensions, modules,
+  // initialized devices, extension functions.
+  void libraryQuery(Payload &p)
+  {
+    const uint8_t which = p.operand();
+    ANARIDevice dev = m_devices[deviceOperand(p.operand())].handle;
+    static const char *kNames[] = {"default", "prism", "", "fuzz"};
+    const char *name = kNames[p.operand() % 4];
+    call();
+    switch (which % 5) {
+    case 0:
+      consume(anariGetDeviceSubtypes(g_library), ANARI_STRING_LIST);
+      break;
+    case 1:
+      consume(anariGetDeviceExtensions(g_library, name), ANARI_STRING_LIST);
+      break;
+    case 2:
+      anariLoadModule(g_library, name);
+      call();
+      anariUnloadModule(g_library, name);
+      break;
+    case 3: {
+      if (m_devices.size() >= size_t(kMaxDevices))
+        break;
+      const ANARIStatusCallback callback = checkStatus;
+      ANARIParameterValue initializers[] = {
+          {"statusCallback", ANARI_STATUS_CALLBACK, &callback},
+          {"statusCallbackUserData", ANARI_VOID_POINTER, &g_counters},
+          {"fuzz", ANARI_FLOAT32, &kOne},
+          {nullptr, ANARI_UNKNOWN, nullptr}};
+      ANARIDevice made =
+          anariNewInitializedDevice(g_library, name, initializers);
+      if (made)
+        m_devices.push_back({made, false});
+      break;
+    }
+    default:
+      // Prism has no extension functions: every name answers NULL.
+      if (anariDeviceGetProcAddress(dev, name))
+        violated("anariDeviceGetProcAddress found a function:", name);
+      break;
     }
   }
 

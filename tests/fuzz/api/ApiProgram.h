@@ -39,7 +39,8 @@ enum class Op : uint8_t {
   // (one past the last: an unknown subtype). twist 1: anariNewObject.
   NewObject,
   // [device][dimensions][element type][n1][n2][n3][sharing][values...]:
-  // element type indexes kElementTypes; sizes are n % 17 (0 is refused);
+  // element type indexes kElementTypes (below kAnyElementType); sizes are n %
+  // 17 (0 is refused);
   // sharing % 3: managed, shared with a deleter, shared without one (its
   // memory freed right after the program's last release of the array).
   NewArray,
@@ -59,7 +60,9 @@ enum class Op : uint8_t {
   MapArray,
   UnmapArray, // [object]
   // [object][parameter][element type][dimensions][n1][n2][n3][unmap]
-  // [values...]: anariMapParameterArray on the introspected parameter.
+  // [values...]: anariMapParameterArray on the introspected parameter; the
+  // element type is one the parameter accepts below 64, else as NewArray's.
+  // Sizes are n % 9 (0 is refused).
   MapParameterArray,
   UnmapParameterArray, // [object][parameter]
   RenderFrame,         // [object][wait]
@@ -80,6 +83,9 @@ enum class Op : uint8_t {
   // [category][count]: create and release `count` objects (slot reuse).
   Churn,
   WaitAll, // []: waits for every frame
+  // [which][device][name]: device subtypes and extensions, modules, an
+  // initialized device, extension functions.
+  LibraryQuery,
   Count
 };
 
@@ -165,6 +171,8 @@ inline constexpr ANARIDataType kElementTypes[] = {ANARI_FLOAT32,
     ANARI_STRING};   // not an element type: refused
 constexpr int kElementTypeCount =
     sizeof(kElementTypes) / sizeof(kElementTypes[0]);
+// Element type selectors from this one on pick any plain data type.
+constexpr uint8_t kAnyElementType = 128;
 
 // Types of SetNamedParameter and of SetParameter's WrongType twist: values,
 // handles, pointers and types no parameter has.

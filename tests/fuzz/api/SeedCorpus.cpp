@@ -95,6 +95,13 @@ class Seed
       return add(type, device, false);
     return add(type, device);
   }
+  // An array of n elements of the type element type selector `selector`
+  // picks (kAnyElementType and up: every plain data type).
+  int arrayOf(uint8_t selector, uint64_t n)
+  {
+    m_writer.op(Op::NewArray, {0, 0, selector, uint8_t(n), 0, 0, kManaged});
+    return add(ANARI_ARRAY1D, 0);
+  }
   // An object array of `elements` (pool indices).
   int objects(ANARIDataType elementType, const std::vector<int> &elements)
   {
@@ -966,6 +973,25 @@ void writeCorruptions(Corpus &corpus)
     s.op(Op::SetDeviceParameter, {0, 0});
     s.render(0);
     corpus.write("misuse", s.bytes());
+  }
+  {
+    // The library's entry points, then arrays of every plain data type as
+    // a geometry's colors (each converted, or refused, at the next frame).
+    Manual m("triangle");
+    for (uint8_t which = 0; which < 5; which++) {
+      for (uint8_t name = 0; name < 4; name++)
+        m.s.op(Op::LibraryQuery, {which, 0, name});
+    }
+    m.s.setFresh(m.geometry, "vertex.position", ANARI_ARRAY1D, {0, 6, 0, 0, 0});
+    m.finish("matte", "raycast");
+    for (int selector = kAnyElementType; selector < 256; selector++) {
+      const int colors = m.s.arrayOf(uint8_t(selector), 6);
+      m.s.setObject(m.geometry, "vertex.color", colors);
+      m.s.commit(m.geometry);
+      if (selector % 4 == 0)
+        m.s.render(0, 1);
+    }
+    corpus.write("library-element-types", m.s.bytes());
   }
   {
     // Arrays of every element type and shape, shared and managed, zero
