@@ -55,6 +55,9 @@ struct Scene
   // the renderer's default.
   bool hasBackground{false};
   Vec4 background{0.f, 0.f, 0.f, 1.f};
+  // Whether anything in the scene emits light (lights, emissive surfaces);
+  // file loaders say, so tools can light lightless files by default.
+  bool emitsLight{true};
   // What the builder had to leave out on this device (e.g. lights), in
   // lower case without trailing period, for the application to report.
   std::vector<std::string> notes;

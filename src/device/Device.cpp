@@ -1,10 +1,12 @@
 #include "Device.h"
 
 #include "DeviceInfo.h"
+#include "Subtypes.h"
 #include "array/Array.h"
 #include "frame/Frame.h"
 #include "introspection/Introspection.h"
-#include "object/ObjectFactory.h"
+#include "object/UnknownObject.h"
+#include "renderer/wavefront/LocalTransport.h"
 
 #include "anari/frontend/type_utility.h"
 
@@ -68,6 +70,7 @@ Device::Device(ANARILibrary library)
 {
   m_statusCallback = m_defaultStatusCB;
   m_statusUserPtr = m_defaultStatusCBUserPtr;
+  addPrismSubtypes(m_subtypes);
 }
 
 Device::~Device()
@@ -233,8 +236,18 @@ ANARIObject Device::track(Object *object)
 template <typename Handle>
 Handle Device::create(ANARIDataType type, const char *subtype)
 {
-  Object *object = createObject(*this, type, subtype ? subtype : "");
-  return object ? (Handle)track(object) : nullptr;
+  const std::string name = subtype ? subtype : "";
+  if (!m_subtypes.creates(type))
+    return nullptr;
+  Object *object = m_subtypes.create(*this, type, name);
+  if (!object) {
+    object = new UnknownObject(*this, type, name);
+    object->report(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "unknown subtype '%s'; the object will not render",
+        name.c_str());
+  }
+  return (Handle)track(object);
 }
 
 ANARIGeometry Device::newGeometry(const char *subtype)
@@ -949,6 +962,11 @@ try {
 }
 
 // Frames ///////////////////////////////////////////////////////////////////
+
+std::unique_ptr<RayTransport> Device::transportFor(const World &world)
+{
+  return std::make_unique<LocalTransport>(world);
+}
 
 void Device::frameStarted()
 {

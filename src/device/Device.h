@@ -2,8 +2,10 @@
 // table, the queue of pending commits and the task pool frames render on.
 #pragma once
 
+#include "object/DeviceState.h"
 #include "object/HandleTable.h"
 #include "object/Object.h"
+#include "object/SubtypeRegistry.h"
 #include "parallel/TaskPool.h"
 #include "rt/Context.h"
 
@@ -20,7 +22,7 @@ namespace prism {
 
 class Array;
 
-class Device : public anari::DeviceImpl
+class Device : public anari::DeviceImpl, public DeviceState
 {
  public:
   explicit Device(ANARILibrary library);
@@ -119,37 +121,43 @@ class Device : public anari::DeviceImpl
   int frameReady(ANARIFrame frame, ANARIWaitMask mask) override;
   void discardFrame(ANARIFrame frame) override;
 
-  // For objects ////////////////////////////////////////////////////////////
-  // The live object behind a handle (NULL for NULL, stale or foreign ones).
-  Object *lookup(ANARIObject handle) const;
-  // Why `handle` names no live object of this device, for messages.
-  const char *whyNotLive(ANARIObject handle) const;
-  // Every object of the device, whether the application still holds it or
-  // not (objects kept alive only by others, cycles), so device release can
-  // free them all.
-  void objectCreated(Object *object);
-  void objectDestroyed(Object *object);
-  // Sends one message to the application's status callback.
+  // DeviceState: what objects may ask ///////////////////////////////////
+  Object *lookup(ANARIObject handle) const override;
+  const char *whyNotLive(ANARIObject handle) const override;
+  void objectCreated(Object *object) override;
+  void objectDestroyed(Object *object) override;
   void reportStatus(ANARIObject source,
       ANARIDataType sourceType,
       ANARIStatusSeverity severity,
       ANARIStatusCode code,
-      const std::string &message) const;
-  TaskPool &taskPool()
+      const std::string &message) const override;
+  ANARIDevice apiHandle() const override
+  {
+    return this_device();
+  }
+  TaskPool &taskPool() override
   {
     return m_taskPool;
   }
-  const rt::Context &rtContext() const
+  const rt::Context &rtContext() const override
   {
     return m_rtContext;
   }
+  std::unique_ptr<RayTransport> transportFor(const World &world) override;
+  void frameStarted() override;
+  void frameFinished() override;
+
   // Applies every pending commit; waits for frames in flight first so no
   // frame ever sees a half-applied change.
   void flushCommits();
-  // Frames in flight, so commits and array maps never tear a frame.
-  void frameStarted();
-  void frameFinished();
   void waitForFrames();
+
+ protected:
+  // What anariNew* creates; a device built on this one may extend it.
+  SubtypeRegistry &subtypes()
+  {
+    return m_subtypes;
+  }
 
  private:
   template <typename Handle>
@@ -188,6 +196,7 @@ class Device : public anari::DeviceImpl
   void flushCommitsLocked();
 
   HandleTable m_handles;
+  SubtypeRegistry m_subtypes;
   rt::Context m_rtContext;
   TaskPool m_taskPool;
   uint64_t m_refreshGeneration{0}; // guarded by m_flushMutex

@@ -283,6 +283,37 @@ TEST_F(PathTracerTest, NormalMapTiltsTheShadingNormalAlongTheTangent)
   EXPECT_TRUE(problems().empty());
 }
 
+TEST_F(PathTracerTest, DebugShadingNormalShowsTheNormalMap)
+{
+  // The debug renderer's Ns mode shows the normal shading uses: the map's
+  // tangent-space (sin a, 0, cos a) on a +z plane with +u along +x is the
+  // world normal (sin a, 0, cos a), drawn as n / 2 + 1/2.
+  const float a = 0.5f;
+  const float tilted[3] = {std::sin(a), 0.f, std::cos(a)};
+  for (const float *map : {tilted, (const float *)nullptr}) {
+    ANARIWorld w = world({diffusePlane(m_device,
+        0.5f,
+        map,
+        nullptr,
+        [&](const std::vector<float> &v, ANARIDataType t) {
+          return array1D(v, t);
+        })});
+    ANARICamera c = orthographic(kEye, kDown, 2.f);
+    ANARIRenderer r = renderer("debug");
+    anariSetParameter(m_device, r, "mode", ANARI_STRING, "Ns");
+    anariCommitParameters(m_device, r);
+    RenderedImage image = render(w, c, r, 4, 4);
+    const float nx = map ? std::sin(a) : 0.f, nz = map ? std::cos(a) : 1.f;
+    const float *pixel = image.pixel(2, 2);
+    EXPECT_NEAR(pixel[0], nx * 0.5f + 0.5f, 1e-4f);
+    EXPECT_NEAR(pixel[1], 0.5f, 1e-4f);
+    EXPECT_NEAR(pixel[2], nz * 0.5f + 0.5f, 1e-4f);
+    for (ANARIObject o : {(ANARIObject)w, (ANARIObject)c, (ANARIObject)r})
+      anariRelease(m_device, o);
+  }
+  EXPECT_TRUE(problems().empty());
+}
+
 TEST_F(PathTracerTest, OcclusionDarkensAmbientLightOnly)
 {
   // Ambient radiance L over the plane's hemisphere gives rho L; occlusion

@@ -249,7 +249,7 @@ TEST_F(DeviceFrame, ReleasedOrRecommittedRightAfterWait)
 {
   ANARIRenderer renderer = newRenderer(kRed);
   CompletionRecord record;
-  for (int i = 0; i < 50; i++) {
+  for (int i = 0; i < 300; i++) {
     ANARIFrame frame = newFrame(renderer, 4, 4);
     setCompletion(m_device, frame, record);
     for (int again = 0; again < 3; again++) {
@@ -261,7 +261,7 @@ TEST_F(DeviceFrame, ReleasedOrRecommittedRightAfterWait)
     }
     anariRelease(m_device, frame);
   }
-  EXPECT_EQ(record.calls, 150);
+  EXPECT_EQ(record.calls, 900);
   anariRelease(m_device, renderer);
   EXPECT_TRUE(problems().empty());
 }

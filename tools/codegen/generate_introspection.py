@@ -33,6 +33,12 @@ How entries merge:
 - A parameter entry with no `types` (only `name` and `values`) adds accepted
   values to the parameter of that name (compressed formats,
   clampToBorder, cubic filtering), each value tagged with its extension.
+- The device's own definitions (src/device/introspection/definitions/*.json,
+  the same form; read from this repository, so they need no API_DIR) add
+  prism's objects: its renderer subtypes and their parameters. An object
+  with `"inherits": SUBTYPE` also gets every parameter of that object of its
+  type that it does not define itself (each renderer inherits the core
+  `default` renderer's background, ambient light and denoise).
 """
 import json
 import os
@@ -112,6 +118,11 @@ class Generator:
             self.attributes.extend(a["name"] for a in spec.get("attributes", []))
             for obj in spec.get("objects", []):
                 self.sources.append(Source(stem, info, obj))
+        for stem, spec in device_definition_files():
+            info = spec["info"]
+            self.extensions.append("ANARI_" + info["name"])
+            for obj in spec.get("objects", []):
+                self.sources.append(Source(stem, info, obj))
         self.extensions.sort()
         self.objects = self.merge()
 
@@ -149,6 +160,21 @@ class Generator:
             extra = wildcards.get(type_name, [])
             objects.append(self.merge_object(type_name, subtype, definer,
                                              others + extra))
+        for obj, (key, members, definer) in zip(objects, resolved):
+            base = definer.obj.get("inherits")
+            if base is None:
+                continue
+            parents = [o for o in objects
+                       if o["type"] == obj["type"] and o["subtype"] == base]
+            if not parents:
+                raise SystemExit(f"{definer.stem}: {obj['type']} "
+                                 f"{obj['subtype']!r} inherits unknown {base!r}")
+            own = {p["name"] for p in obj["parameters"]}
+            obj["parameters"] = [p for p in parents[0]["parameters"]
+                                 if p["name"] not in own] + obj["parameters"]
+            for e in [parents[0]["extension"]] + parents[0]["contributors"]:
+                if e and e != obj["extension"] and e not in obj["contributors"]:
+                    obj["contributors"].append(e)
         return objects
 
     @staticmethod
@@ -423,6 +449,21 @@ enum : int
         out.append(f"const size_t kObjectCount = {len(self.objects)};\n")
         out.append("} // namespace prism::introspection::tables\n")
         return "\n".join(out)
+
+
+DEFINITIONS = "src/device/introspection/definitions"
+
+
+def device_definition_files():
+    """(file stem, parsed JSON) of the device's own definitions."""
+    folder = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..",
+                          "..", DEFINITIONS)
+    out = []
+    for name in sorted(os.listdir(folder)):
+        if name.endswith(".json"):
+            with open(os.path.join(folder, name)) as f:
+                out.append((name[:-5], json.load(f)))
+    return out
 
 
 def main():

@@ -1,9 +1,11 @@
 #include "GltfLoader.h"
 
 #include "DemoScenes.h"
+#include "GltfIndexCheck.h"
 #include "ImageIO.h"
 #include "Math.h"
 #include "Objects.h"
+#include "SceneFile.h"
 
 // The glTF parser is Debian's libtinygltf (shared library): only the
 // declarations are compiled here, so neither its JSON parser nor its copy of
@@ -11,9 +13,9 @@
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <map>
 #include <numbers>
 #include <set>
@@ -32,6 +34,7 @@ using scenes::operator*;
 
 // Caps that keep a corrupt count from turning into a huge allocation.
 constexpr size_t kMaxAccessorElements = size_t(1) << 28;
+constexpr size_t kMaxZeroAccessorElements = size_t(1) << 24;
 constexpr size_t kMaxNodeVisits = 10'000'000;
 
 // Extensions whose meaning we render (or can safely read as plain data).
@@ -69,6 +72,16 @@ double number(const tinygltf::Value *object, const char *key, double fallback)
   const tinygltf::Value *v = object ? member(*object, key) : nullptr;
   return v && v->IsNumber() && std::isfinite(v->GetNumberAsDouble())
              ? v->GetNumberAsDouble()
+             : fallback;
+}
+
+// An index or count from a JSON number: `fallback` unless it is a whole
+// number that fits an int (a plain cast of 1e300 would be undefined).
+int integer(const tinygltf::Value *object, const char *key, int fallback)
+{
+  const double v = number(object, key, double(fallback));
+  return v >= double(INT_MIN) && v <= double(INT_MAX) && v == std::floor(v)
+             ? int(v)
              : fallback;
 }
 
@@ -299,20 +312,22 @@ bool readAccessor(const tinygltf::Model &model,
     return false;
   }
   const size_t elementSize = size_t(components) * size_t(componentSize);
-  out.assign(a.count * size_t(components), T(0));
+  // The data must be in the file before anything is allocated for it, so a
+  // few bytes claiming 2^28 elements cost nothing.
+  const unsigned char *bytes = nullptr;
+  size_t stride = elementSize;
   if (a.bufferView >= 0 && a.count > 0) {
     const tinygltf::BufferView *view =
         size_t(a.bufferView) < model.bufferViews.size()
             ? &model.bufferViews[size_t(a.bufferView)]
             : nullptr;
-    const size_t stride =
-        view && view->byteStride ? view->byteStride : elementSize;
+    stride = view && view->byteStride ? view->byteStride : elementSize;
     if (stride < elementSize || stride > 4096) {
       error = name + ": byte stride " + std::to_string(stride)
               + " does not fit its elements";
       return false;
     }
-    const unsigned char *bytes = viewBytes(model,
+    bytes = viewBytes(model,
         a.bufferView,
         a.byteOffset,
         (a.count - 1) * stride + elementSize,
@@ -321,6 +336,15 @@ bool readAccessor(const tinygltf::Model &model,
       error = name + ": " + error;
       return false;
     }
+  } else if (a.count > kMaxZeroAccessorElements) {
+    // Without a buffer view the elements are zeros (plus sparse values):
+    // nothing in the file backs the count.
+    error = name + " has no buffer view and an implausible count ("
+            + std::to_string(a.count) + ")";
+    return false;
+  }
+  out.assign(a.count * size_t(components), T(0));
+  if (bytes) {
     for (size_t i = 0; i < a.count; i++)
       for (int c = 0; c < components; c++)
         out[i * size_t(components) + size_t(c)] = T(decodeComponent(
@@ -411,7 +435,7 @@ void readTextureTransform(const tinygltf::Value *transform, TextureRef &ref)
       ref.scale[i] = float(scale->Get(i).GetNumberAsDouble());
   }
   ref.rotation = float(number(transform, "rotation", 0.0));
-  ref.texCoord = int(number(transform, "texCoord", ref.texCoord));
+  ref.texCoord = integer(transform, "texCoord", ref.texCoord);
 }
 
 template <typename Info>
@@ -432,8 +456,8 @@ TextureRef textureRef(const tinygltf::Value *object, const char *key)
   const tinygltf::Value *info = object ? member(*object, key) : nullptr;
   if (!info || !info->IsObject())
     return ref;
-  ref.texture = int(number(info, "index", -1.0));
-  ref.texCoord = int(number(info, "texCoord", 0.0));
+  ref.texture = integer(info, "index", -1);
+  ref.texCoord = integer(info, "texCoord", 0);
   const tinygltf::Value *extensions = member(*info, "extensions");
   if (extensions)
     readTextureTransform(member(*extensions, "KHR_texture_transform"), ref);
@@ -472,6 +496,44 @@ OutputMap normalMap(float scale)
   return map;
 }
 
+// ---- files a glTF names (tinygltf's filesystem callbacks) -----------------
+
+bool fileExists(const std::string &path, void *options)
+{
+  return static_cast<const GltfOptions *>(options)->readExternalFiles
+         && isRegularFile(path);
+}
+
+std::string expandFilePath(const std::string &path, void *)
+{
+  return path;
+}
+
+// Regular files only: a URI naming /dev/stdin must not block the load.
+bool readWholeFile(std::vector<unsigned char> *out,
+    std::string *error,
+    const std::string &path,
+    void *options)
+{
+  std::string bytes, why = "external files are not read here";
+  if (!static_cast<const GltfOptions *>(options)->readExternalFiles
+      || !readSceneFile(path, bytes, why)) {
+    if (error)
+      *error += "cannot read '" + path + "': " + why + "\n";
+    return false;
+  }
+  out->assign(bytes.begin(), bytes.end());
+  return true;
+}
+
+bool writeWholeFile(std::string *,
+    const std::string &,
+    const std::vector<unsigned char> &,
+    void *)
+{
+  return false;
+}
+
 // ---- the importer ---------------------------------------------------------
 
 struct Placement
@@ -483,8 +545,14 @@ struct Placement
 class GltfImporter
 {
  public:
-  GltfImporter(ANARIDevice device, std::string path, const GltfOptions &options)
-      : m_device(device), m_path(std::move(path)), m_options(options)
+  GltfImporter(ANARIDevice device,
+      const std::string &bytes,
+      std::string path,
+      const GltfOptions &options)
+      : m_device(device),
+        m_bytes(bytes),
+        m_path(std::move(path)),
+        m_options(options)
   {}
   ~GltfImporter();
 
@@ -519,6 +587,7 @@ class GltfImporter
   bool fail(const std::string &text);
 
   ANARIDevice m_device;
+  const std::string &m_bytes;
   std::string m_path;
   GltfOptions m_options;
   LoadResult m_result;
@@ -565,22 +634,34 @@ bool GltfImporter::fail(const std::string &text)
 
 bool GltfImporter::parse()
 {
+  if (m_bytes.size() > UINT_MAX)
+    return fail("larger than 4 GiB, more than tinygltf reads");
   // The magic decides, not the extension: misnamed files still load.
-  char magic[4] = {};
-  {
-    std::ifstream file(m_path, std::ios::binary);
-    if (!file) {
-      m_result.error = "cannot open glTF '" + m_path + "'";
-      return false;
-    }
-    file.read(magic, 4);
-  }
-  const bool binary = std::memcmp(magic, "glTF", 4) == 0;
+  const bool binary =
+      m_bytes.size() >= 4 && std::memcmp(m_bytes.data(), "glTF", 4) == 0;
   tinygltf::TinyGLTF loader;
+  loader.SetFsCallbacks({&fileExists,
+      &expandFilePath,
+      &readWholeFile,
+      &writeWholeFile,
+      &m_options});
+  // tinygltf joins URIs to the folder without its trailing '/'.
+  const size_t slash = m_path.find_last_of('/');
+  const std::string baseDirectory =
+      slash == std::string::npos ? std::string() : m_path.substr(0, slash);
   std::string error, warning;
-  const bool ok =
-      binary ? loader.LoadBinaryFromFile(&m_model, &error, &warning, m_path)
-             : loader.LoadASCIIFromFile(&m_model, &error, &warning, m_path);
+  const bool ok = binary ? loader.LoadBinaryFromMemory(&m_model,
+                      &error,
+                      &warning,
+                      (const unsigned char *)m_bytes.data(),
+                      unsigned(m_bytes.size()),
+                      baseDirectory)
+                         : loader.LoadASCIIFromString(&m_model,
+                             &error,
+                             &warning,
+                             m_bytes.data(),
+                             unsigned(m_bytes.size()),
+                             baseDirectory);
   for (std::string line; !warning.empty();) {
     const size_t end = warning.find('\n');
     line = warning.substr(0, end);
@@ -597,6 +678,11 @@ bool GltfImporter::parse()
                      + (error.empty() ? "not a valid glTF file" : error);
     return false;
   }
+  // tinygltf narrowed every index to int: check them as the file wrote them.
+  const std::string badIndex = checkGltfIndices(
+      binary ? glbJsonChunk(m_bytes) : std::string_view(m_bytes));
+  if (!badIndex.empty())
+    return fail(badIndex);
   for (const std::string &required : m_model.extensionsRequired)
     if (!kSupportedExtensions.count(required))
       return fail("requires extension " + required
@@ -637,9 +723,9 @@ bool GltfImporter::traverse(int index, const Mat4d &parent)
     m_cameraPlacements.push_back({world, index});
   if (const tinygltf::Value *lights =
           extension(node.extensions, "KHR_lights_punctual")) {
-    const double light = number(lights, "light", -1.0);
-    if (light >= 0.0 && light < double(m_model.lights.size()))
-      m_lightPlacements.push_back({int(light), {world, index}});
+    const int light = integer(lights, "light", -1);
+    if (light >= 0 && size_t(light) < m_model.lights.size())
+      m_lightPlacements.push_back({light, {world, index}});
   }
   m_onPath[size_t(index)] = true;
   for (int child : node.children)
@@ -1336,13 +1422,14 @@ LoadResult GltfImporter::load()
     return std::move(m_result);
 
   std::vector<int> roots;
+  // checkGltfIndices saw the `scene` index; this guards the parsed value.
+  if (m_model.defaultScene >= int(m_model.scenes.size())) {
+    fail("scene " + std::to_string(m_model.defaultScene) + " does not exist");
+    return std::move(m_result);
+  }
   if (!m_model.scenes.empty()) {
-    const size_t sceneIndex =
-        m_model.defaultScene >= 0
-                && size_t(m_model.defaultScene) < m_model.scenes.size()
-            ? size_t(m_model.defaultScene)
-            : 0;
-    roots = m_model.scenes[sceneIndex].nodes;
+    // Without a `scene`, the first one (the spec leaves the choice open).
+    roots = m_model.scenes[size_t(std::max(m_model.defaultScene, 0))].nodes;
   } else {
     // No scene: every node nobody lists as a child is a root.
     std::vector<bool> isChild(m_model.nodes.size(), false);
@@ -1440,7 +1527,21 @@ LoadResult GltfImporter::load()
 LoadResult loadGltf(
     ANARIDevice device, const std::string &path, const GltfOptions &options)
 {
-  return GltfImporter(device, path, options).load();
+  std::string bytes, error;
+  if (!readSceneFile(path, bytes, error)) {
+    LoadResult result;
+    result.error = "cannot read glTF '" + path + "': " + error;
+    return result;
+  }
+  return loadGltfFromMemory(device, bytes, path, options);
+}
+
+LoadResult loadGltfFromMemory(ANARIDevice device,
+    const std::string &bytes,
+    const std::string &path,
+    const GltfOptions &options)
+{
+  return GltfImporter(device, bytes, path, options).load();
 }
 
 } // namespace prism::render

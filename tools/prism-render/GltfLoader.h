@@ -9,8 +9,9 @@
 //   KHR_texture_transform becomes inTransform/inOffset, and the
 //   KHR_materials_* extensions map onto their parameters;
 // - cameras and KHR_lights_punctual come out in world space.
-// Every accessor is bounds-checked: a corrupt file is an error, never a
-// crash.
+// Every index is checked in the JSON as written (GltfIndexCheck.h) and every
+// accessor bounds-checked: a corrupt file is an error, never a crash or
+// another object silently used.
 #pragma once
 
 #include "LoadResult.h"
@@ -24,9 +25,20 @@ namespace prism::render {
 struct GltfOptions
 {
   int cameraIndex{-1}; // glTF camera to view through; -1: the first found
+  // False: buffers and images must be inside the file (GLB chunk or data
+  // URI); external URIs fail as missing files (fuzzing).
+  bool readExternalFiles{true};
 };
 
+// Reads the file at `path` and loads it as below.
 LoadResult loadGltf(
     ANARIDevice device, const std::string &path, const GltfOptions &options);
+
+// A .gltf or .glb held in memory (the magic decides which); `path` names it
+// in messages and external URIs resolve in its folder.
+LoadResult loadGltfFromMemory(ANARIDevice device,
+    const std::string &bytes,
+    const std::string &path,
+    const GltfOptions &options);
 
 } // namespace prism::render

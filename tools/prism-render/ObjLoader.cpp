@@ -1,7 +1,11 @@
 #include "ObjLoader.h"
 
 #include "DemoScenes.h"
+#include "ObjBatches.h"
+#include "ObjParser.h"
 #include "Objects.h"
+#include "PolygonTriangulation.h"
+#include "SceneFile.h"
 #include "TextureFile.h"
 
 #include <tiny_obj_loader.h>
@@ -9,20 +13,12 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <tuple>
-#include <unordered_map>
+#include <sstream>
 
 namespace prism::render {
 namespace {
 
 using scenes::Vec3;
-
-std::string directoryOf(const std::string &path)
-{
-  const size_t slash = path.find_last_of('/');
-  return slash == std::string::npos ? std::string("./")
-                                    : path.substr(0, slash + 1);
-}
 
 // tinyobjloader ends its messages with newlines, sometimes several.
 std::vector<std::string> messageLines(const std::string &text)
@@ -43,75 +39,126 @@ std::vector<std::string> messageLines(const std::string &text)
   return lines;
 }
 
-// The corners of one material's triangles, merged into indexed vertices.
-struct Batch
+std::string plural(size_t n, const char *one, const char *many)
 {
-  std::vector<Vec3> positions;
-  std::vector<Vec3> normals;
-  std::vector<std::array<float, 2>> uvs;
-  std::vector<Vec3> colors;
-  std::vector<std::array<uint32_t, 3>> triangles;
-  std::map<std::tuple<int, int, int>, uint32_t> vertexOf;
-  bool allNormals{true};
-  bool allUvs{true};
-};
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
 
 class ObjImporter
 {
  public:
-  ObjImporter(ANARIDevice device, const std::string &path)
-      : m_device(device), m_path(path)
+  ObjImporter(ANARIDevice device, const ObjSource &source)
+      : m_device(device), m_source(source), m_path(source.path)
   {}
 
   LoadResult load();
 
  private:
-  bool collectBatches(const tinyobj::attrib_t &attrib,
-      const std::vector<tinyobj::shape_t> &shapes,
-      size_t materialCount);
+  void note(const std::string &text);
+  std::vector<int> readMaterials(const ObjParseResult &obj);
+  void noteDropped(const ObjParseResult &obj, const ObjBatches &batches);
   ANARIMaterial newMaterial(const tinyobj::material_t *material);
   ANARISampler textureSampler(const std::string &name);
 
   ANARIDevice m_device;
+  const ObjSource &m_source;
   std::string m_path;
   LoadResult m_result;
   bool m_hasColors{false};
-  // Batches by material index + 1 (0: faces without a material).
-  std::map<int, Batch> m_batches;
+  std::vector<tinyobj::material_t> m_materials;
   std::map<std::string, ANARIArray2D> m_textures; // nullptr: unreadable
 };
+
+void ObjImporter::note(const std::string &text)
+{
+  m_result.scene.notes.push_back("OBJ '" + m_path + "': " + text);
+}
+
+// Loads every mtllib library and maps the file's usemtl names to them.
+std::vector<int> ObjImporter::readMaterials(const ObjParseResult &obj)
+{
+  std::map<std::string, int> materialIndex;
+  for (const std::string &library : obj.materialLibraries) {
+    const std::string path =
+        library.starts_with("/") ? library : directoryOf(m_path) + library;
+    std::string text, error;
+    const bool read = m_source.readMaterialLibrary
+                          ? m_source.readMaterialLibrary(path, text, error)
+                          : readSceneFile(path, text, error);
+    if (!read) {
+      note("material library '" + library + "' not read (" + error
+           + "); its materials are replaced by the default one");
+      continue;
+    }
+    std::istringstream stream(text);
+    std::string warning, mtlError;
+    tinyobj::LoadMtl(
+        &materialIndex, &m_materials, &stream, &warning, &mtlError);
+    for (const std::string &line : messageLines(warning + mtlError))
+      note("material library '" + library + "': " + line);
+  }
+  std::vector<int> materialOf;
+  for (const std::string &name : obj.materialNames) {
+    auto found = materialIndex.find(name);
+    const bool known = found != materialIndex.end() && found->second >= 0
+                       && size_t(found->second) < m_materials.size();
+    if (!known)
+      note("material '" + name
+           + "' is in no material library; the default material is used");
+    materialOf.push_back(known ? found->second : -1);
+  }
+  return materialOf;
+}
+
+// One warning per kind of face that is not drawn.
+void ObjImporter::noteDropped(
+    const ObjParseResult &obj, const ObjBatches &batches)
+{
+  if (obj.badValues.count > 0)
+    note(plural(obj.badValues.count, "vertex statement", "vertex statements")
+         + " (v, vn, vt) hold a value that is not a finite number (first on "
+           "line "
+         + std::to_string(obj.badValues.firstLine) + ": '"
+         + obj.badValues.firstText + "'); "
+         + plural(batches.droppedFaces, "face", "faces")
+         + " using them left out");
+  if (obj.shortFaces > 0)
+    note(plural(obj.shortFaces, "face", "faces")
+         + " with fewer than 3 corners left out");
+  if (obj.linesAndPoints > 0)
+    note("lines and points are not rendered; "
+         + plural(obj.linesAndPoints, "l/p statement", "l/p statements")
+         + " left out");
+  if (batches.fannedConcave > 0)
+    note(plural(batches.fannedConcave, "concave face", "concave faces")
+         + " of more than " + std::to_string(kMaxEarClippingCorners)
+         + " corners (the largest has "
+         + std::to_string(batches.largestFannedCorners)
+         + ") triangulated as fans, which may cover area outside them");
+}
 
 LoadResult ObjImporter::load()
 {
   scenes::Scene &scene = m_result.scene;
   scene.name = m_path;
   scene.description = "OBJ file";
-  tinyobj::ObjReaderConfig config;
-  config.triangulate = true;
-  config.vertex_color = true;
-  config.mtl_search_path = directoryOf(m_path);
-  tinyobj::ObjReader reader;
-  const bool parsed = reader.ParseFromFile(m_path, config);
-  for (const std::string &line : messageLines(reader.Warning()))
-    scene.notes.push_back("OBJ '" + m_path + "': " + line);
-  if (!parsed) {
-    const std::vector<std::string> lines = messageLines(reader.Error());
-    m_result.error = "cannot read OBJ '" + m_path
-                     + "': " + (lines.empty() ? "parse error" : lines.front());
+  const ObjParseResult obj = parseObj(m_source.text);
+  if (!obj.ok()) {
+    m_result.error = "OBJ '" + m_path + "': " + obj.error;
     return std::move(m_result);
   }
-  const tinyobj::attrib_t &attrib = reader.GetAttrib();
-  const auto &materials = reader.GetMaterials();
-  if (!collectBatches(attrib, reader.GetShapes(), materials.size()))
-    return std::move(m_result);
-  if (m_batches.empty()) {
+  const std::vector<int> materialOf = readMaterials(obj);
+  ObjBatches batches = buildObjBatches(obj, materialOf);
+  noteDropped(obj, batches);
+  m_hasColors = batches.hasColors;
+  if (batches.byMaterial.empty()) {
     m_result.error = "OBJ '" + m_path + "' has no faces to render";
     return std::move(m_result);
   }
 
   std::vector<ANARIObject> surfaces;
   uint32_t id = 0;
-  for (auto &[key, batch] : m_batches) {
+  for (auto &[key, batch] : batches.byMaterial) {
     for (const Vec3 &p : batch.positions)
       scene.bounds.extend(p);
     ANARIGeometry geometry = anariNewGeometry(m_device, "triangle");
@@ -143,7 +190,7 @@ LoadResult ObjImporter::load()
     anariCommitParameters(m_device, geometry);
 
     ANARIMaterial material =
-        newMaterial(key > 0 ? &materials[size_t(key - 1)] : nullptr);
+        newMaterial(key > 0 ? &m_materials[size_t(key - 1)] : nullptr);
     ANARISurface surface = anariNewSurface(m_device);
     scenes::setObject(m_device, surface, "geometry", ANARI_GEOMETRY, geometry);
     scenes::setObject(m_device, surface, "material", ANARI_MATERIAL, material);
@@ -161,108 +208,6 @@ LoadResult ObjImporter::load()
   return std::move(m_result);
 }
 
-bool ObjImporter::collectBatches(const tinyobj::attrib_t &attrib,
-    const std::vector<tinyobj::shape_t> &shapes,
-    size_t materialCount)
-{
-  const size_t positionCount = attrib.vertices.size() / 3;
-  const size_t normalCount = attrib.normals.size() / 3;
-  const size_t uvCount = attrib.texcoords.size() / 2;
-  // tinyobjloader fills colors with white where the file gives none.
-  m_hasColors = attrib.colors.size() == attrib.vertices.size()
-                && std::any_of(attrib.colors.begin(),
-                    attrib.colors.end(),
-                    [](float c) { return c != 1.f; });
-  for (const tinyobj::shape_t &shape : shapes) {
-    const tinyobj::mesh_t &mesh = shape.mesh;
-    const std::string ofShape =
-        shape.name.empty() ? std::string() : " of '" + shape.name + "'";
-    size_t corner = 0;
-    for (size_t face = 0; face < mesh.num_face_vertices.size(); face++) {
-      const size_t n = mesh.num_face_vertices[face];
-      if (corner + n > mesh.indices.size()) {
-        m_result.error = "OBJ '" + m_path + "': face " + std::to_string(face)
-                         + ofShape + " is cut short";
-        return false;
-      }
-      if (n != 3) {
-        // Lines and points come through as 2- and 1-corner faces.
-        corner += n;
-        continue;
-      }
-      int materialId =
-          face < mesh.material_ids.size() ? mesh.material_ids[face] : -1;
-      if (materialId < -1 || materialId >= int(materialCount))
-        materialId = -1;
-      Batch &batch = m_batches[materialId + 1];
-      std::array<uint32_t, 3> triangle{};
-      for (size_t k = 0; k < 3; k++) {
-        const tinyobj::index_t &index = mesh.indices[corner + k];
-        if (index.vertex_index < 0
-            || size_t(index.vertex_index) >= positionCount) {
-          m_result.error =
-              "OBJ '" + m_path + "': a face" + ofShape + " uses vertex "
-              + std::to_string(index.vertex_index + 1) + " but the file has "
-              + std::to_string(positionCount);
-          return false;
-        }
-        const bool hasNormal =
-            index.normal_index >= 0 && size_t(index.normal_index) < normalCount;
-        const bool hasUv =
-            index.texcoord_index >= 0 && size_t(index.texcoord_index) < uvCount;
-        if ((index.normal_index >= 0 && !hasNormal)
-            || (index.texcoord_index >= 0 && !hasUv)) {
-          m_result.error =
-              "OBJ '" + m_path + "': a face" + ofShape
-              + " uses a normal or texture coordinate the file lacks";
-          return false;
-        }
-        batch.allNormals = batch.allNormals && hasNormal;
-        batch.allUvs = batch.allUvs && hasUv;
-        const auto key = std::make_tuple(index.vertex_index,
-            hasNormal ? index.normal_index : -1,
-            hasUv ? index.texcoord_index : -1);
-        auto found = batch.vertexOf.find(key);
-        if (found == batch.vertexOf.end()) {
-          const size_t v = size_t(index.vertex_index);
-          batch.positions.push_back({attrib.vertices[3 * v],
-              attrib.vertices[3 * v + 1],
-              attrib.vertices[3 * v + 2]});
-          if (m_hasColors)
-            batch.colors.push_back({attrib.colors[3 * v],
-                attrib.colors[3 * v + 1],
-                attrib.colors[3 * v + 2]});
-          if (hasNormal) {
-            const size_t i = size_t(index.normal_index);
-            batch.normals.push_back({attrib.normals[3 * i],
-                attrib.normals[3 * i + 1],
-                attrib.normals[3 * i + 2]});
-          } else {
-            batch.normals.push_back({0.f, 0.f, 0.f});
-          }
-          if (hasUv) {
-            const size_t i = size_t(index.texcoord_index);
-            batch.uvs.push_back(
-                {attrib.texcoords[2 * i], attrib.texcoords[2 * i + 1]});
-          } else {
-            batch.uvs.push_back({0.f, 0.f});
-          }
-          const uint32_t vertex = uint32_t(batch.positions.size() - 1);
-          found = batch.vertexOf.emplace(key, vertex).first;
-        }
-        triangle[k] = found->second;
-      }
-      batch.triangles.push_back(triangle);
-      corner += n;
-    }
-  }
-  for (auto it = m_batches.begin(); it != m_batches.end();)
-    it = it->second.triangles.empty() ? m_batches.erase(it) : std::next(it);
-  for (auto &[key, batch] : m_batches)
-    batch.vertexOf.clear();
-  return true;
-}
-
 ANARISampler ObjImporter::textureSampler(const std::string &name)
 {
   auto found = m_textures.find(name);
@@ -275,7 +220,11 @@ ANARISampler ObjImporter::textureSampler(const std::string &name)
       file = file.substr(space + 1);
     const std::string path =
         file.starts_with("/") ? file : directoryOf(m_path) + file;
-    TextureResult texture = readTexture(path);
+    TextureResult texture;
+    if (!m_source.readTextures)
+      texture.error = "'" + path + "': textures are not read here";
+    else
+      texture = readTexture(path);
     ANARIArray2D array = nullptr;
     if (!texture.ok()) {
       m_result.scene.notes.push_back(
@@ -360,9 +309,22 @@ ANARIMaterial ObjImporter::newMaterial(const tinyobj::material_t *m)
 
 } // namespace
 
+LoadResult loadObj(ANARIDevice device, const ObjSource &source)
+{
+  return ObjImporter(device, source).load();
+}
+
 LoadResult loadObj(ANARIDevice device, const std::string &path)
 {
-  return ObjImporter(device, path).load();
+  ObjSource source;
+  source.path = path;
+  std::string error;
+  if (!readSceneFile(path, source.text, error)) {
+    LoadResult result;
+    result.error = "cannot read OBJ '" + path + "': " + error;
+    return result;
+  }
+  return loadObj(device, source);
 }
 
 } // namespace prism::render

@@ -196,6 +196,37 @@ std::vector<OptionSpec> optionSpecs()
             return {};
           }},
       {nullptr,
+          "--env",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            if (v.empty())
+              return expected(
+                  "--env", "studio, none or an image file (.hdr, .exr)", v);
+            o.environment = v;
+            return {};
+          }},
+      {nullptr,
+          "--env-intensity",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            float f = 0.f;
+            if (!parseFloats(v, &f, 1) || !(f >= 0.f && f <= 1e6f))
+              return expected(
+                  "--env-intensity", "a scale factor from 0 to 1000000", v);
+            o.environmentIntensity = f;
+            return {};
+          }},
+      {nullptr,
+          "--env-rotate",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            float f = 0.f;
+            if (!parseFloats(v, &f, 1) || !(std::abs(f) <= 36000.f))
+              return expected("--env-rotate", "an angle in degrees", v);
+            o.environmentRotateDegrees = f;
+            return {};
+          }},
+      {nullptr,
           "--background",
           true,
           [](Options &o, const std::string &v) -> std::string {
@@ -482,6 +513,12 @@ Rendering
   -p, --param NAME=VALUE set a renderer parameter, typed by the device's
                          introspection: 0.5, 1,2,3, true, text
   --background R,G,B[,A] background color (linear)
+  --env studio|none|FILE lighting for scenes with no lights or emissive
+                         surfaces: a neutral studio (default), none (the
+                         ANARI default: black with the path tracer), or an
+                         equirectangular .hdr/.exr image
+  --env-intensity SCALE  multiplies the environment's radiance (default 1)
+  --env-rotate DEGREES   turns the environment about the scene's up axis
   -l, --library NAME     ANARI library to load (default prism): loads
                          libanari_library_NAME.so
   -d, --device SUBTYPE   device subtype (default "default")

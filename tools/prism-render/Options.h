@@ -28,6 +28,11 @@ struct Options
   std::optional<float> fovyDegrees;
   int cameraIndex{-1}; // glTF camera to use; -1: the first in the scene
   std::optional<std::array<float, 4>> background;
+  // Lighting for scenes with nothing that emits light: "studio" (default),
+  // "none", or an equirectangular image file.
+  std::string environment{"studio"};
+  float environmentIntensity{1.f};
+  float environmentRotateDegrees{0.f};
 
   std::string depthPath, normalPath, albedoPath, idsPrefix;
   bool denoise{false};

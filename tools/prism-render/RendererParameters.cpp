@@ -231,22 +231,27 @@ ParameterOutcome setRendererParameters(ANARIDevice device,
     for (const ANARIParameter *p = list; described && p->name; ++p)
       if (name == p->name)
         types.push_back(p->type);
-    if (types.empty()) {
-      // Undeclared is not unknown: devices read vendor parameters their
-      // introspection does not list, and warn about those they never read.
-      const ANARIDataType guess = guessType(text);
-      types.push_back(guess);
+    if (types.empty() && described) {
+      // Typed by introspection only: a device that declares its renderer's
+      // parameters reads nothing else, so an undeclared one is a mistake.
       std::string declared;
-      for (const ANARIParameter *p = list; described && p->name; ++p)
+      for (const ANARIParameter *p = list; p->name; ++p)
         if (declared.find(std::string(" ") + p->name + ",")
             == std::string::npos)
           declared += std::string(" ") + p->name + ",";
-      if (!declared.empty())
-        declared.pop_back();
-      outcome.warnings.push_back(
-          "the '" + subtype + "' renderer does not declare '" + name + "'"
-          + (described ? " (it declares:" + declared + ")" : "") + "; " + what
-          + " is sent as " + typeName(guess));
+      declared.pop_back();
+      outcome.error = what + ": the '" + subtype
+                      + "' renderer has no parameter '" + name
+                      + "' (it declares:" + declared + ")";
+      return outcome;
+    }
+    if (types.empty()) {
+      // A device without introspection: the value's spelling decides.
+      const ANARIDataType guess = guessType(text);
+      types.push_back(guess);
+      outcome.warnings.push_back("the device describes no parameters of the '"
+                                 + subtype + "' renderer; " + what
+                                 + " is sent as " + typeName(guess));
     }
 
     bool applied = false;

@@ -17,11 +17,12 @@ struct ParameterOutcome
   std::vector<std::string> warnings;
 };
 
-// Sets every (name, value) on `renderer` (not committed). A value that does
-// not parse as any type the device declares for the parameter is an error
-// naming both; a parameter the device does not declare gets the type the
-// value's spelling suggests ("0.5" FLOAT32, "1,2,3" INT32_VEC3, "true" BOOL,
-// else STRING), with a warning.
+// Sets every (name, value) on `renderer` (not committed), typed by the
+// device's introspection: a value that does not parse as any type the
+// device declares for the parameter, or a parameter it does not declare, is
+// an error naming both. Only a device that describes no parameters at all
+// gets the type the value's spelling suggests ("0.5" FLOAT32, "1,2,3"
+// INT32_VEC3, "true" BOOL, else STRING), with a warning.
 ParameterOutcome setRendererParameters(ANARIDevice device,
     ANARIRenderer renderer,
     const std::string &subtype,

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
+#include <filesystem>
 
 // A private stb_image: static linkage, so it cannot clash with the copy
 // compiled inside prism_image (or any other in the process).
@@ -42,6 +43,14 @@ std::string lowerExtension(const std::string &path)
 TextureResult readTexture(const std::string &path)
 {
   TextureResult result;
+  // A FIFO or device named as a texture would block or never end.
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(path, ec);
+  if (std::filesystem::exists(status)
+      && !std::filesystem::is_regular_file(status)) {
+    result.error = "'" + path + "': not a regular file";
+    return result;
+  }
   const std::string extension = lowerExtension(path);
   if (extension == ".png" || extension == ".exr" || extension == ".pfm") {
     image::ReadResult read = image::read(path);

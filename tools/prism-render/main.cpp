@@ -2,7 +2,9 @@
 // library (prism by default) and writes the image. See --help.
 #include "CameraFraming.h"
 #include "Console.h"
+#include "DefaultEnvironment.h"
 #include "DemoScenes.h"
+#include "FrameMemory.h"
 #include "FrameOutput.h"
 #include "GltfLoader.h"
 #include "ObjLoader.h"
@@ -191,6 +193,8 @@ int run(int argc, char **argv)
     listDemos();
     return 0;
   }
+  if (const std::string why = whyFrameDoesNotFit(options); !why.empty())
+    return fail(why);
 
   // What to load, checked before any device is touched.
   SourceKind kind = SourceKind::Demo;
@@ -344,6 +348,29 @@ int run(int argc, char **argv)
     return fail(loaded.error);
   if (options.cameraIndex >= 0 && kind != SourceKind::Gltf)
     console::warning("--camera only applies to glTF files; ignored");
+
+  // Scene files without lights would render black with the path tracer:
+  // light them the way glTF viewers do, and say so.
+  const bool explicitEnvironment = options.environment != "studio";
+  if (!scene.emitsLight && options.environment != "none") {
+    const EnvironmentChoice choice{options.environment,
+        options.environmentIntensity,
+        options.environmentRotateDegrees};
+    const scenes::Vec3 up = options.up.value_or(
+        scene.camera.valid ? scene.camera.up : scenes::Vec3{0.f, 1.f, 0.f});
+    const Environment environment = makeEnvironment(device, choice, up);
+    if (!environment.error.empty())
+      return fail(environment.error);
+    session.keep(environment.light);
+    lightWorldWith(device, scene.world, environment.light);
+    if (!options.quiet)
+      console::message("the scene has no lights; lit by "
+                       + environment.description + " (--env none: unlit)");
+  } else if (explicitEnvironment && scene.emitsLight) {
+    console::warning(
+        "the scene has lights of its own; --env applies only to scenes "
+        "without any");
+  }
   const double loadSeconds = std::chrono::duration<double>(
       std::chrono::steady_clock::now() - loadStart)
                                  .count();

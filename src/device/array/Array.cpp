@@ -1,6 +1,6 @@
 #include "Array.h"
 
-#include "../Device.h"
+#include "../object/DeviceState.h"
 
 #include "anari/frontend/type_utility.h"
 
@@ -47,7 +47,7 @@ const char *Array::whyNotCreatable(const Shape &shape)
   return nullptr;
 }
 
-Array::Array(Device &device,
+Array::Array(DeviceState &device,
     const void *appMemory,
     ANARIMemoryDeleter deleter,
     const void *deleterUserPtr,

@@ -22,7 +22,7 @@ class Array : public Object
   };
 
   // `appMemory` NULL makes a managed array. Validate with isCreatable first.
-  Array(Device &device,
+  Array(DeviceState &device,
       const void *appMemory,
       ANARIMemoryDeleter deleter,
       const void *deleterUserPtr,

@@ -1,7 +1,7 @@
 #include "Camera.h"
 
 #include "../array/Array.h"
-#include "../world/MotionParameters.h"
+#include "../array/MotionParameters.h"
 
 #include <algorithm>
 #include <cmath>
@@ -31,7 +31,7 @@ float2 concentricDisk(float2 u)
 
 } // namespace
 
-Camera::Camera(Device &device, const std::string &subtype)
+Camera::Camera(DeviceState &device, const std::string &subtype)
     : Object(device, ANARI_CAMERA, subtype)
 {}
 

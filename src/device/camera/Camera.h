@@ -27,7 +27,7 @@ struct Ray
 class Camera : public Object
 {
  public:
-  Camera(Device &device, const std::string &subtype);
+  Camera(DeviceState &device, const std::string &subtype);
 
   // The ray through `screen` ([0,1]^2 over the frame) and `lensSample`
   // (uniform in [0,1)^2, (0.5, 0.5) is the lens centre) at `time`, where

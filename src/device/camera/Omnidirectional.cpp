@@ -4,7 +4,7 @@
 
 namespace prism {
 
-Omnidirectional::Omnidirectional(Device &device)
+Omnidirectional::Omnidirectional(DeviceState &device)
     : Camera(device, "omnidirectional")
 {}
 

@@ -10,7 +10,7 @@ namespace prism {
 class Omnidirectional : public Camera
 {
  public:
-  explicit Omnidirectional(Device &device);
+  explicit Omnidirectional(DeviceState &device);
 
  protected:
   void commitParameters() override;

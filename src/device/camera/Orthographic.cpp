@@ -4,7 +4,8 @@
 
 namespace prism {
 
-Orthographic::Orthographic(Device &device) : Camera(device, "orthographic") {}
+Orthographic::Orthographic(DeviceState &device) : Camera(device, "orthographic")
+{}
 
 void Orthographic::commitParameters()
 {

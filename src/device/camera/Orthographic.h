@@ -8,7 +8,7 @@ namespace prism {
 class Orthographic : public Camera
 {
  public:
-  explicit Orthographic(Device &device);
+  explicit Orthographic(DeviceState &device);
 
  protected:
   void commitParameters() override;

@@ -4,7 +4,7 @@
 
 namespace prism {
 
-Perspective::Perspective(Device &device) : Camera(device, "perspective") {}
+Perspective::Perspective(DeviceState &device) : Camera(device, "perspective") {}
 
 void Perspective::commitParameters()
 {

@@ -9,7 +9,7 @@ namespace prism {
 class Perspective : public Camera
 {
  public:
-  explicit Perspective(Device &device);
+  explicit Perspective(DeviceState &device);
 
  public:
   bool pinhole(Pinhole &out) const override;

@@ -1,8 +1,10 @@
 #include "Frame.h"
 
-#include "../Device.h"
 #include "../camera/Camera.h"
+#include "../object/DeviceState.h"
+#include "../parallel/TaskPool.h"
 #include "../renderer/Renderer.h"
+#include "../renderer/wavefront/RayTransport.h"
 #include "../world/World.h"
 #include "PixelFormat.h"
 
@@ -39,7 +41,7 @@ const std::map<std::string, std::vector<ANARIDataType>> &channelFormats()
 
 } // namespace
 
-Frame::Frame(Device &device) : Object(device, ANARI_FRAME, "") {}
+Frame::Frame(DeviceState &device) : Object(device, ANARI_FRAME, "") {}
 
 Frame::~Frame() = default;
 
@@ -134,10 +136,8 @@ void Frame::renderAsync()
   m_tilesDone = 0;
   m_start = std::chrono::steady_clock::now();
   device().frameStarted();
-  // The task holds the frame: the application may release it as soon as
-  // anariFrameReady returns, while the task is still finishing. The
-  // callback is the one committed now; a later commit may replace it.
-  retainInternal();
+  // The callback is the one committed now: a commit may replace it while
+  // the task is finishing.
   const Completion completion{m_completionCallback, m_completionUserPtr};
   device().taskPool().run([this, completion] {
     try {
@@ -151,8 +151,7 @@ void Frame::renderAsync()
           m_width,
           m_height);
     }
-    finish(completion);
-    releaseInternal();
+    finish(completion); // the task's last touch of the frame
   });
 }
 
@@ -229,7 +228,10 @@ void Frame::render()
   const uint32_t tilesX = (m_width + kTileSize - 1) / kTileSize;
   const uint32_t tilesY = (m_height + kTileSize - 1) / kTileSize;
   m_tilesTotal = tilesX * tilesY;
-  RenderContext context{m_camera, m_world, m_width, m_height, m_sampleIndex};
+  const std::unique_ptr<RayTransport> transport =
+      device().transportFor(*m_world);
+  RenderContext context{
+      m_camera, m_world, transport.get(), m_width, m_height, m_sampleIndex};
   m_renderer->beginFrame(context);
   // Each tile is rendered, folded into the accumulation and converted to
   // the channels' types while it is still in cache.
@@ -367,7 +369,9 @@ void Frame::finish(const Completion &completion)
   device().frameFinished();
   if (completion.callback)
     completion.callback(
-        completion.userPtr, device().this_device(), (ANARIFrame)handle());
+        completion.userPtr, device().apiHandle(), (ANARIFrame)handle());
+  // Notified under the lock: a waiter can only return (and release the
+  // frame) once this unlocks, the task's very last use of the frame.
   std::lock_guard lock(m_stateMutex);
   m_rendering = false;
   m_doneCondition.notify_all();

@@ -4,7 +4,7 @@
 
 #include "../denoise/Denoiser.h"
 #include "../object/Object.h"
-#include "FrameBuffers.h"
+#include "../renderer/FrameBuffers.h"
 
 #include <atomic>
 #include <chrono>
@@ -21,7 +21,7 @@ class World;
 class Frame : public Object
 {
  public:
-  explicit Frame(Device &device);
+  explicit Frame(DeviceState &device);
   ~Frame() override;
 
   bool isValid() const override;

@@ -11,7 +11,7 @@ namespace prism {
 class Cone : public Geometry, public rt::UserGeometry
 {
  public:
-  explicit Cone(Device &device, const std::string &subtype = "cone")
+  explicit Cone(DeviceState &device, const std::string &subtype = "cone")
       : Geometry(device, subtype)
   {}
   void addTo(rt::Scene &scene, uint32_t id) const override;

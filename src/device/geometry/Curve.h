@@ -9,7 +9,7 @@ namespace prism {
 class Curve : public Geometry
 {
  public:
-  explicit Curve(Device &device) : Geometry(device, "curve") {}
+  explicit Curve(DeviceState &device) : Geometry(device, "curve") {}
   void addTo(rt::Scene &scene, uint32_t id) const override;
 
  protected:

@@ -9,7 +9,7 @@ namespace prism {
 class Cylinder : public Cone
 {
  public:
-  explicit Cylinder(Device &device) : Cone(device, "cylinder") {}
+  explicit Cylinder(DeviceState &device) : Cone(device, "cylinder") {}
 
  protected:
   void readRadii() override

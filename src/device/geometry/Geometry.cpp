@@ -71,7 +71,7 @@ float4 interpolateValues(const std::vector<float4> &values,
 
 } // namespace
 
-Geometry::Geometry(Device &device, const std::string &subtype)
+Geometry::Geometry(DeviceState &device, const std::string &subtype)
     : Object(device, ANARI_GEOMETRY, subtype)
 {}
 

@@ -21,7 +21,7 @@ class Scene;
 class Geometry : public Object
 {
  public:
-  Geometry(Device &device, const std::string &subtype);
+  Geometry(DeviceState &device, const std::string &subtype);
 
   bool isValid() const override
   {
@@ -146,6 +146,6 @@ class Geometry : public Object
 };
 
 // The geometry of `subtype`, or NULL if the device does not implement it.
-Geometry *createGeometry(Device &device, const std::string &subtype);
+Geometry *createGeometry(DeviceState &device, const std::string &subtype);
 
 } // namespace prism

@@ -7,7 +7,7 @@
 
 namespace prism {
 
-Geometry *createGeometry(Device &device, const std::string &subtype)
+Geometry *createGeometry(DeviceState &device, const std::string &subtype)
 {
   if (subtype == "triangle")
     return new Triangle(device);

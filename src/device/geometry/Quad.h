@@ -8,7 +8,7 @@ namespace prism {
 class Quad : public Geometry
 {
  public:
-  explicit Quad(Device &device) : Geometry(device, "quad") {}
+  explicit Quad(DeviceState &device) : Geometry(device, "quad") {}
   void addTo(rt::Scene &scene, uint32_t id) const override;
   void appendEmitterShape(EmitterShape &shape) const override;
 

@@ -9,7 +9,7 @@ namespace prism {
 class Sphere : public Geometry
 {
  public:
-  explicit Sphere(Device &device) : Geometry(device, "sphere") {}
+  explicit Sphere(DeviceState &device) : Geometry(device, "sphere") {}
   void addTo(rt::Scene &scene, uint32_t id) const override;
   void appendEmitterShape(EmitterShape &shape) const override;
 

@@ -8,7 +8,7 @@ namespace prism {
 class Triangle : public Geometry
 {
  public:
-  explicit Triangle(Device &device) : Geometry(device, "triangle") {}
+  explicit Triangle(DeviceState &device) : Geometry(device, "triangle") {}
   void addTo(rt::Scene &scene, uint32_t id) const override;
   void appendEmitterShape(EmitterShape &shape) const override;
 

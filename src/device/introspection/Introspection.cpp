@@ -145,6 +145,7 @@ struct Catalog::Impl
   std::map<int, std::vector<const ResolvedObject *>> objectsByType;
   std::map<int, std::vector<const char *>> subtypes; // nullptr-terminated
   const ResolvedObject *renderer = nullptr;          // ANARI_RENDERER "default"
+  const char *defaultRenderer = nullptr; // the subtype "default" stands for
 
   bool isImplemented(int extension) const
   {
@@ -303,9 +304,18 @@ const ResolvedObject *Catalog::Impl::find(
   if (int(type) == int(ANARI_RENDERER)) {
     if (isEmpty(subtype))
       return nullptr;
+    // "default" is the device's first real renderer (spec 5.3), described
+    // as that one when the device declares its renderers.
+    if (equals(subtype, "default") && defaultRenderer)
+      subtype = defaultRenderer;
     for (const char *s : rendererSubtypes) {
-      if (equals(s, subtype))
-        return renderer;
+      if (!equals(s, subtype))
+        continue;
+      for (const ResolvedObject *object : objectsByType.at(int(type))) {
+        if (equals(object->entry->subtype, subtype))
+          return object;
+      }
+      return renderer;
     }
     return nullptr;
   }
@@ -353,6 +363,14 @@ Catalog::Catalog(const char **implemented, const char **rendererSubtypes)
       appendUniqueString(impl.rendererSubtypes, impl.copy(*s));
     if (!rendererSubtypes)
       impl.rendererSubtypes.push_back("default");
+    else if (impl.rendererSubtypes.size() > 1)
+      impl.defaultRenderer = impl.rendererSubtypes[1];
+    // Renderers the tables declare are listed too (once).
+    for (const ResolvedObject *object :
+        impl.objectsByType[int(ANARI_RENDERER)]) {
+      if (!equals(object->entry->subtype, "default"))
+        appendUniqueString(impl.rendererSubtypes, object->entry->subtype);
+    }
     if (!impl.rendererSubtypes.empty()) {
       impl.rendererSubtypes.push_back(nullptr);
       impl.subtypes[int(ANARI_RENDERER)] = impl.rendererSubtypes;

@@ -83,6 +83,7 @@ enum : int {
   kKhrSpatialFieldStructuredRegularFilterCubic = 60,
   kKhrSpatialFieldUnstructured = 61,
   kKhrVolumeTransferFunction1d = 62,
+  kPrismRenderers = 63,
 };
 
 // Type lists, ANARI_UNKNOWN-terminated.
@@ -148,12 +149,13 @@ constexpr ANARIDataType kTypeList37[] = {
 constexpr ANARIDataType kTypeList38[] = {
     ANARI_FLOAT32, ANARI_SAMPLER, ANARI_STRING, ANARI_UNKNOWN};
 constexpr ANARIDataType kTypeList39[] = {ANARI_SAMPLER, ANARI_UNKNOWN};
-constexpr ANARIDataType kTypeList40[] = {ANARI_GEOMETRY, ANARI_UNKNOWN};
-constexpr ANARIDataType kTypeList41[] = {ANARI_MATERIAL, ANARI_UNKNOWN};
-constexpr ANARIDataType kTypeList42[] = {
+constexpr ANARIDataType kTypeList40[] = {ANARI_INT32, ANARI_UNKNOWN};
+constexpr ANARIDataType kTypeList41[] = {ANARI_GEOMETRY, ANARI_UNKNOWN};
+constexpr ANARIDataType kTypeList42[] = {ANARI_MATERIAL, ANARI_UNKNOWN};
+constexpr ANARIDataType kTypeList43[] = {
     ANARI_UINT8, ANARI_INT8, ANARI_UNKNOWN};
-constexpr ANARIDataType kTypeList43[] = {ANARI_UINT64_VEC2, ANARI_UNKNOWN};
-constexpr ANARIDataType kTypeList44[] = {
+constexpr ANARIDataType kTypeList44[] = {ANARI_UINT64_VEC2, ANARI_UNKNOWN};
+constexpr ANARIDataType kTypeList45[] = {
     ANARI_UFIXED8, ANARI_UFIXED8_VEC2, ANARI_UFIXED8_VEC3, ANARI_UFIXED8_VEC4,
     ANARI_UFIXED8_R_SRGB, ANARI_UFIXED8_RA_SRGB, ANARI_UFIXED8_RGB_SRGB,
     ANARI_UFIXED8_RGBA_SRGB, ANARI_UFIXED16, ANARI_UFIXED16_VEC2,
@@ -161,16 +163,16 @@ constexpr ANARIDataType kTypeList44[] = {
     ANARI_UFIXED32_VEC2, ANARI_UFIXED32_VEC3, ANARI_UFIXED32_VEC4,
     ANARI_FLOAT32, ANARI_FLOAT32_VEC2, ANARI_FLOAT32_VEC3, ANARI_FLOAT32_VEC4,
     ANARI_FIXED8_VEC3, ANARI_FIXED8_VEC4, ANARI_UNKNOWN};
-constexpr ANARIDataType kTypeList45[] = {ANARI_ARRAY3D, ANARI_UNKNOWN};
-constexpr ANARIDataType kTypeList46[] = {ANARI_UINT64, ANARI_UNKNOWN};
-constexpr ANARIDataType kTypeList47[] = {
+constexpr ANARIDataType kTypeList46[] = {ANARI_ARRAY3D, ANARI_UNKNOWN};
+constexpr ANARIDataType kTypeList47[] = {ANARI_UINT64, ANARI_UNKNOWN};
+constexpr ANARIDataType kTypeList48[] = {
     ANARI_UFIXED8, ANARI_FIXED16, ANARI_UFIXED16, ANARI_FLOAT32, ANARI_FLOAT64,
     ANARI_UNKNOWN};
-constexpr ANARIDataType kTypeList48[] = {
-    ANARI_FLOAT32_BOX1, ANARI_FLOAT64_BOX1, ANARI_UNKNOWN};
 constexpr ANARIDataType kTypeList49[] = {
+    ANARI_FLOAT32_BOX1, ANARI_FLOAT64_BOX1, ANARI_UNKNOWN};
+constexpr ANARIDataType kTypeList50[] = {
     ANARI_FLOAT32_VEC4, ANARI_FLOAT32_VEC3, ANARI_ARRAY1D, ANARI_UNKNOWN};
-constexpr ANARIDataType kTypeList50[] = {ANARI_INSTANCE, ANARI_UNKNOWN};
+constexpr ANARIDataType kTypeList51[] = {ANARI_INSTANCE, ANARI_UNKNOWN};
 // clang-format on
 
 constexpr const char *kTags_attribute[] = {"attribute", nullptr};
@@ -2618,26 +2620,302 @@ constexpr int kContributors27[] = {kKhrRendererAmbientLight,
     kKhrRendererBackgroundImage,
     kKhrRendererDenoise};
 
-// ANARI_SURFACE: core
+// ANARI_RENDERER "ao": ANARI_PRISM_RENDERERS
 // clang-format off
-// visible default: ANARI_BOOL
-alignas(4) constexpr int8_t kDefault28_visible[] = {1, 0, 0, 0};
-// id default: ANARI_UINT32
-constexpr uint32_t kDefault28_id[] = {4294967295u};
+// ambientColor default: ANARI_FLOAT32_VEC3
+constexpr float kDefault28_ambientColor[] = {1.f, 1.f, 1.f};
+// ambientRadiance default: ANARI_FLOAT32
+constexpr float kDefault28_ambientRadiance[] = {0.f};
+// background default: ANARI_FLOAT32_VEC4
+constexpr float kDefault28_background[] = {0.f, 0.f, 0.f, 1.f};
+// denoise default: ANARI_BOOL
+alignas(4) constexpr int8_t kDefault28_denoise[] = {0, 0, 0, 0};
+// aoSamples default: ANARI_INT32
+constexpr int32_t kDefault28_aoSamples[] = {1};
+// aoSamples minimum: ANARI_INT32
+constexpr int32_t kMinimum28_aoSamples[] = {1};
+// aoSamples maximum: ANARI_INT32
+constexpr int32_t kMaximum28_aoSamples[] = {1024};
+// aoDistance default: ANARI_FLOAT32
+constexpr float kDefault28_aoDistance[] = {1e+20f};
+// aoDistance minimum: ANARI_FLOAT32
+constexpr float kMinimum28_aoDistance[] = {0.f};
 // clang-format on
 constexpr ParameterEntry kParameters28[] = {
     {.name = "name",
         .types = {kTypeList0, 1},
         .description = "optional object name",
         .extension = kCore},
-    {.name = "geometry",
+    {.name = "ambientColor",
+        .types = {kTypeList4, 1},
+        .tags = kTags_color,
+        .description = "ambient light color",
+        .defaultValue = kDefault28_ambientColor,
+        .extension = kKhrRendererAmbientLight},
+    {.name = "ambientRadiance",
+        .types = {kTypeList6, 1},
+        .description = "the amount of light emitted by a point on the ambient "
+                       "light source in a direction, in W/sr/m^2",
+        .defaultValue = kDefault28_ambientRadiance,
+        .extension = kKhrRendererAmbientLight},
+    {.name = "background",
+        .types = {kTypeList18, 1},
+        .tags = kTags_color,
+        .description = "the background color",
+        .defaultValue = kDefault28_background,
+        .extension = kKhrRendererBackgroundColor},
+    {.name = "background",
+        .types = {kTypeList35, 1},
+        .elementTypes = {kTypeList19, 20},
+        .description = "the background image",
+        .extension = kKhrRendererBackgroundImage},
+    {.name = "denoise",
+        .types = {kTypeList16, 1},
+        .description = "whether the rendered image should be denoised",
+        .defaultValue = kDefault28_denoise,
+        .extension = kKhrRendererDenoise},
+    {.name = "aoSamples",
         .types = {kTypeList40, 1},
+        .description = "occlusion rays per pixel per frame",
+        .defaultValue = kDefault28_aoSamples,
+        .minimum = kMinimum28_aoSamples,
+        .maximum = kMaximum28_aoSamples,
+        .extension = kPrismRenderers},
+    {.name = "aoDistance",
+        .types = {kTypeList6, 1},
+        .description = "how far occluders count",
+        .defaultValue = kDefault28_aoDistance,
+        .minimum = kMinimum28_aoDistance,
+        .extension = kPrismRenderers}};
+constexpr int kContributors28[] = {kKhrRendererAmbientLight,
+    kKhrRendererBackgroundColor,
+    kKhrRendererBackgroundImage,
+    kKhrRendererDenoise};
+
+// ANARI_RENDERER "debug": ANARI_PRISM_RENDERERS
+// clang-format off
+// ambientColor default: ANARI_FLOAT32_VEC3
+constexpr float kDefault29_ambientColor[] = {1.f, 1.f, 1.f};
+// ambientRadiance default: ANARI_FLOAT32
+constexpr float kDefault29_ambientRadiance[] = {0.f};
+// background default: ANARI_FLOAT32_VEC4
+constexpr float kDefault29_background[] = {0.f, 0.f, 0.f, 1.f};
+// denoise default: ANARI_BOOL
+alignas(4) constexpr int8_t kDefault29_denoise[] = {0, 0, 0, 0};
+// clang-format on
+constexpr ValueEntry kValues29_mode[] = {{"Ns", ANARI_UNKNOWN, kPrismRenderers},
+    {"Ng", ANARI_UNKNOWN, kPrismRenderers},
+    {"uv", ANARI_UNKNOWN, kPrismRenderers},
+    {"primitiveId", ANARI_UNKNOWN, kPrismRenderers},
+    {"objectId", ANARI_UNKNOWN, kPrismRenderers},
+    {"instanceId", ANARI_UNKNOWN, kPrismRenderers},
+    {"backface", ANARI_UNKNOWN, kPrismRenderers},
+    {"opacityHeatmap", ANARI_UNKNOWN, kPrismRenderers},
+    {"color", ANARI_UNKNOWN, kPrismRenderers},
+    {"attribute0", ANARI_UNKNOWN, kPrismRenderers},
+    {"attribute1", ANARI_UNKNOWN, kPrismRenderers},
+    {"attribute2", ANARI_UNKNOWN, kPrismRenderers},
+    {"attribute3", ANARI_UNKNOWN, kPrismRenderers},
+    {"worldPosition", ANARI_UNKNOWN, kPrismRenderers},
+    {"worldNormal", ANARI_UNKNOWN, kPrismRenderers},
+    {"objectPosition", ANARI_UNKNOWN, kPrismRenderers},
+    {"objectNormal", ANARI_UNKNOWN, kPrismRenderers}};
+constexpr ParameterEntry kParameters29[] = {
+    {.name = "name",
+        .types = {kTypeList0, 1},
+        .description = "optional object name",
+        .extension = kCore},
+    {.name = "ambientColor",
+        .types = {kTypeList4, 1},
+        .tags = kTags_color,
+        .description = "ambient light color",
+        .defaultValue = kDefault29_ambientColor,
+        .extension = kKhrRendererAmbientLight},
+    {.name = "ambientRadiance",
+        .types = {kTypeList6, 1},
+        .description = "the amount of light emitted by a point on the ambient "
+                       "light source in a direction, in W/sr/m^2",
+        .defaultValue = kDefault29_ambientRadiance,
+        .extension = kKhrRendererAmbientLight},
+    {.name = "background",
+        .types = {kTypeList18, 1},
+        .tags = kTags_color,
+        .description = "the background color",
+        .defaultValue = kDefault29_background,
+        .extension = kKhrRendererBackgroundColor},
+    {.name = "background",
+        .types = {kTypeList35, 1},
+        .elementTypes = {kTypeList19, 20},
+        .description = "the background image",
+        .extension = kKhrRendererBackgroundImage},
+    {.name = "denoise",
+        .types = {kTypeList16, 1},
+        .description = "whether the rendered image should be denoised",
+        .defaultValue = kDefault29_denoise,
+        .extension = kKhrRendererDenoise},
+    {.name = "mode",
+        .types = {kTypeList0, 1},
+        .description =
+            "what the colors show: shading (Ns, normal maps included) or "
+            "geometric (Ng) normal, texture coordinates, ids, back faces, "
+            "layers of transparency, or an attribute",
+        .defaultValue = "Ns",
+        .hasValues = true,
+        .values = {kValues29_mode, 17},
+        .extension = kPrismRenderers}};
+constexpr int kContributors29[] = {kKhrRendererAmbientLight,
+    kKhrRendererBackgroundColor,
+    kKhrRendererBackgroundImage,
+    kKhrRendererDenoise};
+
+// ANARI_RENDERER "pathtracer": ANARI_PRISM_RENDERERS
+// clang-format off
+// ambientColor default: ANARI_FLOAT32_VEC3
+constexpr float kDefault30_ambientColor[] = {1.f, 1.f, 1.f};
+// ambientRadiance default: ANARI_FLOAT32
+constexpr float kDefault30_ambientRadiance[] = {0.f};
+// background default: ANARI_FLOAT32_VEC4
+constexpr float kDefault30_background[] = {0.f, 0.f, 0.f, 1.f};
+// denoise default: ANARI_BOOL
+alignas(4) constexpr int8_t kDefault30_denoise[] = {0, 0, 0, 0};
+// maxPathLength default: ANARI_INT32
+constexpr int32_t kDefault30_maxPathLength[] = {8};
+// maxPathLength minimum: ANARI_INT32
+constexpr int32_t kMinimum30_maxPathLength[] = {1};
+// maxPathLength maximum: ANARI_INT32
+constexpr int32_t kMaximum30_maxPathLength[] = {1024};
+// clang-format on
+constexpr ParameterEntry kParameters30[] = {
+    {.name = "name",
+        .types = {kTypeList0, 1},
+        .description = "optional object name",
+        .extension = kCore},
+    {.name = "ambientColor",
+        .types = {kTypeList4, 1},
+        .tags = kTags_color,
+        .description = "ambient light color",
+        .defaultValue = kDefault30_ambientColor,
+        .extension = kKhrRendererAmbientLight},
+    {.name = "ambientRadiance",
+        .types = {kTypeList6, 1},
+        .description = "the amount of light emitted by a point on the ambient "
+                       "light source in a direction, in W/sr/m^2",
+        .defaultValue = kDefault30_ambientRadiance,
+        .extension = kKhrRendererAmbientLight},
+    {.name = "background",
+        .types = {kTypeList18, 1},
+        .tags = kTags_color,
+        .description = "the background color",
+        .defaultValue = kDefault30_background,
+        .extension = kKhrRendererBackgroundColor},
+    {.name = "background",
+        .types = {kTypeList35, 1},
+        .elementTypes = {kTypeList19, 20},
+        .description = "the background image",
+        .extension = kKhrRendererBackgroundImage},
+    {.name = "denoise",
+        .types = {kTypeList16, 1},
+        .description = "whether the rendered image should be denoised",
+        .defaultValue = kDefault30_denoise,
+        .extension = kKhrRendererDenoise},
+    {.name = "maxPathLength",
+        .types = {kTypeList40, 1},
+        .description = "the most surfaces a path meets (1: direct light only); "
+                       "values outside [1, 1024] are clamped",
+        .defaultValue = kDefault30_maxPathLength,
+        .minimum = kMinimum30_maxPathLength,
+        .maximum = kMaximum30_maxPathLength,
+        .extension = kPrismRenderers}};
+constexpr PropertyEntry kProperties30[] = {
+    {"raysTraced", ANARI_UINT64, false, kPrismRenderers}};
+constexpr int kContributors30[] = {kKhrRendererAmbientLight,
+    kKhrRendererBackgroundColor,
+    kKhrRendererBackgroundImage,
+    kKhrRendererDenoise};
+
+// ANARI_RENDERER "raycast": ANARI_PRISM_RENDERERS
+// clang-format off
+// ambientColor default: ANARI_FLOAT32_VEC3
+constexpr float kDefault31_ambientColor[] = {1.f, 1.f, 1.f};
+// ambientRadiance default: ANARI_FLOAT32
+constexpr float kDefault31_ambientRadiance[] = {0.f};
+// background default: ANARI_FLOAT32_VEC4
+constexpr float kDefault31_background[] = {0.f, 0.f, 0.f, 1.f};
+// denoise default: ANARI_BOOL
+alignas(4) constexpr int8_t kDefault31_denoise[] = {0, 0, 0, 0};
+// eyeLightBlendRatio default: ANARI_FLOAT32
+constexpr float kDefault31_eyeLightBlendRatio[] = {0.5f};
+// eyeLightBlendRatio minimum: ANARI_FLOAT32
+constexpr float kMinimum31_eyeLightBlendRatio[] = {0.f};
+// eyeLightBlendRatio maximum: ANARI_FLOAT32
+constexpr float kMaximum31_eyeLightBlendRatio[] = {1.f};
+// clang-format on
+constexpr ParameterEntry kParameters31[] = {
+    {.name = "name",
+        .types = {kTypeList0, 1},
+        .description = "optional object name",
+        .extension = kCore},
+    {.name = "ambientColor",
+        .types = {kTypeList4, 1},
+        .tags = kTags_color,
+        .description = "ambient light color",
+        .defaultValue = kDefault31_ambientColor,
+        .extension = kKhrRendererAmbientLight},
+    {.name = "ambientRadiance",
+        .types = {kTypeList6, 1},
+        .description = "the amount of light emitted by a point on the ambient "
+                       "light source in a direction, in W/sr/m^2",
+        .defaultValue = kDefault31_ambientRadiance,
+        .extension = kKhrRendererAmbientLight},
+    {.name = "background",
+        .types = {kTypeList18, 1},
+        .tags = kTags_color,
+        .description = "the background color",
+        .defaultValue = kDefault31_background,
+        .extension = kKhrRendererBackgroundColor},
+    {.name = "background",
+        .types = {kTypeList35, 1},
+        .elementTypes = {kTypeList19, 20},
+        .description = "the background image",
+        .extension = kKhrRendererBackgroundImage},
+    {.name = "denoise",
+        .types = {kTypeList16, 1},
+        .description = "whether the rendered image should be denoised",
+        .defaultValue = kDefault31_denoise,
+        .extension = kKhrRendererDenoise},
+    {.name = "eyeLightBlendRatio",
+        .types = {kTypeList6, 1},
+        .description = "how much the eye light's cosine darkens surfaces seen "
+                       "at a slant (0: flat color, 1: pure cosine)",
+        .defaultValue = kDefault31_eyeLightBlendRatio,
+        .minimum = kMinimum31_eyeLightBlendRatio,
+        .maximum = kMaximum31_eyeLightBlendRatio,
+        .extension = kPrismRenderers}};
+constexpr int kContributors31[] = {kKhrRendererAmbientLight,
+    kKhrRendererBackgroundColor,
+    kKhrRendererBackgroundImage,
+    kKhrRendererDenoise};
+
+// ANARI_SURFACE: core
+// clang-format off
+// visible default: ANARI_BOOL
+alignas(4) constexpr int8_t kDefault32_visible[] = {1, 0, 0, 0};
+// id default: ANARI_UINT32
+constexpr uint32_t kDefault32_id[] = {4294967295u};
+// clang-format on
+constexpr ParameterEntry kParameters32[] = {
+    {.name = "name",
+        .types = {kTypeList0, 1},
+        .description = "optional object name",
+        .extension = kCore},
+    {.name = "geometry",
+        .types = {kTypeList41, 1},
         .tags = kTags_required,
         .description = "geometry object defining the surface geometry",
         .required = true,
         .extension = kCore},
     {.name = "material",
-        .types = {kTypeList41, 1},
+        .types = {kTypeList42, 1},
         .tags = kTags_required,
         .description = "material object defining the surface appearance",
         .required = true,
@@ -2645,35 +2923,35 @@ constexpr ParameterEntry kParameters28[] = {
     {.name = "visible",
         .types = {kTypeList16, 1},
         .description = "whether the surface is visible",
-        .defaultValue = kDefault28_visible,
+        .defaultValue = kDefault32_visible,
         .extension = kCore},
     {.name = "id",
         .types = {kTypeList34, 1},
         .description = "user id for objectId channel",
-        .defaultValue = kDefault28_id,
+        .defaultValue = kDefault32_id,
         .extension = kKhrFrameChannelObjectId}};
-constexpr int kContributors28[] = {kKhrFrameChannelObjectId};
+constexpr int kContributors32[] = {kKhrFrameChannelObjectId};
 
 // ANARI_SAMPLER "compressedImage2D": ANARI_EXT_SAMPLER_COMPRESSED_IMAGE2D
 // clang-format off
 // inTransform default: ANARI_FLOAT32_MAT4
-constexpr float kDefault29_inTransform[] = {
+constexpr float kDefault33_inTransform[] = {
     1.f, 0.f, 0.f, 0.f,
     0.f, 1.f, 0.f, 0.f,
     0.f, 0.f, 1.f, 0.f,
     0.f, 0.f, 0.f, 1.f};
 // inOffset default: ANARI_FLOAT32_VEC4
-constexpr float kDefault29_inOffset[] = {0.f, 0.f, 0.f, 0.f};
+constexpr float kDefault33_inOffset[] = {0.f, 0.f, 0.f, 0.f};
 // outTransform default: ANARI_FLOAT32_MAT4
-constexpr float kDefault29_outTransform[] = {
+constexpr float kDefault33_outTransform[] = {
     1.f, 0.f, 0.f, 0.f,
     0.f, 1.f, 0.f, 0.f,
     0.f, 0.f, 1.f, 0.f,
     0.f, 0.f, 0.f, 1.f};
 // outOffset default: ANARI_FLOAT32_VEC4
-constexpr float kDefault29_outOffset[] = {0.f, 0.f, 0.f, 0.f};
+constexpr float kDefault33_outOffset[] = {0.f, 0.f, 0.f, 0.f};
 // clang-format on
-constexpr ValueEntry kValues29_format[] = {
+constexpr ValueEntry kValues33_format[] = {
     {"ASTC_4x4", ANARI_UNKNOWN, kExtSamplerCompressedFormatAstc},
     {"ASTC_4x4_SRGB", ANARI_UNKNOWN, kExtSamplerCompressedFormatAstc},
     {"ASTC_5x4", ANARI_UNKNOWN, kExtSamplerCompressedFormatAstc},
@@ -2734,25 +3012,25 @@ constexpr ValueEntry kValues29_format[] = {
     {"ETC2_R8G8B8A1_SRGB", ANARI_UNKNOWN, kExtSamplerCompressedFormatEtc2},
     {"ETC2_R8G8B8A8", ANARI_UNKNOWN, kExtSamplerCompressedFormatEtc2},
     {"ETC2_R8G8B8A8_SRGB", ANARI_UNKNOWN, kExtSamplerCompressedFormatEtc2}};
-constexpr ValueEntry kValues29_filter[] = {
+constexpr ValueEntry kValues33_filter[] = {
     {"nearest", ANARI_UNKNOWN, kExtSamplerCompressedImage2d},
     {"linear", ANARI_UNKNOWN, kExtSamplerCompressedImage2d}};
-constexpr ValueEntry kValues29_wrapMode1[] = {
+constexpr ValueEntry kValues33_wrapMode1[] = {
     {"clampToEdge", ANARI_UNKNOWN, kExtSamplerCompressedImage2d},
     {"repeat", ANARI_UNKNOWN, kExtSamplerCompressedImage2d},
     {"mirrorRepeat", ANARI_UNKNOWN, kExtSamplerCompressedImage2d}};
-constexpr ValueEntry kValues29_wrapMode2[] = {
+constexpr ValueEntry kValues33_wrapMode2[] = {
     {"clampToEdge", ANARI_UNKNOWN, kExtSamplerCompressedImage2d},
     {"repeat", ANARI_UNKNOWN, kExtSamplerCompressedImage2d},
     {"mirrorRepeat", ANARI_UNKNOWN, kExtSamplerCompressedImage2d}};
-constexpr ParameterEntry kParameters29[] = {
+constexpr ParameterEntry kParameters33[] = {
     {.name = "name",
         .types = {kTypeList0, 1},
         .description = "optional object name",
         .extension = kExtSamplerCompressedImage2d},
     {.name = "image",
         .types = {kTypeList7, 1},
-        .elementTypes = {kTypeList42, 2},
+        .elementTypes = {kTypeList43, 2},
         .tags = kTags_required,
         .description = "array backing the sampler",
         .required = true,
@@ -2763,10 +3041,10 @@ constexpr ParameterEntry kParameters29[] = {
         .description = "format",
         .required = true,
         .hasValues = true,
-        .values = {kValues29_format, 60},
+        .values = {kValues33_format, 60},
         .extension = kExtSamplerCompressedImage2d},
     {.name = "size",
-        .types = {kTypeList43, 1},
+        .types = {kTypeList44, 1},
         .tags = kTags_required,
         .description = "image size",
         .required = true,
@@ -2782,44 +3060,44 @@ constexpr ParameterEntry kParameters29[] = {
         .description = "filter mode",
         .defaultValue = "nearest",
         .hasValues = true,
-        .values = {kValues29_filter, 2},
+        .values = {kValues33_filter, 2},
         .extension = kExtSamplerCompressedImage2d},
     {.name = "wrapMode1",
         .types = {kTypeList0, 1},
         .description = "wrap mode for the 1st dimension",
         .defaultValue = "clampToEdge",
         .hasValues = true,
-        .values = {kValues29_wrapMode1, 3},
+        .values = {kValues33_wrapMode1, 3},
         .extension = kExtSamplerCompressedImage2d},
     {.name = "wrapMode2",
         .types = {kTypeList0, 1},
         .description = "wrap mode for the 2nd dimension",
         .defaultValue = "clampToEdge",
         .hasValues = true,
-        .values = {kValues29_wrapMode2, 3},
+        .values = {kValues33_wrapMode2, 3},
         .extension = kExtSamplerCompressedImage2d},
     {.name = "inTransform",
         .types = {kTypeList8, 1},
         .description =
             "transform applied to the input attribute before sampling",
-        .defaultValue = kDefault29_inTransform,
+        .defaultValue = kDefault33_inTransform,
         .extension = kExtSamplerCompressedImage2d},
     {.name = "inOffset",
         .types = {kTypeList18, 1},
         .description = "offset added to output inTransform result",
-        .defaultValue = kDefault29_inOffset,
+        .defaultValue = kDefault33_inOffset,
         .extension = kExtSamplerCompressedImage2d},
     {.name = "outTransform",
         .types = {kTypeList8, 1},
         .description = "transform applied to the sampled values",
-        .defaultValue = kDefault29_outTransform,
+        .defaultValue = kDefault33_outTransform,
         .extension = kExtSamplerCompressedImage2d},
     {.name = "outOffset",
         .types = {kTypeList18, 1},
         .description = "offset added to output outTransform result",
-        .defaultValue = kDefault29_outOffset,
+        .defaultValue = kDefault33_outOffset,
         .extension = kExtSamplerCompressedImage2d}};
-constexpr int kContributors29[] = {kExtSamplerCompressedFormatAstc,
+constexpr int kContributors33[] = {kExtSamplerCompressedFormatAstc,
     kExtSamplerCompressedFormatBc123,
     kExtSamplerCompressedFormatBc45,
     kExtSamplerCompressedFormatBc67,
@@ -2830,33 +3108,33 @@ constexpr int kContributors29[] = {kExtSamplerCompressedFormatAstc,
 // ANARI_SAMPLER "image1D": ANARI_KHR_SAMPLER_IMAGE1D
 // clang-format off
 // inTransform default: ANARI_FLOAT32_MAT4
-constexpr float kDefault30_inTransform[] = {
+constexpr float kDefault34_inTransform[] = {
     1.f, 0.f, 0.f, 0.f,
     0.f, 1.f, 0.f, 0.f,
     0.f, 0.f, 1.f, 0.f,
     0.f, 0.f, 0.f, 1.f};
 // inOffset default: ANARI_FLOAT32_VEC4
-constexpr float kDefault30_inOffset[] = {0.f, 0.f, 0.f, 0.f};
+constexpr float kDefault34_inOffset[] = {0.f, 0.f, 0.f, 0.f};
 // outTransform default: ANARI_FLOAT32_MAT4
-constexpr float kDefault30_outTransform[] = {
+constexpr float kDefault34_outTransform[] = {
     1.f, 0.f, 0.f, 0.f,
     0.f, 1.f, 0.f, 0.f,
     0.f, 0.f, 1.f, 0.f,
     0.f, 0.f, 0.f, 1.f};
 // outOffset default: ANARI_FLOAT32_VEC4
-constexpr float kDefault30_outOffset[] = {0.f, 0.f, 0.f, 0.f};
+constexpr float kDefault34_outOffset[] = {0.f, 0.f, 0.f, 0.f};
 // borderColor default: ANARI_FLOAT32_VEC4
-constexpr float kDefault30_borderColor[] = {0.f, 0.f, 0.f, 0.f};
+constexpr float kDefault34_borderColor[] = {0.f, 0.f, 0.f, 0.f};
 // clang-format on
-constexpr ValueEntry kValues30_filter[] = {
+constexpr ValueEntry kValues34_filter[] = {
     {"nearest", ANARI_UNKNOWN, kKhrSamplerImage1d},
     {"linear", ANARI_UNKNOWN, kKhrSamplerImage1d}};
-constexpr ValueEntry kValues30_wrapMode[] = {
+constexpr ValueEntry kValues34_wrapMode[] = {
     {"clampToEdge", ANARI_UNKNOWN, kKhrSamplerImage1d},
     {"repeat", ANARI_UNKNOWN, kKhrSamplerImage1d},
     {"mirrorRepeat", ANARI_UNKNOWN, kKhrSamplerImage1d},
     {"clampToBorder", ANARI_UNKNOWN, kKhrSamplerImagexdClampToBorder}};
-constexpr ParameterEntry kParameters30[] = {
+constexpr ParameterEntry kParameters34[] = {
     {.name = "name",
         .types = {kTypeList0, 1},
         .description = "optional object name",
@@ -2879,87 +3157,87 @@ constexpr ParameterEntry kParameters30[] = {
         .description = "filter mode",
         .defaultValue = "linear",
         .hasValues = true,
-        .values = {kValues30_filter, 2},
+        .values = {kValues34_filter, 2},
         .extension = kKhrSamplerImage1d},
     {.name = "wrapMode",
         .types = {kTypeList0, 1},
         .description = "wrap mode for the 1st dimension",
         .defaultValue = "clampToEdge",
         .hasValues = true,
-        .values = {kValues30_wrapMode, 4},
+        .values = {kValues34_wrapMode, 4},
         .extension = kKhrSamplerImage1d},
     {.name = "inTransform",
         .types = {kTypeList8, 1},
         .description =
             "transform applied to the input attribute before sampling",
-        .defaultValue = kDefault30_inTransform,
+        .defaultValue = kDefault34_inTransform,
         .extension = kKhrSamplerImage1d},
     {.name = "inOffset",
         .types = {kTypeList18, 1},
         .description = "offset added to inTransform result",
-        .defaultValue = kDefault30_inOffset,
+        .defaultValue = kDefault34_inOffset,
         .extension = kKhrSamplerImage1d},
     {.name = "outTransform",
         .types = {kTypeList8, 1},
         .description = "transform applied to the sampled values",
-        .defaultValue = kDefault30_outTransform,
+        .defaultValue = kDefault34_outTransform,
         .extension = kKhrSamplerImage1d},
     {.name = "outOffset",
         .types = {kTypeList18, 1},
         .description = "offset added to output outTransform result",
-        .defaultValue = kDefault30_outOffset,
+        .defaultValue = kDefault34_outOffset,
         .extension = kKhrSamplerImage1d},
     {.name = "borderColor",
         .types = {kTypeList18, 1},
         .tags = kTags_color,
         .description =
             "color of the border when clampToBorder wrap mode is used",
-        .defaultValue = kDefault30_borderColor,
+        .defaultValue = kDefault34_borderColor,
         .extension = kKhrSamplerImagexdClampToBorder}};
-constexpr int kContributors30[] = {kKhrSamplerImagexdClampToBorder};
+constexpr int kContributors34[] = {kKhrSamplerImagexdClampToBorder};
 
 // ANARI_SAMPLER "image2D": ANARI_KHR_SAMPLER_IMAGE2D
 // clang-format off
 // inTransform default: ANARI_FLOAT32_MAT4
-constexpr float kDefault31_inTransform[] = {
+constexpr float kDefault35_inTransform[] = {
     1.f, 0.f, 0.f, 0.f,
     0.f, 1.f, 0.f, 0.f,
     0.f, 0.f, 1.f, 0.f,
     0.f, 0.f, 0.f, 1.f};
 // inOffset default: ANARI_FLOAT32_VEC4
-constexpr float kDefault31_inOffset[] = {0.f, 0.f, 0.f, 0.f};
+constexpr float kDefault35_inOffset[] = {0.f, 0.f, 0.f, 0.f};
 // outTransform default: ANARI_FLOAT32_MAT4
-constexpr float kDefault31_outTransform[] = {
+constexpr float kDefault35_outTransform[] = {
     1.f, 0.f, 0.f, 0.f,
     0.f, 1.f, 0.f, 0.f,
     0.f, 0.f, 1.f, 0.f,
     0.f, 0.f, 0.f, 1.f};
 // outOffset default: ANARI_FLOAT32_VEC4
-constexpr float kDefault31_outOffset[] = {0.f, 0.f, 0.f, 0.f};
+constexpr float kDefault35_outOffset[] = {0.f, 0.f, 0.f, 0.f};
 // borderColor default: ANARI_FLOAT32_VEC4
-constexpr float kDefault31_borderColor[] = {0.f, 0.f, 0.f, 0.f};
+constexpr float kDefault35_borderColor[] = {0.f, 0.f, 0.f, 0.f};
 // clang-format on
-constexpr ValueEntry kValues31_filter[] = {
+constexpr ValueEntry kValues35_filter[] = {
     {"nearest", ANARI_UNKNOWN, kKhrSamplerImage2d},
     {"linear", ANARI_UNKNOWN, kKhrSamplerImage2d}};
-constexpr ValueEntry kValues31_wrapMode1[] = {
+constexpr ValueEntry kValues35_wrapMode1[] = {
     {"clampToEdge", ANARI_UNKNOWN, kKhrSamplerImage2d},
     {"repeat", ANARI_UNKNOWN, kKhrSamplerImage2d},
     {"mirrorRepeat", ANARI_UNKNOWN, kKhrSamplerImage2d},
     {"clampToBorder", ANARI_UNKNOWN, kKhrSamplerImagexdClampToBorder}};
-constexpr ValueEntry kValues31_wrapMode2[] = {
+constexpr ValueEntry kValues35_wrapMode2[] = {
     {"clampToEdge", ANARI_UNKNOWN, kKhrSamplerImage2d},
     {"repeat", ANARI_UNKNOWN, kKhrSamplerImage2d},
     {"mirrorRepeat", ANARI_UNKNOWN, kKhrSamplerImage2d},
     {"clampToBorder", ANARI_UNKNOWN, kKhrSamplerImagexdClampToBorder}};
-constexpr ParameterEntry kParameters31[] = {
+constexpr ParameterEntry kParameters35[] = {
     {.name = "name",
         .types = {kTypeList0, 1},
         .description = "optional object name",
         .extension = kKhrSamplerImage2d},
     {.name = "image",
         .types = {kTypeList35, 1},
-        .elementTypes = {kTypeList44, 22},
+        .elementTypes = {kTypeList45, 22},
         .tags = kTags_required,
         .description = "array backing the sampler",
         .required = true,
@@ -2975,98 +3253,98 @@ constexpr ParameterEntry kParameters31[] = {
         .description = "filter mode",
         .defaultValue = "linear",
         .hasValues = true,
-        .values = {kValues31_filter, 2},
+        .values = {kValues35_filter, 2},
         .extension = kKhrSamplerImage2d},
     {.name = "wrapMode1",
         .types = {kTypeList0, 1},
         .description = "wrap mode for the 1st dimension",
         .defaultValue = "clampToEdge",
         .hasValues = true,
-        .values = {kValues31_wrapMode1, 4},
+        .values = {kValues35_wrapMode1, 4},
         .extension = kKhrSamplerImage2d},
     {.name = "wrapMode2",
         .types = {kTypeList0, 1},
         .description = "wrap mode for the 2nd dimension",
         .defaultValue = "clampToEdge",
         .hasValues = true,
-        .values = {kValues31_wrapMode2, 4},
+        .values = {kValues35_wrapMode2, 4},
         .extension = kKhrSamplerImage2d},
     {.name = "inTransform",
         .types = {kTypeList8, 1},
         .description =
             "transform applied to the input attribute before sampling",
-        .defaultValue = kDefault31_inTransform,
+        .defaultValue = kDefault35_inTransform,
         .extension = kKhrSamplerImage2d},
     {.name = "inOffset",
         .types = {kTypeList18, 1},
         .description = "offset added to inTransform result",
-        .defaultValue = kDefault31_inOffset,
+        .defaultValue = kDefault35_inOffset,
         .extension = kKhrSamplerImage2d},
     {.name = "outTransform",
         .types = {kTypeList8, 1},
         .description = "transform applied to the sampled values",
-        .defaultValue = kDefault31_outTransform,
+        .defaultValue = kDefault35_outTransform,
         .extension = kKhrSamplerImage2d},
     {.name = "outOffset",
         .types = {kTypeList18, 1},
         .description = "offset added to output outTransform result",
-        .defaultValue = kDefault31_outOffset,
+        .defaultValue = kDefault35_outOffset,
         .extension = kKhrSamplerImage2d},
     {.name = "borderColor",
         .types = {kTypeList18, 1},
         .tags = kTags_color,
         .description =
             "color of the border when clampToBorder wrap mode is used",
-        .defaultValue = kDefault31_borderColor,
+        .defaultValue = kDefault35_borderColor,
         .extension = kKhrSamplerImagexdClampToBorder}};
-constexpr int kContributors31[] = {kKhrSamplerImagexdClampToBorder};
+constexpr int kContributors35[] = {kKhrSamplerImagexdClampToBorder};
 
 // ANARI_SAMPLER "image3D": ANARI_KHR_SAMPLER_IMAGE3D
 // clang-format off
 // inTransform default: ANARI_FLOAT32_MAT4
-constexpr float kDefault32_inTransform[] = {
+constexpr float kDefault36_inTransform[] = {
     1.f, 0.f, 0.f, 0.f,
     0.f, 1.f, 0.f, 0.f,
     0.f, 0.f, 1.f, 0.f,
     0.f, 0.f, 0.f, 1.f};
 // inOffset default: ANARI_FLOAT32_VEC4
-constexpr float kDefault32_inOffset[] = {0.f, 0.f, 0.f, 0.f};
+constexpr float kDefault36_inOffset[] = {0.f, 0.f, 0.f, 0.f};
 // outTransform default: ANARI_FLOAT32_MAT4
-constexpr float kDefault32_outTransform[] = {
+constexpr float kDefault36_outTransform[] = {
     1.f, 0.f, 0.f, 0.f,
     0.f, 1.f, 0.f, 0.f,
     0.f, 0.f, 1.f, 0.f,
     0.f, 0.f, 0.f, 1.f};
 // outOffset default: ANARI_FLOAT32_VEC4
-constexpr float kDefault32_outOffset[] = {0.f, 0.f, 0.f, 0.f};
+constexpr float kDefault36_outOffset[] = {0.f, 0.f, 0.f, 0.f};
 // borderColor default: ANARI_FLOAT32_VEC4
-constexpr float kDefault32_borderColor[] = {0.f, 0.f, 0.f, 0.f};
+constexpr float kDefault36_borderColor[] = {0.f, 0.f, 0.f, 0.f};
 // clang-format on
-constexpr ValueEntry kValues32_filter[] = {
+constexpr ValueEntry kValues36_filter[] = {
     {"nearest", ANARI_UNKNOWN, kKhrSamplerImage3d},
     {"linear", ANARI_UNKNOWN, kKhrSamplerImage3d}};
-constexpr ValueEntry kValues32_wrapMode1[] = {
+constexpr ValueEntry kValues36_wrapMode1[] = {
     {"clampToEdge", ANARI_UNKNOWN, kKhrSamplerImage3d},
     {"repeat", ANARI_UNKNOWN, kKhrSamplerImage3d},
     {"mirrorRepeat", ANARI_UNKNOWN, kKhrSamplerImage3d},
     {"clampToBorder", ANARI_UNKNOWN, kKhrSamplerImagexdClampToBorder}};
-constexpr ValueEntry kValues32_wrapMode2[] = {
+constexpr ValueEntry kValues36_wrapMode2[] = {
     {"clampToEdge", ANARI_UNKNOWN, kKhrSamplerImage3d},
     {"repeat", ANARI_UNKNOWN, kKhrSamplerImage3d},
     {"mirrorRepeat", ANARI_UNKNOWN, kKhrSamplerImage3d},
     {"clampToBorder", ANARI_UNKNOWN, kKhrSamplerImagexdClampToBorder}};
-constexpr ValueEntry kValues32_wrapMode3[] = {
+constexpr ValueEntry kValues36_wrapMode3[] = {
     {"clampToEdge", ANARI_UNKNOWN, kKhrSamplerImage3d},
     {"repeat", ANARI_UNKNOWN, kKhrSamplerImage3d},
     {"mirrorRepeat", ANARI_UNKNOWN, kKhrSamplerImage3d},
     {"clampToBorder", ANARI_UNKNOWN, kKhrSamplerImagexdClampToBorder}};
-constexpr ParameterEntry kParameters32[] = {
+constexpr ParameterEntry kParameters36[] = {
     {.name = "name",
         .types = {kTypeList0, 1},
         .description = "optional object name",
         .extension = kKhrSamplerImage3d},
     {.name = "image",
-        .types = {kTypeList45, 1},
+        .types = {kTypeList46, 1},
         .elementTypes = {kTypeList19, 20},
         .tags = kTags_required,
         .description = "array backing the sampler",
@@ -3083,65 +3361,65 @@ constexpr ParameterEntry kParameters32[] = {
         .description = "filter mode",
         .defaultValue = "linear",
         .hasValues = true,
-        .values = {kValues32_filter, 2},
+        .values = {kValues36_filter, 2},
         .extension = kKhrSamplerImage3d},
     {.name = "wrapMode1",
         .types = {kTypeList0, 1},
         .description = "wrap mode for the 1st dimension",
         .defaultValue = "clampToEdge",
         .hasValues = true,
-        .values = {kValues32_wrapMode1, 4},
+        .values = {kValues36_wrapMode1, 4},
         .extension = kKhrSamplerImage3d},
     {.name = "wrapMode2",
         .types = {kTypeList0, 1},
         .description = "wrap mode for the 2nd dimension",
         .defaultValue = "clampToEdge",
         .hasValues = true,
-        .values = {kValues32_wrapMode2, 4},
+        .values = {kValues36_wrapMode2, 4},
         .extension = kKhrSamplerImage3d},
     {.name = "wrapMode3",
         .types = {kTypeList0, 1},
         .description = "wrap mode for the 3rd dimension",
         .defaultValue = "clampToEdge",
         .hasValues = true,
-        .values = {kValues32_wrapMode3, 4},
+        .values = {kValues36_wrapMode3, 4},
         .extension = kKhrSamplerImage3d},
     {.name = "inTransform",
         .types = {kTypeList8, 1},
         .description =
             "transform applied to the input attribute before sampling",
-        .defaultValue = kDefault32_inTransform,
+        .defaultValue = kDefault36_inTransform,
         .extension = kKhrSamplerImage3d},
     {.name = "inOffset",
         .types = {kTypeList18, 1},
         .description = "offset added to inTransform result",
-        .defaultValue = kDefault32_inOffset,
+        .defaultValue = kDefault36_inOffset,
         .extension = kKhrSamplerImage3d},
     {.name = "outTransform",
         .types = {kTypeList8, 1},
         .description = "transform applied to the sampled values",
-        .defaultValue = kDefault32_outTransform,
+        .defaultValue = kDefault36_outTransform,
         .extension = kKhrSamplerImage3d},
     {.name = "outOffset",
         .types = {kTypeList18, 1},
         .description = "offset added to output outTransform result",
-        .defaultValue = kDefault32_outOffset,
+        .defaultValue = kDefault36_outOffset,
         .extension = kKhrSamplerImage3d},
     {.name = "borderColor",
         .types = {kTypeList18, 1},
         .tags = kTags_color,
         .description =
             "color of the border when clampToBorder wrap mode is used",
-        .defaultValue = kDefault32_borderColor,
+        .defaultValue = kDefault36_borderColor,
         .extension = kKhrSamplerImagexdClampToBorder}};
-constexpr int kContributors32[] = {kKhrSamplerImagexdClampToBorder};
+constexpr int kContributors36[] = {kKhrSamplerImagexdClampToBorder};
 
 // ANARI_SAMPLER "primitive": ANARI_KHR_SAMPLER_PRIMITIVE
 // clang-format off
 // inOffset default: ANARI_UINT64
-constexpr uint64_t kDefault33_inOffset[] = {0ull};
+constexpr uint64_t kDefault37_inOffset[] = {0ull};
 // clang-format on
-constexpr ParameterEntry kParameters33[] = {
+constexpr ParameterEntry kParameters37[] = {
     {.name = "name",
         .types = {kTypeList0, 1},
         .description = "optional object name",
@@ -3154,23 +3432,23 @@ constexpr ParameterEntry kParameters33[] = {
         .required = true,
         .extension = kKhrSamplerPrimitive},
     {.name = "inOffset",
-        .types = {kTypeList46, 1},
+        .types = {kTypeList47, 1},
         .description = "offset added to primitiveId",
-        .defaultValue = kDefault33_inOffset,
+        .defaultValue = kDefault37_inOffset,
         .extension = kKhrSamplerPrimitive}};
 
 // ANARI_SAMPLER "transform": ANARI_KHR_SAMPLER_TRANSFORM
 // clang-format off
 // outTransform default: ANARI_FLOAT32_MAT4
-constexpr float kDefault34_outTransform[] = {
+constexpr float kDefault38_outTransform[] = {
     1.f, 0.f, 0.f, 0.f,
     0.f, 1.f, 0.f, 0.f,
     0.f, 0.f, 1.f, 0.f,
     0.f, 0.f, 0.f, 1.f};
 // outOffset default: ANARI_FLOAT32_VEC4
-constexpr float kDefault34_outOffset[] = {0.f, 0.f, 0.f, 0.f};
+constexpr float kDefault38_outOffset[] = {0.f, 0.f, 0.f, 0.f};
 // clang-format on
-constexpr ParameterEntry kParameters34[] = {
+constexpr ParameterEntry kParameters38[] = {
     {.name = "name",
         .types = {kTypeList0, 1},
         .description = "optional object name",
@@ -3184,20 +3462,20 @@ constexpr ParameterEntry kParameters34[] = {
     {.name = "outTransform",
         .types = {kTypeList8, 1},
         .description = "transform applied to the input attribute",
-        .defaultValue = kDefault34_outTransform,
+        .defaultValue = kDefault38_outTransform,
         .extension = kKhrSamplerTransform},
     {.name = "outOffset",
         .types = {kTypeList18, 1},
         .description = "offset added to output outTransform result",
-        .defaultValue = kDefault34_outOffset,
+        .defaultValue = kDefault38_outOffset,
         .extension = kKhrSamplerTransform}};
 
 // ANARI_SPATIAL_FIELD "nanovdb": ANARI_KHR_SPATIAL_FIELD_NANOVDB
-constexpr ValueEntry kValues35_filter[] = {
+constexpr ValueEntry kValues39_filter[] = {
     {"nearest", ANARI_UNKNOWN, kKhrSpatialFieldNanovdb},
     {"linear", ANARI_UNKNOWN, kKhrSpatialFieldNanovdb},
     {"cubic", ANARI_UNKNOWN, kKhrSpatialFieldNanovdb}};
-constexpr ParameterEntry kParameters35[] = {
+constexpr ParameterEntry kParameters39[] = {
     {.name = "name",
         .types = {kTypeList0, 1},
         .description = "optional object name",
@@ -3214,29 +3492,29 @@ constexpr ParameterEntry kParameters35[] = {
         .description = "filter mode used to interpolate the grid",
         .defaultValue = "linear",
         .hasValues = true,
-        .values = {kValues35_filter, 3},
+        .values = {kValues39_filter, 3},
         .extension = kKhrSpatialFieldNanovdb}};
 
 // ANARI_SPATIAL_FIELD "structuredRegular":
 // ANARI_KHR_SPATIAL_FIELD_STRUCTURED_REGULAR
 // clang-format off
 // origin default: ANARI_FLOAT32_VEC3
-constexpr float kDefault36_origin[] = {0.f, 0.f, 0.f};
+constexpr float kDefault40_origin[] = {0.f, 0.f, 0.f};
 // spacing default: ANARI_FLOAT32_VEC3
-constexpr float kDefault36_spacing[] = {1.f, 1.f, 1.f};
+constexpr float kDefault40_spacing[] = {1.f, 1.f, 1.f};
 // clang-format on
-constexpr ValueEntry kValues36_filter[] = {
+constexpr ValueEntry kValues40_filter[] = {
     {"nearest", ANARI_UNKNOWN, kKhrSpatialFieldStructuredRegular},
     {"linear", ANARI_UNKNOWN, kKhrSpatialFieldStructuredRegular},
     {"cubic", ANARI_UNKNOWN, kKhrSpatialFieldStructuredRegularFilterCubic}};
-constexpr ParameterEntry kParameters36[] = {
+constexpr ParameterEntry kParameters40[] = {
     {.name = "name",
         .types = {kTypeList0, 1},
         .description = "optional object name",
         .extension = kKhrSpatialFieldStructuredRegular},
     {.name = "data",
-        .types = {kTypeList45, 1},
-        .elementTypes = {kTypeList47, 5},
+        .types = {kTypeList46, 1},
+        .elementTypes = {kTypeList48, 5},
         .tags = kTags_required,
         .description = "array of vertex centered scalar values",
         .required = true,
@@ -3244,25 +3522,25 @@ constexpr ParameterEntry kParameters36[] = {
     {.name = "origin",
         .types = {kTypeList4, 1},
         .description = "origin of the grid in object-space",
-        .defaultValue = kDefault36_origin,
+        .defaultValue = kDefault40_origin,
         .extension = kKhrSpatialFieldStructuredRegular},
     {.name = "spacing",
         .types = {kTypeList4, 1},
         .description = "size of the grid cells in object-space",
-        .defaultValue = kDefault36_spacing,
+        .defaultValue = kDefault40_spacing,
         .extension = kKhrSpatialFieldStructuredRegular},
     {.name = "filter",
         .types = {kTypeList0, 1},
         .description = "filter mode used to interpolate the grid",
         .defaultValue = "linear",
         .hasValues = true,
-        .values = {kValues36_filter, 3},
+        .values = {kValues40_filter, 3},
         .extension = kKhrSpatialFieldStructuredRegular}};
-constexpr int kContributors36[] = {
+constexpr int kContributors40[] = {
     kKhrSpatialFieldStructuredRegularFilterCubic};
 
 // ANARI_SPATIAL_FIELD "unstructured": ANARI_KHR_SPATIAL_FIELD_UNSTRUCTURED
-constexpr ParameterEntry kParameters37[] = {
+constexpr ParameterEntry kParameters41[] = {
     {.name = "name",
         .types = {kTypeList0, 1},
         .description = "optional object name",
@@ -3276,7 +3554,7 @@ constexpr ParameterEntry kParameters37[] = {
         .extension = kKhrSpatialFieldUnstructured},
     {.name = "vertex.data",
         .types = {kTypeList7, 1},
-        .elementTypes = {kTypeList47, 5},
+        .elementTypes = {kTypeList48, 5},
         .description = "vertex-centered scalar values",
         .extension = kKhrSpatialFieldUnstructured},
     {.name = "index",
@@ -3286,7 +3564,7 @@ constexpr ParameterEntry kParameters37[] = {
         .extension = kKhrSpatialFieldUnstructured},
     {.name = "cell.data",
         .types = {kTypeList7, 1},
-        .elementTypes = {kTypeList47, 5},
+        .elementTypes = {kTypeList48, 5},
         .description = "cell-centered scalar values",
         .extension = kKhrSpatialFieldUnstructured},
     {.name = "cell.type",
@@ -3305,19 +3583,19 @@ constexpr ParameterEntry kParameters37[] = {
 // ANARI_VOLUME "transferFunction1D": ANARI_KHR_VOLUME_TRANSFER_FUNCTION1D
 // clang-format off
 // visible default: ANARI_BOOL
-alignas(4) constexpr int8_t kDefault38_visible[] = {1, 0, 0, 0};
+alignas(4) constexpr int8_t kDefault42_visible[] = {1, 0, 0, 0};
 // valueRange default: ANARI_FLOAT32_BOX1
-constexpr float kDefault38_valueRange[] = {0.f, 1.f};
+constexpr float kDefault42_valueRange[] = {0.f, 1.f};
 // color default: ANARI_FLOAT32_VEC4
-constexpr float kDefault38_color[] = {1.f, 1.f, 1.f, 1.f};
+constexpr float kDefault42_color[] = {1.f, 1.f, 1.f, 1.f};
 // opacity default: ANARI_FLOAT32
-constexpr float kDefault38_opacity[] = {1.f};
+constexpr float kDefault42_opacity[] = {1.f};
 // unitDistance default: ANARI_FLOAT32
-constexpr float kDefault38_unitDistance[] = {1.f};
+constexpr float kDefault42_unitDistance[] = {1.f};
 // id default: ANARI_UINT32
-constexpr uint32_t kDefault38_id[] = {4294967295u};
+constexpr uint32_t kDefault42_id[] = {4294967295u};
 // clang-format on
-constexpr ParameterEntry kParameters38[] = {
+constexpr ParameterEntry kParameters42[] = {
     {.name = "name",
         .types = {kTypeList0, 1},
         .description = "optional object name",
@@ -3325,7 +3603,7 @@ constexpr ParameterEntry kParameters38[] = {
     {.name = "visible",
         .types = {kTypeList16, 1},
         .description = "whether the volume is visible",
-        .defaultValue = kDefault38_visible,
+        .defaultValue = kDefault42_visible,
         .extension = kKhrVolumeTransferFunction1d},
     {.name = "value",
         .types = {kTypeList25, 1},
@@ -3334,43 +3612,43 @@ constexpr ParameterEntry kParameters38[] = {
         .required = true,
         .extension = kKhrVolumeTransferFunction1d},
     {.name = "valueRange",
-        .types = {kTypeList48, 2},
+        .types = {kTypeList49, 2},
         .description = "sampled values of field are clamped to this range",
-        .defaultValue = kDefault38_valueRange,
+        .defaultValue = kDefault42_valueRange,
         .extension = kKhrVolumeTransferFunction1d},
     {.name = "color",
-        .types = {kTypeList49, 3},
+        .types = {kTypeList50, 3},
         .elementTypes = {kTypeList19, 20},
         .description = "sampled color",
-        .defaultValue = kDefault38_color,
+        .defaultValue = kDefault42_color,
         .extension = kKhrVolumeTransferFunction1d},
     {.name = "opacity",
         .types = {kTypeList24, 2},
         .elementTypes = {kTypeList6, 1},
         .description = "sampled opacity",
-        .defaultValue = kDefault38_opacity,
+        .defaultValue = kDefault42_opacity,
         .extension = kKhrVolumeTransferFunction1d},
     {.name = "unitDistance",
         .types = {kTypeList6, 1},
         .description = "makes volumes uniformly thinner or thicker",
-        .defaultValue = kDefault38_unitDistance,
+        .defaultValue = kDefault42_unitDistance,
         .extension = kKhrVolumeTransferFunction1d},
     {.name = "id",
         .types = {kTypeList34, 1},
         .description = "user id for objectId channel",
-        .defaultValue = kDefault38_id,
+        .defaultValue = kDefault42_id,
         .extension = kKhrFrameChannelObjectId}};
-constexpr int kContributors38[] = {kKhrFrameChannelObjectId};
+constexpr int kContributors42[] = {kKhrFrameChannelObjectId};
 
 // ANARI_WORLD: core
-constexpr ParameterEntry kParameters39[] = {
+constexpr ParameterEntry kParameters43[] = {
     {.name = "name",
         .types = {kTypeList0, 1},
         .description = "optional object name",
         .extension = kCore},
     {.name = "instance",
         .types = {kTypeList7, 1},
-        .elementTypes = {kTypeList50, 1},
+        .elementTypes = {kTypeList51, 1},
         .description = "array of instance objects in the world",
         .extension = kCore},
     {.name = "surface",
@@ -3388,7 +3666,7 @@ constexpr ParameterEntry kParameters39[] = {
         .elementTypes = {kTypeList32, 1},
         .description = "array of non-instanced light objects in the world",
         .extension = kCore}};
-constexpr PropertyEntry kProperties39[] = {
+constexpr PropertyEntry kProperties43[] = {
     {"bounds", ANARI_FLOAT32_BOX3, false, kCore}};
 
 } // namespace
@@ -3455,8 +3733,9 @@ const char *const kExtensions[] = {"ANARI_EXT_SAMPLER_COMPRESSED_FORMAT_ASTC",
     "ANARI_KHR_SPATIAL_FIELD_STRUCTURED_REGULAR",
     "ANARI_KHR_SPATIAL_FIELD_STRUCTURED_REGULAR_FILTER_CUBIC",
     "ANARI_KHR_SPATIAL_FIELD_UNSTRUCTURED",
-    "ANARI_KHR_VOLUME_TRANSFER_FUNCTION1D"};
-const size_t kExtensionCount = 63;
+    "ANARI_KHR_VOLUME_TRANSFER_FUNCTION1D",
+    "ANARI_PRISM_RENDERERS"};
+const size_t kExtensionCount = 64;
 
 const char *const kAttributes[] = {"color",
     "worldPosition",
@@ -3659,84 +3938,117 @@ const ObjectEntry kObjects[] = {
         .extension = kCore,
         .contributors = {kContributors27, 4},
         .parameters = {kParameters27, 6}},
+    // ANARI_RENDERER "ao"
+    {.type = ANARI_RENDERER,
+        .subtype = "ao",
+        .description = "ambient occlusion: the base color times the unoccluded "
+                       "fraction of the hemisphere",
+        .extension = kPrismRenderers,
+        .contributors = {kContributors28, 4},
+        .parameters = {kParameters28, 8}},
+    // ANARI_RENDERER "debug"
+    {.type = ANARI_RENDERER,
+        .subtype = "debug",
+        .description = "false-color views of geometry, ids and attributes",
+        .extension = kPrismRenderers,
+        .contributors = {kContributors29, 4},
+        .parameters = {kParameters29, 7}},
+    // ANARI_RENDERER "pathtracer"
+    {.type = ANARI_RENDERER,
+        .subtype = "pathtracer",
+        .description = "unidirectional path tracer: next-event estimation with "
+                       "multiple importance sampling, Russian roulette; one "
+                       "path per pixel per frame",
+        .extension = kPrismRenderers,
+        .contributors = {kContributors30, 4},
+        .parameters = {kParameters30, 7},
+        .properties = {kProperties30, 1}},
+    // ANARI_RENDERER "raycast"
+    {.type = ANARI_RENDERER,
+        .subtype = "raycast",
+        .description = "one primary ray per pixel, eye-light shading of the "
+                       "base color: the fast preview",
+        .extension = kPrismRenderers,
+        .contributors = {kContributors31, 4},
+        .parameters = {kParameters31, 7}},
     // ANARI_SURFACE
     {.type = ANARI_SURFACE,
         .description = "surface object",
         .extension = kCore,
-        .contributors = {kContributors28, 1},
-        .parameters = {kParameters28, 5}},
+        .contributors = {kContributors32, 1},
+        .parameters = {kParameters32, 5}},
     // ANARI_SAMPLER "compressedImage2D"
     {.type = ANARI_SAMPLER,
         .subtype = "compressedImage2D",
         .description = "compressed image2D object",
         .extension = kExtSamplerCompressedImage2d,
-        .contributors = {kContributors29, 7},
-        .parameters = {kParameters29, 12}},
+        .contributors = {kContributors33, 7},
+        .parameters = {kParameters33, 12}},
     // ANARI_SAMPLER "image1D"
     {.type = ANARI_SAMPLER,
         .subtype = "image1D",
         .description = "image1D object",
         .extension = kKhrSamplerImage1d,
-        .contributors = {kContributors30, 1},
-        .parameters = {kParameters30, 10}},
+        .contributors = {kContributors34, 1},
+        .parameters = {kParameters34, 10}},
     // ANARI_SAMPLER "image2D"
     {.type = ANARI_SAMPLER,
         .subtype = "image2D",
         .description = "image2D object",
         .extension = kKhrSamplerImage2d,
-        .contributors = {kContributors31, 1},
-        .parameters = {kParameters31, 11}},
+        .contributors = {kContributors35, 1},
+        .parameters = {kParameters35, 11}},
     // ANARI_SAMPLER "image3D"
     {.type = ANARI_SAMPLER,
         .subtype = "image3D",
         .description = "image3D object",
         .extension = kKhrSamplerImage3d,
-        .contributors = {kContributors32, 1},
-        .parameters = {kParameters32, 12}},
+        .contributors = {kContributors36, 1},
+        .parameters = {kParameters36, 12}},
     // ANARI_SAMPLER "primitive"
     {.type = ANARI_SAMPLER,
         .subtype = "primitive",
         .description = "primitive sampler object",
         .extension = kKhrSamplerPrimitive,
-        .parameters = {kParameters33, 3}},
+        .parameters = {kParameters37, 3}},
     // ANARI_SAMPLER "transform"
     {.type = ANARI_SAMPLER,
         .subtype = "transform",
         .description = "transform sampler object",
         .extension = kKhrSamplerTransform,
-        .parameters = {kParameters34, 4}},
+        .parameters = {kParameters38, 4}},
     // ANARI_SPATIAL_FIELD "nanovdb"
     {.type = ANARI_SPATIAL_FIELD,
         .subtype = "nanovdb",
         .description = "nanovdb spatial field object",
         .extension = kKhrSpatialFieldNanovdb,
-        .parameters = {kParameters35, 3}},
+        .parameters = {kParameters39, 3}},
     // ANARI_SPATIAL_FIELD "structuredRegular"
     {.type = ANARI_SPATIAL_FIELD,
         .subtype = "structuredRegular",
         .description = "structured regular spatial field object",
         .extension = kKhrSpatialFieldStructuredRegular,
-        .contributors = {kContributors36, 1},
-        .parameters = {kParameters36, 5}},
+        .contributors = {kContributors40, 1},
+        .parameters = {kParameters40, 5}},
     // ANARI_SPATIAL_FIELD "unstructured"
     {.type = ANARI_SPATIAL_FIELD,
         .subtype = "unstructured",
         .description = "unstructured spatial field object",
         .extension = kKhrSpatialFieldUnstructured,
-        .parameters = {kParameters37, 7}},
+        .parameters = {kParameters41, 7}},
     // ANARI_VOLUME "transferFunction1D"
     {.type = ANARI_VOLUME,
         .subtype = "transferFunction1D",
         .description = "transferFunction1D volume object",
         .extension = kKhrVolumeTransferFunction1d,
-        .contributors = {kContributors38, 1},
-        .parameters = {kParameters38, 8}},
+        .contributors = {kContributors42, 1},
+        .parameters = {kParameters42, 8}},
     // ANARI_WORLD
     {.type = ANARI_WORLD,
         .description = "world object",
         .extension = kCore,
-        .parameters = {kParameters39, 5},
-        .properties = {kProperties39, 1}}};
-const size_t kObjectCount = 40;
+        .parameters = {kParameters43, 5},
+        .properties = {kProperties43, 1}}};
+const size_t kObjectCount = 44;
 
 } // namespace prism::introspection::tables

@@ -101,7 +101,7 @@ class PlacedDisk : public PlacedLight
 
 } // namespace
 
-Directional::Directional(Device &device) : Light(device, "directional") {}
+Directional::Directional(DeviceState &device) : Light(device, "directional") {}
 
 void Directional::commitParameters()
 {

@@ -12,7 +12,7 @@ namespace prism::light {
 class Directional : public Light
 {
  public:
-  explicit Directional(Device &device);
+  explicit Directional(DeviceState &device);
 
   void finalize() override;
   std::unique_ptr<PlacedLight> place(

@@ -101,7 +101,7 @@ class PlacedHdri : public PlacedLight
 
 } // namespace
 
-Hdri::Hdri(Device &device) : Light(device, "hdri") {}
+Hdri::Hdri(DeviceState &device) : Light(device, "hdri") {}
 
 void Hdri::commitParameters()
 {

@@ -25,7 +25,7 @@ struct HdriImage
 class Hdri : public Light
 {
  public:
-  explicit Hdri(Device &device);
+  explicit Hdri(DeviceState &device);
 
   void finalize() override;
   std::unique_ptr<PlacedLight> place(

@@ -20,7 +20,7 @@ bool isFinite(float3 v)
 
 } // namespace
 
-Light::Light(Device &device, const std::string &subtype)
+Light::Light(DeviceState &device, const std::string &subtype)
     : Object(device, ANARI_LIGHT, subtype)
 {}
 

@@ -20,7 +20,7 @@ class Array;
 class Light : public Object
 {
  public:
-  Light(Device &device, const std::string &subtype);
+  Light(DeviceState &device, const std::string &subtype);
 
   bool isValid() const override
   {
@@ -89,6 +89,6 @@ class Light : public Object
 };
 
 // The light of `subtype`, or NULL if the device does not implement it.
-Light *createLight(Device &device, const std::string &subtype);
+Light *createLight(DeviceState &device, const std::string &subtype);
 
 } // namespace prism

@@ -8,7 +8,7 @@
 
 namespace prism {
 
-Light *createLight(Device &device, const std::string &subtype)
+Light *createLight(DeviceState &device, const std::string &subtype)
 {
   if (subtype == "directional")
     return new light::Directional(device);

@@ -142,7 +142,7 @@ class PlacedSphere : public PlacedLight
 
 } // namespace
 
-Point::Point(Device &device) : Light(device, "point") {}
+Point::Point(DeviceState &device) : Light(device, "point") {}
 
 void Point::commitParameters()
 {

@@ -10,7 +10,7 @@ namespace prism::light {
 class Point : public Light
 {
  public:
-  explicit Point(Device &device);
+  explicit Point(DeviceState &device);
 
   void finalize() override;
   std::unique_ptr<PlacedLight> place(

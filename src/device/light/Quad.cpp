@@ -218,7 +218,7 @@ class PlacedQuad : public PlacedLight
 
 } // namespace
 
-Quad::Quad(Device &device) : Light(device, "quad") {}
+Quad::Quad(DeviceState &device) : Light(device, "quad") {}
 
 void Quad::commitParameters()
 {

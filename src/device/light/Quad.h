@@ -15,7 +15,7 @@ class Quad : public Light
  public:
   enum class Side { kFront, kBack, kBoth };
 
-  explicit Quad(Device &device);
+  explicit Quad(DeviceState &device);
 
   void finalize() override;
   std::unique_ptr<PlacedLight> place(

@@ -168,7 +168,7 @@ class PlacedRingDisk : public PlacedLight
 
 } // namespace
 
-Ring::Ring(Device &device) : Light(device, "ring") {}
+Ring::Ring(DeviceState &device) : Light(device, "ring") {}
 
 void Ring::commitParameters()
 {

@@ -15,7 +15,7 @@ namespace prism::light {
 class Ring : public Light
 {
  public:
-  explicit Ring(Device &device);
+  explicit Ring(DeviceState &device);
 
   void finalize() override;
   std::unique_ptr<PlacedLight> place(

@@ -63,7 +63,7 @@ class PlacedSpot : public PlacedLight
 
 } // namespace
 
-Spot::Spot(Device &device) : Light(device, "spot") {}
+Spot::Spot(DeviceState &device) : Light(device, "spot") {}
 
 void Spot::commitParameters()
 {

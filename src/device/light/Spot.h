@@ -13,7 +13,7 @@ namespace prism::light {
 class Spot : public Light
 {
  public:
-  explicit Spot(Device &device);
+  explicit Spot(DeviceState &device);
 
   void finalize() override;
   std::unique_ptr<PlacedLight> place(

@@ -5,12 +5,12 @@
 
 #include "../geometry/Attributes.h"
 #include "../object/Object.h"
+#include "MaterialShading.h"
 
 namespace prism {
 
 template <typename T>
 class MaterialInput;
-class PhysicallyBased;
 
 enum class AlphaMode : uint8_t {
   Opaque,
@@ -21,19 +21,23 @@ enum class AlphaMode : uint8_t {
 class Material : public Object
 {
  public:
-  Material(Device &device, const std::string &subtype)
+  Material(DeviceState &device, const std::string &subtype)
       : Object(device, ANARI_MATERIAL, subtype)
   {}
 
-  // This material as physicallyBased, or NULL (a virtual call: cheaper
-  // per hit than dynamic_cast across the device library's type info).
-  virtual const PhysicallyBased *asPhysicallyBased() const
-  {
-    return nullptr;
-  }
-  // Linear base color (rgb) and opacity (a) at a hit, before alphaMode.
+  // Linear base color (rgb) and opacity (a) at a hit, before alphaMode
+  // (what the preview renderers need).
   virtual float4 baseColorAndOpacity(
       const AttributeValues &attributes) const = 0;
+  // Everything physically based shading needs at a hit.
+  virtual MaterialShading shade(const AttributeValues &attributes) const = 0;
+  // The radiance the material emits everywhere, when it is constant and
+  // positive (such surfaces are sampled as lights); false otherwise.
+  virtual bool constantEmission(float3 &radiance) const
+  {
+    (void)radiance;
+    return false;
+  }
 
   // How much of the surface a ray sees: 1 for opaque, 0 or 1 for mask
   // (opacity >= alphaCutoff), the opacity for blend.
@@ -97,6 +101,6 @@ class Material : public Object
 };
 
 // The material of `subtype`, or NULL if the device does not implement it.
-Material *createMaterial(Device &device, const std::string &subtype);
+Material *createMaterial(DeviceState &device, const std::string &subtype);
 
 } // namespace prism

@@ -4,7 +4,7 @@
 
 namespace prism {
 
-Material *createMaterial(Device &device, const std::string &subtype)
+Material *createMaterial(DeviceState &device, const std::string &subtype)
 {
   if (subtype == "matte")
     return new Matte(device);

@@ -2,7 +2,7 @@
 
 namespace prism {
 
-Matte::Matte(Device &device) : Material(device, "matte") {}
+Matte::Matte(DeviceState &device) : Material(device, "matte") {}
 
 void Matte::commitParameters()
 {
@@ -19,6 +19,15 @@ float4 Matte::baseColorAndOpacity(const AttributeValues &attributes) const
   // Spec 5.11.1: a sampled or attribute color's fourth component scales the
   // opacity (a constant color's is 1).
   return makeVec4(xyz(color), m_opacity.evaluate(attributes) * color.w);
+}
+
+MaterialShading Matte::shade(const AttributeValues &attributes) const
+{
+  const float4 base = baseColorAndOpacity(attributes);
+  MaterialShading out;
+  out.bsdf = matteBsdfInputs(xyz(base));
+  out.opacity = coverage(base.w);
+  return out;
 }
 
 void Matte::dropReferences()

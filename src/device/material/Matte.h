@@ -9,9 +9,10 @@ namespace prism {
 class Matte : public Material
 {
  public:
-  explicit Matte(Device &device);
+  explicit Matte(DeviceState &device);
 
   float4 baseColorAndOpacity(const AttributeValues &attributes) const override;
+  MaterialShading shade(const AttributeValues &attributes) const override;
 
   const MaterialInput<float3> &color() const
   {

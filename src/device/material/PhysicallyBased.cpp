@@ -5,7 +5,7 @@
 
 namespace prism {
 
-PhysicallyBased::PhysicallyBased(Device &device)
+PhysicallyBased::PhysicallyBased(DeviceState &device)
     : Material(device, "physicallyBased")
 {}
 
@@ -77,6 +77,36 @@ float4 PhysicallyBased::baseColorAndOpacity(
   if (m_alphaMode != AlphaMode::Opaque)
     opacity *= color.w;
   return makeVec4(xyz(color), opacity);
+}
+
+MaterialShading PhysicallyBased::shade(const AttributeValues &attributes) const
+{
+  const Values values = evaluate(attributes);
+  MaterialShading out;
+  out.bsdf = physicallyBasedBsdfInputs(values);
+  out.emissive = values.emissive;
+  out.occlusion = clamp(values.occlusion, 0.f, 1.f);
+  out.hasCoatNormalMap = values.clearcoat > 0.f
+                         && m_inputs.clearcoatNormal.source()
+                                != MaterialInput<float3>::Source::Constant;
+  out.coatNormalMap = values.clearcoatNormal;
+  out.hasNormalMap =
+      m_inputs.normal.source() != MaterialInput<float3>::Source::Constant;
+  out.normalMap = values.normal;
+  if (values.transmission > 0.f && values.thickness > 0.f)
+    out.attenuation = volumeAttenuationCoefficient(
+        values.attenuationColor, values.attenuationDistance);
+  out.opacity = coverage(values.opacity);
+  return out;
+}
+
+bool PhysicallyBased::constantEmission(float3 &radiance) const
+{
+  // Textured emission varies over the surface: rays find it alone.
+  if (m_inputs.emissive.source() != MaterialInput<float3>::Source::Constant)
+    return false;
+  radiance = usableEmission(m_inputs.emissive.constant());
+  return std::max(radiance.x, std::max(radiance.y, radiance.z)) > 0.f;
 }
 
 float3 PhysicallyBased::usableEmission(const float3 &emissive)

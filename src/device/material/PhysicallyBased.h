@@ -71,16 +71,14 @@ class PhysicallyBased : public Material
     float iridescenceThickness;
   };
 
-  explicit PhysicallyBased(Device &device);
+  explicit PhysicallyBased(DeviceState &device);
 
   // `emissive` as radiance: negative or non-finite components are 0.
   static float3 usableEmission(const float3 &emissive);
 
-  const PhysicallyBased *asPhysicallyBased() const override
-  {
-    return this;
-  }
   float4 baseColorAndOpacity(const AttributeValues &attributes) const override;
+  MaterialShading shade(const AttributeValues &attributes) const override;
+  bool constantEmission(float3 &radiance) const override;
   Values evaluate(const AttributeValues &attributes) const;
   const Inputs &inputs() const
   {

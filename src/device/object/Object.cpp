@@ -1,6 +1,6 @@
 #include "Object.h"
 
-#include "../Device.h"
+#include "../object/DeviceState.h"
 
 #include "anari/frontend/type_utility.h"
 
@@ -8,7 +8,7 @@
 
 namespace prism {
 
-Object::Object(Device &device, ANARIDataType type, std::string subtype)
+Object::Object(DeviceState &device, ANARIDataType type, std::string subtype)
     : m_device(device), m_type(type), m_subtype(std::move(subtype))
 {
   m_device.objectCreated(this);

@@ -14,12 +14,12 @@
 
 namespace prism {
 
-class Device;
+class DeviceState;
 
 class Object
 {
  public:
-  Object(Device &device, ANARIDataType type, std::string subtype);
+  Object(DeviceState &device, ANARIDataType type, std::string subtype);
   virtual ~Object();
   Object(const Object &) = delete;
   Object &operator=(const Object &) = delete;
@@ -32,7 +32,7 @@ class Object
   {
     return m_subtype;
   }
-  Device &device() const
+  DeviceState &device() const
   {
     return m_device;
   }
@@ -98,6 +98,13 @@ class Object
       uint64_t size,
       ANARIWaitMask mask);
 
+  // The names the last commit asked for, set or not (conformance checks:
+  // everything an object reads must be declared to introspection).
+  const std::set<std::string> &parametersRead() const
+  {
+    return m_readThisCommit;
+  }
+
   // Drops every reference this object holds on others (device teardown).
   virtual void dropReferences();
 
@@ -156,7 +163,7 @@ class Object
  private:
   void reportUnusedParameters();
 
-  Device &m_device;
+  DeviceState &m_device;
   const ANARIDataType m_type;
   const std::string m_subtype;
   ANARIObject m_handle{nullptr};

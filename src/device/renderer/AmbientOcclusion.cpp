@@ -1,7 +1,7 @@
 #include "AmbientOcclusion.h"
 
-#include "SampleHash.h"
-#include "wavefront/LocalTransport.h"
+#include "SampleSequence.h"
+#include "wavefront/RayTransport.h"
 
 #include <algorithm>
 #include <cmath>
@@ -48,7 +48,7 @@ void AmbientOcclusion::renderTile(const RenderContext &context,
     FrameBuffers &buffers,
     const std::atomic<bool> &cancel) const
 {
-  const LocalTransport transport(*context.world);
+  const RayTransport &transport = *context.transport;
   const uint32_t width = tile.x1 - tile.x0;
   const size_t count = size_t(width) * (tile.y1 - tile.y0);
   const auto workspace = m_workspaces.take();
@@ -99,8 +99,8 @@ void AmbientOcclusion::renderTile(const RenderContext &context,
           surface.material().baseColorAndOpacity(surface.attributes);
       const float coverage = surface.material().coverage(base.w);
       if (coverage < 1.f
-          && hashedSample2D(
-                 pixel.x, pixel.y, context.sampleIndex, 4 + layers[i])
+          && sobolSample2D(context.sampleIndex,
+                 sequenceSeed(pixel.x, pixel.y, 4 + layers[i]))
                      .x
                  >= coverage) {
         if (++layers[i] < kMaxLayers) {
@@ -127,8 +127,8 @@ void AmbientOcclusion::renderTile(const RenderContext &context,
           surface.position
           + surface.geometricNormal * (1e-4f * std::max(1.f, hit.t));
       for (uint32_t k = 0; k < m_samples; k++) {
-        const float2 u = hashedSample2D(
-            pixel.x, pixel.y, context.sampleIndex * m_samples + k, 2);
+        const float2 u = sobolSample2D(context.sampleIndex * m_samples + k,
+            sequenceSeed(pixel.x, pixel.y, 2));
         occlusion.push(origin,
             cosineDirection(surface.shadingNormal, u),
             0.f,

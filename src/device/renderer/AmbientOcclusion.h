@@ -13,7 +13,7 @@ namespace prism {
 class AmbientOcclusion : public Renderer
 {
  public:
-  explicit AmbientOcclusion(Device &device) : Renderer(device, "ao") {}
+  explicit AmbientOcclusion(DeviceState &device) : Renderer(device, "ao") {}
 
   uint32_t convergedSampleCount() const override
   {

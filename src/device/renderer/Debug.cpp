@@ -1,5 +1,7 @@
 #include "Debug.h"
 
+#include "NormalMapping.h"
+
 #include "SampleHash.h"
 
 #include <algorithm>
@@ -108,7 +110,9 @@ PixelSample Debug::shadeSample(const RenderContext &context,
     c = surface.geometricNormal * 0.5f + float3{0.5f, 0.5f, 0.5f};
     break;
   case Mode::ShadingNormal:
-    c = surface.shadingNormal * 0.5f + float3{0.5f, 0.5f, 0.5f};
+    // What shading sees: normal maps included.
+    c = shadingNormalWithMap(surface, hit, ray.direction * -1.f) * 0.5f
+        + float3{0.5f, 0.5f, 0.5f};
     break;
   case Mode::Uv:
     c = {hit.u, hit.v, 0.f};

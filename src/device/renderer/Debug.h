@@ -27,7 +27,7 @@ class Debug : public Renderer
     OpacityHeatmap,
   };
 
-  explicit Debug(Device &device) : Renderer(device, "debug") {}
+  explicit Debug(DeviceState &device) : Renderer(device, "debug") {}
 
  protected:
   void commitParameters() override;

@@ -1,12 +1,14 @@
 #include "PathTracer.h"
 
+#include "NormalMapping.h"
+
 #include "../light/EmissiveSurface.h"
 #include "../light/PlacedLight.h"
-#include "../material/Matte.h"
-#include "../material/PhysicallyBased.h"
+#include "../material/Material.h"
 #include "../shading/Bsdf.h"
-#include "SampleHash.h"
-#include "wavefront/LocalTransport.h"
+#include "../shading/Sampling.h"
+#include "SampleSequence.h"
+#include "wavefront/RayTransport.h"
 
 #include <algorithm>
 #include <cmath>
@@ -22,30 +24,12 @@ constexpr uint32_t kOpacityStreams = 0x10000u;
 // See-through surfaces a path passes at one bounce before it gives up.
 constexpr uint16_t kMaxLayers = 64;
 
+// Decision `stream` of the path: a 2D pair of the pixel's low-discrepancy
+// sequences, its own for each stream (docs/sampling.md).
 float2 random2(const PathState &path, uint32_t stream)
 {
-  return seededSample2D(path.seed, stream);
-}
-
-float powerHeuristic(float a, float b)
-{
-  const float a2 = a * a, b2 = b * b;
-  return a2 + b2 > 0.f ? a2 / (a2 + b2) : 0.f;
-}
-
-float maxComponent(const float3 &v)
-{
-  return std::max(v.x, std::max(v.y, v.z));
-}
-
-// An orthonormal frame around n (Duff et al. 2017).
-void frameAround(const float3 &n, float3 &t, float3 &b)
-{
-  const float sign = std::copysign(1.f, n.z);
-  const float a = -1.f / (sign + n.z);
-  const float c = n.x * n.y * a;
-  t = {1.f + sign * n.x * n.x * a, sign * c, -sign * n.x};
-  b = {c, sign + n.y * n.y * a, -n.y};
+  return sobolSample2D(
+      path.sampleIndex, mixBits(path.seed + (stream + 1u) * 0x9e3779b9u));
 }
 
 // False when the ray (unit `direction`) surely passes the light's bounds
@@ -75,82 +59,6 @@ float3 exp3(const float3 &v)
   return {std::exp(v.x), std::exp(v.y), std::exp(v.z)};
 }
 
-// The material at a hit as BSDF inputs, and what the BSDF does not cover.
-struct ShadingInputs
-{
-  BsdfInputs bsdf;
-  float opacity{1.f};
-  float3 emissive{0.f, 0.f, 0.f};
-  float occlusion{1.f}; // of ambient light only
-  bool hasNormalMap{false};
-  bool hasCoatNormalMap{false};
-  float3 coatNormalMap{0.f, 0.f, 1.f}; // tangent space
-  float3 normalMap{0.f, 0.f, 1.f};     // tangent space
-  float3 attenuation{0.f, 0.f, 0.f};   // inside, per unit length
-};
-
-ShadingInputs shadingInputs(const SurfaceHit &hit)
-{
-  ShadingInputs out;
-  const Material &material = hit.material();
-  if (const PhysicallyBased *pbr = material.asPhysicallyBased()) {
-    const PhysicallyBased::Values values = pbr->evaluate(hit.attributes);
-    out.bsdf = physicallyBasedBsdfInputs(values);
-    out.emissive = values.emissive;
-    out.occlusion = clamp(values.occlusion, 0.f, 1.f);
-    out.hasCoatNormalMap = values.clearcoat > 0.f
-                           && pbr->inputs().clearcoatNormal.source()
-                                  != MaterialInput<float3>::Source::Constant;
-    out.coatNormalMap = values.clearcoatNormal;
-    out.hasNormalMap = pbr->inputs().normal.source()
-                       != MaterialInput<float3>::Source::Constant;
-    out.normalMap = values.normal;
-    if (values.transmission > 0.f && values.thickness > 0.f)
-      out.attenuation = volumeAttenuationCoefficient(
-          values.attenuationColor, values.attenuationDistance);
-    out.opacity = material.coverage(values.opacity);
-  } else {
-    const float4 base = material.baseColorAndOpacity(hit.attributes);
-    out.bsdf = matteBsdfInputs(float3{base.x, base.y, base.z});
-    out.opacity = material.coverage(base.w);
-  }
-  return out;
-}
-
-// `normal` (the geometry's own shading normal at the hit, world space)
-// bent by a tangent-space normal map value; `normal` itself where the map
-// gives nothing usable or would turn the surface away from the viewer.
-float3 normalMapped(const SurfaceHit &surface,
-    const rt::Hit &hit,
-    const float3 &normal,
-    const float3 &mapped,
-    const float3 &towardsViewer)
-{
-  float4 objectTangent;
-  float3 tangent, bitangent;
-  if (surface.surface->geometry()->tangentAt(hit, objectTangent)) {
-    const float3 t{objectTangent.x, objectTangent.y, objectTangent.z};
-    tangent = surface.placement->identity
-                  ? t
-                  : transformDirection(surface.placement->worldFromObject, t);
-    tangent = tangent - normal * dot(normal, tangent);
-    if (!(lengthSquared(tangent) > 1e-20f))
-      return normal;
-    tangent = normalize(tangent);
-    bitangent = cross(normal, tangent) * objectTangent.w;
-  } else {
-    frameAround(normal, tangent, bitangent);
-  }
-  const float3 bent =
-      tangent * mapped.x + bitangent * mapped.y + normal * mapped.z;
-  if (!(lengthSquared(bent) > 1e-20f))
-    return normal;
-  const float3 result = normalize(bent);
-  const bool sameSide =
-      (dot(result, towardsViewer) > 0.f) == (dot(normal, towardsViewer) > 0.f);
-  return sameSide ? result : normal;
-}
-
 } // namespace
 
 void PathTracer::commitParameters()
@@ -166,15 +74,7 @@ void PathTracer::renderTile(const RenderContext &context,
     FrameBuffers &buffers,
     const std::atomic<bool> &cancel) const
 {
-  renderTile(context, tile, buffers, LocalTransport(*context.world), cancel);
-}
-
-void PathTracer::renderTile(const RenderContext &context,
-    const Tile &tile,
-    FrameBuffers &buffers,
-    const RayTransport &transport,
-    const std::atomic<bool> &cancel) const
-{
+  const RayTransport &transport = *context.transport;
   const uint32_t width = tile.x1 - tile.x0;
   const size_t count = size_t(width) * (tile.y1 - tile.y0);
   const auto workspace = m_workspaces.take();
@@ -188,7 +88,8 @@ void PathTracer::renderTile(const RenderContext &context,
     PathState &path = paths[i];
     path.x = tile.x0 + uint32_t(i % width);
     path.y = tile.y0 + uint32_t(i / width);
-    path.seed = pathSeed(path.x, path.y, context.sampleIndex);
+    path.seed = sequenceSeed(path.x, path.y, 0);
+    path.sampleIndex = context.sampleIndex;
     const Ray ray = cameraRay(context, path.x, path.y);
     path.time = ray.time;
     rays.push(
@@ -207,9 +108,10 @@ void PathTracer::renderTile(const RenderContext &context,
       traced += shadows.size();
       transport.traceOcclusion(shadows);
       for (size_t k = 0; k < shadows.size(); k++) {
-        if (!shadows.occluded(k)) {
+        const float3 &through = shadows.transmittance(k);
+        if (maxComponent(through) > 0.f) {
           PathState &path = paths[shadows.tag(k)];
-          path.radiance = path.radiance + contributions[k];
+          path.radiance = path.radiance + contributions[k] * through;
         }
       }
     }
@@ -246,7 +148,7 @@ float PathTracer::emissionWeight(const RenderContext &context,
   const float cosine = std::abs(dot(surface.geometricNormal, ray.direction));
   const float lightPdf = emitter.pdfOfHit(hit.t, cosine)
                          * world.lightSelector().probability(size_t(index));
-  return powerHeuristic(path.previousPdf, lightPdf);
+  return powerHeuristic(1, path.previousPdf, 1, lightPdf);
 }
 
 bool PathTracer::getProperty(const std::string &name,
@@ -291,10 +193,11 @@ float3 PathTracer::lightsAlong(const RenderContext &context,
     if (distance <= tMin || hidden || maxComponent(radiance) <= 0.f)
       continue;
     // Camera rays and delta bounces could not have sampled the light.
-    const float weight = cameraRay || path.previousDelta
-                             ? 1.f
-                             : powerHeuristic(path.previousPdf,
-                                 lightPdf * selector.probability(i));
+    const float weight =
+        cameraRay || path.previousDelta
+            ? 1.f
+            : powerHeuristic(
+                1, path.previousPdf, 1, lightPdf * selector.probability(i));
     sum = sum + radiance * weight;
   }
   return sum;
@@ -307,176 +210,241 @@ void PathTracer::shadeBounce(const RenderContext &context,
     rt::RayQueue &shadows,
     std::vector<float3> &contributions) const
 {
-  const auto &lights = context.world->lights();
-  const LightSelector &selector = context.world->lightSelector();
   for (size_t r = 0; r < rays.size(); r++) {
-    PathState &path = paths[rays.tag(r)];
     if (rays.untraceable(r))
       continue; // a degenerate camera or bounce ray ends its path
-    const rt::Hit hit = rays.hit(r);
-    Ray ray{rays.origin(r), rays.direction(r)};
-    ray.time = path.time;
-    SurfaceHit surface;
-    const bool found =
-        hit.found()
-        && resolveSurfaceHit(
-            *context.world, ray, hit, surface, HitDetail::ForShading);
-    const float hitDistance =
-        found ? hit.t : std::numeric_limits<float>::infinity();
-    // Inside an absorbing medium: Beer-Lambert over the segment.
-    if (maxComponent(path.medium) > 0.f && found)
-      path.throughput = path.throughput * exp3(path.medium * -hit.t);
-    path.radiance = path.radiance
-                    + path.throughput
-                          * lightsAlong(context,
-                              ray.origin,
-                              ray.direction,
-                              rays.tMin(r),
-                              hitDistance,
-                              path);
-    if (!found) {
-      if (path.bounce == 0 && !path.recordedFirstHit) {
-        const float4 bg =
-            background(path.x, path.y, context.width, context.height);
-        path.sample.color = float4{path.radiance.x + bg.x,
-            path.radiance.y + bg.y,
-            path.radiance.z + bg.z,
-            bg.w};
-      } else {
-        path.radiance = path.radiance
-                        + path.throughput * m_ambient * path.ambientVisibility;
-      }
+    Bounce b = resolveHit(context, paths[rays.tag(r)], rays, r);
+    emitAlongRay(context, b);
+    if (!b.found || passThrough(b, next))
       continue;
-    }
+    recordFirstHit(b);
+    emitFromSurface(context, b);
+    if (b.path.bounce + 1 >= m_maxPathLength)
+      continue;
+    const Scattering scattering = scatteringAt(b);
+    nextEvent(context, b, scattering, shadows, contributions);
+    scatter(b, scattering, next);
+  }
+}
 
-    const ShadingInputs inputs = shadingInputs(surface);
-    const uint32_t stream = uint32_t(path.bounce) * kStreamsPerBounce;
-    // See-through surfaces: pass through with probability 1 - opacity
-    // (each layer its own random number).
-    if (inputs.opacity < 1.f
-        && random2(path, kOpacityStreams + path.layer + 97u * path.bounce).x
-               >= inputs.opacity) {
-      if (++path.layer < kMaxLayers) {
-        next.push(ray.origin,
-            ray.direction,
-            hit.t + std::max(1e-4f, hit.t * 1e-5f),
-            std::numeric_limits<float>::infinity(),
-            path.time,
-            rays.tag(r));
-      }
-      continue;
-    }
+PathTracer::Bounce PathTracer::resolveHit(const RenderContext &context,
+    PathState &path,
+    const rt::RayQueue &rays,
+    size_t r) const
+{
+  Bounce b{path,
+      rays.tag(r),
+      Ray{rays.origin(r), rays.direction(r)},
+      rays.tMin(r),
+      rays.hit(r),
+      false,
+      SurfaceHit{},
+      MaterialShading{}};
+  b.ray.time = path.time;
+  b.found = b.hit.found()
+            && resolveSurfaceHit(
+                *context.world, b.ray, b.hit, b.surface, HitDetail::ForShading);
+  if (b.found)
+    b.shading = b.surface.material().shade(b.surface.attributes);
+  return b;
+}
+
+void PathTracer::emitAlongRay(const RenderContext &context, Bounce &b) const
+{
+  PathState &path = b.path;
+  const float hitDistance =
+      b.found ? b.hit.t : std::numeric_limits<float>::infinity();
+  // Inside an absorbing medium: Beer-Lambert over the segment.
+  if (b.found && path.media.depth() > 0) {
+    const float3 absorption = path.media.absorption();
+    if (maxComponent(absorption) > 0.f)
+      path.throughput = path.throughput * exp3(absorption * -b.hit.t);
+  }
+  path.radiance = path.radiance
+                  + path.throughput
+                        * lightsAlong(context,
+                            b.ray.origin,
+                            b.ray.direction,
+                            b.tMin,
+                            hitDistance,
+                            path);
+  if (b.found)
+    return;
+  if (path.bounce == 0 && !path.recordedFirstHit) {
+    const float4 bg = background(path.x, path.y, context.width, context.height);
+    path.sample.color = float4{path.radiance.x + bg.x,
+        path.radiance.y + bg.y,
+        path.radiance.z + bg.z,
+        bg.w};
+  } else {
+    path.radiance =
+        path.radiance + path.throughput * m_ambient * path.ambientVisibility;
+  }
+}
+
+bool PathTracer::passThrough(Bounce &b, rt::RayQueue &next) const
+{
+  // See-through surfaces: pass through with probability 1 - opacity (each
+  // layer its own random number).
+  PathState &path = b.path;
+  if (!(b.shading.opacity < 1.f)
+      || random2(path, kOpacityStreams + path.layer + 97u * path.bounce).x
+             < b.shading.opacity) {
     path.layer = 0;
-    if (!path.recordedFirstHit) {
-      path.sample.depth = hit.t;
-      path.sample.normal = surface.shadingNormal;
-      path.sample.albedo = inputs.bsdf.baseColor;
-      path.sample.primitiveId = surface.attributes.primitiveId;
-      path.sample.objectId = surface.surface->id();
-      path.sample.instanceId = surface.placement->instanceId;
-      path.recordedFirstHit = true;
-    }
-    path.radiance = path.radiance
-                    + path.throughput * inputs.emissive
-                          * emissionWeight(context, path, ray, hit, surface);
-    if (path.bounce + 1 >= m_maxPathLength)
-      continue;
-
-    // The local shading frame around the geometry's own (unflipped)
-    // shading normal: the BSDF needs to know which side the viewer is on to
-    // tell entering a medium from leaving it.
-    float3 tangent, bitangent;
-    float3 normal = surface.backFacing ? surface.shadingNormal * -1.f
-                                       : surface.shadingNormal;
-    const float3 unbent = normal;
-    if (inputs.hasNormalMap)
-      normal = normalMapped(
-          surface, hit, normal, inputs.normalMap, ray.direction * -1.f);
-    frameAround(normal, tangent, bitangent);
-    auto toLocal = [&](const float3 &v) {
-      return float3{dot(v, tangent), dot(v, bitangent), dot(v, normal)};
-    };
-    auto toWorld = [&](const float3 &v) {
-      return tangent * v.x + bitangent * v.y + normal * v.z;
-    };
-    BsdfInputs bsdfInputs = inputs.bsdf;
-    // The coat's normal map bends the geometry's normal on its own.
-    if (inputs.hasCoatNormalMap)
-      bsdfInputs.clearcoatNormal = toLocal(normalMapped(
-          surface, hit, unbent, inputs.coatNormalMap, ray.direction * -1.f));
-    const Bsdf bsdf(bsdfInputs);
-    const float3 wo = toLocal(ray.direction * -1.f);
-    const float offset = 1e-4f * std::max(1.f, hit.t);
-
-    // Next-event estimation: one light, chosen by power; its shadow ray
-    // joins the bounce's shadow queue.
-    if (!selector.empty() && bsdf.hasNonDeltaLobes()) {
-      float pickProbability = 0.f;
-      const PlacedLight &light =
-          *lights[selector.pick(random2(path, stream + 2).x, pickProbability)];
-      const LightSample ls =
-          light.sample(surface.position, random2(path, stream + 3));
-      const float3 wi = toLocal(ls.direction);
-      if (ls.pdf > 0.f && maxComponent(ls.radiance) > 0.f) {
-        float3 f;
-        float bsdfPdf = 0.f;
-        bsdf.evalAndPdf(wo, wi, f, bsdfPdf);
-        if (maxComponent(f) > 0.f) {
-          const float3 side = dot(ls.direction, surface.geometricNormal) > 0.f
-                                  ? surface.geometricNormal
-                                  : surface.geometricNormal * -1.f;
-          const float tMax = std::isinf(ls.distance)
-                                 ? ls.distance
-                                 : ls.distance * (1.f - 1e-4f) - offset;
-          const float pdf = ls.pdf * pickProbability;
-          const float weight = ls.delta ? 1.f : powerHeuristic(pdf, bsdfPdf);
-          shadows.push(surface.position + side * offset,
-              ls.direction,
-              0.f,
-              std::max(tMax, 0.f),
-              path.time,
-              rays.tag(r));
-          contributions.push_back(path.throughput * f * ls.radiance
-                                  * (std::abs(wi.z) * weight / pdf));
-        }
-      }
-    }
-
-    // Continue the path by sampling the BSDF.
-    const float2 direction = random2(path, stream);
-    const float lobe = random2(path, stream + 1).x;
-    const BsdfSample bs = bsdf.sample(wo, direction, lobe);
-    if (!bs.valid())
-      continue;
-    path.throughput = path.throughput * bs.weight;
-    path.previousPdf = bs.pdf;
-    path.previousDelta = bs.isDelta();
-    path.ambientVisibility = inputs.occlusion;
-    const float3 wiWorld = normalize(toWorld(bs.wi));
-    // Crossing a volume boundary: entering it (against the unflipped
-    // normal) starts absorbing, leaving it stops.
-    if (bsdf.isVolumeBoundary()
-        && dot(wiWorld, normal) * dot(ray.direction, normal) > 0.f)
-      path.medium = dot(wiWorld, normal) < 0.f ? inputs.attenuation
-                                               : float3{0.f, 0.f, 0.f};
-    const float3 side = dot(wiWorld, surface.geometricNormal) > 0.f
-                            ? surface.geometricNormal
-                            : surface.geometricNormal * -1.f;
-    path.bounce++;
-    // Russian roulette after three bounces keeps long paths unbiased.
-    if (path.bounce > 3) {
-      const float survive = std::min(0.95f, maxComponent(path.throughput));
-      if (random2(path, stream + 4).y >= survive)
-        continue;
-      path.throughput = path.throughput / survive;
-    }
-    next.push(surface.position + side * offset,
-        wiWorld,
-        0.f,
+    return false;
+  }
+  if (++path.layer < kMaxLayers) {
+    next.push(b.ray.origin,
+        b.ray.direction,
+        b.hit.t + std::max(1e-4f, b.hit.t * 1e-5f),
         std::numeric_limits<float>::infinity(),
         path.time,
-        rays.tag(r));
+        b.tag);
   }
+  return true;
+}
+
+void PathTracer::recordFirstHit(Bounce &b) const
+{
+  PathState &path = b.path;
+  if (path.recordedFirstHit)
+    return;
+  path.sample.depth = b.hit.t;
+  path.sample.normal = b.surface.shadingNormal;
+  path.sample.albedo = b.shading.bsdf.baseColor;
+  path.sample.primitiveId = b.surface.attributes.primitiveId;
+  path.sample.objectId = b.surface.surface->id();
+  path.sample.instanceId = b.surface.placement->instanceId;
+  path.recordedFirstHit = true;
+}
+
+void PathTracer::emitFromSurface(const RenderContext &context, Bounce &b) const
+{
+  PathState &path = b.path;
+  path.radiance =
+      path.radiance
+      + path.throughput * b.shading.emissive
+            * emissionWeight(context, path, b.ray, b.hit, b.surface);
+}
+
+PathTracer::Scattering PathTracer::scatteringAt(const Bounce &b) const
+{
+  // The local shading frame around the geometry's own (unflipped) shading
+  // normal: the BSDF needs to know which side the viewer is on to tell
+  // entering a medium from leaving it.
+  const SurfaceHit &surface = b.surface;
+  const float3 towardsViewer = b.ray.direction * -1.f;
+  const float3 unbent =
+      surface.backFacing ? surface.shadingNormal * -1.f : surface.shadingNormal;
+  const float3 normal =
+      b.shading.hasNormalMap ? normalMapped(
+          surface, b.hit, unbent, b.shading.normalMap, towardsViewer)
+                             : unbent;
+  Scattering out{ShadingFrame::fromNormal(normal), b.shading.bsdf};
+  // The coat's normal map bends the geometry's normal on its own.
+  if (b.shading.hasCoatNormalMap)
+    out.bsdfInputs.clearcoatNormal = out.frame.toLocal(normalMapped(
+        surface, b.hit, unbent, b.shading.coatNormalMap, towardsViewer));
+  out.wo = out.frame.toLocal(towardsViewer);
+  out.offset = 1e-4f * std::max(1.f, b.hit.t);
+  return out;
+}
+
+void PathTracer::nextEvent(const RenderContext &context,
+    const Bounce &b,
+    const Scattering &scattering,
+    rt::RayQueue &shadows,
+    std::vector<float3> &contributions) const
+{
+  // One light, chosen by power; its shadow ray joins the bounce's shadow
+  // queue, its contribution counts if nothing blocks it.
+  const LightSelector &selector = context.world->lightSelector();
+  const Bsdf bsdf(scattering.bsdfInputs);
+  if (selector.empty() || !bsdf.hasNonDeltaLobes())
+    return;
+  const PathState &path = b.path;
+  const uint32_t stream = uint32_t(path.bounce) * kStreamsPerBounce;
+  float pickProbability = 0.f;
+  const PlacedLight &light = *context.world->lights()[selector.pick(
+      random2(path, stream + 2).x, pickProbability)];
+  const LightSample ls =
+      light.sample(b.surface.position, random2(path, stream + 3));
+  if (!(ls.pdf > 0.f) || !(maxComponent(ls.radiance) > 0.f))
+    return;
+  const float3 wi = scattering.frame.toLocal(ls.direction);
+  float3 f;
+  float bsdfPdf = 0.f;
+  bsdf.evalAndPdf(scattering.wo, wi, f, bsdfPdf);
+  if (!(maxComponent(f) > 0.f))
+    return;
+  const float3 ng = b.surface.geometricNormal;
+  const float3 side = dot(ls.direction, ng) > 0.f ? ng : ng * -1.f;
+  const float tMax = std::isinf(ls.distance)
+                         ? ls.distance
+                         : ls.distance * (1.f - 1e-4f) - scattering.offset;
+  const float pdf = ls.pdf * pickProbability;
+  const float weight = ls.delta ? 1.f : powerHeuristic(1, pdf, 1, bsdfPdf);
+  shadows.push(b.surface.position + side * scattering.offset,
+      ls.direction,
+      0.f,
+      std::max(tMax, 0.f),
+      path.time,
+      b.tag);
+  contributions.push_back(
+      path.throughput * f * ls.radiance * (std::abs(wi.z) * weight / pdf));
+}
+
+void PathTracer::scatter(
+    Bounce &b, const Scattering &scattering, rt::RayQueue &next) const
+{
+  // Continue the path by sampling the BSDF.
+  PathState &path = b.path;
+  const uint32_t stream = uint32_t(path.bounce) * kStreamsPerBounce;
+  const Bsdf bsdf(scattering.bsdfInputs);
+  const float2 direction = random2(path, stream);
+  const float lobe = random2(path, stream + 1).x;
+  const BsdfSample bs = bsdf.sample(scattering.wo, direction, lobe);
+  if (!bs.valid())
+    return;
+  path.throughput = path.throughput * bs.weight;
+  path.previousPdf = bs.pdf;
+  path.previousDelta = bs.isDelta();
+  path.ambientVisibility = b.shading.occlusion;
+  const float3 normal = scattering.frame.normal;
+  const float3 wi = normalize(scattering.frame.toWorld(bs.wi));
+  // Crossing a volume boundary: entering it (against the unflipped
+  // normal) enters its medium, leaving it returns to the one outside.
+  if (bsdf.isVolumeBoundary()
+      && dot(wi, normal) * dot(b.ray.direction, normal) > 0.f) {
+    if (dot(wi, normal) < 0.f)
+      path.media.enter(b.shading.attenuation);
+    else
+      path.media.leave();
+  }
+  path.bounce++;
+  if (!survivesRoulette(path, stream))
+    return;
+  const float3 ng = b.surface.geometricNormal;
+  const float3 side = dot(wi, ng) > 0.f ? ng : ng * -1.f;
+  next.push(b.surface.position + side * scattering.offset,
+      wi,
+      0.f,
+      std::numeric_limits<float>::infinity(),
+      path.time,
+      b.tag);
+}
+
+bool PathTracer::survivesRoulette(PathState &path, uint32_t stream) const
+{
+  // After three bounces a path goes on with probability (at most 0.95) of
+  // its throughput and is weighted up when it does: long paths unbiased.
+  if (path.bounce <= 3)
+    return true;
+  const float survive = std::min(0.95f, maxComponent(path.throughput));
+  if (random2(path, stream + 4).y >= survive)
+    return false;
+  path.throughput = path.throughput / survive;
+  return true;
 }
 
 } // namespace prism

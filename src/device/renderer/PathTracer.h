@@ -10,7 +10,10 @@
 // the same queues across ranks.
 #pragma once
 
+#include "../material/MaterialShading.h"
+#include "../shading/Sampling.h"
 #include "Renderer.h"
+#include "SurfaceHit.h"
 #include "wavefront/PathState.h"
 #include "wavefront/RayTransport.h"
 #include "wavefront/WorkspacePool.h"
@@ -22,7 +25,7 @@ namespace prism {
 class PathTracer : public Renderer
 {
  public:
-  PathTracer(Device &device, const std::string &subtype)
+  PathTracer(DeviceState &device, const std::string &subtype)
       : Renderer(device, subtype)
   {}
 
@@ -38,16 +41,11 @@ class PathTracer : public Renderer
   {
     return 256;
   }
+  // Traces through context.transport.
   void renderTile(const RenderContext &context,
       const Tile &tile,
       FrameBuffers &buffers,
       const std::atomic<bool> &cancel) const override;
-  // Renders `tile` tracing its rays through `transport`.
-  void renderTile(const RenderContext &context,
-      const Tile &tile,
-      FrameBuffers &buffers,
-      const RayTransport &transport,
-      const std::atomic<bool> &cancel) const;
 
  protected:
   void commitParameters() override;
@@ -55,13 +53,58 @@ class PathTracer : public Renderer
  private:
   // Shades the hits of `rays`; continuing paths queue their next ray in
   // `next` and light samples in `shadows` (contributions[k] for shadow
-  // ray k, added if nothing blocks it).
+  // ray k, added if nothing blocks it). Each ray passes the stages below
+  // in order; each stage reads and writes only the ray's Bounce and path.
   void shadeBounce(const RenderContext &context,
       std::vector<PathState> &paths,
       const rt::RayQueue &rays,
       rt::RayQueue &next,
       rt::RayQueue &shadows,
       std::vector<float3> &contributions) const;
+
+  // One ray of a bounce as the stages see it.
+  struct Bounce
+  {
+    PathState &path;
+    uint32_t tag; // the path's index, carried by its rays
+    Ray ray;
+    float tMin{0.f};
+    rt::Hit hit;
+    bool found{false}; // a live surface was hit
+    SurfaceHit surface;
+    MaterialShading shading;
+  };
+  // Where the BSDF sits: its frame (normal maps applied), inputs, the
+  // direction towards the viewer and how far new rays start off.
+  struct Scattering
+  {
+    ShadingFrame frame;
+    BsdfInputs bsdfInputs;
+    float3 wo{0.f, 0.f, 1.f};
+    float offset{0.f};
+  };
+  // Stages: what the ray hit and the material there; light reached along
+  // the ray (and the background or ambient light on a miss); stochastic
+  // pass-through of see-through surfaces; the first hit's channels; the
+  // surface's own emission; next-event estimation; BSDF sampling with
+  // media changes; Russian roulette.
+  Bounce resolveHit(const RenderContext &context,
+      PathState &path,
+      const rt::RayQueue &rays,
+      size_t r) const;
+  void emitAlongRay(const RenderContext &context, Bounce &b) const;
+  bool passThrough(Bounce &b, rt::RayQueue &next) const;
+  void recordFirstHit(Bounce &b) const;
+  void emitFromSurface(const RenderContext &context, Bounce &b) const;
+  Scattering scatteringAt(const Bounce &b) const;
+  void nextEvent(const RenderContext &context,
+      const Bounce &b,
+      const Scattering &scattering,
+      rt::RayQueue &shadows,
+      std::vector<float3> &contributions) const;
+  void scatter(
+      Bounce &b, const Scattering &scattering, rt::RayQueue &next) const;
+  bool survivesRoulette(PathState &path, uint32_t stream) const;
   // Radiance arriving along a ray from lights it reaches within (tMin,
   // hitDistance), weighted against light sampling.
   float3 lightsAlong(const RenderContext &context,

@@ -10,7 +10,7 @@ namespace prism {
 class Raycast : public Renderer
 {
  public:
-  Raycast(Device &device, const std::string &subtype)
+  Raycast(DeviceState &device, const std::string &subtype)
       : Renderer(device, subtype)
   {}
 

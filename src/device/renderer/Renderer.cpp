@@ -1,13 +1,13 @@
 #include "Renderer.h"
 
 #include "PrimaryRays.h"
-#include "SampleHash.h"
+#include "SampleSequence.h"
 
-#include "../Device.h"
 #include "../array/Array.h"
 #include "../array/ElementConversion.h"
-#include "../frame/ImageFilter.h"
 #include "../introspection/Introspection.h"
+#include "../object/DeviceState.h"
+#include "ImageFilter.h"
 
 #include "anari/frontend/type_utility.h"
 
@@ -18,7 +18,7 @@
 
 namespace prism {
 
-Renderer::Renderer(Device &device, const std::string &subtype)
+Renderer::Renderer(DeviceState &device, const std::string &subtype)
     : Object(device, ANARI_RENDERER, subtype)
 {}
 
@@ -156,7 +156,7 @@ Ray Renderer::cameraRay(
   // The lens point: its own stream, decorrelated from the pixel offset.
   const float2 lens = context.sampleIndex == 0
                           ? float2{0.5f, 0.5f}
-                          : hashedSample2D(x, y, context.sampleIndex, 1);
+                          : lensSample(x, y, context.sampleIndex);
   const float time = context.camera->rayTime(
       screen, exposureSample(x, y, context.sampleIndex));
   return context.camera->generateRay(screen, lens, time);

@@ -4,14 +4,16 @@
 #pragma once
 
 #include "../camera/Camera.h"
-#include "../frame/FrameBuffers.h"
 #include "../object/Object.h"
 #include "../rt/Scene.h"
+#include "FrameBuffers.h"
 #include "SurfaceHit.h"
 
 #include <atomic>
 
 namespace prism {
+
+class RayTransport;
 
 class Camera;
 class PrimaryRays;
@@ -22,6 +24,9 @@ struct RenderContext
 {
   const Camera *camera;
   const World *world;
+  // Where wavefront renderers trace their queues: the device decides
+  // (locally the world's BVH; across ranks for the data-parallel device).
+  const RayTransport *transport;
   uint32_t width;
   uint32_t height;
   // Which accumulated sample this frame renders (0: the first, through
@@ -32,7 +37,7 @@ struct RenderContext
 class Renderer : public Object
 {
  public:
-  Renderer(Device &device, const std::string &subtype);
+  Renderer(DeviceState &device, const std::string &subtype);
 
   // Called once per frame before any tile.
   virtual void beginFrame(const RenderContext &context) {}

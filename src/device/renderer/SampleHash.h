@@ -49,13 +49,6 @@ inline float2 seededSample2D(uint32_t seed, uint32_t stream)
       float(h >> 8) * (1.f / 16777216.f), float(g >> 8) * (1.f / 16777216.f)};
 }
 
-// Where in pixel (x, y) sample `sample` looks, in [0,1)^2: the pixel centre
-// for the first sample so single-sample images stay exact.
-inline float2 pixelOffset(uint32_t x, uint32_t y, uint32_t sample)
-{
-  return sample == 0 ? float2{0.5f, 0.5f} : hashedSample2D(x, y, sample, 0);
-}
-
 // Where in its exposure sample n of pixel (x, y) falls, in [0, 1): the
 // middle for the first sample, then a van der Corput sequence rotated per
 // pixel, so n samples cover the exposure evenly (error ~1/n, not

@@ -26,6 +26,7 @@ void RayQueue::grow(size_t capacity)
     v->resize(capacity);
   for (auto *v : {&m_tag, &m_primitiveId, &m_geometryId, &m_instanceId})
     v->resize(capacity);
+  m_transmittance.resize(capacity);
   // Every ray is of every mask and flagless; tracing never changes either.
   m_mask.resize(capacity, ~0u);
   m_flags.resize(capacity, 0u);
@@ -65,6 +66,7 @@ size_t RayQueue::push(const float3 &origin,
   m_tag[i] = tag;
   m_geometryId[i] = kInvalidId;
   m_instanceId[i] = kInvalidId;
+  m_transmittance[i] = float3{1.f, 1.f, 1.f}; // until traced
   return i;
 }
 

@@ -76,6 +76,19 @@ class RayQueue
   {
     return m_tMax[i] < 0.f && m_tMin[i] >= 0.f;
   }
+  // After an occlusion trace: how much light gets through along ray i, per
+  // color channel (0 or 1 past opaque surfaces; media between give what
+  // they let through).
+  const float3 &transmittance(size_t i) const
+  {
+    return m_transmittance[i];
+  }
+  // Multiplies ray i's transmittance (what a medium or a see-through
+  // surface along it lets through).
+  void attenuate(size_t i, const float3 &factor)
+  {
+    m_transmittance[i] = m_transmittance[i] * factor;
+  }
 
   // A hint for the tracer: the rays start close together and point alike
   // (a tile's camera rays), so tracing them as packets pays.
@@ -108,6 +121,8 @@ class RayQueue
   // Hit (RTCHitNp).
   std::vector<float> m_normalX, m_normalY, m_normalZ, m_u, m_v;
   std::vector<uint32_t> m_primitiveId, m_geometryId, m_instanceId;
+  // Occlusion (set by the trace, then attenuated).
+  std::vector<float3> m_transmittance;
 };
 
 } // namespace prism::rt

@@ -553,6 +553,10 @@ void Scene::occluded(RayQueue &queue) const
   rays.id = queue.m_tag.data();
   rays.flags = queue.m_flags.data();
   rtcOccludedNp(m_scene, &context, &rays, unsigned(queue.size()));
+  for (size_t i = 0; i < queue.size(); i++) {
+    const float through = queue.occluded(i) ? 0.f : 1.f;
+    queue.m_transmittance[i] = float3{through, through, through};
+  }
 }
 
 void Scene::intersect(RayHitPacket &packet, const int active[kPacketSize]) const

@@ -2,7 +2,7 @@
 
 namespace prism {
 
-Image1D::Image1D(Device &device)
+Image1D::Image1D(DeviceState &device)
     : ImageSampler(device,
         "image1D",
         1,

@@ -9,7 +9,7 @@ namespace prism {
 class Image1D : public ImageSampler
 {
  public:
-  explicit Image1D(Device &device);
+  explicit Image1D(DeviceState &device);
 };
 
 } // namespace prism

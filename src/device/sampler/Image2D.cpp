@@ -13,7 +13,7 @@ bool acceptsElementType(ANARIDataType type)
 
 } // namespace
 
-Image2D::Image2D(Device &device)
+Image2D::Image2D(DeviceState &device)
     : ImageSampler(device,
         "image2D",
         2,

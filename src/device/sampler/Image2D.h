@@ -9,7 +9,7 @@ namespace prism {
 class Image2D : public ImageSampler
 {
  public:
-  explicit Image2D(Device &device);
+  explicit Image2D(DeviceState &device);
 };
 
 } // namespace prism

@@ -2,7 +2,7 @@
 
 namespace prism {
 
-Image3D::Image3D(Device &device)
+Image3D::Image3D(DeviceState &device)
     : ImageSampler(device,
         "image3D",
         3,

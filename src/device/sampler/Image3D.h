@@ -9,7 +9,7 @@ namespace prism {
 class Image3D : public ImageSampler
 {
  public:
-  explicit Image3D(Device &device);
+  explicit Image3D(DeviceState &device);
 };
 
 } // namespace prism

@@ -35,7 +35,7 @@ int64_t wrapIndex(int64_t i, int64_t n, WrapMode wrap)
 
 } // namespace
 
-ImageSampler::ImageSampler(Device &device,
+ImageSampler::ImageSampler(DeviceState &device,
     const std::string &subtype,
     int dimensions,
     std::array<const char *, 3> wrapParameters,

@@ -52,7 +52,7 @@ class ImageSampler : public Sampler
  protected:
   // `wrapParameters` names the wrap mode parameter of each dimension (the
   // JSON calls it "wrapMode" for image1D, "wrapMode1".. otherwise).
-  ImageSampler(Device &device,
+  ImageSampler(DeviceState &device,
       const std::string &subtype,
       int dimensions,
       std::array<const char *, 3> wrapParameters,

@@ -4,7 +4,7 @@
 
 namespace prism {
 
-Primitive::Primitive(Device &device) : Sampler(device, "primitive") {}
+Primitive::Primitive(DeviceState &device) : Sampler(device, "primitive") {}
 
 void Primitive::commitParameters()
 {

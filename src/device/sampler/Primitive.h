@@ -11,7 +11,7 @@ namespace prism {
 class Primitive : public Sampler
 {
  public:
-  explicit Primitive(Device &device);
+  explicit Primitive(DeviceState &device);
 
   // Past the end of the array the value is an unset attribute, (0, 0, 0, 1).
   float4 sample(const AttributeValues &attributes) const override;

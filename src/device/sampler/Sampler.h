@@ -20,7 +20,7 @@ bool isColorElementType(ANARIDataType type);
 class Sampler : public Object
 {
  public:
-  Sampler(Device &device, const std::string &subtype)
+  Sampler(DeviceState &device, const std::string &subtype)
       : Object(device, ANARI_SAMPLER, subtype)
   {}
 
@@ -54,6 +54,6 @@ class Sampler : public Object
 };
 
 // The sampler of `subtype`, or NULL if the device does not implement it.
-Sampler *createSampler(Device &device, const std::string &subtype);
+Sampler *createSampler(DeviceState &device, const std::string &subtype);
 
 } // namespace prism

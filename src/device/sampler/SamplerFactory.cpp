@@ -7,7 +7,7 @@
 
 namespace prism {
 
-Sampler *createSampler(Device &device, const std::string &subtype)
+Sampler *createSampler(DeviceState &device, const std::string &subtype)
 {
   if (subtype == "image1D")
     return new Image1D(device);

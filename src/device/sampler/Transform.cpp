@@ -2,7 +2,7 @@
 
 namespace prism {
 
-Transform::Transform(Device &device) : Sampler(device, "transform") {}
+Transform::Transform(DeviceState &device) : Sampler(device, "transform") {}
 
 void Transform::commitParameters()
 {

@@ -9,7 +9,7 @@ namespace prism {
 class Transform : public Sampler
 {
  public:
-  explicit Transform(Device &device);
+  explicit Transform(DeviceState &device);
 
   float4 sample(const AttributeValues &attributes) const override;
 

@@ -1,13 +1,13 @@
 #include "Group.h"
 
-#include "../Device.h"
 #include "../array/Array.h"
+#include "../object/DeviceState.h"
 
 #include <cstring>
 
 namespace prism {
 
-Group::Group(Device &device)
+Group::Group(DeviceState &device)
     : Object(device, ANARI_GROUP, ""),
       m_scene(std::make_unique<rt::Scene>(device.rtContext())),
       m_bounds(emptyBox3())

@@ -14,7 +14,7 @@ namespace prism {
 class Group : public Object
 {
  public:
-  explicit Group(Device &device);
+  explicit Group(DeviceState &device);
 
   // Surfaces by Embree geometry id (invalid or invisible ones are NULL).
   const Surface *surface(uint32_t geometryId) const

@@ -2,7 +2,7 @@
 
 #include "../array/Array.h"
 #include "../array/ElementConversion.h"
-#include "MotionParameters.h"
+#include "../array/MotionParameters.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,7 +24,7 @@ mat3x4 affinePart(const mat4 &m)
 
 } // namespace
 
-Instance::Instance(Device &device, const std::string &subtype)
+Instance::Instance(DeviceState &device, const std::string &subtype)
     : Object(device, ANARI_INSTANCE, subtype)
 {}
 
@@ -170,7 +170,7 @@ bool Instance::getProperty(const std::string &name,
   return Object::getProperty(name, type, mem, size, mask);
 }
 
-Instance *createInstance(Device &device, const std::string &subtype)
+Instance *createInstance(DeviceState &device, const std::string &subtype)
 {
   if (subtype == "transform" || subtype == "motionTransform"
       || subtype == "motionScaleRotationTranslation")

@@ -13,7 +13,7 @@ namespace prism {
 class Instance : public Object
 {
  public:
-  Instance(Device &device, const std::string &subtype);
+  Instance(DeviceState &device, const std::string &subtype);
 
   bool isValid() const override
   {
@@ -69,6 +69,6 @@ class Instance : public Object
 };
 
 // The instance of `subtype`, or NULL if the device does not implement it.
-Instance *createInstance(Device &device, const std::string &subtype);
+Instance *createInstance(DeviceState &device, const std::string &subtype);
 
 } // namespace prism

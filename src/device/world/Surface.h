@@ -9,7 +9,7 @@ namespace prism {
 class Surface : public Object
 {
  public:
-  explicit Surface(Device &device) : Object(device, ANARI_SURFACE, "") {}
+  explicit Surface(DeviceState &device) : Object(device, ANARI_SURFACE, "") {}
 
   const Geometry *geometry() const
   {

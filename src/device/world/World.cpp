@@ -1,10 +1,10 @@
 #include "World.h"
 
-#include "../Device.h"
 #include "../array/Array.h"
 #include "../light/EmissiveSurface.h"
 #include "../light/Light.h"
-#include "../material/PhysicallyBased.h"
+#include "../material/Material.h"
+#include "../object/DeviceState.h"
 #include "../rt/RayValidity.h"
 
 #include <algorithm>
@@ -67,7 +67,7 @@ bool isTraceablePlacement(const box3 &bounds,
 
 } // namespace
 
-World::World(Device &device)
+World::World(DeviceState &device)
     : Object(device, ANARI_WORLD, ""),
       m_implicitGroup(new Group(device)),
       m_scene(std::make_unique<rt::Scene>(device.rtContext())),
@@ -237,17 +237,9 @@ void World::placeEmitters()
       // A surface recommitted since its group was (the group refreshes
       // before the frame renders) may have lost its geometry or material.
       const Surface *surface = group.surface(g);
-      const auto *material = surface && surface->isValid()
-                                 ? surface->material()->asPhysicallyBased()
-                                 : nullptr;
-      if (!material)
-        continue;
-      const auto &emissive = material->inputs().emissive;
-      const float3 radiance =
-          PhysicallyBased::usableEmission(emissive.constant());
-      // Textured emission varies over the surface: rays find it alone.
-      if (emissive.source() != MaterialInput<float3>::Source::Constant
-          || !(std::max(radiance.x, std::max(radiance.y, radiance.z)) > 0.f))
+      float3 radiance;
+      if (!surface || !surface->isValid()
+          || !surface->material()->constantEmission(radiance))
         continue;
       if (emitters >= kMaxEmitters
           || primitives + surface->geometry()->primitiveCount()

@@ -18,7 +18,7 @@ namespace prism {
 class World : public Object
 {
  public:
-  explicit World(Device &device);
+  explicit World(DeviceState &device);
   ~World() override;
 
   // One placed group: what an Embree instance id stands for.

@@ -18,6 +18,17 @@ the outputs are committed, so this only reruns when the assets change):
                         missing-buffer.gltf, cycle.gltf, bad-index.obj,
                         garbage.obj, tiny_4x4x4_uint8.raw,
                         truncated_8x8x8_uint16.raw, volume.raw
+  glTF indices          mesh-index-2pow32.gltf (a node's mesh 2^32, which
+                        tinygltf's int cast turned into mesh 0),
+                        scene-past-end.gltf ("scene": 5 of 1),
+                        material-index-2pow32.glb (a primitive's material
+                        2^32 + 1 inside a GLB's JSON chunk),
+                        huge-zero-accessor.gltf (POSITION without a buffer
+                        view claiming 2^28 - 1 elements: nothing backs them)
+  OBJ numbers           nonfinite.obj (nan, inf and 1e39 vertices beside a
+                        good quad), huge-index.obj (vertex 2^63),
+                        wrapping-index.obj (vertex 2^32 + 1, which a 32-bit
+                        atoi reads as 1)
 """
 import base64
 import json
@@ -209,6 +220,29 @@ def plane_scene():
     return json.dumps(gltf, indent=1)
 
 
+def material_index_glb():
+    """plane_scene as a GLB whose primitive names material 2^32 + 1 (of 1)."""
+    buf = Buffer()
+    quad, indices = quad_accessors(buf, half=2.0)
+    gltf = {
+        "asset": {"version": "2.0"},
+        "scenes": [{"nodes": [0]}],
+        "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": quad, "indices": indices,
+                                    "material": 2 ** 32 + 1}]}],
+        "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [1, 0, 0, 1]}}],
+        "bufferViews": buf.views,
+        "accessors": buf.accessors,
+        "buffers": [{"byteLength": len(buf.data)}],
+    }
+    text = json.dumps(gltf).encode()
+    text += b" " * (-len(text) % 4)
+    data = bytes(buf.data) + b"\x00" * (-len(buf.data) % 4)
+    body = (struct.pack("<I", len(text)) + b"JSON" + text
+            + struct.pack("<I", len(data)) + b"BIN\x00" + data)
+    return b"glTF" + struct.pack("<II", 2, 12 + len(body)) + body
+
+
 def expected_depth(size, distance, fovy_degrees):
     """PFM (bottom row first) of the distance from a pinhole at (0, 0,
     distance) to the plane z = 0 through each pixel center."""
@@ -265,6 +299,21 @@ Kd 0.9 0.45 0.1
 Ns 10
 """
 
+NONFINITE_OBJ = """# A quad that renders, and three triangles whose third vertex is not a
+# finite number: they must be left out with one warning.
+v -1 -1 0
+v  1 -1 0
+v  1  1 0
+v -1  1 0
+v nan 0 0
+v 0 inf 0
+v 0 0 1e39
+f 1 2 3 4
+f 1 2 5
+f 2 3 6
+f 3 4 7
+"""
+
 
 def main():
     write("checker.png", checker_png())
@@ -288,8 +337,23 @@ def main():
     cycle = json.loads(plane_scene())
     cycle["nodes"] = [{"mesh": 0, "children": [1]}, {"children": [0]}]
     write("cycle.gltf", json.dumps(cycle))
+    wrapped = json.loads(plane_scene())
+    wrapped["nodes"][0]["mesh"] = 2 ** 32
+    write("mesh-index-2pow32.gltf", json.dumps(wrapped))
+    past_end = json.loads(plane_scene())
+    past_end["scene"] = 5
+    write("scene-past-end.gltf", json.dumps(past_end))
+    write("material-index-2pow32.glb", material_index_glb())
+    zeros = json.loads(plane_scene())
+    del zeros["accessors"][0]["bufferView"]
+    zeros["accessors"][0]["count"] = 2 ** 28 - 1
+    write("huge-zero-accessor.gltf", json.dumps(zeros))
     write("bad-index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n")
     write("garbage.obj", bytes((i * 37 + 11) % 256 for i in range(512)))
+    write("nonfinite.obj", NONFINITE_OBJ)
+    write("huge-index.obj",
+          "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9223372036854775808\n")
+    write("wrapping-index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4294967297\n")
     write("tiny_4x4x4_uint8.raw", bytes(range(64)))
     write("truncated_8x8x8_uint16.raw", bytes(1000))
     write("volume.raw", bytes(64))

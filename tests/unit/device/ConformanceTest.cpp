@@ -4,13 +4,14 @@
 #include "Device.h"
 #include "DeviceInfo.h"
 #include "introspection/Introspection.h"
-#include "object/ObjectFactory.h"
+#include "object/UnknownObject.h"
 
 #include "anari/frontend/type_utility.h"
 
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -191,6 +192,41 @@ TEST_F(Conformance, EveryAdvertisedParameterIsRead)
       ADD_FAILURE() << anari::toString(type) << ": " << w;
     m_device.release(handle);
   }
+}
+
+// The other way round: a renderer reads nothing introspection does not
+// declare (with its type and, where it has one, its default).
+TEST_F(Conformance, EveryParameterARendererReadsIsAdvertised)
+{
+  int renderers = 0;
+  for (const char **s = introspection::objectSubtypes(ANARI_RENDERER); s && *s;
+       s++, renderers++) {
+    ANARIObject handle = create(ANARI_RENDERER, *s);
+    m_device.commitParameters(handle);
+    m_device.flushCommits();
+    std::set<std::string> listed{"name"};
+    auto *params = (const ANARIParameter *)introspection::objectInfo(
+        ANARI_RENDERER, *s, "parameter", ANARI_PARAMETER_LIST);
+    for (; params && params->name; params++) {
+      listed.insert(params->name);
+      auto *definition =
+          introspection::findParameter(ANARI_RENDERER, *s, params->name);
+      ASSERT_NE(definition, nullptr) << *s << " " << params->name;
+      // Every value parameter has a default (not the name, not arrays).
+      const bool needsDefault = !anari::isObject(params->type)
+                                && std::strcmp(params->name, "name") != 0;
+      if (needsDefault) {
+        EXPECT_NE(definition->defaultValue, nullptr)
+            << *s << " " << params->name;
+      }
+    }
+    for (const std::string &name : m_device.lookup(handle)->parametersRead())
+      EXPECT_TRUE(listed.count(name)) << "renderer '" << *s << "' reads '"
+                                      << name << "', which is not declared";
+    m_device.release(handle);
+  }
+  EXPECT_GE(renderers, 5);
+  EXPECT_TRUE(warnings().empty());
 }
 
 TEST_F(Conformance, AdvertisedExtensionsAreKnownToTheApi)

@@ -4,7 +4,7 @@
 #include "array/Array.h"
 #include "material/Matte.h"
 #include "material/PhysicallyBased.h"
-#include "object/ObjectFactory.h"
+#include "object/UnknownObject.h"
 #include "sampler/Image2D.h"
 #include "sampler/Transform.h"
 

@@ -80,6 +80,19 @@ TEST_F(RayQueueTest, OcclusionPerRay)
   EXPECT_FALSE(queue.occluded(1));
   EXPECT_TRUE(queue.occluded(2));
   EXPECT_FALSE(queue.occluded(3));
+  // Transmittance: nothing through opaque blockers, everything otherwise,
+  // then what attenuation along the ray lets through.
+  const float3 none{0, 0, 0}, all{1, 1, 1};
+  EXPECT_EQ(queue.transmittance(0), none);
+  EXPECT_EQ(queue.transmittance(1), all);
+  EXPECT_EQ(queue.transmittance(2), none);
+  EXPECT_EQ(queue.transmittance(3), all);
+  queue.attenuate(3, float3{0.5f, 0.25f, 1.f});
+  EXPECT_EQ(queue.transmittance(3), (float3{0.5f, 0.25f, 1.f}));
+  // Untraced rays (an empty world) reach their end.
+  RayQueue untraced;
+  untraced.push({0, 0, 0}, {0, 0, 1}, 0.f, kInf, 0.5f, 0);
+  EXPECT_EQ(untraced.transmittance(0), all);
 }
 
 TEST_F(RayQueueTest, UntraceableRaysFindNothing)

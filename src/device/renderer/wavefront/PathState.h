@@ -3,8 +3,9 @@
 // hold its rays; this holds everything else, indexed by the ray's tag).
 #pragma once
 
-#include "../../frame/FrameBuffers.h"
 #include "../../math/Vec.h"
+#include "../FrameBuffers.h"
+#include "MediumStack.h"
 
 #include <cstdint>
 
@@ -22,15 +23,15 @@ struct PathState
   // How much of the ambient light the last surface lets reach it (its
   // material's occlusion).
   float ambientVisibility{1.f};
-  // The absorbing medium the current ray travels through (per unit
-  // length; zero outside any volume).
-  float3 medium{0.f, 0.f, 0.f};
-  uint16_t bounce{0};  // scattering events so far (0: the camera ray)
-  uint16_t layer{0};   // see-through surfaces passed at this bounce
-  uint32_t x{0}, y{0}; // the pixel
-  uint32_t seed{0};    // of its random numbers (pathSeed())
-  float time{0.5f};    // within the shutter, shared by all its rays
-  PixelSample sample;  // the first hit's channels and the final color
+  // The media the current ray travels through.
+  MediumStack media;
+  uint16_t bounce{0};      // scattering events so far (0: the camera ray)
+  uint16_t layer{0};       // see-through surfaces passed at this bounce
+  uint32_t x{0}, y{0};     // the pixel
+  uint32_t seed{0};        // the pixel's (sequenceSeed() per decision)
+  uint32_t sampleIndex{0}; // in the pixel's sample sequences
+  float time{0.5f};        // within the shutter, shared by all its rays
+  PixelSample sample;      // the first hit's channels and the final color
 };
 
 } // namespace prism

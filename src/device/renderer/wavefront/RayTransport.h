@@ -14,7 +14,8 @@ class RayTransport
   virtual ~RayTransport() = default;
   // Fills in every ray's closest hit.
   virtual void traceClosest(rt::RayQueue &queue) const = 0;
-  // Marks every ray something blocks.
+  // Sets every ray's transmittance: what reaches its end (0 where an opaque
+  // surface blocks it).
   virtual void traceOcclusion(rt::RayQueue &queue) const = 0;
 };
 

@@ -1,6 +1,6 @@
 #include "MotionParameters.h"
 
-#include "../array/Array.h"
+#include "Array.h"
 
 #include "anari/frontend/type_utility.h"
 

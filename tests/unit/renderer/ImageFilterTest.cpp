@@ -1,5 +1,5 @@
 // Bilinear sampling and resizing of float4 images.
-#include "frame/ImageFilter.h"
+#include "renderer/ImageFilter.h"
 
 #include <gtest/gtest.h>
 

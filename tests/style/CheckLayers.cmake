@@ -1,0 +1,31 @@
+# The device's layers point one way (docs/ARCHITECTURE.md): nothing below
+# the device includes Device.h (objects get a DeviceState instead), and
+# nothing outside rt/ includes Embree. Run as cmake -DSOURCE_DIR=... -P.
+set(lower object array frame world renderer geometry material light sampler
+  camera denoise introspection math parallel shading rt)
+set(problems "")
+foreach(folder ${lower})
+  file(GLOB_RECURSE files ${SOURCE_DIR}/src/device/${folder}/*.h
+    ${SOURCE_DIR}/src/device/${folder}/*.cpp)
+  foreach(file ${files})
+    file(STRINGS ${file} lines REGEX "^#include \"(.*/)?Device\\.h\"")
+    if(lines)
+      list(APPEND problems "${file} includes Device.h")
+    endif()
+  endforeach()
+endforeach()
+file(GLOB_RECURSE sources ${SOURCE_DIR}/src/*.h ${SOURCE_DIR}/src/*.cpp)
+foreach(file ${sources})
+  if(file MATCHES "/src/device/rt/")
+    continue()
+  endif()
+  file(STRINGS ${file} lines REGEX "^#include [<\"]embree")
+  if(lines)
+    list(APPEND problems "${file} includes Embree outside rt/")
+  endif()
+endforeach()
+if(problems)
+  list(JOIN problems "\n" text)
+  message(FATAL_ERROR "layering broken:\n${text}")
+endif()
+message(STATUS "layers point one way")

@@ -1,0 +1,96 @@
+// The path tracer's sample sequence: every prefix of 2^k samples is
+// stratified in every elementary interval, scrambling decorrelates seeds,
+// and the points are uniform.
+#include "renderer/SampleSequence.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace prism {
+namespace {
+
+// Whether the first 2^k points of `seed` put exactly one point in each cell
+// of every 2^a x 2^(k-a) grid (a (0,k,2)-net in base 2).
+bool isNet(uint32_t seed, int k)
+{
+  const uint32_t n = 1u << k;
+  for (int a = 0; a <= k; a++) {
+    const uint32_t cols = 1u << a, rows = 1u << (k - a);
+    std::vector<int> cells(n, 0);
+    for (uint32_t i = 0; i < n; i++) {
+      const float2 p = sobolSample2D(i, seed);
+      const uint32_t cx = uint32_t(p.x * float(cols));
+      const uint32_t cy = uint32_t(p.y * float(rows));
+      if (cx >= cols || cy >= rows || ++cells[cy * cols + cx] > 1)
+        return false;
+    }
+  }
+  return true;
+}
+
+TEST(SampleSequence, EveryPowerOfTwoPrefixIsStratified)
+{
+  for (uint32_t pixel = 0; pixel < 32; pixel++) {
+    const uint32_t seed = sequenceSeed(pixel, 7 * pixel + 3, pixel % 5);
+    for (int k = 0; k <= 10; k++)
+      EXPECT_TRUE(isNet(seed, k)) << "seed " << seed << ", 2^" << k;
+  }
+}
+
+TEST(SampleSequence, ScramblingDecorrelatesSeeds)
+{
+  // Same sample index, neighbouring pixels or dimensions: the points are
+  // independent (their correlation over many indices is near zero), unlike
+  // an unscrambled sequence where they would be equal.
+  const int n = 4096;
+  for (const auto &[a, b] :
+      {std::pair{sequenceSeed(10, 10, 0), sequenceSeed(11, 10, 0)},
+          std::pair{sequenceSeed(10, 10, 0), sequenceSeed(10, 10, 1)}}) {
+    double sa = 0, sb = 0, sab = 0, saa = 0, sbb = 0;
+    for (int i = 0; i < n; i++) {
+      const double x = sobolSample2D(uint32_t(i), a).x;
+      const double y = sobolSample2D(uint32_t(i), b).x;
+      sa += x, sb += y, sab += x * y, saa += x * x, sbb += y * y;
+    }
+    const double cov = sab / n - (sa / n) * (sb / n);
+    const double corr =
+        cov
+        / std::sqrt((saa / n - sa * sa / n / n) * (sbb / n - sb * sb / n / n));
+    EXPECT_LT(std::abs(corr), 0.06) << corr; // ~4 sigma for independence
+  }
+}
+
+TEST(SampleSequence, ShuffledPrefixesDifferAcrossSeeds)
+{
+  // Each pixel visits the sequence in its own order: the first sample of
+  // two pixels is not the same point.
+  int same = 0;
+  for (uint32_t pixel = 0; pixel < 256; pixel++) {
+    const float2 a = sobolSample2D(0, sequenceSeed(pixel, 0, 0));
+    const float2 b = sobolSample2D(0, sequenceSeed(pixel + 1, 0, 0));
+    same += a == b;
+  }
+  EXPECT_EQ(same, 0);
+}
+
+TEST(SampleSequence, PointsAreUniform)
+{
+  // Chi-square over 16 x 16 cells, 64k points from many seeds' prefixes
+  // of 256: the expected 256 per cell within the 0.001 critical value.
+  std::vector<int> cells(256, 0);
+  for (uint32_t pixel = 0; pixel < 256; pixel++)
+    for (uint32_t i = 0; i < 256; i++) {
+      const float2 p = sobolSample2D(i, sequenceSeed(pixel, 1, 2));
+      cells[uint32_t(p.y * 16) * 16 + uint32_t(p.x * 16)]++;
+    }
+  double chi2 = 0;
+  for (int c : cells)
+    chi2 += (c - 256.0) * (c - 256.0) / 256.0;
+  // Stratified points land far more evenly than random ones would.
+  EXPECT_LT(chi2, 330.5); // chi-square(255) at 0.001
+}
+
+} // namespace
+} // namespace prism
