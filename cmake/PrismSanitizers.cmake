@@ -4,13 +4,6 @@ if(PRISM_SANITIZE)
   add_compile_options(-fsanitize=${PRISM_SANITIZE} -fno-sanitize-recover=all
     -fno-omit-frame-pointer -g)
   add_link_options(-fsanitize=${PRISM_SANITIZE})
-  # clang links the sanitizers' C++ runtime parts (UBSan's vptr checks) only
-  # when linking as C++; the C tests link libanari, which needs them (and
-  # they need libstdc++).
-  if(CMAKE_C_COMPILER_ID MATCHES "Clang")
-    add_link_options(
-      "$<$<LINK_LANGUAGE:C>:-fsanitize-link-c++-runtime;-lstdc++>")
-  endif()
 endif()
 
 # PRISM_BUILD_FUZZERS: everything built gets libFuzzer's coverage
