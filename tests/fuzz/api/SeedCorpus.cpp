@@ -975,23 +975,29 @@ void writeCorruptions(Corpus &corpus)
     corpus.write("misuse", s.bytes());
   }
   {
-    // The library's entry points, then arrays of every plain data type as
-    // a geometry's colors (each converted, or refused, at the next frame).
-    Manual m("triangle");
+    // The library's entry points.
+    Seed s;
     for (uint8_t which = 0; which < 5; which++) {
       for (uint8_t name = 0; name < 4; name++)
-        m.s.op(Op::LibraryQuery, {which, 0, name});
+        s.op(Op::LibraryQuery, {which, 0, name});
     }
+    corpus.write("library", s.bytes());
+  }
+  // Arrays of every plain data type as a geometry's colors (each converted,
+  // or refused, at the next frame), in four seeds of 32 types.
+  for (int part = 0; part < 4; part++) {
+    Manual m("triangle");
     m.s.setFresh(m.geometry, "vertex.position", ANARI_ARRAY1D, {0, 6, 0, 0, 0});
     m.finish("matte", "raycast");
-    for (int selector = kAnyElementType; selector < 256; selector++) {
-      const int colors = m.s.arrayOf(uint8_t(selector), 6);
+    for (int i = 0; i < 32; i++) {
+      const int colors =
+          m.s.arrayOf(uint8_t(kAnyElementType + part * 32 + i), 6);
       m.s.setObject(m.geometry, "vertex.color", colors);
       m.s.commit(m.geometry);
-      if (selector % 4 == 0)
+      if (i % 4 == 3)
         m.s.render(0, 1);
     }
-    corpus.write("library-element-types", m.s.bytes());
+    corpus.write("element-types" + std::to_string(part), m.s.bytes());
   }
   {
     // Arrays of every element type and shape, shared and managed, zero
