@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The whole test suite: install what is missing, build, run every test, then
 # rerun the unit and API tests under AddressSanitizer+UBSan and the frame and
-# threading tests under ThreadSanitizer (PRISM_SKIP_SANITIZERS=1 skips those).
+# threading tests under ThreadSanitizer, then fuzz the API and the scene
+# loaders with libFuzzer for PRISM_FUZZ_SECONDS each (scripts/fuzz.sh).
+# PRISM_SKIP_SANITIZERS=1 skips all of those, PRISM_SKIP_FUZZ=1 the fuzzing.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 jobs=$(nproc)
@@ -36,4 +38,8 @@ if [ "${PRISM_SKIP_SANITIZERS:-0}" != 1 ]; then
     -DPRISM_BUILD_TOOLS=OFF -DPRISM_BUILD_BENCHMARKS=OFF \
     -DPRISM_BUILD_IMAGE_TESTS=OFF -DPRISM_BUILD_UNIT_TESTS=OFF
   run_suite "$root/build-tsan" -R "Device::DeviceFrame|FrontEnd"
+
+  if [ "${PRISM_SKIP_FUZZ:-0}" != 1 ]; then
+    "$root/scripts/fuzz.sh"
+  fi
 fi

@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets of tests/fuzz (clang, ASan+UBSan, everything
+# coverage-instrumented) into ./build-fuzz, then fuzzes each one that was
+# built for PRISM_FUZZ_SECONDS seconds (default 180) from its committed corpus
+# (tests/fuzz/<name>/corpus, a scratch copy grows), with its dictionary
+# tests/fuzz/<name>/fuzz_<name>.dict if there is one. Fails on the first
+# crash, leak, timeout, out-of-memory or sanitizer report; the input that
+# caused it is kept under build-fuzz/fuzz-artifacts/<name>/.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${PRISM_FUZZ_BUILD_DIR:-$root/build-fuzz}
+seconds=${PRISM_FUZZ_SECONDS:-180}
+# A single input slower than this is a hang (inputs take milliseconds).
+timeout=${PRISM_FUZZ_TIMEOUT:-30}
+
+export CC=clang CXX=clang++
+PRISM_BUILD_DIR="$build" "$root/scripts/build.sh" \
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPRISM_SANITIZE=address,undefined \
+  -DPRISM_BUILD_FUZZERS=ON -DPRISM_BUILD_TOOLS=ON \
+  -DPRISM_BUILD_BENCHMARKS=OFF -DPRISM_BUILD_IMAGE_TESTS=OFF \
+  -DPRISM_BUILD_UNIT_TESTS=OFF
+
+ran=0
+for name in api loader; do
+  fuzzer="$build/bin/fuzz_$name"
+  corpus="$root/tests/fuzz/$name/corpus"
+  [ -x "$fuzzer" ] || continue
+  scratch="$build/fuzz-work/$name"
+  artifacts="$build/fuzz-artifacts/$name"
+  rm -rf "$scratch" "$artifacts"
+  mkdir -p "$scratch" "$artifacts"
+  [ -d "$corpus" ] && cp -r "$corpus/." "$scratch/"
+  options=(-max_total_time="$seconds" -timeout="$timeout"
+    -rss_limit_mb=4096 -print_final_stats=1 -artifact_prefix="$artifacts/")
+  dictionary="$root/tests/fuzz/$name/fuzz_$name.dict"
+  [ -f "$dictionary" ] && options+=(-dict="$dictionary")
+  echo "== fuzz_$name for ${seconds}s from $(ls "$scratch" | wc -l) inputs"
+  start=$(date +%s)
+  # One process: libFuzzer exits non-zero on a crash, leak, timeout or OOM.
+  # Its per-input progress lines are left out of the log (pulses stay).
+  set +e
+  "$fuzzer" "${options[@]}" "$scratch" 2>&1 \
+    | grep --line-buffered -v -E '^#[0-9]+.*(NEW|REDUCE) '
+  status=${PIPESTATUS[0]}
+  set -e
+  echo "== fuzz_$name: exit $status after $(($(date +%s) - start))s," \
+    "corpus now $(ls "$scratch" | wc -l) inputs"
+  if [ "$status" != 0 ]; then
+    echo "fuzz_$name failed; the input is in $artifacts:" >&2
+    ls -l "$artifacts" >&2
+    echo "reproduce: $fuzzer $artifacts/<file>; once fixed, add the file" \
+      "to tests/fuzz/$name/corpus" >&2
+    exit 1
+  fi
+  ran=$((ran + 1))
+done
+if [ "$ran" = 0 ]; then
+  echo "fuzz.sh: no fuzz target was built" >&2
+  exit 1
+fi
