@@ -12,6 +12,9 @@ build=${PRISM_FUZZ_BUILD_DIR:-$root/build-fuzz}
 seconds=${PRISM_FUZZ_SECONDS:-180}
 # A single input slower than this is a hang (inputs take milliseconds).
 timeout=${PRISM_FUZZ_TIMEOUT:-30}
+# A fixed seed, so a run mutates the same way on every machine: a failure
+# in CI reproduces here (PRISM_FUZZ_SEED=0 lets libFuzzer pick one).
+seed=${PRISM_FUZZ_SEED:-1}
 
 export CC=clang CXX=clang++
 PRISM_BUILD_DIR="$build" "$root/scripts/build.sh" \
@@ -30,7 +33,7 @@ for name in api loader; do
   rm -rf "$scratch" "$artifacts"
   mkdir -p "$scratch" "$artifacts"
   [ -d "$corpus" ] && cp -r "$corpus/." "$scratch/"
-  options=(-max_total_time="$seconds" -timeout="$timeout"
+  options=(-max_total_time="$seconds" -timeout="$timeout" -seed="$seed"
     -rss_limit_mb=4096 -print_final_stats=1 -artifact_prefix="$artifacts/")
   dictionary="$root/tests/fuzz/$name/fuzz_$name.dict"
   [ -f "$dictionary" ] && options+=(-dict="$dictionary")
