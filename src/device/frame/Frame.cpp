@@ -247,8 +247,12 @@ void Frame::render()
     if (m_accumulation)
       accumulate(tile);
     resolve(tile);
-    m_tilesDone++;
+    m_tilesDone.fetch_add(1, std::memory_order_release);
   });
+  // Every tile's pixels happen before this (the increments form one
+  // release sequence), in the C++ memory model itself rather than through
+  // TBB's join, which ThreadSanitizer cannot see.
+  (void)m_tilesDone.load(std::memory_order_acquire);
   if (m_cancel) {
     m_samplesDone = 0; // a partial sample must not enter the average
     m_accumulatedVersion = ~0ull;
