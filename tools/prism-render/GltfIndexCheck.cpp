@@ -91,6 +91,10 @@ class Builder
       // Pointers into the finished document are stable; a duplicate key's
       // later value (the one kept) overwrites an earlier one's text.
       for (const auto &[pointer, text] : m_floats) {
+        // A later duplicate key may have replaced the value (or what held
+        // it) since: then there is nothing to quote.
+        if (!out.root.contains(pointer))
+          continue;
         const Json *value = &out.root.at(pointer);
         if (value->is_number_float())
           out.literals[value] = text;
@@ -543,12 +547,19 @@ std::string GltfJson::text(const nlohmann::json &number) const
 
 GltfJson parseGltfJson(std::string_view text, size_t maxDepth)
 {
-  Builder builder(maxDepth);
-  const bool parsed = Json::sax_parse(text.begin(), text.end(), &builder);
-  GltfJson document = builder.finish();
-  if (!parsed && document.error.empty())
-    document.error = "not valid JSON";
-  return document;
+  try {
+    Builder builder(maxDepth);
+    const bool parsed = Json::sax_parse(text.begin(), text.end(), &builder);
+    GltfJson document = builder.finish();
+    if (!parsed && document.error.empty())
+      document.error = "not valid JSON";
+    return document;
+  } catch (const Json::exception &e) {
+    // Whatever the reader throws on, the file is refused, never the process.
+    GltfJson document;
+    document.error = e.what();
+    return document;
+  }
 }
 
 std::string checkGltfIndices(std::string_view json)
