@@ -508,6 +508,27 @@ std::string Checker::run()
             "buffer",
             "buffers");
         fitsInt(find(view, "target"), w + ".target", true);
+        // The view must lie inside its buffer: tinygltf hands images their
+        // view's bytes without checking.
+        const Json *buffers = find(m_root, "buffers");
+        const Json *buffer = find(view, "buffer");
+        if (!m_error.empty() || !buffers || !buffers->is_array() || !buffer
+            || !buffer->is_number_unsigned()
+            || buffer->get<uint64_t>() >= buffers->size())
+          return;
+        auto size = [](const Json *value) {
+          return value && value->is_number_unsigned() ? value->get<uint64_t>()
+                                                      : uint64_t(0);
+        };
+        const uint64_t offset = size(find(view, "byteOffset"));
+        const uint64_t length = size(find(view, "byteLength"));
+        const uint64_t available =
+            size(find((*buffers)[buffer->get<size_t>()], "byteLength"));
+        if (offset > available || length > available - offset)
+          m_error = w + " (bytes " + std::to_string(offset) + " to "
+                    + std::to_string(offset + length)
+                    + ") reaches past its buffer of "
+                    + std::to_string(available) + " bytes";
       });
   forEach(find(m_root, "skins"), "skins", [&](const Json &skin, auto w) {
     indexList(
