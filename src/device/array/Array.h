@@ -58,10 +58,6 @@ class Array : public Object
   {
     return m_regionEnd - m_regionBegin;
   }
-  bool isShared() const
-  {
-    return m_appMemory != nullptr;
-  }
   // Whether the application gets its memory back when it releases this
   // array (shared, no deleter: spec 3.9), so objects still using the array
   // need a copy of their own.

@@ -31,24 +31,6 @@ inline float2 hashedSample2D(
       float(h >> 8) * (1.f / 16777216.f), float(g >> 8) * (1.f / 16777216.f)};
 }
 
-// What a path draws all its random numbers from (seededSample2D): pixel and
-// sample hashed once, so each further pair costs two hashes, not five.
-inline uint32_t pathSeed(uint32_t x, uint32_t y, uint32_t sample)
-{
-  return mixBits(x * 0x9e3779b9u ^ mixBits(y ^ mixBits(sample ^ 0x2545f491u)));
-}
-
-// A point in [0,1)^2 for stream `stream` of `seed`: the streams step the
-// seed by the golden ratio's multiple before hashing, so they do not
-// overlap.
-inline float2 seededSample2D(uint32_t seed, uint32_t stream)
-{
-  const uint32_t h = mixBits(seed + (stream + 1u) * 0x9e3779b9u);
-  const uint32_t g = mixBits(h ^ 0x68bc21ebu);
-  return {
-      float(h >> 8) * (1.f / 16777216.f), float(g >> 8) * (1.f / 16777216.f)};
-}
-
 // Where in its exposure sample n of pixel (x, y) falls, in [0, 1): the
 // middle for the first sample, then a van der Corput sequence rotated per
 // pixel, so n samples cover the exposure evenly (error ~1/n, not
