@@ -580,6 +580,21 @@ bool loadImage(tinygltf::Image *image,
   return true;
 }
 
+// The image loader for a file whose indices could not be checked (it fails
+// once tinygltf has parsed it): the bytes may lie outside their buffer.
+bool skipImage(tinygltf::Image *,
+    const int,
+    std::string *,
+    std::string *,
+    int,
+    int,
+    const unsigned char *,
+    int,
+    void *)
+{
+  return true;
+}
+
 // tinygltf's warnings about images that are reported per image instead.
 bool isImageWarning(const std::string &line)
 {
@@ -785,6 +800,11 @@ bool GltfImporter::parse()
     const std::string unsupported = unsupportedGltfDependency(json.root);
     if (!unsupported.empty())
       return fail(unsupported);
+    // Indices before tinygltf parses: it hands the image loader a buffer
+    // view's bytes without checking that the view lies inside its buffer.
+    const std::string badIndex = checkGltfIndices(json);
+    if (!badIndex.empty())
+      return fail(badIndex);
   }
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks({&fileExists,
@@ -792,7 +812,11 @@ bool GltfImporter::parse()
       &readWholeFile,
       &writeWholeFile,
       &m_access});
-  loader.SetImageLoader(&loadImage, &m_access);
+  // Image bytes are trusted only once the indices were checked (above).
+  if (json.ok())
+    loader.SetImageLoader(&loadImage, &m_access);
+  else
+    loader.SetImageLoader(&skipImage, nullptr);
   // tinygltf joins URIs to the folder without its trailing '/'.
   const size_t slash = m_path.find_last_of('/');
   const std::string baseDirectory =
@@ -826,12 +850,9 @@ bool GltfImporter::parse()
                      + (error.empty() ? "not a valid glTF file" : error);
     return false;
   }
-  // tinygltf narrowed every index to int: check them as the file wrote them.
-  const std::string badIndex = json.ok()
-                                   ? checkGltfIndices(json)
-                                   : "cannot check its indices: " + json.error;
-  if (!badIndex.empty())
-    return fail(badIndex);
+  // tinygltf read JSON we could not: its indices went unchecked.
+  if (!json.ok())
+    return fail("cannot check its indices: " + json.error);
   for (const std::string &used : m_model.extensionsUsed)
     if (!isSupportedGltfExtension(used))
       note("extension " + used + " is not supported and is ignored");
