@@ -12,6 +12,7 @@
 #include "renderer/PathTracer.h"
 #include "renderer/Raycast.h"
 #include "sampler/Sampler.h"
+#include "volume/SpatialField.h"
 #include "world/Group.h"
 #include "world/Instance.h"
 #include "world/Surface.h"
@@ -69,10 +70,9 @@ void addPrismSubtypes(SubtypeRegistry &registry)
   registry.add(ANARI_SURFACE, only<Surface>());
   registry.add(ANARI_GROUP, only<Group>());
   registry.add(ANARI_WORLD, only<World>());
-  // Spatial fields and volumes: none yet, but objects of these types are
-  // created (inert, reported) rather than refused.
-  registry.add(ANARI_SPATIAL_FIELD,
-      [](DeviceState &, const std::string &) -> Object * { return nullptr; });
+  registry.add(ANARI_SPATIAL_FIELD, createSpatialField);
+  // Volumes: none yet, but objects of this type are created (inert,
+  // reported) rather than refused.
   registry.add(ANARI_VOLUME,
       [](DeviceState &, const std::string &) -> Object * { return nullptr; });
 }

@@ -2,7 +2,7 @@
 # the device includes Device.h (objects get a DeviceState instead), and
 # nothing outside rt/ includes Embree. Run as cmake -DSOURCE_DIR=... -P.
 set(lower object array frame world renderer geometry material light sampler
-  camera denoise introspection math parallel shading rt)
+  camera denoise introspection math parallel shading rt volume)
 set(problems "")
 foreach(folder ${lower})
   file(GLOB_RECURSE files ${SOURCE_DIR}/src/device/${folder}/*.h

@@ -1,0 +1,37 @@
+#include "SpatialField.h"
+
+#include <cmath>
+#include <limits>
+
+namespace prism {
+
+SpatialField::SpatialField(DeviceState &device, const std::string &subtype)
+    : Object(device, ANARI_SPATIAL_FIELD, subtype)
+{}
+
+void SpatialField::commitParameters()
+{
+  m_valid = false;
+  m_valid = readField();
+}
+
+float3 SpatialField::gradient(const float3 &position) const
+{
+  const float h = 0.5f * cellSize();
+  auto difference = [&](float3 step) {
+    const float ahead = sample(position + step);
+    const float behind = sample(position - step);
+    // At the domain's edge, a one-sided difference.
+    const float centre = sample(position);
+    if (std::isnan(ahead))
+      return (centre - behind) / h;
+    if (std::isnan(behind))
+      return (ahead - centre) / h;
+    return (ahead - behind) / (2.f * h);
+  };
+  return {difference({h, 0.f, 0.f}),
+      difference({0.f, h, 0.f}),
+      difference({0.f, 0.f, h})};
+}
+
+} // namespace prism
