@@ -13,6 +13,7 @@
 #include "renderer/Raycast.h"
 #include "sampler/Sampler.h"
 #include "volume/SpatialField.h"
+#include "volume/Volume.h"
 #include "world/Group.h"
 #include "world/Instance.h"
 #include "world/Surface.h"
@@ -71,10 +72,7 @@ void addPrismSubtypes(SubtypeRegistry &registry)
   registry.add(ANARI_GROUP, only<Group>());
   registry.add(ANARI_WORLD, only<World>());
   registry.add(ANARI_SPATIAL_FIELD, createSpatialField);
-  // Volumes: none yet, but objects of this type are created (inert,
-  // reported) rather than refused.
-  registry.add(ANARI_VOLUME,
-      [](DeviceState &, const std::string &) -> Object * { return nullptr; });
+  registry.add(ANARI_VOLUME, createVolume);
 }
 
 } // namespace prism

@@ -2889,6 +2889,12 @@ constexpr float kDefault31_eyeLightBlendRatio[] = {0.5f};
 constexpr float kMinimum31_eyeLightBlendRatio[] = {0.f};
 // eyeLightBlendRatio maximum: ANARI_FLOAT32
 constexpr float kMaximum31_eyeLightBlendRatio[] = {1.f};
+// volumeSamplingRate default: ANARI_FLOAT32
+constexpr float kDefault31_volumeSamplingRate[] = {1.f};
+// volumeSamplingRate minimum: ANARI_FLOAT32
+constexpr float kMinimum31_volumeSamplingRate[] = {0.001f};
+// volumeSamplingRate maximum: ANARI_FLOAT32
+constexpr float kMaximum31_volumeSamplingRate[] = {1000.f};
 // clang-format on
 constexpr ParameterEntry kParameters31[] = {
     {.name = "name",
@@ -2930,6 +2936,15 @@ constexpr ParameterEntry kParameters31[] = {
         .defaultValue = kDefault31_eyeLightBlendRatio,
         .minimum = kMinimum31_eyeLightBlendRatio,
         .maximum = kMaximum31_eyeLightBlendRatio,
+        .extension = kPrismRenderers},
+    {.name = "volumeSamplingRate",
+        .types = {kTypeList6, 1},
+        .description = "volume samples per data cell along a ray (the "
+                       "reference marcher's step is the cell size divided by "
+                       "this); values outside [0.001, 1000] are clamped",
+        .defaultValue = kDefault31_volumeSamplingRate,
+        .minimum = kMinimum31_volumeSamplingRate,
+        .maximum = kMaximum31_volumeSamplingRate,
         .extension = kPrismRenderers}};
 constexpr int kContributors31[] = {kKhrRendererAmbientLight,
     kKhrRendererBackgroundColor,
@@ -4012,10 +4027,11 @@ const ObjectEntry kObjects[] = {
     {.type = ANARI_RENDERER,
         .subtype = "raycast",
         .description = "one primary ray per pixel, eye-light shading of the "
-                       "base color: the fast preview",
+                       "base color, volumes by the reference ray marcher "
+                       "(empty space skipped): the fast preview",
         .extension = kPrismRenderers,
         .contributors = {kContributors31, 4},
-        .parameters = {kParameters31, 7}},
+        .parameters = {kParameters31, 8}},
     // ANARI_SURFACE
     {.type = ANARI_SURFACE,
         .description = "surface object",

@@ -8,6 +8,7 @@
 #include "../shading/Bsdf.h"
 #include "../shading/Sampling.h"
 #include "SampleSequence.h"
+#include "VolumeTracing.h"
 #include "wavefront/RayTransport.h"
 
 #include <algorithm>
@@ -21,6 +22,8 @@ namespace {
 // and roulette; see-through surfaces draw from kOpacityStreams on.
 constexpr uint32_t kStreamsPerBounce = 5;
 constexpr uint32_t kOpacityStreams = 0x10000u;
+// Collisions in volumes draw from kVolumeStreams on.
+constexpr uint32_t kVolumeStreams = 0x20000u;
 // See-through surfaces a path passes at one bounce before it gives up.
 constexpr uint16_t kMaxLayers = 64;
 
@@ -226,6 +229,8 @@ void PathTracer::shadeBounce(const RenderContext &context,
     if (rays.untraceable(r))
       continue; // a degenerate camera or bounce ray ends its path
     Bounce b = resolveHit(context, paths[rays.tag(r)], rays, r);
+    if (collidesInVolume(context, b))
+      continue;
     emitAlongRay(context, b);
     if (!b.found || passThrough(b, next))
       continue;
@@ -259,6 +264,39 @@ PathTracer::Bounce PathTracer::resolveHit(const RenderContext &context,
   if (b.found)
     b.shading = b.surface.material().shade(b.surface.attributes);
   return b;
+}
+
+bool PathTracer::collidesInVolume(const RenderContext &context, Bounce &b) const
+{
+  const World &world = *context.world;
+  if (world.volumes().empty())
+    return false;
+  PathState &path = b.path;
+  const float hitDistance =
+      b.hit.found() ? b.hit.t : std::numeric_limits<float>::infinity();
+  HashedStream random(
+      streamSeed(path, kVolumeStreams + path.layer + 97u * path.bounce)
+      ^ mixBits(path.sampleIndex));
+  VolumeCollision collision;
+  if (!trackCollision(world,
+          b.ray.origin,
+          b.ray.direction,
+          b.tMin,
+          hitDistance,
+          random,
+          collision))
+    return false;
+  // The volume absorbed the path there and emits its colour (the media of
+  // spec 5.12.1 absorb and emit; they do not scatter).
+  path.radiance = path.radiance + path.throughput * collision.color;
+  if (!path.recordedFirstHit) {
+    path.sample.depth = collision.t;
+    path.sample.albedo = collision.color;
+    path.sample.objectId = collision.objectId;
+    path.sample.instanceId = collision.instanceId;
+    path.recordedFirstHit = true;
+  }
+  return true;
 }
 
 void PathTracer::emitAlongRay(const RenderContext &context, Bounce &b) const

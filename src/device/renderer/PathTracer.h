@@ -84,7 +84,8 @@ class PathTracer : public Renderer
     float3 wo;
     float offset;
   };
-  // Stages: what the ray hit and the material there; light reached along
+  // Stages: what the ray hit and the material there; a collision in a
+  // volume before it; light reached along
   // the ray (and the background or ambient light on a miss); stochastic
   // pass-through of see-through surfaces; the first hit's channels; the
   // surface's own emission; next-event estimation; BSDF sampling with
@@ -93,6 +94,9 @@ class PathTracer : public Renderer
       PathState &path,
       const rt::RayQueue &rays,
       size_t r) const;
+  // Delta tracking through the volumes before the hit: true when the path
+  // ended in one (having added its emission).
+  bool collidesInVolume(const RenderContext &context, Bounce &b) const;
   void emitAlongRay(const RenderContext &context, Bounce &b) const;
   bool passThrough(Bounce &b, rt::RayQueue &next) const;
   void recordFirstHit(Bounce &b) const;

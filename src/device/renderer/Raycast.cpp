@@ -1,6 +1,8 @@
 #include "Raycast.h"
 
 #include "PrimaryRays.h"
+#include "SampleHash.h"
+#include "VolumeTracing.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,6 +34,13 @@ struct LayerBlend
     const float weight = (1.f - alpha) * coverage;
     color = color + baseColor * (light * weight);
     alpha += weight;
+  }
+  // A marched volume segment: its colour arrives attenuated already, its
+  // opacity is what it absorbs of the light behind.
+  void add(const VolumeMarch &march)
+  {
+    color = color + march.color * (1.f - alpha);
+    alpha += (1.f - alpha) * (1.f - march.transmittance);
   }
   bool opaque() const
   {
@@ -219,6 +228,16 @@ void Raycast::commitParameters()
   Renderer::commitParameters();
   m_eyeLightBlendRatio = std::clamp(
       read<float>("eyeLightBlendRatio", ANARI_FLOAT32, 0.5f), 0.f, 1.f);
+  m_volumeSamplingRate = read<float>("volumeSamplingRate", ANARI_FLOAT32, 1.f);
+  if (!(m_volumeSamplingRate >= 1e-3f && m_volumeSamplingRate <= 1e3f)) {
+    report(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "'volumeSamplingRate' %g is outside [0.001, 1000]; it is clamped",
+        double(m_volumeSamplingRate));
+    m_volumeSamplingRate = std::isnan(m_volumeSamplingRate)
+                               ? 1.f
+                               : std::clamp(m_volumeSamplingRate, 1e-3f, 1e3f);
+  }
 }
 
 void Raycast::renderTile(const RenderContext &context,
@@ -238,7 +257,43 @@ void Raycast::renderTile(const RenderContext &context,
   // Lane i of the packet just traced for the straight loop: a miss, a hit
   // on a flat constant surface, or a hit shaded here, the loop told to
   // take it for a miss.
+  const bool volumes = !world.volumes().empty();
+  auto laneRay = [&](int i) {
+    return Ray{{packet.originX[i], packet.originY[i], packet.originZ[i]},
+        {packet.directionX[i], packet.directionY[i], packet.directionZ[i]},
+        packet.tMin[i],
+        rayTMax[i],
+        packet.time[i]};
+  };
+  auto laneHit = [&](int i) {
+    rt::Hit hit;
+    hit.t = packet.tMax[i];
+    hit.u = packet.u[i];
+    hit.v = packet.v[i];
+    hit.geometricNormal = {
+        packet.normalX[i], packet.normalY[i], packet.normalZ[i]};
+    hit.primitiveId = packet.primitiveId[i];
+    hit.geometryId = packet.geometryId[i];
+    hit.instanceId = packet.instanceId[i];
+    return hit;
+  };
+  // Whether lane i's ray crosses a volume before what it hit.
+  auto meetsVolume = [&](int i) {
+    const float end =
+        packet.geometryId[i] == rt::kInvalidId ? rayTMax[i] : packet.tMax[i];
+    return mayMeetVolumes(world,
+        {packet.originX[i], packet.originY[i], packet.originZ[i]},
+        {packet.directionX[i], packet.directionY[i], packet.directionZ[i]},
+        packet.tMin[i],
+        end);
+  };
   auto prepareLane = [&](int i, uint32_t x, uint32_t y) {
+    if (volumes && meetsVolume(i)) {
+      shading.setLane(i, lastSurface, false);
+      shading.otherwise[i] = true;
+      shading.samples[i] = shadeSample(context, laneRay(i), laneHit(i), x, y);
+      return;
+    }
     if (packet.geometryId[i] == rt::kInvalidId) {
       shading.setLane(i, lastSurface, false);
       return;
@@ -249,20 +304,8 @@ void Raycast::renderTile(const RenderContext &context,
     if (constant.flat)
       return;
     shading.otherwise[i] = true;
-    const Ray ray{{packet.originX[i], packet.originY[i], packet.originZ[i]},
-        {packet.directionX[i], packet.directionY[i], packet.directionZ[i]},
-        packet.tMin[i],
-        rayTMax[i],
-        packet.time[i]};
-    rt::Hit hit;
-    hit.t = packet.tMax[i];
-    hit.u = packet.u[i];
-    hit.v = packet.v[i];
-    hit.geometricNormal = {
-        packet.normalX[i], packet.normalY[i], packet.normalZ[i]};
-    hit.primitiveId = packet.primitiveId[i];
-    hit.geometryId = packet.geometryId[i];
-    hit.instanceId = packet.instanceId[i];
+    const Ray ray = laneRay(i);
+    const rt::Hit hit = laneHit(i);
     PixelSample &sample = shading.samples[i];
     if (!constant.constant
         || !resolveSurfaceHit(
@@ -314,7 +357,7 @@ void Raycast::renderTile(const RenderContext &context,
                        || (packet.geometryId[i] == lastSurface.geometryKey
                            && packet.instanceId[i] == lastSurface.instanceKey);
       }
-      if (sameSurface && (lastSurface.flat || !anyHit)) {
+      if (sameSurface && (lastSurface.flat || !anyHit) && !volumes) {
         for (int i = 0; i < kLanes; i++) {
           shading.setLane(
               i, lastSurface, packet.geometryId[i] != rt::kInvalidId);
@@ -339,14 +382,41 @@ PixelSample Raycast::shadeSample(const RenderContext &context,
     uint32_t x,
     uint32_t y) const
 {
+  const World &world = *context.world;
   rt::Hit hit = firstHit;
   PixelSample sample;
   LayerBlend blend;
   bool first = true;
+  // Volumes are marched between consecutive layers; their samples move
+  // within their steps from frame to frame, so accumulation converges.
+  MarchSettings march;
+  march.samplingRate = m_volumeSamplingRate;
+  march.offset = context.sampleIndex == 0
+                     ? 0.5f
+                     : hashedSample2D(x, y, context.sampleIndex, 7).x;
+  march.stopTransmittance = 1.f - kOpaqueAlpha;
+  float marchedTo = ray.tMin;
+  auto marchTo = [&](float end) {
+    if (world.volumes().empty() || blend.opaque())
+      return;
+    const VolumeMarch segment =
+        marchVolumes(world, ray.origin, ray.direction, marchedTo, end, march);
+    marchedTo = end;
+    if (first && segment.firstDepth < end) {
+      sample.depth = segment.firstDepth;
+      sample.albedo = segment.firstColor;
+      sample.objectId = segment.objectId;
+      sample.instanceId = segment.instanceId;
+      first = false;
+    }
+    blend.add(segment);
+  };
   for (int layer = 0; layer < kMaxLayers && hit.found(); layer++) {
+    marchTo(hit.t);
+    if (blend.opaque())
+      break;
     SurfaceHit surface;
-    if (resolveSurfaceHit(
-            *context.world, ray, hit, surface, HitDetail::ForMaterial)) {
+    if (resolveSurfaceHit(world, ray, hit, surface, HitDetail::ForMaterial)) {
       const float4 base =
           surface.material().baseColorAndOpacity(surface.attributes);
       const float coverage = surface.material().coverage(base.w);
@@ -368,8 +438,10 @@ PixelSample Raycast::shadeSample(const RenderContext &context,
           break;
       }
     }
-    hit = traceBeyond(*context.world, ray, hit);
+    hit = traceBeyond(world, ray, hit);
   }
+  if (!hit.found())
+    marchTo(ray.tMax);
   sample.color = blend.over(background(x, y, context.width, context.height));
   return sample;
 }

@@ -1,6 +1,8 @@
 // The fast preview and conformance renderer: one primary ray per pixel,
-// surface color shaded with an eye light, see-through surfaces blended
-// front to back. Lights and ambient light are ignored by design.
+// surface color shaded with an eye light, see-through surfaces and the
+// volumes between them blended front to back (volumes by the spec's
+// reference ray marcher, skipping empty space). Lights and ambient light
+// are ignored by design.
 #pragma once
 
 #include "Renderer.h"
@@ -32,6 +34,7 @@ class Raycast : public Renderer
 
  private:
   float m_eyeLightBlendRatio{0.5f};
+  float m_volumeSamplingRate{1.f};
 };
 
 } // namespace prism

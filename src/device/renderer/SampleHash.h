@@ -19,6 +19,24 @@ inline uint32_t mixBits(uint32_t x)
   return x;
 }
 
+// Uniform numbers in [0, 1) one after another from a seed (counter-based:
+// the n-th number is a hash of seed and n), for decisions whose count is
+// not known ahead, such as collisions tracked through a volume.
+class HashedStream
+{
+ public:
+  explicit HashedStream(uint32_t seed) : m_seed(mixBits(seed)) {}
+  float next()
+  {
+    const uint32_t h = mixBits(m_seed ^ (m_counter++ * 0x9e3779b9u));
+    return float(h >> 8) * (1.f / 16777216.f);
+  }
+
+ private:
+  uint32_t m_seed;
+  uint32_t m_counter{0};
+};
+
 // A point in [0,1)^2 for pixel (x, y), sample `sample` and `stream` (one
 // stream per independent random choice).
 inline float2 hashedSample2D(

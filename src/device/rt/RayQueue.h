@@ -61,6 +61,11 @@ class RayQueue
   {
     return m_tMin[i];
   }
+  // The end of ray i (after an occlusion trace: of an unblocked ray).
+  float tMax(size_t i) const
+  {
+    return m_tMax[i];
+  }
   // After a closest-hit trace: whether ray i could not be traced (push()
   // turned it into an empty interval).
   bool untraceable(size_t i) const

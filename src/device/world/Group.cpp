@@ -27,7 +27,7 @@ std::vector<Object *> Group::readObjects(const char *name)
 void Group::commitParameters()
 {
   setSurfaces(readObjects("surface"));
-  m_volumes = readObjects("volume");
+  setVolumes(readObjects("volume"));
   m_lights = readObjects("light");
 }
 
@@ -46,8 +46,29 @@ void Group::setSurfaces(const std::vector<Object *> &surfaces)
   }
 }
 
+void Group::setVolumes(const std::vector<Object *> &volumes)
+{
+  m_volumes.clear();
+  for (Object *object : volumes) {
+    if (object && !dynamic_cast<const Volume *>(object)) {
+      report(ANARI_SEVERITY_WARNING,
+          ANARI_STATUS_INVALID_ARGUMENT,
+          "'volume' array holds a %s; it is skipped",
+          object->describe().c_str());
+      continue;
+    }
+    m_volumes.push_back(object);
+  }
+}
+
 void Group::finalize()
 {
+  m_validVolumes.clear();
+  for (Object *object : m_volumes) {
+    auto *volume = static_cast<const Volume *>(object);
+    if (volume && volume->isValid() && volume->visible())
+      m_validVolumes.push_back(volume);
+  }
   m_scene->clear();
   for (size_t i = 0; i < m_surfaces.size(); i++) {
     const Surface *surface = m_surfaces[i];
@@ -70,9 +91,14 @@ bool Group::getProperty(const std::string &name,
     ANARIWaitMask mask)
 {
   if (name == "bounds" && type == ANARI_FLOAT32_BOX3 && mem
-      && size >= sizeof(box3) && !isEmpty(m_bounds)) {
-    std::memcpy(mem, &m_bounds, sizeof(box3));
-    return true;
+      && size >= sizeof(box3)) {
+    box3 all = m_bounds;
+    for (const Volume *volume : m_validVolumes)
+      all = extend(all, volume->bounds());
+    if (!isEmpty(all)) {
+      std::memcpy(mem, &all, sizeof(box3));
+      return true;
+    }
   }
   return Object::getProperty(name, type, mem, size, mask);
 }

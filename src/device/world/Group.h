@@ -4,6 +4,7 @@
 
 #include "../object/Object.h"
 #include "../rt/Scene.h"
+#include "../volume/Volume.h"
 #include "Surface.h"
 
 #include <memory>
@@ -26,6 +27,11 @@ class Group : public Object
   {
     return uint32_t(m_surfaces.size());
   }
+  // The group's valid, visible volumes.
+  const std::vector<const Volume *> &volumes() const
+  {
+    return m_validVolumes;
+  }
   const std::vector<Object *> &lights() const
   {
     return m_lights;
@@ -34,6 +40,7 @@ class Group : public Object
   {
     return *m_scene;
   }
+  // The bounds of the group's surfaces (volumes() have their own).
   box3 bounds() const
   {
     return m_bounds;
@@ -44,8 +51,10 @@ class Group : public Object
       uint64_t size,
       ANARIWaitMask mask) override;
 
-  // Takes surfaces placed directly in a world (the world's implicit group).
+  // Takes surfaces and volumes placed directly in a world (the world's
+  // implicit group).
   void setSurfaces(const std::vector<Object *> &surfaces);
+  void setVolumes(const std::vector<Object *> &volumes);
   void finalize() override;
 
  protected:
@@ -56,6 +65,7 @@ class Group : public Object
 
   std::vector<const Surface *> m_surfaces;
   std::vector<Object *> m_volumes;
+  std::vector<const Volume *> m_validVolumes;
   std::vector<Object *> m_lights;
   std::unique_ptr<rt::Scene> m_scene;
   box3 m_bounds;

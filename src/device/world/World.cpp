@@ -118,7 +118,7 @@ void World::commitParameters()
       m_instances.push_back(instance);
   }
   m_implicitGroup->setSurfaces(readObjects("surface"));
-  m_volumes = readObjects("volume");
+  m_implicitGroup->setVolumes(readObjects("volume"));
   m_lights = readObjects("light");
 }
 
@@ -201,6 +201,7 @@ void World::finalize()
   }
   m_scene->commit();
   m_bounds = m_scene->bounds();
+  placeVolumes();
   const bool single = m_placements.size() == 1 && m_placements[0].identity;
   m_traced = single ? &m_placements[0].group->scene() : m_scene.get();
   placeEmitters();
@@ -216,6 +217,43 @@ void World::finalize()
   const float sceneRadius =
       isEmpty(m_bounds) ? 1.f : 0.5f * length(m_bounds.upper - m_bounds.lower);
   m_lightSelector.build(m_placedLights, sceneRadius);
+}
+
+void World::placeVolumes()
+{
+  m_placedVolumes.clear();
+  auto place = [&](const Group &group,
+                   const mat3x4 &worldFromObject,
+                   uint32_t instanceId) {
+    const mat3x4 objectFromWorld = inverse(worldFromObject);
+    for (const float3 &c : objectFromWorld.col) {
+      if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z))
+        return; // reported with the group's surfaces, or harmless
+    }
+    for (const Volume *volume : group.volumes()) {
+      const box3 b = volume->bounds();
+      box3 world = emptyBox3();
+      for (int corner = 0; corner < 8; corner++) {
+        world = extend(world,
+            transformPoint(worldFromObject,
+                {corner & 1 ? b.upper.x : b.lower.x,
+                    corner & 2 ? b.upper.y : b.lower.y,
+                    corner & 4 ? b.upper.z : b.lower.z}));
+      }
+      m_placedVolumes.push_back({volume, objectFromWorld, world, instanceId});
+      m_bounds = extend(m_bounds, world);
+    }
+  };
+  place(*m_implicitGroup, kIdentityMat3x4, ~0u);
+  for (const Instance *instance : m_instances) {
+    if (!instance->isValid())
+      continue;
+    // A moving instance's volumes stay where the shutter's middle puts
+    // them.
+    for (size_t i = 0; i < instance->placementCount(); i++) {
+      place(*instance->group(), instance->worldFromObject(i), instance->id(i));
+    }
+  }
 }
 
 void World::placeEmitters()

@@ -9,6 +9,7 @@
 #include "../rt/Scene.h"
 #include "Group.h"
 #include "Instance.h"
+#include "PlacedVolume.h"
 
 #include <memory>
 #include <vector>
@@ -92,6 +93,11 @@ class World : public Object
   {
     return m_reachableLights;
   }
+  // Every placement of every valid, visible volume.
+  const std::vector<PlacedVolume> &volumes() const
+  {
+    return m_placedVolumes;
+  }
   // Chooses among lights() for next-event estimation.
   const LightSelector &lightSelector() const
   {
@@ -112,17 +118,19 @@ class World : public Object
   std::vector<Object *> readObjects(const char *name);
   // Adds a light for every surface with constant emission.
   void placeEmitters();
+  // Places the volumes of every placed group.
+  void placeVolumes();
 
   std::vector<const Instance *> m_instances;
   Group *m_implicitGroup; // an internal object, never seen by the API
   std::vector<Object *> m_lights;
-  std::vector<Object *> m_volumes;
   std::vector<Placement> m_placements;
   std::vector<std::unique_ptr<PlacedLight>> m_placedLights;
   LightSelector m_lightSelector;
   // Per placement, per geometry id: see emitterLight().
   std::vector<std::vector<int32_t>> m_emitterLights;
   std::vector<ReachableLight> m_reachableLights;
+  std::vector<PlacedVolume> m_placedVolumes;
   std::unique_ptr<rt::Scene> m_scene;
   // A world of one untransformed placement traces its group's scene
   // directly: no instance level, the most common case for simple scenes.

@@ -1,8 +1,12 @@
-// The transport of a single process: rays traced against one world.
+// The transport of a single process: rays traced against one world, its
+// surfaces by Embree, its volumes by ratio tracking.
 #pragma once
 
 #include "../../world/World.h"
+#include "../VolumeTracing.h"
 #include "RayTransport.h"
+
+#include <bit>
 
 namespace prism {
 
@@ -18,6 +22,22 @@ class LocalTransport final : public RayTransport
   void traceOcclusion(rt::RayQueue &queue) const override
   {
     m_world.occluded(queue);
+    if (m_world.volumes().empty())
+      return;
+    for (size_t i = 0; i < queue.size(); i++) {
+      if (queue.occluded(i) || queue.untraceable(i))
+        continue;
+      const float3 origin = queue.origin(i), direction = queue.direction(i);
+      // Each ray its own random numbers, the same on every run.
+      HashedStream random(
+          queue.tag(i) * 0x9e3779b9u ^ std::bit_cast<uint32_t>(origin.x)
+          ^ mixBits(
+              std::bit_cast<uint32_t>(origin.y)
+              ^ mixBits(std::bit_cast<uint32_t>(direction.z + origin.z))));
+      const float t = trackTransmittance(
+          m_world, origin, direction, queue.tMin(i), queue.tMax(i), random);
+      queue.attenuate(i, {t, t, t});
+    }
   }
 
  private:
