@@ -2824,6 +2824,8 @@ constexpr int32_t kDefault30_maxPathLength[] = {8};
 constexpr int32_t kMinimum30_maxPathLength[] = {1};
 // maxPathLength maximum: ANARI_INT32
 constexpr int32_t kMaximum30_maxPathLength[] = {1024};
+// volumeMajorantGrid default: ANARI_BOOL
+alignas(4) constexpr int8_t kDefault30_volumeMajorantGrid[] = {1, 0, 0, 0};
 // clang-format on
 constexpr ParameterEntry kParameters30[] = {
     {.name = "name",
@@ -2865,6 +2867,14 @@ constexpr ParameterEntry kParameters30[] = {
         .defaultValue = kDefault30_maxPathLength,
         .minimum = kMinimum30_maxPathLength,
         .maximum = kMaximum30_maxPathLength,
+        .extension = kPrismRenderers},
+    {.name = "volumeMajorantGrid",
+        .types = {kTypeList16, 1},
+        .description =
+            "delta tracking draws collisions against each region's bound of a "
+            "volume's extinction (false: against the largest everywhere; the "
+            "same image, slower: for comparisons)",
+        .defaultValue = kDefault30_volumeMajorantGrid,
         .extension = kPrismRenderers}};
 constexpr PropertyEntry kProperties30[] = {
     {"raysTraced", ANARI_UINT64, false, kPrismRenderers}};
@@ -2895,6 +2905,8 @@ constexpr float kDefault31_volumeSamplingRate[] = {1.f};
 constexpr float kMinimum31_volumeSamplingRate[] = {0.001f};
 // volumeSamplingRate maximum: ANARI_FLOAT32
 constexpr float kMaximum31_volumeSamplingRate[] = {1000.f};
+// volumeMajorantGrid default: ANARI_BOOL
+alignas(4) constexpr int8_t kDefault31_volumeMajorantGrid[] = {1, 0, 0, 0};
 // clang-format on
 constexpr ParameterEntry kParameters31[] = {
     {.name = "name",
@@ -2945,6 +2957,13 @@ constexpr ParameterEntry kParameters31[] = {
         .defaultValue = kDefault31_volumeSamplingRate,
         .minimum = kMinimum31_volumeSamplingRate,
         .maximum = kMaximum31_volumeSamplingRate,
+        .extension = kPrismRenderers},
+    {.name = "volumeMajorantGrid",
+        .types = {kTypeList16, 1},
+        .description = "skip the empty space of volumes and stop where they "
+                       "hide what lies behind (false: the spec's reference "
+                       "marcher exactly, every step sampled: for comparisons)",
+        .defaultValue = kDefault31_volumeMajorantGrid,
         .extension = kPrismRenderers}};
 constexpr int kContributors31[] = {kKhrRendererAmbientLight,
     kKhrRendererBackgroundColor,
@@ -4021,7 +4040,7 @@ const ObjectEntry kObjects[] = {
                        "path per pixel per frame",
         .extension = kPrismRenderers,
         .contributors = {kContributors30, 4},
-        .parameters = {kParameters30, 7},
+        .parameters = {kParameters30, 8},
         .properties = {kProperties30, 1}},
     // ANARI_RENDERER "raycast"
     {.type = ANARI_RENDERER,
@@ -4031,7 +4050,7 @@ const ObjectEntry kObjects[] = {
                        "(empty space skipped): the fast preview",
         .extension = kPrismRenderers,
         .contributors = {kContributors31, 4},
-        .parameters = {kParameters31, 8}},
+        .parameters = {kParameters31, 9}},
     // ANARI_SURFACE
     {.type = ANARI_SURFACE,
         .description = "surface object",

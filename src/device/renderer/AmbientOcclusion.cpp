@@ -1,6 +1,8 @@
 #include "AmbientOcclusion.h"
 
+#include "SampleHash.h"
 #include "SampleSequence.h"
+#include "VolumeTracing.h"
 #include "wavefront/RayTransport.h"
 
 #include <algorithm>
@@ -54,13 +56,13 @@ void AmbientOcclusion::renderTile(const RenderContext &context,
   const auto workspace = m_workspaces.take();
   std::vector<PixelSample> &samples = workspace->samples;
   std::vector<float> &times = workspace->times;
-  std::vector<uint32_t> &open = workspace->open;
+  std::vector<float> &open = workspace->open;
   std::vector<uint16_t> &layers = workspace->layers;
   rt::RayQueue &rays = workspace->rays, &next = workspace->next,
                &occlusion = workspace->occlusion;
   samples.assign(count, PixelSample{});
   times.assign(count, 0.5f);
-  open.assign(count, 0);
+  open.assign(count, 0.f);
   layers.assign(count, 0);
   rays.clear();
   occlusion.clear();
@@ -90,9 +92,35 @@ void AmbientOcclusion::renderTile(const RenderContext &context,
           rays.tMin(r),
           std::numeric_limits<float>::infinity(),
           times[i]};
+      if (rays.untraceable(r))
+        continue; // the background stays
+      // A volume before the hit absorbs the ray with the probability it
+      // absorbs light (delta tracking): frames accumulate its emission.
+      if (!context.world->volumes().empty()) {
+        HashedStream random(sequenceSeed(pixel.x, pixel.y, 40 + layers[i])
+                            ^ mixBits(context.sampleIndex));
+        VolumeCollision collision;
+        if (trackCollision(*context.world,
+                ray.origin,
+                ray.direction,
+                ray.tMin,
+                hit.found() ? hit.t : ray.tMax,
+                random,
+                collision)) {
+          PixelSample &sample = samples[i];
+          sample.color = float4{
+              collision.color.x, collision.color.y, collision.color.z, 1.f};
+          sample.depth = collision.t;
+          sample.albedo = collision.color;
+          sample.objectId = collision.objectId;
+          sample.instanceId = collision.instanceId;
+          // Emission is not occluded: every (unsent) ray counts as open.
+          open[i] = float(m_samples);
+          continue;
+        }
+      }
       SurfaceHit surface;
-      if (rays.untraceable(r)
-          || !resolveSurfaceHit(
+      if (!resolveSurfaceHit(
               *context.world, ray, hit, surface, HitDetail::ForMaterial))
         continue; // the background stays
       const float4 base =
@@ -143,11 +171,11 @@ void AmbientOcclusion::renderTile(const RenderContext &context,
     return;
   transport.traceOcclusion(occlusion);
   for (size_t k = 0; k < occlusion.size(); k++)
-    open[occlusion.tag(k)] += occlusion.occluded(k) ? 0u : 1u;
+    open[occlusion.tag(k)] += occlusion.transmittance(k).x;
   for (size_t i = 0; i < count; i++) {
     PixelSample &sample = samples[i];
     if (std::isfinite(sample.depth)) {
-      const float visibility = float(open[i]) / float(m_samples);
+      const float visibility = open[i] / float(m_samples);
       sample.color = float4{sample.color.x * visibility,
           sample.color.y * visibility,
           sample.color.z * visibility,

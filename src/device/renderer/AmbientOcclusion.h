@@ -34,7 +34,7 @@ class AmbientOcclusion : public Renderer
   {
     std::vector<PixelSample> samples;
     std::vector<float> times;
-    std::vector<uint32_t> open;
+    std::vector<float> open; // per pixel: the occlusion rays' transmittance
     std::vector<uint16_t> layers;
     rt::RayQueue rays, next, occlusion;
   };

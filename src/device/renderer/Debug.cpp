@@ -3,8 +3,10 @@
 #include "NormalMapping.h"
 
 #include "SampleHash.h"
+#include "VolumeTracing.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace prism {
 namespace {
@@ -85,6 +87,28 @@ PixelSample Debug::shadeSample(const RenderContext &context,
         break;
     }
     hit = traceBeyond(*context.world, ray, hit);
+  }
+  // Id views show a volume whose first sample with opacity lies before the
+  // surface.
+  if ((m_mode == Mode::ObjectId || m_mode == Mode::InstanceId)
+      && !context.world->volumes().empty()) {
+    MarchSettings firstSample;
+    firstSample.stopTransmittance = 1.f; // the first absorbing sample ends it
+    const VolumeMarch march = marchVolumes(*context.world,
+        ray.origin,
+        ray.direction,
+        ray.tMin,
+        hit.found() ? hit.t : ray.tMax,
+        firstSample);
+    if (march.firstDepth < std::numeric_limits<float>::infinity()) {
+      const float3 c =
+          idColor(m_mode == Mode::ObjectId ? march.objectId : march.instanceId);
+      sample.color = float4{c.x, c.y, c.z, 1.f};
+      sample.depth = march.firstDepth;
+      sample.objectId = march.objectId;
+      sample.instanceId = march.instanceId;
+      return sample;
+    }
   }
   if (!hit.found() || !surface.surface) {
     sample.color = m_mode == Mode::OpacityHeatmap && layers > 0

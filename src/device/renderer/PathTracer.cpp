@@ -82,6 +82,7 @@ void PathTracer::commitParameters()
   m_maxPathLength =
       std::clamp(read<int32_t>("maxPathLength", ANARI_INT32, 8), 1, 1024);
   m_ambient = m_ambientColor * std::max(m_ambientRadiance, 0.f);
+  m_volumeMajorantGrid = readBool("volumeMajorantGrid", true);
 }
 
 void PathTracer::renderTile(const RenderContext &context,
@@ -284,7 +285,8 @@ bool PathTracer::collidesInVolume(const RenderContext &context, Bounce &b) const
           b.tMin,
           hitDistance,
           random,
-          collision))
+          collision,
+          m_volumeMajorantGrid))
     return false;
   // The volume absorbed the path there and emits its colour (the media of
   // spec 5.12.1 absorb and emit; they do not scatter).

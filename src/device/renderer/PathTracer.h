@@ -137,6 +137,7 @@ class PathTracer : public Renderer
       const SurfaceHit &surface) const;
 
   int m_maxPathLength{8};
+  bool m_volumeMajorantGrid{true};
   float3 m_ambient{0.f, 0.f, 0.f}; // ambientColor * ambientRadiance
 };
 

@@ -228,6 +228,7 @@ void Raycast::commitParameters()
   Renderer::commitParameters();
   m_eyeLightBlendRatio = std::clamp(
       read<float>("eyeLightBlendRatio", ANARI_FLOAT32, 0.5f), 0.f, 1.f);
+  m_volumeMajorantGrid = readBool("volumeMajorantGrid", true);
   m_volumeSamplingRate = read<float>("volumeSamplingRate", ANARI_FLOAT32, 1.f);
   if (!(m_volumeSamplingRate >= 1e-3f && m_volumeSamplingRate <= 1e3f)) {
     report(ANARI_SEVERITY_WARNING,
@@ -394,10 +395,12 @@ PixelSample Raycast::shadeSample(const RenderContext &context,
   march.offset = context.sampleIndex == 0
                      ? 0.5f
                      : hashedSample2D(x, y, context.sampleIndex, 7).x;
-  march.stopTransmittance = 1.f - kOpaqueAlpha;
+  // Without the majorant grid: the reference marcher, every step sampled.
+  march.skipEmpty = m_volumeMajorantGrid;
+  march.stopTransmittance = m_volumeMajorantGrid ? 1.f - kOpaqueAlpha : 0.f;
   float marchedTo = ray.tMin;
   auto marchTo = [&](float end) {
-    if (world.volumes().empty() || blend.opaque())
+    if (world.volumes().empty() || (blend.opaque() && m_volumeMajorantGrid))
       return;
     const VolumeMarch segment =
         marchVolumes(world, ray.origin, ray.direction, marchedTo, end, march);

@@ -35,6 +35,7 @@ class Raycast : public Renderer
  private:
   float m_eyeLightBlendRatio{0.5f};
   float m_volumeSamplingRate{1.f};
+  bool m_volumeMajorantGrid{true};
 };
 
 } // namespace prism

@@ -170,28 +170,32 @@ void marchOverlap(const Segment *segments,
 // (extinction 0 where the volume has no value); stops when visit returns
 // false.
 template <typename Visit>
-void forEachTentativeCollision(
-    const Segment &s, float end, HashedStream &random, Visit &&visit)
+void forEachTentativeCollision(const Segment &s,
+    float end,
+    bool majorantGrid,
+    HashedStream &random,
+    Visit &&visit)
 {
   const Volume &volume = *s.placed->volume;
-  volume.majorants().traverse(s.origin,
-      s.direction,
-      s.t0,
-      end,
-      [&](float enter, float exit, float majorant) {
-        if (majorant <= 0.f)
-          return true;
-        for (float t = enter;;) {
-          t -= std::log1p(-random.next()) / majorant;
-          if (t >= exit)
-            return true;
-          float sigma = 0.f;
-          float3 color{0.f, 0.f, 0.f};
-          volume.sample(s.origin + s.direction * t, sigma, color);
-          if (!visit(t, majorant, sigma, color))
-            return false;
-        }
-      });
+  auto inCell = [&](float enter, float exit, float majorant) {
+    if (majorant <= 0.f)
+      return true;
+    for (float t = enter;;) {
+      t -= std::log1p(-random.next()) / majorant;
+      if (t >= exit)
+        return true;
+      float sigma = 0.f;
+      float3 color{0.f, 0.f, 0.f};
+      volume.sample(s.origin + s.direction * t, sigma, color);
+      if (!visit(t, majorant, sigma, color))
+        return false;
+    }
+  };
+  // Without the grid: one bound, the largest, for the whole segment.
+  if (!majorantGrid)
+    inCell(s.t0, end, volume.majorants().maximum());
+  else
+    volume.majorants().traverse(s.origin, s.direction, s.t0, end, inCell);
 }
 
 } // namespace
@@ -249,7 +253,8 @@ bool trackCollision(const World &world,
     float tMin,
     float tMax,
     HashedStream &random,
-    VolumeCollision &collision)
+    VolumeCollision &collision,
+    bool majorantGrid)
 {
   Segment segments[kMaxSegments];
   const int count =
@@ -261,6 +266,7 @@ bool trackCollision(const World &world,
     // Real with probability extinction / majorant.
     forEachTentativeCollision(s,
         std::min(s.t1, collision.t),
+        majorantGrid,
         random,
         [&](float t, float majorant, float sigma, const float3 &color) {
           if (random.next() * majorant >= sigma)
@@ -289,6 +295,7 @@ float trackTransmittance(const World &world,
   for (int i = 0; i < count && transmittance > 0.f; i++) {
     forEachTentativeCollision(segments[i],
         segments[i].t1,
+        true,
         random,
         [&](float, float majorant, float sigma, const float3 &) {
           transmittance *= std::max(0.f, 1.f - sigma / majorant);

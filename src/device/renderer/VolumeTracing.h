@@ -43,7 +43,8 @@ struct MarchSettings
   // Where in each step the sample lies, in [0, 1) (0.5: the middle;
   // jittered per frame, accumulation converges to the exact integral).
   float offset{0.5f};
-  // Cross majorant cells where nothing can absorb without sampling them.
+  // Cross majorant cells where nothing can absorb without sampling them
+  // (false, with stopTransmittance 0: the reference marcher exactly).
   bool skipEmpty{true};
   // Stop once this little light from behind passes (0: never stop).
   float stopTransmittance{1e-3f};
@@ -70,13 +71,16 @@ struct VolumeCollision
 };
 // False if the ray crosses [tMin, tMax] without a collision: the
 // probability of that is the transmittance, so no weight is needed.
+// Without `majorantGrid`, each volume's largest bound serves everywhere
+// (the same result, more tentative collisions: for comparisons).
 bool trackCollision(const World &world,
     const float3 &origin,
     const float3 &direction,
     float tMin,
     float tMax,
     HashedStream &random,
-    VolumeCollision &collision);
+    VolumeCollision &collision,
+    bool majorantGrid = true);
 
 // An unbiased estimate of the transmittance of [tMin, tMax] (ratio
 // tracking with Russian roulette once it is small).
