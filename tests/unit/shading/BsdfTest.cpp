@@ -9,7 +9,6 @@
 #include "shading/AlbedoTables.h"
 #include "shading/Bsdf.h"
 #include "shading/Fresnel.h"
-#include "shading/Random.h"
 #include "shading/Sampling.h"
 
 #include "ShadingTestUtil.h"

@@ -2,7 +2,6 @@
 // each warp lands where it should with the density it claims (chi-square at
 // significance 0.001, quadrature to 0.5%).
 #include "shading/Microfacet.h"
-#include "shading/Random.h"
 #include "shading/Sampling.h"
 
 #include "ShadingTestUtil.h"

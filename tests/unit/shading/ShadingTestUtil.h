@@ -1,10 +1,37 @@
-// Statistics shared by the shading tests.
+// Statistics and random numbers shared by the shading tests.
 #pragma once
+
+#include "renderer/SampleHash.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
+
+namespace prism {
+
+// Independent random numbers for test case `key`, set `set`, by dimension,
+// from the renderer's hash (renderer/SampleHash.h): the device's one
+// random-number module.
+class RandomSequence
+{
+ public:
+  RandomSequence(uint2 key, uint32_t set, uint32_t) : m_key(key), m_set(set) {}
+  float get1D(uint32_t dimension) const
+  {
+    return get2D(dimension).x;
+  }
+  float2 get2D(uint32_t dimension) const
+  {
+    return hashedSample2D(m_key.x, m_key.y, m_set, dimension);
+  }
+
+ private:
+  uint2 m_key;
+  uint32_t m_set;
+};
+
+} // namespace prism
 
 namespace prism::test {
 
