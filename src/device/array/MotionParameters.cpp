@@ -2,6 +2,8 @@
 
 #include "Array.h"
 
+#include "../object/FormatText.h"
+
 #include "anari/frontend/type_utility.h"
 
 #include <algorithm>
@@ -11,18 +13,6 @@
 
 namespace prism {
 namespace {
-
-std::string format(const char *pattern, ...)
-    __attribute__((format(printf, 1, 2)));
-std::string format(const char *pattern, ...)
-{
-  char buffer[320];
-  va_list args;
-  va_start(args, pattern);
-  std::vsnprintf(buffer, sizeof(buffer), pattern, args);
-  va_end(args);
-  return buffer;
-}
 
 bool finite(const mat3x4 &m)
 {
@@ -56,14 +46,14 @@ MotionTransform readMotionTransform(const MotionParameters &p,
     if (!array)
       return (const Array *)nullptr;
     if (array->elementType() != type) {
-      warn(format("'%s' has element type %s (expected %s); ignored",
+      warn(formatText("'%s' has element type %s (expected %s); ignored",
           name,
           anari::toString(array->elementType()),
           anari::toString(type)));
       return (const Array *)nullptr;
     }
     if (array->count() == 0) {
-      warn(format("'%s' is empty; ignored", name));
+      warn(formatText("'%s' is empty; ignored", name));
       return (const Array *)nullptr;
     }
     return array;
@@ -79,8 +69,8 @@ MotionTransform readMotionTransform(const MotionParameters &p,
   float begin = p.time.x, end = p.time.y;
   if (!(std::isfinite(begin) && std::isfinite(end) && begin < end)
       && (matrices || scale || rotation || translation)) {
-    warn(
-        format("'time' [%g, %g] is not an interval; using [0, 1]", begin, end));
+    warn(formatText(
+        "'time' [%g, %g] is not an interval; using [0, 1]", begin, end));
     begin = 0.f;
     end = 1.f;
   }
@@ -99,7 +89,7 @@ MotionTransform readMotionTransform(const MotionParameters &p,
     const size_t count = std::max({scales, rotations, translations});
     if ((scales && scales != count) || (rotations && rotations != count)
         || (translations && translations != count)) {
-      warn(format(
+      warn(formatText(
           "'motion.scale', 'motion.rotation' and 'motion.translation' have "
           "%zu, %zu and %zu keys; each is resampled to %zu keys",
           scales,
@@ -139,10 +129,10 @@ MotionTransform readMotionTransform(const MotionParameters &p,
   for (uint32_t k = 0; k < out.timeline().keyCount && out.isSet(); k++) {
     const mat3x4 m = out.key(k);
     if (!finite(m) || !finite(inverse(m))) {
-      warn(
-          format("motion key %u is not finite or not invertible; the motion "
-                 "keys are ignored",
-              k));
+      warn(formatText(
+          "motion key %u is not finite or not invertible; the motion "
+          "keys are ignored",
+          k));
       return MotionTransform();
     }
   }

@@ -1,5 +1,7 @@
 #include "Geometry.h"
 
+#include "../object/FormatText.h"
+
 #include "../DeviceInfo.h"
 #include "../array/Array.h"
 #include "../array/ElementConversion.h"
@@ -77,16 +79,15 @@ Geometry::Geometry(DeviceState &device, const std::string &subtype)
 
 void Geometry::invalidate(const char *format, ...)
 {
-  char buffer[512];
   va_list args;
   va_start(args, format);
-  std::vsnprintf(buffer, sizeof(buffer), format, args);
+  const std::string text = formatTextV(format, args);
   va_end(args);
   if (m_valid)
     report(ANARI_SEVERITY_ERROR,
         ANARI_STATUS_INVALID_ARGUMENT,
         "%s; the geometry will not render",
-        buffer);
+        text.c_str());
   m_valid = false;
 }
 

@@ -3,6 +3,8 @@
 #include "../array/Array.h"
 #include "../array/ElementConversion.h"
 
+#include "../object/FormatText.h"
+
 #include "anari/frontend/type_utility.h"
 
 #include <cmath>
@@ -11,18 +13,6 @@
 
 namespace prism {
 namespace {
-
-std::string format(const char *pattern, ...)
-    __attribute__((format(printf, 1, 2)));
-std::string format(const char *pattern, ...)
-{
-  char buffer[320];
-  va_list args;
-  va_start(args, pattern);
-  std::vsnprintf(buffer, sizeof(buffer), pattern, args);
-  va_end(args);
-  return buffer;
-}
 
 // The inner arrays of an array of arrays; a NULL entry or one of another
 // element type is named in `problem`.
@@ -39,17 +29,17 @@ std::vector<const Array *> keyArrays(const Array &keys,
     for (ANARIDataType t : elementTypes)
       accepted |= array && array->elementType() == t;
     if (!accepted) {
-      problem = array ? format("'%s' key %zu has element type %s",
+      problem = array ? formatText("'%s' key %zu has element type %s",
                     name,
                     k,
                     anari::toString(array->elementType()))
-                      : format("'%s' key %zu is not an array", name, k);
+                      : formatText("'%s' key %zu is not an array", name, k);
       return {};
     }
     out.push_back(array);
   }
   if (out.empty())
-    problem = format("'%s' has no keys", name);
+    problem = formatText("'%s' has no keys", name);
   return out;
 }
 
@@ -74,7 +64,7 @@ std::string VertexMotion::readPositions(
     return problem;
   const size_t count = arrays[0]->count();
   if (count < minimumCount) {
-    return format(
+    return formatText(
         "'motion.vertex.position' keys have %zu vertices; at least %zu are "
         "needed",
         count,
@@ -82,7 +72,7 @@ std::string VertexMotion::readPositions(
   }
   for (size_t k = 1; k < arrays.size(); k++) {
     if (arrays[k]->count() != count) {
-      return format(
+      return formatText(
           "'motion.vertex.position' key %zu has %llu vertices but key 0 has "
           "%zu",
           k,
@@ -91,7 +81,7 @@ std::string VertexMotion::readPositions(
     }
   }
   if (!(std::isfinite(time.x) && std::isfinite(time.y) && time.x <= time.y))
-    return format("'time' [%g, %g] is not an interval", time.x, time.y);
+    return formatText("'time' [%g, %g] is not an interval", time.x, time.y);
   m_vertexCount = count;
   for (const Array *array : arrays) {
     // One extra element: Embree reads 16 bytes for each 12-byte vertex.
@@ -119,7 +109,7 @@ std::string VertexMotion::readNormals(const Array &keys, float2 time)
     return problem;
   for (size_t k = 0; k < arrays.size(); k++) {
     if (arrays[k]->count() < m_vertexCount) {
-      return format(
+      return formatText(
           "'motion.vertex.normal' key %zu has %llu normals for %zu vertices",
           k,
           (unsigned long long)arrays[k]->count(),
@@ -151,7 +141,7 @@ std::string VertexMotion::checkTangents(const Array &keys) const
       problem);
   for (size_t k = 0; k < arrays.size() && problem.empty(); k++) {
     if (arrays[k]->count() < m_vertexCount) {
-      problem = format(
+      problem = formatText(
           "'motion.vertex.tangent' key %zu has %llu tangents for %zu vertices",
           k,
           (unsigned long long)arrays[k]->count(),

@@ -1,5 +1,7 @@
 #include "Light.h"
 
+#include "../object/FormatText.h"
+
 #include "../array/Array.h"
 #include "Sampling.h"
 
@@ -167,15 +169,14 @@ Light::buildIntensityDistribution(const Array *array)
 
 void Light::invalidate(const char *format, ...)
 {
-  char buffer[512];
   va_list args;
   va_start(args, format);
-  std::vsnprintf(buffer, sizeof(buffer), format, args);
+  const std::string text = formatTextV(format, args);
   va_end(args);
   report(ANARI_SEVERITY_WARNING,
       ANARI_STATUS_INVALID_ARGUMENT,
       "%s; the light is invalid",
-      buffer);
+      text.c_str());
   m_valid = false;
 }
 

@@ -1,5 +1,7 @@
 #include "Object.h"
 
+#include "FormatText.h"
+
 #include "../object/DeviceState.h"
 
 #include "anari/frontend/type_utility.h"
@@ -248,13 +250,12 @@ void Object::report(ANARIStatusSeverity severity,
     const char *format,
     ...) const
 {
-  char buffer[1024];
   va_list args;
   va_start(args, format);
-  std::vsnprintf(buffer, sizeof(buffer), format, args);
+  const std::string text = formatTextV(format, args);
   va_end(args);
   m_device.reportStatus(
-      m_handle, m_type, severity, code, describe() + ": " + buffer);
+      m_handle, m_type, severity, code, describe() + ": " + text);
 }
 
 } // namespace prism
