@@ -1,0 +1,278 @@
+// Volumes: transferFunction1D over structuredRegular fields of every
+// element type and filter, volumes composited with surfaces in depth
+// order, by raycast and by the path tracer.
+#include "RenderTest.h"
+
+#include <cmath>
+#include <cstring>
+#include <functional>
+
+namespace {
+
+class VolumeScene : public RenderTest
+{
+ protected:
+  // A committed structuredRegular field of n^3 samples over [0, 1]^3
+  // holding value(i, j, k) as `type` elements (written through `store`).
+  ANARISpatialField newField(uint32_t n,
+      ANARIDataType type,
+      size_t elementBytes,
+      const std::function<void(void *, uint32_t, uint32_t, uint32_t)> &store,
+      const char *filter = "linear")
+  {
+    ANARIArray3D data =
+        anariNewArray3D(device(), nullptr, nullptr, nullptr, type, n, n, n);
+    auto *bytes = (unsigned char *)anariMapArray(device(), data);
+    for (uint32_t k = 0; k < n; k++)
+      for (uint32_t j = 0; j < n; j++)
+        for (uint32_t i = 0; i < n; i++)
+          store(bytes + ((size_t(k) * n + j) * n + i) * elementBytes, i, j, k);
+    anariUnmapArray(device(), data);
+    ANARISpatialField field =
+        keep(anariNewSpatialField(device(), "structuredRegular"));
+    setObject(field, "data", ANARI_ARRAY3D, data);
+    anariRelease(device(), data);
+    const float s = 1.f / float(n - 1);
+    setVec3(field, "spacing", {s, s, s});
+    setString(field, "filter", filter);
+    anariCommitParameters(device(), field);
+    return field;
+  }
+  ANARISpatialField newFloatField(uint32_t n,
+      const std::function<float(uint32_t, uint32_t, uint32_t)> &value,
+      const char *filter = "linear")
+  {
+    return newField(
+        n,
+        ANARI_FLOAT32,
+        4,
+        [&](void *p, uint32_t i, uint32_t j, uint32_t k) {
+          const float v = value(i, j, k);
+          std::memcpy(p, &v, 4);
+        },
+        filter);
+  }
+  // A committed volume: blue -> white -> red over [lo, hi], opacity ramp.
+  ANARIVolume newVolume(ANARISpatialField field,
+      float lo = 0.f,
+      float hi = 1.f,
+      float unitDistance = 0.25f)
+  {
+    ANARIVolume volume = keep(anariNewVolume(device(), "transferFunction1D"));
+    setObject(volume, "value", ANARI_SPATIAL_FIELD, field);
+    setArray(volume,
+        "color",
+        ANARI_FLOAT32_VEC3,
+        std::vector<float>{0.1f, 0.2f, 0.9f, 1, 1, 1, 0.9f, 0.1f, 0.1f});
+    setArray(volume,
+        "opacity",
+        ANARI_FLOAT32,
+        std::vector<float>{0.05f, 0.4f, 0.9f});
+    const float range[2] = {lo, hi};
+    anariSetParameter(
+        device(), volume, "valueRange", ANARI_FLOAT32_BOX1, range);
+    setFloat(volume, "unitDistance", unitDistance);
+    anariCommitParameters(device(), volume);
+    return volume;
+  }
+  // A committed group of volumes (and surfaces).
+  ANARIGroup newVolumeGroup(const std::vector<ANARIVolume> &volumes,
+      const std::vector<ANARISurface> &surfaces = {})
+  {
+    ANARIGroup group = keep(anariNewGroup(device()));
+    setObject(group,
+        "volume",
+        ANARI_ARRAY1D,
+        anariNewArray1D(device(),
+            volumes.data(),
+            nullptr,
+            nullptr,
+            ANARI_VOLUME,
+            volumes.size()));
+    if (!surfaces.empty()) {
+      setObject(group,
+          "surface",
+          ANARI_ARRAY1D,
+          anariNewArray1D(device(),
+              surfaces.data(),
+              nullptr,
+              nullptr,
+              ANARI_SURFACE,
+              surfaces.size()));
+    }
+    anariCommitParameters(device(), group);
+    return group;
+  }
+  ANARIInstance placed(ANARIGroup group, const Mat4 &transform)
+  {
+    ANARIInstance instance = newInstance(group);
+    setMat4(instance, "transform", transform);
+    anariCommitParameters(device(), instance);
+    return instance;
+  }
+  // Looking down -z at [0, width] x [0, 1] from above.
+  ANARICamera topView(float width, uint32_t pixelsWide, uint32_t pixelsHigh)
+  {
+    return newOrthographicCamera({width / 2, 0.5f, 3.f},
+        {0, 0, -1},
+        {0, 1, 0},
+        1.f,
+        float(pixelsWide) / float(pixelsHigh));
+  }
+};
+
+// A value per sample with structure at the scale of one cell.
+float cellPattern(uint32_t i, uint32_t j, uint32_t k)
+{
+  return float((i * 7 + j * 3 + k * 5) % 5) / 4.f;
+}
+
+using VolumeFilters = VolumeScene;
+
+// Left to right: the same 5^3 samples filtered nearest (blocks, one colour
+// per cell around each sample), linear (smooth within cells, creases at
+// cell faces) and cubic (smooth across faces, slightly overshooting).
+TEST_F(VolumeFilters, Raycast)
+{
+  std::vector<ANARIInstance> instances;
+  float x = 0.f;
+  for (const char *filter : {"nearest", "linear", "cubic"}) {
+    instances.push_back(placed(
+        newVolumeGroup({newVolume(newFloatField(5, cellPattern, filter))}),
+        translation({x, 0, 0})));
+    x += 1.1f;
+  }
+  renderAndCompare(
+      newWorld({}, instances), topView(3.2f, 192, 60), newRenderer(), 192, 60);
+}
+
+using VolumeElementTypes = VolumeScene;
+
+// Five slabs side by side, a ramp from 0 at x = 0 to 1 at x = 1 stored as
+// UFIXED8, FIXED16, UFIXED16, FLOAT32 and FLOAT64: decoded by the spec's
+// rules (UFIXED / max, FIXED / max) every one is the same ramp, so the five
+// look alike.
+TEST_F(VolumeElementTypes, Raycast)
+{
+  struct Type
+  {
+    ANARIDataType type;
+    size_t bytes;
+    std::function<void(void *, bool)> store; // the ramp's low or high end
+  };
+  const std::vector<Type> types = {
+      {ANARI_UFIXED8,
+          1,
+          [](void *p, bool high) {
+            *(uint8_t *)p = high ? 255 : 0;
+          }},
+      {ANARI_FIXED16,
+          2,
+          [](void *p, bool high) {
+            *(int16_t *)p = high ? 32767 : 0;
+          }},
+      {ANARI_UFIXED16,
+          2,
+          [](void *p, bool high) {
+            *(uint16_t *)p = high ? 65535 : 0;
+          }},
+      {ANARI_FLOAT32,
+          4,
+          [](void *p, bool high) {
+            *(float *)p = high ? 1.f : 0.f;
+          }},
+      {ANARI_FLOAT64,
+          8,
+          [](void *p, bool high) {
+            *(double *)p = high ? 1.0 : 0.0;
+          }},
+  };
+  std::vector<ANARIInstance> instances;
+  float x = 0.f;
+  for (const Type &t : types) {
+    ANARISpatialField field = newField(
+        2, t.type, t.bytes, [&](void *p, uint32_t i, uint32_t, uint32_t) {
+          t.store(p, i == 1);
+        });
+    instances.push_back(
+        placed(newVolumeGroup({newVolume(field)}), translation({x, 0, 0})));
+    x += 1.25f;
+  }
+  const uint32_t slabPixels = 40;
+  const prism::image::Image image = render(newWorld({}, instances),
+      topView(6.25f, 5 * 50, slabPixels),
+      newRenderer(),
+      5 * 50,
+      slabPixels);
+  for (uint32_t s = 1; s < 5; s++) {
+    expectSameImage(crop(image, 50 * s, 0, 50, slabPixels),
+        crop(image, 0, 0, 50, slabPixels),
+        "slab " + std::to_string(s) + " vs the UFIXED8 slab");
+  }
+  renderAndCompare(newWorld({}, instances),
+      topView(6.25f, 5 * 50, slabPixels),
+      newRenderer(),
+      5 * 50,
+      slabPixels);
+}
+
+// A soft ball of density around an opaque grey sphere, over a green floor:
+// the sphere shows through the ball's haze, the floor through both where
+// they are thin; raycast by the reference marcher, the path tracer (a
+// directional light from above, 64 samples) with the ball's shadow on the
+// floor.
+class VolumeAndSurfaces : public VolumeScene
+{
+ protected:
+  void renderScene(const char *subtype, uint32_t frames)
+  {
+    ANARIGeometry sphere = newGeometry("sphere");
+    setArray(sphere,
+        "vertex.position",
+        ANARI_FLOAT32_VEC3,
+        std::vector<float>{0.5f, 0.5f, 0.5f});
+    setFloat(sphere, "radius", 0.2f);
+    ANARIGeometry floor = newGeometry("quad");
+    setArray(floor,
+        "vertex.position",
+        ANARI_FLOAT32_VEC3,
+        std::vector<float>{
+            -2, -2, -0.2f, 3, -2, -0.2f, 3, 3, -0.2f, -2, 3, -0.2f});
+    auto ball = [](uint32_t i, uint32_t j, uint32_t k) {
+      const float dx = float(i) / 16.f - 0.5f, dy = float(j) / 16.f - 0.5f,
+                  dz = float(k) / 16.f - 0.5f;
+      return std::max(0.f, 1.f - 2.f * std::sqrt(dx * dx + dy * dy + dz * dz));
+    };
+    ANARIGroup group = newVolumeGroup({newVolume(newFloatField(17, ball))},
+        {newSurface(sphere, newMatte({0.6f, 0.6f, 0.6f})),
+            newSurface(floor, newMatte({0.2f, 0.6f, 0.2f}))});
+    ANARIWorld world = newWorld({}, {placed(group, translation({0, 0, 0}))});
+    ANARILight light = keep(anariNewLight(device(), "directional"));
+    setVec3(light, "direction", {-0.3f, -0.2f, -1.f});
+    setFloat(light, "irradiance", 2.f);
+    anariCommitParameters(device(), light);
+    setObject(world,
+        "light",
+        ANARI_ARRAY1D,
+        anariNewArray1D(device(), &light, nullptr, nullptr, ANARI_LIGHT, 1));
+    anariCommitParameters(device(), world);
+    ANARICamera camera = newPerspectiveCamera(
+        {0.5f, -1.2f, 1.4f}, {0, 1.7f, -1.2f}, {0, 0, 1}, 1.f, 0.9f);
+    ANARIRenderer renderer = newRenderer(subtype);
+    setVec4(renderer, "background", {0.1f, 0.1f, 0.15f, 1.f});
+    anariCommitParameters(device(), renderer);
+    renderAndCompare(world, camera, renderer, 96, 96, {}, frames);
+  }
+};
+
+TEST_F(VolumeAndSurfaces, Raycast)
+{
+  renderScene("raycast", 1);
+}
+
+TEST_F(VolumeAndSurfaces, PathTracer)
+{
+  renderScene("pathtracer", 64);
+}
+
+} // namespace
