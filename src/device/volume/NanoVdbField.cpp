@@ -6,6 +6,7 @@
 
 #include "anari/frontend/type_utility.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -47,11 +48,7 @@ bool NanoVdbField::readField()
   m_sampler = makeNanoVdbGridSampler(grid, filter);
   if (!m_sampler) // validation accepted a type the sampler lacks: a bug
     return false;
-  const float2 stored = m_sampler->storedValueRange();
-  const float overshoot = filter == FieldFilter::Cubic
-                              ? kTricubicOvershoot * (stored.y - stored.x)
-                              : 0.f;
-  m_valueRange = {stored.x - overshoot, stored.y + overshoot};
+  m_filter = filter;
   return true;
 }
 
@@ -157,12 +154,16 @@ float NanoVdbField::sample(const float3 &position) const
   // contains() is false for NaN coordinates too.
   if (!m_sampler || !contains(m_bounds, position))
     return kNaN;
+  return m_sampler->sample(toIndex(position));
+}
+
+float3 NanoVdbField::toIndex(const float3 &position) const
+{
   const float3 d = position - m_objectOrigin;
   const float *inverse = m_indexFromObject;
-  const float3 index = {inverse[0] * d.x + inverse[1] * d.y + inverse[2] * d.z,
+  return {inverse[0] * d.x + inverse[1] * d.y + inverse[2] * d.z,
       inverse[3] * d.x + inverse[4] * d.y + inverse[5] * d.z,
       inverse[6] * d.x + inverse[7] * d.y + inverse[8] * d.z};
-  return m_sampler->sample(index);
 }
 
 void NanoVdbField::valueRange(const box3 &region, float &lo, float &hi) const
@@ -170,11 +171,35 @@ void NanoVdbField::valueRange(const box3 &region, float &lo, float &hi) const
   lo = kInfinity;
   hi = -kInfinity;
   box3 clipped;
-  if (!clipToBounds(region, clipped))
+  if (!m_sampler || !clipToBounds(region, clipped))
     return;
-  // The whole grid's range: conservative for any region.
-  lo = m_valueRange.x;
-  hi = m_valueRange.y;
+  // The voxels whose values filters read anywhere in the region: its
+  // corners in index space (the same arithmetic as sample()), one voxel
+  // more below and two above the cells they fall in (the cubic footprint,
+  // which covers nearest and linear too, and rounding).
+  float3 lower{kInfinity, kInfinity, kInfinity};
+  float3 upper = -lower;
+  for (int corner = 0; corner < 8; corner++) {
+    const float3 index =
+        toIndex({corner & 1 ? clipped.upper.x : clipped.lower.x,
+            corner & 2 ? clipped.upper.y : clipped.lower.y,
+            corner & 4 ? clipped.upper.z : clipped.lower.z});
+    lower = min(lower, index);
+    upper = max(upper, index);
+  }
+  auto voxel = [](float x) {
+    return int(std::clamp(std::floor(x),
+        -float(kLargestIndex) * 2.f,
+        float(kLargestIndex) * 2.f));
+  };
+  const int3 first{voxel(lower.x) - 1, voxel(lower.y) - 1, voxel(lower.z) - 1};
+  const int3 last{voxel(upper.x) + 2, voxel(upper.y) + 2, voxel(upper.z) + 2};
+  const float2 stored = m_sampler->valueRange(first, last);
+  const float overshoot = m_filter == FieldFilter::Cubic
+                              ? kTricubicOvershoot * (stored.y - stored.x)
+                              : 0.f;
+  lo = stored.x - overshoot;
+  hi = stored.y + overshoot;
 }
 
 } // namespace prism

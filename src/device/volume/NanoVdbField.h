@@ -31,6 +31,8 @@ class NanoVdbField : public SpatialField
   bool readField() override;
   bool copyGrid();
   bool readGridGeometry(const nanovdb::GridData &grid);
+  // Object space to the grid's index space.
+  float3 toIndex(const float3 &position) const;
 
   struct FreeDeleter
   {
@@ -48,7 +50,7 @@ class NanoVdbField : public SpatialField
   float3 m_objectOrigin{0.f, 0.f, 0.f};
   box3 m_bounds{};
   float m_cellSize{1.f};
-  float2 m_valueRange{0.f, 0.f}; // filter overshoot included
+  FieldFilter m_filter{FieldFilter::Linear};
 };
 
 } // namespace prism

@@ -6,11 +6,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <unordered_set>
+#include <unordered_map>
 
 namespace prism {
 
 namespace {
+
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 template <typename BuildT, FieldFilter kFilter>
 class TypedGridSampler : public NanoVdbGridSampler
@@ -22,7 +24,10 @@ class TypedGridSampler : public NanoVdbGridSampler
  public:
   explicit TypedGridSampler(const nanovdb::GridData &grid)
       : m_grid(grid), m_root(reinterpret_cast<const Grid &>(grid).tree().root())
-  {}
+  {
+    m_wholeRange = storedValueRange();
+    buildLocalRanges();
+  }
 
   float sample(const float3 &index) const override
   {
@@ -72,43 +77,32 @@ class TypedGridSampler : public NanoVdbGridSampler
     }
   }
 
-  float2 storedValueRange() const override
+  float2 valueRange(const int3 &lo, const int3 &hi) const override
   {
-    float2 range{float(m_root.background()), float(m_root.background())};
-    auto include = [&](float v) {
-      range.x = std::min(range.x, v);
-      range.y = std::max(range.y, v);
-    };
-    const auto *root = m_root.data();
-    for (uint32_t n = 0; n < root->mTableSize; n++) {
-      if (root->tile(n)->child == 0)
-        include(float(root->tile(n)->value));
-    }
-    // Node arrays rather than the child graph: a crafted grid whose
-    // children all point at one node would make a walk of the graph
-    // visit that node billions of times. Leaves (variable-size for FpN)
-    // are reached through lower nodes, each visited once.
-    const auto &tree = *reinterpret_cast<const nanovdb::TreeData<3> *>(
-        reinterpret_cast<const uint8_t *>(&m_grid) + sizeof(m_grid));
-    const auto *upper = reinterpret_cast<const typename Upper::DataType *>(
-        tree.mNodeCount[2] ? (const uint8_t *)&tree + tree.mNodeOffset[2]
-                           : nullptr);
-    for (uint32_t n = 0; n < tree.mNodeCount[2]; n++)
-      includeTileValues(upper[n], include);
-    const auto *lower = reinterpret_cast<const typename Lower::DataType *>(
-        tree.mNodeCount[1] ? (const uint8_t *)&tree + tree.mNodeOffset[1]
-                           : nullptr);
-    std::unordered_set<const Leaf *> leavesSeen;
-    for (uint32_t n = 0; n < tree.mNodeCount[1]; n++) {
-      includeTileValues(lower[n], include);
-      for (auto child = lower[n].mChildMask.beginOn(); child; ++child) {
-        const Leaf *leaf = lower[n].getChild(*child);
-        if (!leavesSeen.insert(leaf).second)
-          continue;
-        for (uint32_t v = 0; v < Leaf::SIZE; v++)
-          include(float(leaf->getValue(v)));
-      }
-    }
+    const int3 first = spanOf(lo);
+    const int3 last = spanOf(hi);
+    const int3 cells = last - first + 1;
+    if (!m_hasLocalRanges
+        || int64_t(cells.x) * cells.y * cells.z > kMaxRangeCellsPerQuery)
+      return m_wholeRange;
+    const Accessor accessor(m_root);
+    float2 range{kInfinity, -kInfinity};
+    for (int k = first.z; k <= last.z; k++)
+      for (int j = first.y; j <= last.y; j++)
+        for (int i = first.x; i <= last.x; i++) {
+          const int3 cell{i, j, k};
+          // Where no lower node is, one tile value (or the background)
+          // covers the whole span; where one is, this is one of its values.
+          const nanovdb::Coord origin(i * (1 << kLowerLog2Span),
+              j * (1 << kLowerLog2Span),
+              k * (1 << kLowerLog2Span));
+          unite(range, float(accessor.getValue(origin)));
+          const auto found = m_lowerRanges.find(keyOf(cell));
+          if (found != m_lowerRanges.end()) {
+            unite(range, found->second.x);
+            unite(range, found->second.y);
+          }
+        }
     return range;
   }
 
@@ -116,17 +110,136 @@ class TypedGridSampler : public NanoVdbGridSampler
   using Leaf = nanovdb::NanoLeaf<BuildT>;
   using Lower = nanovdb::NanoLower<BuildT>;
   using Upper = nanovdb::NanoUpper<BuildT>;
+  static constexpr int kLowerLog2Span = Lower::TOTAL; // 128 voxels
+  // Beyond these, a crafted grid (many references to a few nodes) or a
+  // large region falls back to the whole grid's range.
+  static constexpr uint64_t kMaxLowerReferences = uint64_t(1) << 20;
+  static constexpr int64_t kMaxRangeCellsPerQuery = 4096;
+
+  // The lower node span holding `voxel` (an arithmetic shift floors).
+  static int3 spanOf(const int3 &voxel)
+  {
+    return {voxel.x >> kLowerLog2Span,
+        voxel.y >> kLowerLog2Span,
+        voxel.z >> kLowerLog2Span};
+  }
+  static void unite(float2 &range, float value)
+  {
+    range.x = std::min(range.x, value);
+    range.y = std::max(range.y, value);
+  }
+  // Collisions only merge ranges, which stays conservative.
+  static uint64_t keyOf(const int3 &cell)
+  {
+    const uint64_t mask = (uint64_t(1) << 21) - 1;
+    return (uint64_t(uint32_t(cell.x)) & mask) << 42
+           | (uint64_t(uint32_t(cell.y)) & mask) << 21
+           | (uint64_t(uint32_t(cell.z)) & mask);
+  }
+
+  // Every value stored anywhere in the grid, from the node arrays rather
+  // than the child graph: a crafted grid whose children all point at one
+  // node would make a walk visit it billions of times. Leaves
+  // (variable-size for FpN) are reached through lower nodes, once each.
+  float2 storedValueRange() const
+  {
+    float2 range{float(m_root.background()), float(m_root.background())};
+    const auto *root = m_root.data();
+    for (uint32_t n = 0; n < root->mTableSize; n++) {
+      if (root->tile(n)->child == 0)
+        unite(range, float(root->tile(n)->value));
+    }
+    const auto &tree = *reinterpret_cast<const nanovdb::TreeData<3> *>(
+        reinterpret_cast<const uint8_t *>(&m_grid) + sizeof(m_grid));
+    const auto *upper = reinterpret_cast<const typename Upper::DataType *>(
+        tree.mNodeCount[2] ? (const uint8_t *)&tree + tree.mNodeOffset[2]
+                           : nullptr);
+    for (uint32_t n = 0; n < tree.mNodeCount[2]; n++)
+      uniteTileValues(range, upper[n]);
+    const auto *lower = reinterpret_cast<const typename Lower::DataType *>(
+        tree.mNodeCount[1] ? (const uint8_t *)&tree + tree.mNodeOffset[1]
+                           : nullptr);
+    std::unordered_map<const Leaf *, float2> leafRanges;
+    for (uint32_t n = 0; n < tree.mNodeCount[1]; n++) {
+      const float2 node = lowerNodeRange(lower[n], leafRanges);
+      unite(range, node.x);
+      unite(range, node.y);
+    }
+    return range;
+  }
+
+  // Per lower node's span, reached the way accessors reach it (every root
+  // tile, duplicates included): the range of all its leaves' values,
+  // active or not, and its tile values.
+  void buildLocalRanges()
+  {
+    std::unordered_map<const typename Lower::DataType *, float2> nodeRanges;
+    std::unordered_map<const Leaf *, float2> leafRanges;
+    uint64_t references = 0;
+    const auto *root = m_root.data();
+    for (uint32_t n = 0; n < root->mTableSize; n++) {
+      const auto *tile = root->tile(n);
+      if (tile->child == 0)
+        continue;
+      const nanovdb::Coord upperOrigin = tile->origin();
+      const auto *upper = root->getChild(tile)->data();
+      for (auto child = upper->mChildMask.beginOn(); child; ++child) {
+        if (++references > kMaxLowerReferences) {
+          m_lowerRanges.clear();
+          return;
+        }
+        const auto *lower = upper->getChild(*child)->data();
+        auto [node, added] = nodeRanges.try_emplace(lower);
+        if (added)
+          node->second = lowerNodeRange(*lower, leafRanges);
+        const nanovdb::Coord local = Upper::OffsetToLocalCoord(*child);
+        const int3 cell{(upperOrigin[0] >> kLowerLog2Span) + local[0],
+            (upperOrigin[1] >> kLowerLog2Span) + local[1],
+            (upperOrigin[2] >> kLowerLog2Span) + local[2]};
+        auto [range, fresh] =
+            m_lowerRanges.try_emplace(keyOf(cell), node->second);
+        if (!fresh) {
+          unite(range->second, node->second.x);
+          unite(range->second, node->second.y);
+        }
+      }
+    }
+    m_hasLocalRanges = true;
+  }
+
+  static float2 lowerNodeRange(const typename Lower::DataType &lower,
+      std::unordered_map<const Leaf *, float2> &leafRanges)
+  {
+    float2 range{kInfinity, -kInfinity};
+    uniteTileValues(range, lower);
+    for (auto child = lower.mChildMask.beginOn(); child; ++child) {
+      const Leaf *leaf = lower.getChild(*child);
+      auto [cached, added] = leafRanges.try_emplace(leaf);
+      if (added) {
+        float2 values{kInfinity, -kInfinity};
+        for (uint32_t v = 0; v < Leaf::SIZE; v++)
+          unite(values, float(leaf->getValue(v)));
+        cached->second = values;
+      }
+      unite(range, cached->second.x);
+      unite(range, cached->second.y);
+    }
+    return range;
+  }
 
   // The values of an internal node's entries that hold no child.
-  template <typename NodeData, typename Include>
-  static void includeTileValues(const NodeData &node, const Include &include)
+  template <typename NodeData>
+  static void uniteTileValues(float2 &range, const NodeData &node)
   {
     for (auto tile = node.mChildMask.beginOff(); tile; ++tile)
-      include(float(node.mTable[*tile].value));
+      unite(range, float(node.mTable[*tile].value));
   }
 
   const nanovdb::GridData &m_grid;
   const Root &m_root;
+  float2 m_wholeRange{};
+  bool m_hasLocalRanges{false};
+  std::unordered_map<uint64_t, float2> m_lowerRanges;
 };
 
 template <typename BuildT>

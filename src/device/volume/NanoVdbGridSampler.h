@@ -17,9 +17,11 @@ class NanoVdbGridSampler
   // The filtered value at `index` (index space: voxel ijk's value sits at
   // ijk). Voxels no node stores read the grid's background.
   virtual float sample(const float3 &index) const = 0;
-  // [min, max] of every value a tap can read: all leaf values (active or
-  // not), node and root tile values, and the background.
-  virtual float2 storedValueRange() const = 0;
+  // A conservative [min, max] of the values sample() reads at voxels
+  // lo..hi (index space, inclusive: the caller adds the filter's
+  // footprint): local per lower node's span (128^3 voxels) where the
+  // region is small, the whole grid's range otherwise.
+  virtual float2 valueRange(const int3 &lo, const int3 &hi) const = 0;
 };
 
 // A sampler of `grid`, which must have passed whyNanoVdbGridIsUnreadable

@@ -152,6 +152,32 @@ TEST_F(NanoVdbFieldTest, ValueRangeCoversEverySampleOfEveryFilter)
     expectValueRangesCoverSamples(*nanoField(handle, filter), 5, filter);
 }
 
+TEST_F(NanoVdbFieldTest, ValueRangeIsLocalAndCoversSparseGrids)
+{
+  // Two clusters a thousand voxels apart: low values near the origin,
+  // high ones far along x.
+  nanovdb::GridBuilder<float> builder(0.f);
+  auto accessor = builder.getAccessor();
+  for (int k = 0; k < 8; k++)
+    for (int j = 0; j < 8; j++)
+      for (int i = 0; i < 8; i++) {
+        accessor.setValue(nanovdb::Coord(i, j, k), 1.f + 0.01f * float(i));
+        accessor.setValue(nanovdb::Coord(1000 + i, j, k), 50.f + float(j));
+      }
+  auto handle = builder.getHandle<>();
+  for (const char *filter : {"nearest", "linear", "cubic"}) {
+    auto *f = nanoField(handle, filter);
+    ASSERT_TRUE(f->isValid());
+    float lo, hi;
+    f->valueRange({{0.f, 0.f, 0.f}, {7.f, 7.f, 7.f}}, lo, hi);
+    EXPECT_LT(hi, 50.f) << filter;
+    EXPECT_LE(lo, 0.f) << filter; // the background around the cluster
+    f->valueRange({{1000.f, 0.f, 0.f}, {1007.f, 7.f, 7.f}}, lo, hi);
+    EXPECT_GE(hi, 57.f) << filter;
+    expectValueRangesCoverSamples(*f, 9, filter);
+  }
+}
+
 TEST_F(NanoVdbFieldTest, DoubleAndQuantisedGridsSample)
 {
   auto doubles = rampGrid<double>();
