@@ -30,4 +30,14 @@ inline std::array<float, 4> catmullRomWeights(float t)
       0.5f * (t3 - t2)};
 }
 
+// d/dt of catmullRomWeights(t): the taps' weights of the derivative.
+inline std::array<float, 4> catmullRomDerivativeWeights(float t)
+{
+  const float t2 = t * t;
+  return {0.5f * (-3.f * t2 + 4.f * t - 1.f),
+      0.5f * (9.f * t2 - 10.f * t),
+      0.5f * (-9.f * t2 + 8.f * t + 1.f),
+      0.5f * (3.f * t2 - 2.f * t)};
+}
+
 } // namespace prism

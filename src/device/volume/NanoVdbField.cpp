@@ -28,7 +28,9 @@ NanoVdbField::NanoVdbField(DeviceState &device)
 
 bool NanoVdbField::readField()
 {
+  // Until this commit succeeds, sample() sees no domain (NaN everywhere).
   m_sampler.reset();
+  m_bounds = emptyBox3();
   m_grid.reset();
   m_gridBytes = 0;
   const FieldFilter filter = readFilter();

@@ -38,6 +38,9 @@ StructuredRegularField::StructuredRegularField(DeviceState &device)
 
 bool StructuredRegularField::readField()
 {
+  // Until this commit succeeds, sample() sees no domain (NaN everywhere),
+  // whatever a previous commit left.
+  m_bounds = emptyBox3();
   m_origin = read<float3>("origin", ANARI_FLOAT32_VEC3, {0.f, 0.f, 0.f});
   m_spacing = read<float3>("spacing", ANARI_FLOAT32_VEC3, {1.f, 1.f, 1.f});
   m_filter = readFilter();
@@ -69,8 +72,8 @@ bool StructuredRegularField::readField()
   m_upperNeighbour = {m_dimensions.x > 1 ? 1 : 0,
       m_dimensions.y > 1 ? int(m_strideY) : 0,
       m_dimensions.z > 1 ? int(m_strideZ) : 0};
-  m_bounds = {m_origin, m_origin + m_lastIndex * m_spacing};
-  if (!isFinite(m_bounds.upper)) {
+  const box3 bounds{m_origin, m_origin + m_lastIndex * m_spacing};
+  if (!isFinite(bounds.upper)) {
     report(ANARI_SEVERITY_ERROR,
         ANARI_STATUS_INVALID_ARGUMENT,
         "the grid's extent overflows (origin + (size - 1) * spacing)");
@@ -84,6 +87,7 @@ bool StructuredRegularField::readField()
         "out of memory for the value range grid");
     return false;
   }
+  m_bounds = bounds;
   return true;
 }
 
@@ -225,34 +229,92 @@ float StructuredRegularField::sampleLinear(const float3 &grid) const
 
 float StructuredRegularField::sampleCubic(const float3 &grid) const
 {
+  const CubicTaps taps = cubicTaps(grid);
+  return cubicSum(taps,
+      catmullRomWeights(taps.t.x),
+      catmullRomWeights(taps.t.y),
+      catmullRomWeights(taps.t.z));
+}
+
+StructuredRegularField::CubicTaps StructuredRegularField::cubicTaps(
+    const float3 &grid) const
+{
   const int3 base = min(vecCast<int>(grid), m_lastCell);
-  const float3 t = grid - vecCast<float>(base);
-  const auto wx = catmullRomWeights(t.x);
-  const auto wy = catmullRomWeights(t.y);
-  const auto wz = catmullRomWeights(t.z);
+  CubicTaps taps;
+  taps.t = grid - vecCast<float>(base);
   // Taps base-1 .. base+2; at the grid's border they are clamped to the
   // grid (the edge sample repeats), so quadratics are reproduced exactly
   // only where all four taps exist.
-  size_t xs[4], ys[4], zs[4];
   for (int n = 0; n < 4; n++) {
-    xs[n] = size_t(std::clamp(base.x - 1 + n, 0, m_dimensions.x - 1));
-    ys[n] =
+    taps.x[n] = size_t(std::clamp(base.x - 1 + n, 0, m_dimensions.x - 1));
+    taps.y[n] =
         size_t(std::clamp(base.y - 1 + n, 0, m_dimensions.y - 1)) * m_strideY;
-    zs[n] =
+    taps.z[n] =
         size_t(std::clamp(base.z - 1 + n, 0, m_dimensions.z - 1)) * m_strideZ;
   }
+  return taps;
+}
+
+float StructuredRegularField::cubicSum(const CubicTaps &taps,
+    const std::array<float, 4> &wx,
+    const std::array<float, 4> &wy,
+    const std::array<float, 4> &wz) const
+{
   float result = 0.f;
   for (int k = 0; k < 4; k++) {
     float plane = 0.f;
     for (int j = 0; j < 4; j++) {
-      const float *row = m_values.data() + zs[k] + ys[j];
-      const float line = wx[0] * row[xs[0]] + wx[1] * row[xs[1]]
-                         + wx[2] * row[xs[2]] + wx[3] * row[xs[3]];
+      const float *row = m_values.data() + taps.z[k] + taps.y[j];
+      const float line = wx[0] * row[taps.x[0]] + wx[1] * row[taps.x[1]]
+                         + wx[2] * row[taps.x[2]] + wx[3] * row[taps.x[3]];
       plane += wy[j] * line;
     }
     result += wz[k] * plane;
   }
   return result;
+}
+
+float3 StructuredRegularField::gradient(const float3 &position) const
+{
+  constexpr float nan = std::numeric_limits<float>::quiet_NaN();
+  if (!contains(m_bounds, position))
+    return {nan, nan, nan};
+  const float3 grid = toGrid(position);
+  if (m_filter == FieldFilter::Linear) {
+    // The trilinear interpolant's derivative within the cell.
+    const int3 base = min(vecCast<int>(grid), m_lastCell);
+    const float3 t = grid - vecCast<float>(base);
+    const float *v = m_values.data() + offsetOf(base);
+    const int d[3] = {
+        m_upperNeighbour.x, m_upperNeighbour.y, m_upperNeighbour.z};
+    float3 result;
+    for (int axis = 0; axis < 3; axis++) {
+      // The other two axes, interpolated bilinearly.
+      const int a = (axis + 1) % 3;
+      const int b = (axis + 2) % 3;
+      auto difference = [&](int offset) {
+        return v[offset + d[axis]] - v[offset];
+      };
+      const float lowB =
+          difference(0) + t[a] * (difference(d[a]) - difference(0));
+      const float highB = difference(d[b])
+                          + t[a] * (difference(d[a] + d[b]) - difference(d[b]));
+      result[axis] = lowB + t[b] * (highB - lowB);
+    }
+    return result * m_inverseSpacing;
+  }
+  if (m_filter == FieldFilter::Cubic) {
+    const CubicTaps taps = cubicTaps(grid);
+    const auto wx = catmullRomWeights(taps.t.x);
+    const auto wy = catmullRomWeights(taps.t.y);
+    const auto wz = catmullRomWeights(taps.t.z);
+    return float3{cubicSum(taps, catmullRomDerivativeWeights(taps.t.x), wy, wz),
+               cubicSum(taps, wx, catmullRomDerivativeWeights(taps.t.y), wz),
+               cubicSum(taps, wx, wy, catmullRomDerivativeWeights(taps.t.z))}
+           * m_inverseSpacing;
+  }
+  // Nearest is piecewise constant: differences give a usable normal.
+  return SpatialField::gradient(position);
 }
 
 void StructuredRegularField::valueRange(

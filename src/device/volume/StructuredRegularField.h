@@ -5,6 +5,7 @@
 
 #include "SpatialField.h"
 
+#include <array>
 #include <vector>
 
 namespace prism {
@@ -19,6 +20,9 @@ class StructuredRegularField : public SpatialField
     return m_bounds;
   }
   float sample(const float3 &position) const override;
+  // Analytic for linear and cubic (the interpolant's derivative), central
+  // differences for nearest.
+  float3 gradient(const float3 &position) const override;
   void valueRange(const box3 &region, float &lo, float &hi) const override;
   float cellSize() const override;
 
@@ -47,6 +51,18 @@ class StructuredRegularField : public SpatialField
   float sampleNearest(const float3 &grid) const;
   float sampleLinear(const float3 &grid) const;
   float sampleCubic(const float3 &grid) const;
+  // The cubic filter's 4 taps per axis (offsets into m_values) and the
+  // position within the cell.
+  struct CubicTaps
+  {
+    size_t x[4], y[4], z[4];
+    float3 t;
+  };
+  CubicTaps cubicTaps(const float3 &grid) const;
+  float cubicSum(const CubicTaps &taps,
+      const std::array<float, 4> &wx,
+      const std::array<float, 4> &wy,
+      const std::array<float, 4> &wz) const;
 
   std::vector<float> m_values; // x fastest, decoded at commit
   int3 m_dimensions{0, 0, 0};

@@ -104,6 +104,33 @@ TEST_F(StructuredRegularFieldTest, CubicReproducesQuadraticsInTheInterior)
       std::abs(linear->sample(middle) - quadratic(3.5f, 4.5f, 2.5f)), 0.1f);
 }
 
+TEST_F(StructuredRegularFieldTest, GradientsAreTheInterpolantsDerivatives)
+{
+  const float3 spacing{0.5f, 2.f, 0.25f};
+  auto *linear = makeField({8, 8, 8}, linearRamp, "linear", {}, spacing);
+  auto quadratic = [](float x, float y, float z) {
+    return 0.5f * x * x - x * y + 0.25f * z * z + 2.f * y - z;
+  };
+  auto *cubic = makeField({8, 8, 8}, quadratic, "cubic", {}, spacing);
+  std::mt19937 random(19);
+  std::uniform_real_distribution<float> unit(0.f, 1.f);
+  for (int n = 0; n < 500; n++) {
+    const float3 grid{1.f + 5.f * unit(random),
+        1.f + 5.f * unit(random),
+        1.f + 2.f * unit(random)};
+    const float3 slope = linear->gradient(grid * spacing);
+    EXPECT_NEAR(slope.x, 2.f / spacing.x, 1e-3f);
+    EXPECT_NEAR(slope.y, -3.f / spacing.y, 1e-3f);
+    EXPECT_NEAR(slope.z, 0.5f / spacing.z, 1e-3f);
+    // The cubic reproduces the quadratic, hence its derivative.
+    const float3 curve = cubic->gradient(grid * spacing);
+    EXPECT_NEAR(curve.x, (grid.x - grid.y) / spacing.x, 1e-3f);
+    EXPECT_NEAR(curve.y, (2.f - grid.x) / spacing.y, 1e-3f);
+    EXPECT_NEAR(curve.z, (0.5f * grid.z - 1.f) / spacing.z, 1e-3f);
+  }
+  EXPECT_TRUE(std::isnan(linear->gradient({-1.f, 0.f, 0.f}).x));
+}
+
 TEST_F(StructuredRegularFieldTest, NearestPicksTheClosestSampleTiesRoundUp)
 {
   auto index = [](float x, float y, float z) {
@@ -304,6 +331,15 @@ TEST_F(StructuredRegularFieldTest, BadInputIsReportedAndLeavesTheFieldInvalid)
   EXPECT_TRUE(f->isValid());
   EXPECT_TRUE(reported(ANARI_SEVERITY_WARNING, "bicubic"));
   EXPECT_FLOAT_EQ(f->sample({0.5f, 0.5f, 0.5f}), 3.5f);
+
+  // A valid field recommitted with bad input has no values any more.
+  set(f, "spacing", float3{-1.f, 1.f, 1.f});
+  commit(f);
+  EXPECT_FALSE(f->isValid());
+  EXPECT_TRUE(std::isnan(f->sample({0.5f, 0.5f, 0.5f})));
+  float lo, hi;
+  f->valueRange({{0.f, 0.f, 0.f}, {1.f, 1.f, 1.f}}, lo, hi);
+  EXPECT_GT(lo, hi);
 
   // A field fixed after an error becomes valid again.
   set(oneD, "data", array(ANARI_FLOAT32, values, 2, 2, 2));
