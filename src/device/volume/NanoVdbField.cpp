@@ -137,6 +137,11 @@ bool NanoVdbField::readGridGeometry(const nanovdb::GridData &grid)
       return false;
     }
   }
+  // A thousandth of a voxel of slack: a point on bounds() maps to the box's
+  // face only up to float rounding.
+  const float3 slack{0.501f, 0.501f, 0.501f};
+  m_indexBox = {vecCast<float>(int3{lo[0], lo[1], lo[2]}) - slack,
+      vecCast<float>(int3{hi[0], hi[1], hi[2]}) + slack};
   for (int corner = 0; corner < 8; corner++) {
     const double index[3] = {(corner & 1) ? hi[0] + 0.5 : lo[0] - 0.5,
         (corner & 2) ? hi[1] + 0.5 : lo[1] - 0.5,
@@ -156,7 +161,13 @@ float NanoVdbField::sample(const float3 &position) const
   // contains() is false for NaN coordinates too.
   if (!m_sampler || !contains(m_bounds, position))
     return kNaN;
-  return m_sampler->sample(toIndex(position));
+  // The object-space box of a rotated or sheared grid holds points
+  // beyond its voxels: those have no value either (and stay far from int
+  // overflow in the filters' taps).
+  const float3 index = toIndex(position);
+  if (!contains(m_indexBox, index))
+    return kNaN;
+  return m_sampler->sample(index);
 }
 
 float3 NanoVdbField::toIndex(const float3 &position) const
@@ -189,6 +200,8 @@ void NanoVdbField::valueRange(const box3 &region, float &lo, float &hi) const
     lower = min(lower, index);
     upper = max(upper, index);
   }
+  lower = max(lower, m_indexBox.lower);
+  upper = min(upper, m_indexBox.upper);
   auto voxel = [](float x) {
     return int(std::clamp(std::floor(x),
         -float(kLargestIndex) * 2.f,

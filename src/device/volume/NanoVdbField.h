@@ -49,6 +49,7 @@ class NanoVdbField : public SpatialField
   float m_indexFromObject[9]{};
   float3 m_objectOrigin{0.f, 0.f, 0.f};
   box3 m_bounds{};
+  box3 m_indexBox{}; // the active voxels' cubes, index space
   float m_cellSize{1.f};
   FieldFilter m_filter{FieldFilter::Linear};
 };

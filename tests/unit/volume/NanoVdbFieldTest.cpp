@@ -127,6 +127,46 @@ TEST_F(NanoVdbFieldTest, TheGridTransformIsHonoured)
   EXPECT_TRUE(std::isnan(f->sample(world(0, 0, 0) - 1.f)));
 }
 
+TEST_F(NanoVdbFieldTest, RotatedMapsAreHonoured)
+{
+  // object = (-s j, s i, s k) + t: a quarter turn about z, then a shift.
+  const double s = 2.0;
+  const double toObject[3][3] = {{0, -s, 0}, {s, 0, 0}, {0, 0, s}};
+  const double toIndex[3][3] = {{0, 1 / s, 0}, {-1 / s, 0, 0}, {0, 0, 1 / s}};
+  // Map::set takes the transposes (OpenVDB's row-vector convention).
+  double mat[3][3], inverse[3][3];
+  for (int r = 0; r < 3; r++)
+    for (int c = 0; c < 3; c++) {
+      mat[r][c] = toObject[c][r];
+      inverse[r][c] = toIndex[c][r];
+    }
+  nanovdb::Map map;
+  map.set(mat, inverse, nanovdb::Vec3d(5.0, 0.0, -1.0), 1.0);
+  nanovdb::GridBuilder<float> builder(kBackground);
+  auto accessor = builder.getAccessor();
+  for (int k = 0; k < kRampSize; k++)
+    for (int j = 0; j < kRampSize; j++)
+      for (int i = 0; i < kRampSize; i++)
+        accessor.setValue(nanovdb::Coord(i, j, k), ramp(i, j, k));
+  auto handle = builder.getHandle<>(map);
+  auto *f = nanoField(handle);
+  ASSERT_TRUE(f->isValid());
+  EXPECT_FLOAT_EQ(f->cellSize(), 2.f);
+  auto object = [&](float i, float j, float k) {
+    return float3{float(5.0 - s * j), float(s * i), float(-1.0 + s * k)};
+  };
+  EXPECT_NEAR(f->sample(object(3, 7, 2)), ramp(3, 7, 2), 1e-4f);
+  EXPECT_NEAR(f->sample(object(15, 1, 9)), ramp(15, 1, 9), 1e-4f);
+  const box3 bounds = f->bounds();
+  EXPECT_FLOAT_EQ(bounds.lower.x, 5.f - 2.f * 19.5f);
+  EXPECT_FLOAT_EQ(bounds.upper.x, 5.f + 2.f * 0.5f);
+  EXPECT_FLOAT_EQ(bounds.lower.y, -1.f);
+  EXPECT_FLOAT_EQ(bounds.upper.y, 39.f);
+  EXPECT_FALSE(std::isnan(f->sample(bounds.lower)));
+  EXPECT_FALSE(std::isnan(f->sample(bounds.upper)));
+  expectValueRangesCoverSamples(*f, 23, "rotated");
+}
+
 TEST_F(NanoVdbFieldTest, InactiveSpaceReadsTheBackground)
 {
   nanovdb::GridBuilder<float> builder(kBackground);
