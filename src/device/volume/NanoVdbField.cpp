@@ -202,13 +202,21 @@ void NanoVdbField::valueRange(const box3 &region, float &lo, float &hi) const
   }
   lower = max(lower, m_indexBox.lower);
   upper = min(upper, m_indexBox.upper);
-  auto voxel = [](float x) {
-    return int(std::clamp(std::floor(x),
-        -float(kLargestIndex) * 2.f,
-        float(kLargestIndex) * 2.f));
+  // Index coordinates stay within +-2^30 (checked at commit); NaN (a
+  // corner beyond float's reach) takes the far end, which stays
+  // conservative.
+  auto voxel = [](float x, float fallback) {
+    constexpr float limit = float(kLargestIndex);
+    const float clamped = x >= -limit && x <= limit ? x : fallback;
+    return int(std::floor(clamped));
   };
-  const int3 first{voxel(lower.x) - 1, voxel(lower.y) - 1, voxel(lower.z) - 1};
-  const int3 last{voxel(upper.x) + 2, voxel(upper.y) + 2, voxel(upper.z) + 2};
+  const float limit = float(kLargestIndex);
+  const int3 first{voxel(lower.x, -limit) - 1,
+      voxel(lower.y, -limit) - 1,
+      voxel(lower.z, -limit) - 1};
+  const int3 last{voxel(upper.x, limit) + 2,
+      voxel(upper.y, limit) + 2,
+      voxel(upper.z, limit) + 2};
   const float2 stored = m_sampler->valueRange(first, last);
   const float overshoot = m_filter == FieldFilter::Cubic
                               ? kTricubicOvershoot * (stored.y - stored.x)

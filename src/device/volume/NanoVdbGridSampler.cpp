@@ -83,7 +83,7 @@ class TypedGridSampler : public NanoVdbGridSampler
     const int3 last = spanOf(hi);
     const int3 cells = last - first + 1;
     if (!m_hasLocalRanges
-        || int64_t(cells.x) * cells.y * cells.z > kMaxRangeCellsPerQuery)
+        || double(cells.x) * cells.y * cells.z > kMaxRangeCellsPerQuery)
       return m_wholeRange;
     const Accessor accessor(m_root);
     float2 range{kInfinity, -kInfinity};
