@@ -30,7 +30,7 @@ bool inside(const box3 &inner, const box3 &outer)
 std::vector<uint32_t> CellBvh::build(const std::vector<box3> &cellBounds,
     const std::vector<float2> &cellValueRanges)
 {
-  m_nodes.clear();
+  m_pairs.clear();
   m_nodeValueRanges.clear();
   const uint32_t cellCount = uint32_t(cellBounds.size());
   std::vector<uint32_t> order(cellCount);
@@ -45,30 +45,23 @@ std::vector<uint32_t> CellBvh::build(const std::vector<box3> &cellBounds,
   struct Task
   {
     uint32_t begin, end;
-    uint32_t parent; // whose `first` this right child sets (~0u: root)
+    uint32_t pair, side; // where the node goes
   };
-  std::vector<Task> pending{{0, cellCount, ~0u}};
-  m_nodes.reserve(2 * (cellCount / kMaxLeafCells + 1));
+  m_pairs.reserve(cellCount / kMaxLeafCells + 2);
+  m_pairs.push_back({});
+  std::vector<Task> pending{{0, cellCount, 0, 0}};
   while (!pending.empty()) {
-    Task task = pending.back();
+    const Task task = pending.back();
     pending.pop_back();
-    // Walks down the left spine, so each left child follows its parent.
-    for (;;) {
-      const uint32_t index = uint32_t(m_nodes.size());
-      if (task.parent != ~0u)
-        m_nodes[task.parent].first = index;
-      box3 bounds = emptyBox3();
-      box3 centroidBounds = emptyBox3();
-      for (uint32_t i = task.begin; i < task.end; i++) {
-        bounds = extend(bounds, cellBounds[order[i]]);
-        centroidBounds = extend(centroidBounds, centroids[order[i]]);
-      }
-      m_nodes.push_back({bounds.lower, bounds.upper, task.begin, 0});
-      const uint32_t count = task.end - task.begin;
-      if (count <= kMaxLeafCells) {
-        m_nodes[index].count = count;
-        break;
-      }
+    box3 bounds = emptyBox3();
+    box3 centroidBounds = emptyBox3();
+    for (uint32_t i = task.begin; i < task.end; i++) {
+      bounds = extend(bounds, cellBounds[order[i]]);
+      centroidBounds = extend(centroidBounds, centroids[order[i]]);
+    }
+    const uint32_t count = task.end - task.begin;
+    Node node{bounds.lower, bounds.upper, task.begin, count};
+    if (count > kMaxLeafCells) {
       const float3 spread = extent(centroidBounds);
       const int axis = spread.x >= spread.y && spread.x >= spread.z ? 0
                        : spread.y >= spread.z                       ? 1
@@ -80,9 +73,13 @@ std::vector<uint32_t> CellBvh::build(const std::vector<box3> &cellBounds,
           [&](uint32_t a, uint32_t b) {
             return centroids[a][axis] < centroids[b][axis];
           });
-      pending.push_back({middle, task.end, index});
-      task = {task.begin, middle, ~0u};
+      // Children's pairs come after their parent's (see the ranges below).
+      node = {bounds.lower, bounds.upper, uint32_t(m_pairs.size()), 0};
+      m_pairs.push_back({});
+      pending.push_back({middle, task.end, node.first, 1});
+      pending.push_back({task.begin, middle, node.first, 0});
     }
+    m_pairs[task.pair].node[task.side] = node;
   }
 
   // Cell data in leaf order, so a leaf's cells sit together in memory.
@@ -92,43 +89,46 @@ std::vector<uint32_t> CellBvh::build(const std::vector<box3> &cellBounds,
     m_cellBounds[i] = cellBounds[order[i]];
     m_cellValueRanges[i] = cellValueRanges[order[i]];
   }
-  // Children follow their parents, so one backward pass fills the ranges.
-  m_nodeValueRanges.resize(m_nodes.size());
-  for (size_t n = m_nodes.size(); n-- > 0;) {
-    const Node &node = m_nodes[n];
-    float2 range{kInfinity, -kInfinity};
-    if (node.count == 0) {
-      range = unite(m_nodeValueRanges[n + 1], m_nodeValueRanges[node.first]);
-    } else {
-      for (uint32_t i = node.first; i < node.first + node.count; i++)
-        range = unite(range, m_cellValueRanges[i]);
+  // Children's pairs follow their parents', so one backward pass fills
+  // the ranges.
+  m_nodeValueRanges.resize(2 * m_pairs.size());
+  for (size_t p = m_pairs.size(); p-- > 0;) {
+    for (int side = 0; side < 2; side++) {
+      const Node &node = m_pairs[p].node[side];
+      float2 range{kInfinity, -kInfinity};
+      if (node.count == 0 && !(p == 0 && side == 1)) {
+        range = unite(m_nodeValueRanges[2 * node.first],
+            m_nodeValueRanges[2 * node.first + 1]);
+      } else {
+        for (uint32_t i = node.first; i < node.first + node.count; i++)
+          range = unite(range, m_cellValueRanges[i]);
+      }
+      m_nodeValueRanges[2 * p + side] = range;
     }
-    m_nodeValueRanges[n] = range;
   }
   return order;
 }
 
 void CellBvh::valueRange(const box3 &region, float &lo, float &hi) const
 {
-  if (m_nodes.empty())
+  if (m_pairs.empty())
     return;
-  uint32_t stack[kStackSize];
+  uint32_t stack[kStackSize]; // node numbers: 2 * pair + side
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
-    const uint32_t index = stack[--top];
-    const Node &node = m_nodes[index];
-    const box3 nodeBounds{node.lower, node.upper};
-    if (!overlaps(nodeBounds, region))
+    const uint32_t number = stack[--top];
+    const Node &node = m_pairs[number / 2].node[number % 2];
+    if (!overlaps(node.bounds(), region))
       continue;
-    if (inside(nodeBounds, region)) {
-      lo = std::min(lo, m_nodeValueRanges[index].x);
-      hi = std::max(hi, m_nodeValueRanges[index].y);
+    if (inside(node.bounds(), region)) {
+      lo = std::min(lo, m_nodeValueRanges[number].x);
+      hi = std::max(hi, m_nodeValueRanges[number].y);
       continue;
     }
     if (node.count == 0) {
-      stack[top++] = node.first;
-      stack[top++] = index + 1;
+      stack[top++] = 2 * node.first;
+      stack[top++] = 2 * node.first + 1;
       continue;
     }
     for (uint32_t i = node.first; i < node.first + node.count; i++) {

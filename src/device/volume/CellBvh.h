@@ -22,8 +22,7 @@ class CellBvh
 
   box3 bounds() const
   {
-    return m_nodes.empty() ? emptyBox3()
-                           : box3{m_nodes[0].lower, m_nodes[0].upper};
+    return m_pairs.empty() ? emptyBox3() : m_pairs[0].node[0].bounds();
   }
 
   // Calls `visit(cell)` (cell in leaf order) for every cell whose bounds
@@ -37,19 +36,30 @@ class CellBvh
 
  private:
   // 32 bytes: a leaf holds cells [first, first + count); an inner node
-  // (count 0) has its children at index + 1 and `first`.
+  // (count 0) has its two children in pair `first`.
   struct Node
   {
     float3 lower;
     float3 upper;
     uint32_t first;
     uint32_t count;
+
+    box3 bounds() const
+    {
+      return {lower, upper};
+    }
+  };
+  // Siblings share one cache line, so a descent tests both children with
+  // one memory access. The root is pair 0's first node (its second unused).
+  struct alignas(64) NodePair
+  {
+    Node node[2];
   };
   static constexpr int kMaxLeafCells = 4;
-  static constexpr int kStackSize = 64;
+  static constexpr int kStackSize = 64; // depth is below log2(cells) + 1
 
-  std::vector<Node> m_nodes;
-  std::vector<float2> m_nodeValueRanges; // per node, beside the nodes
+  std::vector<NodePair> m_pairs;
+  std::vector<float2> m_nodeValueRanges; // 2 per pair, beside the nodes
   // In leaf order.
   std::vector<box3> m_cellBounds;
   std::vector<float2> m_cellValueRanges;
@@ -58,19 +68,19 @@ class CellBvh
 template <typename Visit>
 bool CellBvh::findCell(const float3 &point, Visit &&visit) const
 {
-  if (m_nodes.empty())
+  if (m_pairs.empty() || !contains(bounds(), point))
     return false;
-  uint32_t stack[kStackSize];
+  const Node *stack[kStackSize];
   int top = 0;
-  stack[top++] = 0;
+  stack[top++] = &m_pairs[0].node[0];
   while (top > 0) {
-    const Node &node = m_nodes[stack[--top]];
-    if (!contains(box3{node.lower, node.upper}, point))
-      continue;
+    const Node &node = *stack[--top];
     if (node.count == 0) {
-      const uint32_t index = uint32_t(&node - m_nodes.data());
-      stack[top++] = node.first;
-      stack[top++] = index + 1;
+      const NodePair &children = m_pairs[node.first];
+      for (int side = 1; side >= 0; side--) {
+        if (contains(children.node[side].bounds(), point))
+          stack[top++] = &children.node[side];
+      }
       continue;
     }
     for (uint32_t i = node.first; i < node.first + node.count; i++) {

@@ -88,14 +88,13 @@ int shapeFunctions(CellType type,
   return 5;
 }
 
-bool insideParametric(CellType type, const Vector3d &p)
+// How far `p` lies outside the parametric cell (0 inside), in the max norm.
+double distanceOutside(CellType type, const Vector3d &p)
 {
-  const double lo = -kInsideSlack, hi = 1.0 + kInsideSlack;
-  if (p.z < lo || p.z > hi || p.x < lo || p.y < lo)
-    return false;
+  double d = std::max({0.0, -p.x, -p.y, -p.z, p.z - 1.0});
   if (type == CellType::Wedge)
-    return p.x + p.y <= hi;
-  return p.x <= hi && p.y <= hi;
+    return std::max(d, p.x + p.y - 1.0);
+  return std::max({d, p.x - 1.0, p.y - 1.0});
 }
 
 // Pulls a point accepted within the slack back into the cell, so weights
@@ -113,9 +112,14 @@ Vector3d clampParametric(CellType type, Vector3d p)
   return p;
 }
 
-// Newton's method on x(r, s, t) = point from `start`; true when the
-// residual shrank to rounding level.
-bool invertMap(CellType type,
+enum class Inversion {
+  Converged,
+  Outside, // converging to a point clearly outside the cell
+  Failed,
+};
+
+// Newton's method on x(r, s, t) = point from `start`.
+Inversion invertMap(CellType type,
     const Vector3d *vertices,
     const Vector3d &point,
     double tolerance,
@@ -142,11 +146,11 @@ bool invertMap(CellType type,
                   + residual.z * residual.z);
     if (error <= tolerance) {
       parametric = p;
-      return true;
+      return Inversion::Converged;
     }
     Vector3d step;
     if (!solve3x3(dr, ds, dt, residual, step))
-      return false;
+      return Inversion::Failed;
     // Damped: far from the cell the bilinear terms make full steps
     // overshoot; no legitimate step spans more than the parametric cell.
     const double length =
@@ -156,9 +160,18 @@ bool invertMap(CellType type,
         p.x + damping * step.x, p.y + damping * step.y, p.z + damping * step.z};
     if (!std::isfinite(p.x + p.y + p.z) || std::abs(p.x) > 1e3
         || std::abs(p.y) > 1e3 || std::abs(p.z) > 1e3)
-      return false;
+      return Inversion::Failed;
+    if (length < 1e-12) {
+      parametric = p;
+      return Inversion::Converged;
+    }
+    // Converging quadratically (small steps), the remaining error is far
+    // below the step: a point this far outside will not come back in.
+    // Most cells a point's search visits are rejected here, early.
+    if (length < 0.05 && distanceOutside(type, p) > 4.0 * length + 0.01)
+      return Inversion::Outside;
   }
-  return false;
+  return Inversion::Failed;
 }
 
 bool tetrahedronWeights(
@@ -217,14 +230,15 @@ bool cellWeights(CellType type,
                               ? Vector3d{1.0 / 3.0, 1.0 / 3.0, 0.5}
                               : Vector3d{0.5, 0.5, 0.5};
   Vector3d parametric;
-  bool converged = invertMap(type, v, p, tolerance, centre, parametric);
-  for (int corner = 0; corner < 8 && !converged; corner++) {
+  Inversion result = invertMap(type, v, p, tolerance, centre, parametric);
+  for (int corner = 0; corner < 8 && result == Inversion::Failed; corner++) {
     const Vector3d start{corner & 1 ? 0.75 : 0.25,
         corner & 2 ? 0.75 : 0.25,
         corner & 4 ? 0.75 : 0.25};
-    converged = invertMap(type, v, p, tolerance, start, parametric);
+    result = invertMap(type, v, p, tolerance, start, parametric);
   }
-  if (!converged || !insideParametric(type, parametric))
+  if (result != Inversion::Converged
+      || distanceOutside(type, parametric) > kInsideSlack)
     return false;
   double n[kMaxCellVertices];
   Vector3d dn[kMaxCellVertices];
