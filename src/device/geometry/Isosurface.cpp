@@ -101,8 +101,10 @@ void Isosurface::buildBlocks()
   const float cellSize = m_field->cellSize();
   if (isEmpty(bounds) || !(cellSize > 0.f) || !std::isfinite(cellSize))
     return;
-  m_step = cellSize / kStepsPerCell;
   const float3 size = extent(bounds);
+  if (!std::isfinite(size.x + size.y + size.z))
+    return; // a mesh spanning more than floats hold: nothing to march
+  m_step = cellSize / kStepsPerCell;
   float width = kCellsPerBlock * cellSize;
   auto blocksAlong = [&](float length) {
     return std::max(1.0, std::ceil(double(length) / width));
