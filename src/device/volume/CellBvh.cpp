@@ -32,6 +32,8 @@ std::vector<uint32_t> CellBvh::build(const std::vector<box3> &cellBounds,
 {
   m_pairs.clear();
   m_nodeValueRanges.clear();
+  m_cellBounds.clear();
+  m_cellValueRanges.clear();
   const uint32_t cellCount = uint32_t(cellBounds.size());
   std::vector<uint32_t> order(cellCount);
   for (uint32_t i = 0; i < cellCount; i++)

@@ -215,7 +215,8 @@ bool cellWeights(CellType type,
   if (type == CellType::Tetrahedron)
     return tetrahedronWeights(v, p, weights);
 
-  // The residual tolerance: rounding level of the cell's coordinates.
+  // The residual tolerance: below the rounding level of the cell's float
+  // coordinates, so iterating further would change no float value.
   double size = 0.0;
   for (int i = 1; i < count; i++) {
     size = std::max({size,
@@ -223,7 +224,7 @@ bool cellWeights(CellType type,
         std::abs(v[i].y - v[0].y),
         std::abs(v[i].z - v[0].z)});
   }
-  const double tolerance = 1e-9 * size;
+  const double tolerance = 1e-8 * size;
   // From the cell's centre first; if Newton does not converge there
   // (strongly distorted cells), from the centres of the corner octants.
   const Vector3d centre = type == CellType::Wedge

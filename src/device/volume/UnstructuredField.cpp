@@ -140,7 +140,8 @@ bool UnstructuredField::checkCells(const Array &types,
         size_t(offsets.count()));
   if (cellCount == 0)
     return fail("'cell.type' is empty: the field has no cells");
-  if (cellCount > std::numeric_limits<uint32_t>::max() / 2)
+  // Cells' vertex indices are addressed with 32 bits, 8 per cell at most.
+  if (cellCount > (size_t(1) << 28))
     return fail("%zu cells are more than the field supports", cellCount);
   const auto *type = (const uint8_t *)types.begin();
   const auto *first = (const uint32_t *)offsets.begin();
