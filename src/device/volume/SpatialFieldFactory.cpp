@@ -1,4 +1,5 @@
 #include "SpatialField.h"
+#include "UnstructuredField.h"
 
 #include "NanoVdbField.h"
 #include "StructuredRegularField.h"
@@ -12,6 +13,8 @@ SpatialField *createSpatialField(
     return new StructuredRegularField(device);
   if (subtype == "nanovdb")
     return new NanoVdbField(device);
+  if (subtype == "unstructured")
+    return new UnstructuredField(device);
   return nullptr;
 }
 
