@@ -307,6 +307,38 @@ TEST_F(VolumeTest, ShadowThroughASlabDimsTheLitPlane)
   EXPECT_TRUE(problems().empty());
 }
 
+TEST_F(VolumeTest, ExtremeScalesFinishWithFinitePixels)
+{
+  // A volume 1e30 deep seen from beyond it, and one whose unitDistance
+  // of 1e-30 makes its extinction ~1e31 (steps and tentative collisions
+  // that would not advance a float distance): every renderer finishes and
+  // every pixel is finite.
+  const float white[3] = {1, 1, 1}, background[4] = {0.2f, 0.2f, 0.2f, 1};
+  struct Case
+  {
+    float depth, unitDistance, eyeHeight;
+  };
+  for (const Case &test : {Case{1e30f, 1.f, 2e30f}, Case{2.f, 1e-30f, 5.f}}) {
+    ANARIWorld w = volumeWorld(volume(field(3, 3, 3, test.depth, constant),
+        white,
+        {0.5f},
+        test.unitDistance));
+    const float eye[3] = {0.5f, 0.5f, test.eyeHeight};
+    ANARICamera c = orthographic(eye, kDown, 0.5f);
+    for (const char *subtype : {"raycast", "pathtracer", "ao", "debug"}) {
+      ANARIRenderer r = withBackground(subtype, background);
+      const std::vector<float> image = accumulatedColor(w, c, r, 4, 2);
+      ASSERT_EQ(image.size(), 4u * 4u * 4u) << subtype;
+      for (float v : image)
+        ASSERT_TRUE(std::isfinite(v)) << subtype;
+      anariRelease(m_device, r);
+    }
+    anariRelease(m_device, w);
+    anariRelease(m_device, c);
+  }
+  EXPECT_TRUE(problems().empty());
+}
+
 TEST_F(VolumeTest, BadVolumesAreReportedAndSkipped)
 {
   // Commits apply when a frame starts: each case renders once.

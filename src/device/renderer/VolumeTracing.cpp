@@ -10,6 +10,12 @@ namespace prism {
 namespace {
 
 constexpr int kMaxSegments = 16;
+// Steps of one volume along one ray for the marcher, and tentative
+// collisions for delta and ratio tracking, at most: beyond that many a
+// volume counts as opaque (pathological inputs only: a huge volume of
+// tiny cells, or a majorant far above the extinction it bounds).
+constexpr float kMaxSteps = float(1 << 20);
+constexpr int kMaxTentativeCollisions = 1 << 16;
 
 // One volume's part of a ray: [t0, t1] and the ray in its object space.
 struct Segment
@@ -41,8 +47,12 @@ int segmentsAlong(const World &world,
     if (!(speed > 0.f) || !std::isfinite(speed))
       continue;
     s.step = placed.volume->cellSize() / (samplingRate * speed);
-    if (!(s.step > 0.f) || !std::isfinite(s.step))
+    if (!(s.step > 0.f) || !std::isfinite(s.step) || !std::isfinite(s.t0)
+        || !std::isfinite(s.t1))
       continue;
+    // However large a volume is next to its cells, a segment takes at most
+    // kMaxSteps steps (longer ones where it is larger).
+    s.step = std::max(s.step, (s.t1 - s.t0) / kMaxSteps);
     if (count == kMaxSegments) {
       if (s.t0 >= out[count - 1].t0)
         continue;
@@ -226,6 +236,7 @@ void forEachTentativeCollision(const Segment &s,
     Visit &&visit)
 {
   const Volume &volume = *s.placed->volume;
+  int tentative = 0;
   auto inCell = [&](float enter, float exit, float majorant) {
     if (majorant <= 0.f)
       return true;
@@ -236,7 +247,11 @@ void forEachTentativeCollision(const Segment &s,
       float sigma = 0.f;
       float3 color{0.f, 0.f, 0.f};
       volume.sample(s.origin + s.direction * t, sigma, color);
-      if (!visit(t, majorant, sigma, color))
+      // Too many: this one is real (the extinction as large as can be).
+      if (++tentative >= kMaxTentativeCollisions)
+        sigma = majorant;
+      if (!visit(t, majorant, sigma, color)
+          || tentative >= kMaxTentativeCollisions)
         return false;
     }
   };

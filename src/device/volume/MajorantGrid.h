@@ -174,9 +174,9 @@ inline void MajorantGrid::Walk::start(const float o[3],
     const int hi[3])
 {
   for (int a = 0; a < 3; a++) {
-    const float entry = o[a] + d[a] * t;
-    const int c = int(std::floor((entry - lower[a]) / size[a]));
-    cell[a] = c < lo[a] ? lo[a] : (c > hi[a] ? hi[a] : c);
+    // Clamped as a float: far outside (or NaN), the int would overflow.
+    const float c = std::floor((o[a] + d[a] * t - lower[a]) / size[a]);
+    cell[a] = c > float(lo[a]) ? (c < float(hi[a]) ? int(c) : hi[a]) : lo[a];
     if (d[a] > 0.f) {
       step[a] = 1;
       next[a] = (lower[a] + float(cell[a] + 1) * size[a] - o[a]) / d[a];
