@@ -18,6 +18,7 @@ Scene buildRandomSpheres(ANARIDevice device);
 Scene buildMaterialBall(ANARIDevice device);
 Scene buildInstancedForest(ANARIDevice device);
 Scene buildFurnishedRoom(ANARIDevice device);
+Scene buildVolumeBlobs(ANARIDevice device);
 
 struct DemoScene
 {

@@ -13,6 +13,17 @@ namespace prism::render {
 
 using Vec3 = std::array<float, 3>;
 
+// How volumes are colored (--tf-*): applied by VolumeStyle.* wherever a
+// volume file is turned into a transferFunction1D volume.
+struct TransferFunctionOptions
+{
+  std::optional<std::array<float, 2>> valueRange; // unset: the data's range
+  std::string colorMap{"coolwarm"};
+  std::vector<float> opacities; // empty: the default ramp
+  float unitDistance{1.f};
+  bool given{false}; // any --tf-* option, for "ignored" warnings
+};
+
 struct Options
 {
   std::string scene;  // a file path or demo:<name>
@@ -46,6 +57,9 @@ struct Options
   std::optional<std::array<uint64_t, 3>> rawDimensions;
   std::string rawType;
   Vec3 rawSpacing{1.f, 1.f, 1.f};
+  // NanoVDB files: the grid to render; empty: the first scalar grid.
+  std::string gridName;
+  TransferFunctionOptions transferFunction;
 
   bool quiet{false};
   bool verbose{false};

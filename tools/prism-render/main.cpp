@@ -7,6 +7,7 @@
 #include "FrameMemory.h"
 #include "FrameOutput.h"
 #include "GltfLoader.h"
+#include "NanoVdbLoader.h"
 #include "ObjLoader.h"
 #include "Objects.h"
 #include "Options.h"
@@ -143,7 +144,7 @@ void statusCallback(const void *userPtr,
                      + (message ? message : ""));
 }
 
-enum class SourceKind { Demo, Gltf, Obj, Raw };
+enum class SourceKind { Demo, Gltf, Obj, Raw, NanoVdb };
 
 std::string lowerExtension(const std::string &path)
 {
@@ -277,10 +278,12 @@ int run(int argc, char **argv)
       kind = SourceKind::Obj;
     else if (extension == ".raw")
       kind = SourceKind::Raw;
+    else if (extension == ".nvdb")
+      kind = SourceKind::NanoVdb;
     else
       return fail("'" + options.scene
               + "': unknown scene file type (expected .gltf, .glb, .obj, "
-                ".raw or demo:<name>)",
+                ".raw, .nvdb or demo:<name>)",
           kExitUsage);
     std::error_code ec;
     if (std::filesystem::is_directory(options.scene, ec))
@@ -400,7 +403,14 @@ int run(int argc, char **argv)
     loaded = loadObj(device, options.scene);
     break;
   case SourceKind::Raw:
-    loaded = loadRawVolume(device, options.scene, rawFormat);
+    loaded = loadRawVolume(
+        device, options.scene, rawFormat, options.transferFunction);
+    break;
+  case SourceKind::NanoVdb:
+    loaded = loadNanoVdb(device,
+        options.scene,
+        options.gridName,
+        options.transferFunction);
     break;
   }
   scenes::Scene &scene = loaded.scene;
@@ -413,6 +423,12 @@ int run(int argc, char **argv)
     return fail(loaded.error);
   if (options.cameraIndex >= 0 && kind != SourceKind::Gltf)
     console::warning("--camera only applies to glTF files; ignored");
+  const bool volumeFile = kind == SourceKind::Raw || kind == SourceKind::NanoVdb;
+  if (options.transferFunction.given && !volumeFile)
+    console::warning(
+        "--tf-* options only apply to volume files (.raw, .nvdb); ignored");
+  if (!options.gridName.empty() && kind != SourceKind::NanoVdb)
+    console::warning("--grid only applies to NanoVDB files; ignored");
 
   // Scene files without lights would render black with the path tracer:
   // light them the way glTF viewers do, and say so.

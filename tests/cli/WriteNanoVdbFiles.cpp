@@ -1,0 +1,56 @@
+// Writes the NanoVDB files the CLI tests render into the folder given:
+// grids.nvdb (velocity, density, temperature), grids-zip.nvdb (the same,
+// ZIP-compressed) and broken copies: truncated in a grid, truncated in the
+// header, and with a name size past the end of the file.
+#include "NanoVdbTestGrids.h"
+
+#define NANOVDB_USE_ZIP
+#include <nanovdb/util/IO.h>
+
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+namespace {
+
+std::string readAll(const std::string &path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+void writeAll(const std::string &path, const std::string &bytes)
+{
+  std::ofstream(path, std::ios::binary).write(bytes.data(), bytes.size());
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: write_nanovdb_files FOLDER\n");
+    return 2;
+  }
+  const std::string folder = std::string(argv[1]) + "/";
+  try {
+    const auto grids = prism::render::test_grids::makeTestGrids();
+    nanovdb::io::writeGrids(folder + "grids.nvdb", grids);
+    nanovdb::io::writeGrids(
+        folder + "grids-zip.nvdb", grids, nanovdb::io::Codec::ZIP);
+  } catch (const std::exception &e) {
+    std::fprintf(stderr, "write_nanovdb_files: %s\n", e.what());
+    return 1;
+  }
+  const std::string bytes = readAll(folder + "grids.nvdb");
+  writeAll(folder + "truncated.nvdb", bytes.substr(0, bytes.size() / 2));
+  writeAll(folder + "truncated-header.nvdb", bytes.substr(0, 100));
+  // The first grid's nameSize (at byte 16 + 136 of its metadata) made huge.
+  std::string hugeName = bytes;
+  const uint32_t huge = 0xfffffff0u;
+  std::memcpy(hugeName.data() + 16 + 136, &huge, sizeof(huge));
+  writeAll(folder + "huge-name.nvdb", hugeName);
+  return 0;
+}
