@@ -110,7 +110,8 @@ bool Cone::intersectPrimitive(uint32_t primitive,
     float &tHit,
     float &uHit,
     float &vHit,
-    float3 &normalHit) const
+    float3 &normalHit,
+    uint32_t &) const
 {
   const Segment &s = m_segments[primitive];
   const float3 p0 = m_positions[s.vertex[0]];

@@ -25,7 +25,8 @@ class Cone : public Geometry, public rt::UserGeometry
       float &t,
       float &u,
       float &v,
-      float3 &normal) const override;
+      float3 &normal,
+      uint32_t &reportedPrimitive) const override;
 
  protected:
   struct Segment

@@ -1,6 +1,7 @@
 #include "Cone.h"
 #include "Curve.h"
 #include "Cylinder.h"
+#include "Isosurface.h"
 #include "Quad.h"
 #include "Sphere.h"
 #include "Triangle.h"
@@ -21,6 +22,8 @@ Geometry *createGeometry(DeviceState &device, const std::string &subtype)
     return new Cone(device);
   if (subtype == "cylinder")
     return new Cylinder(device);
+  if (subtype == "isosurface")
+    return new Isosurface(device);
   return nullptr;
 }
 

@@ -29,7 +29,8 @@ void userBounds(const RTCBoundsFunctionArguments *args)
 }
 
 // Ray i of a stream Embree hands a user geometry, tested against
-// `primitive`: the nearest hit in the ray's (tnear, tfar), if any.
+// `primitive`: the nearest hit in the ray's (tnear, tfar), if any, and the
+// primitive id it reports.
 bool intersectLane(const UserGeometry &geometry,
     unsigned primitive,
     RTCRayN *ray,
@@ -38,7 +39,8 @@ bool intersectLane(const UserGeometry &geometry,
     float &t,
     float &u,
     float &v,
-    float3 &normal)
+    float3 &normal,
+    uint32_t &reportedPrimitive)
 {
   const float3 origin{RTCRayN_org_x(ray, n, i),
       RTCRayN_org_y(ray, n, i),
@@ -46,6 +48,7 @@ bool intersectLane(const UserGeometry &geometry,
   const float3 direction{RTCRayN_dir_x(ray, n, i),
       RTCRayN_dir_y(ray, n, i),
       RTCRayN_dir_z(ray, n, i)};
+  reportedPrimitive = primitive;
   return geometry.intersectPrimitive(primitive,
       origin,
       direction,
@@ -54,7 +57,8 @@ bool intersectLane(const UserGeometry &geometry,
       t,
       u,
       v,
-      normal);
+      normal,
+      reportedPrimitive);
 }
 
 void userIntersect(const RTCIntersectFunctionNArguments *args)
@@ -68,8 +72,17 @@ void userIntersect(const RTCIntersectFunctionNArguments *args)
       continue;
     float t, u, v;
     float3 normal;
-    if (!intersectLane(
-            *geometry, args->primID, ray, args->N, i, t, u, v, normal))
+    uint32_t primitive;
+    if (!intersectLane(*geometry,
+            args->primID,
+            ray,
+            args->N,
+            i,
+            t,
+            u,
+            v,
+            normal,
+            primitive))
       continue;
     RTCRayN_tfar(ray, args->N, i) = t;
     RTCHitN_Ng_x(hit, args->N, i) = normal.x;
@@ -77,7 +90,7 @@ void userIntersect(const RTCIntersectFunctionNArguments *args)
     RTCHitN_Ng_z(hit, args->N, i) = normal.z;
     RTCHitN_u(hit, args->N, i) = u;
     RTCHitN_v(hit, args->N, i) = v;
-    RTCHitN_primID(hit, args->N, i) = args->primID;
+    RTCHitN_primID(hit, args->N, i) = primitive;
     RTCHitN_geomID(hit, args->N, i) = args->geomID;
     for (unsigned l = 0; l < RTC_MAX_INSTANCE_LEVEL_COUNT; l++)
       RTCHitN_instID(hit, args->N, i, l) = args->context->instID[l];
@@ -93,8 +106,17 @@ void userOccluded(const RTCOccludedFunctionNArguments *args)
       continue;
     float t, u, v;
     float3 normal;
-    if (intersectLane(
-            *geometry, args->primID, ray, args->N, i, t, u, v, normal))
+    uint32_t primitive;
+    if (intersectLane(*geometry,
+            args->primID,
+            ray,
+            args->N,
+            i,
+            t,
+            u,
+            v,
+            normal,
+            primitive))
       RTCRayN_tfar(ray, args->N, i) = -std::numeric_limits<float>::infinity();
   }
 }

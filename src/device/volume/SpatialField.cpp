@@ -15,6 +15,31 @@ void SpatialField::commitParameters()
   m_valid = readField();
 }
 
+FieldFilter SpatialField::readFilter()
+{
+  const std::string filter = readString("filter", "linear");
+  if (filter == "nearest")
+    return FieldFilter::Nearest;
+  if (filter == "cubic")
+    return FieldFilter::Cubic;
+  if (filter != "linear") {
+    report(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "unknown 'filter' \"%s\"; using linear",
+        filter.c_str());
+  }
+  return FieldFilter::Linear;
+}
+
+bool SpatialField::clipToBounds(const box3 &region, box3 &clipped) const
+{
+  clipped = intersect(region, bounds());
+  // Written so that NaN corners count as a miss.
+  return clipped.lower.x <= clipped.upper.x
+         && clipped.lower.y <= clipped.upper.y
+         && clipped.lower.z <= clipped.upper.z;
+}
+
 float3 SpatialField::gradient(const float3 &position) const
 {
   const float h = 0.5f * cellSize();

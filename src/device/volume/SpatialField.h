@@ -11,6 +11,10 @@
 
 namespace prism {
 
+// How a grid field reconstructs values between its samples (the "filter"
+// parameter of structuredRegular and nanovdb).
+enum class FieldFilter { Nearest, Linear, Cubic };
+
 class SpatialField : public Object
 {
  public:
@@ -46,6 +50,12 @@ class SpatialField : public Object
   // Reads the subtype's parameters and builds what sampling needs; returns
   // false after reporting what is wrong.
   virtual bool readField() = 0;
+  // Reads "filter" (nearest, linear or cubic); an unknown name is warned
+  // about and gives linear, the spec's default.
+  FieldFilter readFilter();
+  // `region` clipped to bounds(); false when they do not overlap (or the
+  // region has NaN corners), for valueRange().
+  bool clipToBounds(const box3 &region, box3 &clipped) const;
 
  private:
   bool m_valid{false};
