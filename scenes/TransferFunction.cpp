@@ -10,7 +10,8 @@ ANARIVolume newTransferFunctionVolume(ANARIDevice device,
 {
   ANARIVolume volume = anariNewVolume(device, "transferFunction1D");
   setObject(device, volume, "value", ANARI_SPATIAL_FIELD, field);
-  setArray(device, volume, "color", ANARI_FLOAT32_VEC3, transferFunction.colors);
+  setArray(
+      device, volume, "color", ANARI_FLOAT32_VEC3, transferFunction.colors);
   setArray(
       device, volume, "opacity", ANARI_FLOAT32, transferFunction.opacities);
   anariSetParameter(device,

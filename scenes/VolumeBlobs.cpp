@@ -31,22 +31,29 @@ struct Blob
 float blobDensity(const Vec3 &p)
 {
   static const Blob kBlobs[] = {
-      {{-0.35f, -0.25f, 0.1f}, 0.32f, 1.f},
-      {{0.35f, -0.35f, -0.2f}, 0.26f, 0.9f},
-      {{0.05f, 0.3f, 0.f}, 0.3f, 0.8f},
-      {{0.4f, 0.35f, 0.35f}, 0.18f, 0.7f},
-      {{-0.45f, 0.4f, -0.35f}, 0.16f, 0.6f},
+      {{-0.3f, -0.45f, 0.1f}, 0.3f, 1.f},
+      {{0.35f, -0.5f, -0.2f}, 0.26f, 0.9f},
+      {{0.f, 0.05f, 0.f}, 0.3f, 0.85f},
+      {{0.4f, 0.2f, 0.35f}, 0.18f, 0.7f},
+      {{-0.4f, 0.35f, -0.3f}, 0.17f, 0.65f},
   };
   float density = 0.f;
   for (const Blob &b : kBlobs) {
     const Vec3 d = p - b.centre;
     density += b.weight * std::exp(-dot(d, d) / (2.f * b.radius * b.radius));
   }
-  // Incommensurate frequencies along skewed axes read as turbulence.
-  const float ripple = std::sin(9.1f * p[0] + 3.3f * p[1])
-                       * std::sin(7.7f * p[1] - 2.9f * p[2])
-                       * std::sin(8.3f * p[2] + 4.1f * p[0]);
-  density *= 0.8f + 0.35f * ripple;
+  // Three octaves of products of sines at incommensurate frequencies along
+  // skewed axes: cheap, deterministic, and it reads as turbulence.
+  float turbulence = 0.f, amplitude = 0.5f;
+  Vec3 q = p;
+  for (int octave = 0; octave < 3; octave++) {
+    turbulence += amplitude * std::sin(5.1f * q[0] + 2.3f * q[1])
+                  * std::sin(4.7f * q[1] - 1.9f * q[2])
+                  * std::sin(5.3f * q[2] + 2.1f * q[0]);
+    q = Vec3{1.9f * q[1] + 0.3f, 2.1f * q[2] - 0.7f, 2.f * q[0] + 1.1f};
+    amplitude *= 0.55f;
+  }
+  density *= 0.75f + 1.2f * turbulence;
   // Fade to zero at the field's faces so the box never shows.
   for (float c : p)
     density *= std::min(1.f, 8.f * (kHalfSize - std::abs(c)));
@@ -83,7 +90,7 @@ ANARIVolume newBlobVolume(ANARIDevice device)
   // Thin haze below 0.2, dense cores above 0.6.
   tf.opacities = {0.f, 0.f, 0.05f, 0.25f, 0.6f, 0.9f, 1.f};
   tf.valueRange = {0.f, 1.f};
-  tf.unitDistance = 0.1f;
+  tf.unitDistance = 0.15f;
   ANARIVolume volume = newTransferFunctionVolume(device, field, tf);
   anariRelease(device, field);
   return volume;
@@ -97,10 +104,10 @@ Scene buildVolumeBlobs(ANARIDevice device)
   scene.name = "volume";
   scene.description = "soft blobs in a structuredRegular field";
   scene.camera.valid = true;
-  scene.camera.eye = {2.4f, 1.1f, 3.4f};
-  scene.camera.at = {0.f, -0.15f, 0.f};
+  scene.camera.eye = {1.9f, 0.8f, 2.7f};
+  scene.camera.at = {0.f, -0.1f, 0.f};
   scene.camera.up = {0.f, 1.f, 0.f};
-  scene.camera.fovyDegrees = 38.f;
+  scene.camera.fovyDegrees = 36.f;
   scene.hasBackground = true;
   scene.background = {0.08f, 0.09f, 0.12f, 1.f};
 

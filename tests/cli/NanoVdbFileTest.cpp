@@ -9,12 +9,12 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <unistd.h>
 
 namespace {
 
@@ -23,7 +23,7 @@ using namespace prism::render;
 std::string temporaryPath()
 {
   return (std::filesystem::temp_directory_path()
-             / ("prism-nvdb-test-" + std::to_string(::getpid()) + ".nvdb"))
+          / ("prism-nvdb-test-" + std::to_string(::getpid()) + ".nvdb"))
       .string();
 }
 
@@ -93,12 +93,12 @@ TEST(NanoVdbFile, CorruptSizesAreErrors)
     const char *fragment;
   };
   const Case cases[] = {
-      {0, 0x1234, 8, "not a NanoVDB file"},          // magic
-      {8, 0, 4, "version"},                           // version
-      {14, 7, 2, "unknown compression codec"},        // codec
-      {16 + 0, uint64_t(1) << 40, 8, "corrupt"},      // gridSize
-      {16 + 8, uint64_t(1) << 40, 8, "truncated"},    // fileSize
-      {16 + 136, 0xfffffff0u, 4, "grid name size"},   // nameSize
+      {0, 0x1234, 8, "not a NanoVDB file"},         // magic
+      {8, 0, 4, "version"},                         // version
+      {14, 7, 2, "unknown compression codec"},      // codec
+      {16 + 0, uint64_t(1) << 40, 8, "corrupt"},    // gridSize
+      {16 + 8, uint64_t(1) << 40, 8, "truncated"},  // fileSize
+      {16 + 136, 0xfffffff0u, 4, "grid name size"}, // nameSize
       {16 + 136, 0, 4, "grid name size"},
   };
   for (const Case &c : cases) {

@@ -9,6 +9,7 @@
 
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -36,6 +37,7 @@ int main(int argc, char **argv)
   }
   const std::string folder = std::string(argv[1]) + "/";
   try {
+    std::filesystem::create_directories(argv[1]);
     const auto grids = prism::render::test_grids::makeTestGrids();
     nanovdb::io::writeGrids(folder + "grids.nvdb", grids);
     nanovdb::io::writeGrids(
@@ -52,5 +54,6 @@ int main(int argc, char **argv)
   const uint32_t huge = 0xfffffff0u;
   std::memcpy(hugeName.data() + 16 + 136, &huge, sizeof(huge));
   writeAll(folder + "huge-name.nvdb", hugeName);
+  writeAll(folder + "not-nanovdb.nvdb", std::string(64, 'x'));
   return 0;
 }

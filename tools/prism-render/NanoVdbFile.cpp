@@ -38,9 +38,9 @@ std::string checkCompressedChunks(std::ifstream &file,
         || chunkBytes > end - position - sizeof(chunkBytes))
       return where + " has a compressed chunk reaching past its end";
     position += sizeof(chunkBytes) + chunkBytes;
-    const uint64_t chunk =
-        grid.codec == uint16_t(Codec::ZIP) ? residual
-                                           : std::min(residual, kBloscChunk);
+    const uint64_t chunk = grid.codec == uint16_t(Codec::ZIP)
+                               ? residual
+                               : std::min(residual, kBloscChunk);
     residual -= chunk;
   } while (residual > 0);
   if (position != end)
@@ -91,8 +91,8 @@ std::string readNanoVdbContents(
 
   uint64_t position = 0;
   while (position < fileBytes) {
-    const std::string segment = name + " (segment at byte "
-                                + std::to_string(position) + ")";
+    const std::string segment =
+        name + " (segment at byte " + std::to_string(position) + ")";
     nanovdb::io::Header header;
     if (!readBytes(file, fileBytes - position, &header, sizeof(header)))
       return segment + " is truncated: its header is cut short";
@@ -135,9 +135,8 @@ std::string readNanoVdbContents(
       segmentGrids.push_back(grid);
     }
     for (const NanoVdbGridEntry &grid : segmentGrids) {
-      const std::string where =
-          name + ": grid " + std::to_string(grid.index) + " ('" + grid.name
-          + "')";
+      const std::string where = name + ": grid " + std::to_string(grid.index)
+                                + " ('" + grid.name + "')";
       if (grid.fileBytes > fileBytes - position)
         return where + " is truncated: it needs "
                + std::to_string(grid.fileBytes) + " bytes, the file has "

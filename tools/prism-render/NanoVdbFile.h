@@ -15,8 +15,8 @@ namespace prism::render {
 struct NanoVdbGridEntry
 {
   std::string name;
-  uint32_t gridType{0}; // nanovdb::GridType
-  uint16_t codec{0};    // nanovdb::io::Codec: 0 none, 1 ZIP, 2 BLOSC
+  uint32_t gridType{0};  // nanovdb::GridType
+  uint16_t codec{0};     // nanovdb::io::Codec: 0 none, 1 ZIP, 2 BLOSC
   uint64_t gridBytes{0}; // in memory, once read
   uint64_t fileBytes{0}; // on disk, compressed or not
   uint64_t index{0};     // its position in the file, as readGrid counts

@@ -71,8 +71,8 @@ std::string summarize(const uint8_t *bytes, uint64_t size, GridSummary &out)
   using TreeT = typename GridT::TreeType;
   using RootDataT = typename TreeT::RootType::DataType;
   const uint64_t treeStart = sizeof(nanovdb::GridData);
-  const auto *tree = reinterpret_cast<const nanovdb::TreeData<3> *>(
-      bytes + treeStart);
+  const auto *tree =
+      reinterpret_cast<const nanovdb::TreeData<3> *>(bytes + treeStart);
   const uint64_t rootOffset = tree->mNodeOffset[3];
   if (rootOffset > size - treeStart
       || sizeof(RootDataT) > size - treeStart - rootOffset)
@@ -104,10 +104,10 @@ std::string summarizeGrid(
         || box.min()[i] > box.max()[i])
       return "its world bounding box is not a finite box";
   }
-  out.worldBounds.extend(
-      scenes::Vec3{float(box.min()[0]), float(box.min()[1]), float(box.min()[2])});
-  out.worldBounds.extend(
-      scenes::Vec3{float(box.max()[0]), float(box.max()[1]), float(box.max()[2])});
+  out.worldBounds.extend(scenes::Vec3{
+      float(box.min()[0]), float(box.min()[1]), float(box.min()[2])});
+  out.worldBounds.extend(scenes::Vec3{
+      float(box.max()[0]), float(box.max()[1]), float(box.max()[2])});
   switch (nanovdb::GridType(type)) {
   case nanovdb::GridType::Float:
     return summarize<float>(bytes, size, out);
@@ -164,8 +164,7 @@ LoadResult loadNanoVdb(ANARIDevice device,
     result.error = "cannot read " + file + ": " + e.what();
     return result;
   }
-  const std::string where =
-      file + ": grid '" + entry->name + "' is corrupt: ";
+  const std::string where = file + ": grid '" + entry->name + "' is corrupt: ";
   if (!handle || handle.size() != entry->gridBytes) {
     result.error = where + "NanoVDB read " + std::to_string(handle.size())
                    + " of its " + std::to_string(entry->gridBytes) + " bytes";
@@ -184,8 +183,8 @@ LoadResult loadNanoVdb(ANARIDevice device,
                             "function spans 0 to 1 (--tf-range sets it)");
   scene.bounds = summary.worldBounds;
 
-  ANARIArray1D data = scenes::newArray1D(
-      device, ANARI_UINT8, handle.data(), handle.size(), 1);
+  ANARIArray1D data =
+      scenes::newArray1D(device, ANARI_UINT8, handle.data(), handle.size(), 1);
   ANARISpatialField field = anariNewSpatialField(device, "nanovdb");
   scenes::setObject(device, field, "data", ANARI_ARRAY1D, data);
   anariRelease(device, data);

@@ -405,9 +405,9 @@ std::vector<OptionSpec> optionSpecs()
             std::vector<float> opacities(std::min(count, kMaxOpacities));
             if (count > kMaxOpacities
                 || !parseFloats(v, opacities.data(), int(count))
-                || std::any_of(opacities.begin(),
-                    opacities.end(),
-                    [](float a) { return !(a >= 0.f && a <= 1.f); }))
+                || std::any_of(opacities.begin(), opacities.end(), [](float a) {
+                     return !(a >= 0.f && a <= 1.f);
+                   }))
               return expected("--tf-opacity",
                   "opacities V0,V1,... each from 0 to 1 (at most 1024)",
                   v);

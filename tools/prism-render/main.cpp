@@ -407,10 +407,8 @@ int run(int argc, char **argv)
         device, options.scene, rawFormat, options.transferFunction);
     break;
   case SourceKind::NanoVdb:
-    loaded = loadNanoVdb(device,
-        options.scene,
-        options.gridName,
-        options.transferFunction);
+    loaded = loadNanoVdb(
+        device, options.scene, options.gridName, options.transferFunction);
     break;
   }
   scenes::Scene &scene = loaded.scene;
@@ -423,7 +421,8 @@ int run(int argc, char **argv)
     return fail(loaded.error);
   if (options.cameraIndex >= 0 && kind != SourceKind::Gltf)
     console::warning("--camera only applies to glTF files; ignored");
-  const bool volumeFile = kind == SourceKind::Raw || kind == SourceKind::NanoVdb;
+  const bool volumeFile =
+      kind == SourceKind::Raw || kind == SourceKind::NanoVdb;
   if (options.transferFunction.given && !volumeFile)
     console::warning(
         "--tf-* options only apply to volume files (.raw, .nvdb); ignored");
