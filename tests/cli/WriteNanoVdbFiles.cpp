@@ -55,5 +55,23 @@ int main(int argc, char **argv)
   std::memcpy(hugeName.data() + 16 + 136, &huge, sizeof(huge));
   writeAll(folder + "huge-name.nvdb", hugeName);
   writeAll(folder + "not-nanovdb.nvdb", std::string(64, 'x'));
+  // The density grid's lower-node offset (its tree's mNodeOffset[1]) far
+  // past the grid: the table of contents is fine, the tree is not.
+  std::string corruptTree = bytes;
+  uint64_t densityStart = 16;
+  uint64_t firstGridBytes = 0;
+  std::memcpy(&firstGridBytes, bytes.data() + 16 + 8, sizeof(uint64_t));
+  for (int grid = 0; grid < 3; grid++) {
+    uint32_t nameSize = 0;
+    std::memcpy(&nameSize, bytes.data() + densityStart + 136, sizeof(nameSize));
+    densityStart += 176 + nameSize;
+  }
+  densityStart += firstGridBytes;
+  const uint64_t farAway = uint64_t(1) << 40;
+  std::memcpy(corruptTree.data() + densityStart + sizeof(nanovdb::GridData)
+                  + sizeof(uint64_t),
+      &farAway,
+      sizeof(farAway));
+  writeAll(folder + "corrupt-tree.nvdb", corruptTree);
   return 0;
 }

@@ -101,8 +101,12 @@ std::string readNanoVdbContents(
       return position == sizeof(header)
                  ? name + " is not a NanoVDB file (wrong magic number)"
                  : segment + " is corrupt (wrong magic number)";
+    // (Version::c_str() hands out memory nobody frees: spelled out here.)
     if (header.version.getMajor() != NANOVDB_MAJOR_VERSION_NUMBER)
-      return name + " is NanoVDB version " + header.version.c_str()
+      return name + " is NanoVDB version "
+             + std::to_string(header.version.getMajor()) + "."
+             + std::to_string(header.version.getMinor()) + "."
+             + std::to_string(header.version.getPatch())
              + "; prism-render reads version "
              + std::to_string(NANOVDB_MAJOR_VERSION_NUMBER) + ".x";
     if (uint16_t(header.codec) > uint16_t(Codec::BLOSC))

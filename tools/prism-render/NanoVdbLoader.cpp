@@ -161,7 +161,12 @@ LoadResult loadNanoVdb(ANARIDevice device,
   } catch (const std::bad_alloc &) {
     throw;
   } catch (const std::exception &e) {
-    result.error = "cannot read " + file + ": " + e.what();
+    // NanoVDB's messages are its own ("UNZIP failed on byte size").
+    result.error = "cannot read " + file + ": grid '" + entry->name
+                   + "': " + e.what()
+                   + (entry->codec != uint16_t(nanovdb::io::Codec::NONE)
+                           ? " (corrupt compressed data)"
+                           : "");
     return result;
   }
   const std::string where = file + ": grid '" + entry->name + "' is corrupt: ";

@@ -386,7 +386,10 @@ int run(int argc, char **argv)
                   + "'");
   }
 
-  // The scene.
+  // The scene. Device errors from here on (a file the loader passed but
+  // the device refused, such as a NanoVDB tree it found corrupt) fail the
+  // run: the image would be missing what the file holds.
+  const int errorsBeforeLoad = session.status.errors.load();
   LoadResult loaded;
   const auto loadStart = std::chrono::steady_clock::now();
   switch (kind) {
@@ -514,6 +517,11 @@ int run(int argc, char **argv)
   }
   if (bounds.empty())
     bounds = scene.bounds;
+  // The bounds query waited for every commit, so the device has judged the
+  // scene by now.
+  if (session.status.errors.load() > errorsBeforeLoad)
+    return fail("the device refused the scene '" + options.scene
+                + "' (see above); no image written");
   const float aspect = float(options.width) / float(options.height);
   const CameraSetup view = frameCamera(scene.camera, bounds, aspect, options);
   // Ray tracers reject rays from beyond ~1e18; refuse such a camera here
