@@ -1,7 +1,8 @@
 // Writes the NanoVDB files the CLI tests render into the folder given:
 // grids.nvdb (velocity, density, temperature), grids-zip.nvdb (the same,
-// ZIP-compressed) and broken copies: truncated in a grid, truncated in the
-// header, and with a name size past the end of the file.
+// ZIP-compressed), blosc.nvdb (labelled BLOSC), and broken copies: cut in
+// a grid, cut in the header, a name size past the end of the file, a file
+// of something else, and a density grid whose tree points outside it.
 #include "NanoVdbTestGrids.h"
 
 #define NANOVDB_USE_ZIP
@@ -46,6 +47,12 @@ int main(int argc, char **argv)
     std::fprintf(stderr, "write_nanovdb_files: %s\n", e.what());
     return 1;
   }
+  // The ZIP file labelled BLOSC (the segment header's codec, bytes 14-15):
+  // one chunk under 1 GiB is laid out alike, so only the codec is refused.
+  std::string blosc = readAll(folder + "grids-zip.nvdb");
+  const uint16_t bloscCodec = uint16_t(nanovdb::io::Codec::BLOSC);
+  std::memcpy(blosc.data() + 14, &bloscCodec, sizeof(bloscCodec));
+  writeAll(folder + "blosc.nvdb", blosc);
   const std::string bytes = readAll(folder + "grids.nvdb");
   writeAll(folder + "truncated.nvdb", bytes.substr(0, bytes.size() / 2));
   writeAll(folder + "truncated-header.nvdb", bytes.substr(0, 100));
