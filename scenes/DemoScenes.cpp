@@ -30,7 +30,9 @@ const std::vector<DemoScene> &demoScenes()
       {"volume",
           "soft blobs of a 128^3 structuredRegular field in a "
           "transferFunction1D volume (inferno map) over a ground plane",
-          buildVolumeBlobs},
+          buildVolumeBlobs,
+          volumeBlobsStyle,
+          buildVolumeBlobsWithStyle},
   };
   return scenes;
 }

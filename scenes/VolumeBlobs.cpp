@@ -60,7 +60,7 @@ float blobDensity(const Vec3 &p)
   return std::clamp(density, 0.f, 1.f);
 }
 
-ANARIVolume newBlobVolume(ANARIDevice device)
+ANARIVolume newBlobVolume(ANARIDevice device, const TransferFunction &style)
 {
   std::vector<float> voxels(size_t(kVoxels) * kVoxels * kVoxels);
   const float spacing = 2.f * kHalfSize / float(kVoxels - 1);
@@ -85,20 +85,31 @@ ANARIVolume newBlobVolume(ANARIDevice device)
   setVec3(device, field, "spacing", {spacing, spacing, spacing});
   anariCommitParameters(device, field);
 
-  TransferFunction tf;
-  tf.colors = linearColors(*findColorMap("inferno"));
-  // Thin haze below 0.2, dense cores above 0.6.
-  tf.opacities = {0.f, 0.f, 0.05f, 0.25f, 0.6f, 0.9f, 1.f};
-  tf.valueRange = {0.f, 1.f};
-  tf.unitDistance = 0.15f;
-  ANARIVolume volume = newTransferFunctionVolume(device, field, tf);
+  ANARIVolume volume = newTransferFunctionVolume(device, field, style);
   anariRelease(device, field);
   return volume;
 }
 
 } // namespace
 
+TransferFunction volumeBlobsStyle()
+{
+  TransferFunction tf;
+  tf.colors = linearColors(*findColorMap("inferno"));
+  // Thin haze below 0.2, dense cores above 0.6.
+  tf.opacities = {0.f, 0.f, 0.05f, 0.25f, 0.6f, 0.9f, 1.f};
+  tf.valueRange = {0.f, 1.f};
+  tf.unitDistance = 0.15f;
+  return tf;
+}
+
 Scene buildVolumeBlobs(ANARIDevice device)
+{
+  return buildVolumeBlobsWithStyle(device, volumeBlobsStyle());
+}
+
+Scene buildVolumeBlobsWithStyle(
+    ANARIDevice device, const TransferFunction &style)
 {
   Scene scene;
   scene.name = "volume";
@@ -146,7 +157,7 @@ Scene buildVolumeBlobs(ANARIDevice device)
         "KHR_VOLUME_TRANSFER_FUNCTION1D); only the ground is shown");
     return scene;
   }
-  ANARIVolume volume = newBlobVolume(device);
+  ANARIVolume volume = newBlobVolume(device, style);
   setObjectArray(device, scene.world, "volume", ANARI_VOLUME, {volume});
   anariCommitParameters(device, scene.world);
   anariRelease(device, volume);

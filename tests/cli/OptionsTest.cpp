@@ -138,9 +138,9 @@ TEST(Options, TransferFunction)
   const TransferFunctionOptions &d = defaults.options.transferFunction;
   EXPECT_FALSE(d.given);
   EXPECT_FALSE(d.valueRange.has_value());
-  EXPECT_EQ(d.colorMap, "coolwarm");
+  EXPECT_EQ(d.colorMap, "");
   EXPECT_TRUE(d.opacities.empty());
-  EXPECT_FLOAT_EQ(d.unitDistance, 1.f);
+  EXPECT_FALSE(d.unitDistance.has_value());
 
   const ParseResult r = parse({"v.nvdb",
       "--tf-range",
@@ -160,7 +160,7 @@ TEST(Options, TransferFunction)
   EXPECT_FLOAT_EQ((*tf.valueRange)[1], 2000.f);
   EXPECT_EQ(tf.colorMap, "viridis");
   EXPECT_EQ(tf.opacities, (std::vector<float>{0.f, 0.25f, 1.f}));
-  EXPECT_FLOAT_EQ(tf.unitDistance, 0.5f);
+  EXPECT_FLOAT_EQ(tf.unitDistance.value_or(0.f), 0.5f);
   EXPECT_EQ(r.options.gridName, "density");
   // One opacity is a constant; a thousand and twenty-five is too many.
   EXPECT_TRUE(parse({"v.raw", "--tf-opacity", "0.3"}).ok());
@@ -177,6 +177,7 @@ TEST(TransferFunction, FromOptionsAndData)
   EXPECT_EQ(tf.valueRange, (std::array<float, 2>{2.f, 10.f}));
   EXPECT_EQ(tf.colors.size(), 5u); // coolwarm's control points
   EXPECT_EQ(tf.opacities, (std::vector<float>{0.f, 0.05f, 0.2f, 0.5f, 1.f}));
+  EXPECT_FLOAT_EQ(tf.unitDistance, 1.f);
   // A constant field still gets a range the device accepts.
   tf = transferFunctionFor(options, 3.f, 3.f);
   EXPECT_LT(tf.valueRange[0], tf.valueRange[1]);
@@ -192,6 +193,20 @@ TEST(TransferFunction, FromOptionsAndData)
   EXPECT_EQ(tf.colors[1], (scenes::Vec3{1.f, 1.f, 1.f}));
   EXPECT_EQ(tf.opacities, (std::vector<float>{0.5f}));
   EXPECT_FLOAT_EQ(tf.unitDistance, 4.f);
+
+  // Over a volume's own style, only what is given changes.
+  scenes::TransferFunction own;
+  own.colors = {{1.f, 0.f, 0.f}, {0.f, 1.f, 0.f}, {0.f, 0.f, 1.f}};
+  own.opacities = {0.f, 0.3f};
+  own.valueRange = {0.f, 1.f};
+  own.unitDistance = 0.1f;
+  TransferFunctionOptions onlyMap;
+  onlyMap.colorMap = "grayscale";
+  applyTransferFunctionOptions(onlyMap, own);
+  EXPECT_EQ(own.colors.size(), 2u);
+  EXPECT_EQ(own.opacities, (std::vector<float>{0.f, 0.3f}));
+  EXPECT_EQ(own.valueRange, (std::array<float, 2>{0.f, 1.f}));
+  EXPECT_FLOAT_EQ(own.unitDistance, 0.1f);
 }
 
 TEST(ColorMaps, NamedMapsDecodeToLinear)

@@ -610,15 +610,15 @@ NanoVDB files
   --grid NAME            the grid to render (default: the first scalar grid:
                          float, double, int32, Fp4, Fp8, Fp16 or FpN)
 
-Volume transfer function (raw and NanoVDB files)
-  --tf-range LO,HI       field values the color map spans (default: the
+Volume transfer function (raw and NanoVDB files, demo:volume)
+  --tf-range LO,HI       field values the color map spans (files: the
                          data's minimum and maximum)
-  --tf-map NAME          color map: coolwarm (default), viridis, inferno or
-                         grayscale
+  --tf-map NAME          color map: coolwarm (files' default), viridis,
+                         inferno (demo:volume's) or grayscale
   --tf-opacity V0,V1,... opacities from 0 to 1, evenly spaced over the range
-                         (default 0,0.05,0.2,0.5,1)
-  --tf-unit-distance D   distance over which an opacity is reached (default
-                         1, in the volume's world units)
+                         (files: 0,0.05,0.2,0.5,1)
+  --tf-unit-distance D   distance over which an opacity is reached, in the
+                         volume's world units (files: 1)
 
 Other
   --bench N              render N frames and print min/median/max frame time

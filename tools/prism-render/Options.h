@@ -14,13 +14,15 @@ namespace prism::render {
 using Vec3 = std::array<float, 3>;
 
 // How volumes are colored (--tf-*): applied by VolumeStyle.* wherever a
-// volume file is turned into a transferFunction1D volume.
+// volume is made (volume files, demo:volume). What is not given keeps the
+// volume's own default (files: the data's range, coolwarm, the default
+// ramp, unit distance 1).
 struct TransferFunctionOptions
 {
-  std::optional<std::array<float, 2>> valueRange; // unset: the data's range
-  std::string colorMap{"coolwarm"};
-  std::vector<float> opacities; // empty: the default ramp
-  float unitDistance{1.f};
+  std::optional<std::array<float, 2>> valueRange;
+  std::string colorMap;         // empty: the default
+  std::vector<float> opacities; // empty: the default
+  std::optional<float> unitDistance;
   bool given{false}; // any --tf-* option, for "ignored" warnings
 };
 

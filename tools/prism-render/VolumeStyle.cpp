@@ -12,23 +12,29 @@ scenes::TransferFunction transferFunctionFor(
     const TransferFunctionOptions &options, float dataLo, float dataHi)
 {
   scenes::TransferFunction tf;
-  const scenes::ColorMap *map = scenes::findColorMap(options.colorMap);
-  if (!map) // Options checked the name; a default keeps this total
-    map = &scenes::colorMaps().front();
-  tf.colors = scenes::linearColors(*map);
-  tf.opacities = options.opacities.empty()
-                     ? std::vector<float>{0.f, 0.05f, 0.2f, 0.5f, 1.f}
-                     : options.opacities;
-  if (options.valueRange) {
-    tf.valueRange = *options.valueRange;
-  } else {
-    // A constant field still needs lo < hi.
-    tf.valueRange = {dataLo,
-        dataHi > dataLo ? dataHi
-                        : dataLo + std::max(1e-6f, std::abs(dataLo) * 1e-6f)};
-  }
-  tf.unitDistance = options.unitDistance;
+  tf.colors = scenes::linearColors(scenes::colorMaps().front()); // coolwarm
+  tf.opacities = {0.f, 0.05f, 0.2f, 0.5f, 1.f};
+  // A constant field still needs lo < hi.
+  tf.valueRange = {dataLo,
+      dataHi > dataLo ? dataHi
+                      : dataLo + std::max(1e-6f, std::abs(dataLo) * 1e-6f)};
+  tf.unitDistance = 1.f;
+  applyTransferFunctionOptions(options, tf);
   return tf;
+}
+
+void applyTransferFunctionOptions(const TransferFunctionOptions &options,
+    scenes::TransferFunction &transferFunction)
+{
+  if (options.valueRange)
+    transferFunction.valueRange = *options.valueRange;
+  // Options checked the name: an unknown one cannot get here.
+  if (const scenes::ColorMap *map = scenes::findColorMap(options.colorMap))
+    transferFunction.colors = scenes::linearColors(*map);
+  if (!options.opacities.empty())
+    transferFunction.opacities = options.opacities;
+  if (options.unitDistance)
+    transferFunction.unitDistance = *options.unitDistance;
 }
 
 ANARIWorld newVolumeWorld(ANARIDevice device,

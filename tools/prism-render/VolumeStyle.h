@@ -10,10 +10,16 @@
 
 namespace prism::render {
 
-// The transfer function for data spanning [dataLo, dataHi]: --tf-range over
-// that range, the named color map, the opacity ramp, the unit distance.
+// The transfer function of a volume file whose data spans [dataLo,
+// dataHi]: coolwarm over that range with the default opacity ramp, then
+// whatever the options give.
 scenes::TransferFunction transferFunctionFor(
     const TransferFunctionOptions &options, float dataLo, float dataHi);
+
+// Replaces in `transferFunction` what the options give (the range, the
+// map's colors, the opacities, the unit distance).
+void applyTransferFunctionOptions(const TransferFunctionOptions &options,
+    scenes::TransferFunction &transferFunction);
 
 // A committed world holding one transferFunction1D volume of `field`
 // (whose reference this takes over).

@@ -14,6 +14,7 @@
 #include "Progress.h"
 #include "RawVolumeLoader.h"
 #include "RendererParameters.h"
+#include "VolumeStyle.h"
 
 #include <anari/anari.h>
 
@@ -394,7 +395,13 @@ int run(int argc, char **argv)
   const auto loadStart = std::chrono::steady_clock::now();
   switch (kind) {
   case SourceKind::Demo:
-    loaded.scene = demo->build(device);
+    if (options.transferFunction.given && demo->buildWithVolumeStyle) {
+      scenes::TransferFunction style = demo->volumeStyle();
+      applyTransferFunctionOptions(options.transferFunction, style);
+      loaded.scene = demo->buildWithVolumeStyle(device, style);
+    } else {
+      loaded.scene = demo->build(device);
+    }
     break;
   case SourceKind::Gltf: {
     GltfOptions gltf;
@@ -424,11 +431,12 @@ int run(int argc, char **argv)
     return fail(loaded.error);
   if (options.cameraIndex >= 0 && kind != SourceKind::Gltf)
     console::warning("--camera only applies to glTF files; ignored");
-  const bool volumeFile =
-      kind == SourceKind::Raw || kind == SourceKind::NanoVdb;
-  if (options.transferFunction.given && !volumeFile)
+  const bool hasVolume = kind == SourceKind::Raw || kind == SourceKind::NanoVdb
+                         || (demo && demo->buildWithVolumeStyle);
+  if (options.transferFunction.given && !hasVolume)
     console::warning(
-        "--tf-* options only apply to volume files (.raw, .nvdb); ignored");
+        "--tf-* options only apply to volumes (.raw, .nvdb, demo:volume); "
+        "ignored");
   if (!options.gridName.empty() && kind != SourceKind::NanoVdb)
     console::warning("--grid only applies to NanoVDB files; ignored");
 
