@@ -57,9 +57,10 @@ class IsosurfaceAnalytic : public AnalyticTest
     return field;
   }
   // The isosurfaces of `field` at `isovalues`, seen from z = 5 over
-  // [-1.5, 1.5]^2.
-  RenderedImage renderIsosurface(
-      ANARISpatialField field, const std::vector<float> &isovalues)
+  // [-1.5, 1.5]^2; placed by `transform` (a column-major 4x4) if given.
+  RenderedImage renderIsosurface(ANARISpatialField field,
+      const std::vector<float> &isovalues,
+      const float *transform = nullptr)
   {
     ANARIGeometry g = anariNewGeometry(m_device, "isosurface");
     anariSetParameter(m_device, g, "field", ANARI_SPATIAL_FIELD, &field);
@@ -67,7 +68,29 @@ class IsosurfaceAnalytic : public AnalyticTest
       anariSetParameter(m_device, g, "isovalue", ANARI_FLOAT32, &isovalues[0]);
     else
       setArray(g, "isovalue", array1D(isovalues, ANARI_FLOAT32));
-    ANARIWorld w = world({surface(g, matte(1, 1, 1))});
+    ANARISurface isosurface = surface(g, matte(1, 1, 1));
+    ANARIWorld w = transform ? world({}) : world({isosurface});
+    if (transform) {
+      ANARIGroup group = anariNewGroup(m_device);
+      setArray(group,
+          "surface",
+          anariNewArray1D(
+              m_device, &isosurface, nullptr, nullptr, ANARI_SURFACE, 1));
+      anariCommitParameters(m_device, group);
+      anariRelease(m_device, isosurface);
+      ANARIInstance instance = anariNewInstance(m_device, "transform");
+      anariSetParameter(m_device, instance, "group", ANARI_GROUP, &group);
+      anariSetParameter(
+          m_device, instance, "transform", ANARI_FLOAT32_MAT4, transform);
+      anariCommitParameters(m_device, instance);
+      anariRelease(m_device, group);
+      setArray(w,
+          "instance",
+          anariNewArray1D(
+              m_device, &instance, nullptr, nullptr, ANARI_INSTANCE, 1));
+      anariRelease(m_device, instance);
+      anariCommitParameters(m_device, w);
+    }
     ANARICamera c = orthographic(kEyeZ5, kLookDown, 3.f);
     ANARIRenderer r = renderer("raycast");
     RenderedImage image = render(w, c, r, kPixels, kPixels);
@@ -76,20 +99,22 @@ class IsosurfaceAnalytic : public AnalyticTest
     anariRelease(m_device, r);
     return image;
   }
-  // Every pixel whose centre lies inside the sphere of `radius` (with a
-  // margin for the interpolated outline) shows it: its depth puts the hit
-  // on the sphere, its primitiveId is `isovalueIndex`; pixels outside show
-  // nothing.
+  // Every pixel whose centre lies inside the sphere of `radius` around
+  // (cx, cy, 0) (with a margin for the interpolated outline) shows it: its
+  // depth puts the hit on the sphere, its primitiveId is `isovalueIndex`;
+  // pixels outside show nothing.
   void checkSphere(const RenderedImage &image,
       float radius,
       uint32_t isovalueIndex,
-      float h /* cell size */)
+      float h /* cell size */,
+      float cx = 0.f,
+      float cy = 0.f)
   {
     int covered = 0;
     for (uint32_t y = 0; y < kPixels; y++) {
       for (uint32_t x = 0; x < kPixels; x++) {
-        const float wx = (x + 0.5f) / kPixels * 3.f - 1.5f;
-        const float wy = (y + 0.5f) / kPixels * 3.f - 1.5f;
+        const float wx = (x + 0.5f) / kPixels * 3.f - 1.5f - cx;
+        const float wy = (y + 0.5f) / kPixels * 3.f - 1.5f - cy;
         const float fromAxis = std::sqrt(wx * wx + wy * wy);
         const float depth = image.depthAt(x, y);
         if (fromAxis > radius + 0.01f) {
@@ -130,6 +155,23 @@ TEST_F(IsosurfaceAnalytic, TheOuterOfTwoIsovaluesHidesTheInner)
   ANARISpatialField field = distanceField(30);
   checkSphere(renderIsosurface(field, {0.6f, 1.1f}), 1.1f, 1, 0.1f);
   checkSphere(renderIsosurface(field, {1.1f, 0.6f}), 1.1f, 0, 0.1f);
+  anariRelease(m_device, field);
+  EXPECT_TRUE(problems().empty());
+}
+
+// Embree hands the isosurface rays in its object space: scaled and moved
+// by an instance, the sphere scales and moves with it.
+TEST_F(IsosurfaceAnalytic, InstancedIsosurfaceFollowsItsTransform)
+{
+  ANARISpatialField field = distanceField(30);
+  const float scaleAndMove[16] = {
+      1.5f, 0, 0, 0, 0, 1.5f, 0, 0, 0, 0, 1.5f, 0, 0.2f, -0.1f, 0, 1};
+  checkSphere(renderIsosurface(field, {0.5f}, scaleAndMove),
+      0.75f,
+      0,
+      0.15f,
+      0.2f,
+      -0.1f);
   anariRelease(m_device, field);
   EXPECT_TRUE(problems().empty());
 }

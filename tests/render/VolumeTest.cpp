@@ -3,6 +3,8 @@
 // order, by raycast and by the path tracer.
 #include "RenderTest.h"
 
+#include <nanovdb/util/GridBuilder.h>
+
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -273,6 +275,167 @@ TEST_F(VolumeAndSurfaces, Raycast)
 TEST_F(VolumeAndSurfaces, PathTracer)
 {
   renderScene("pathtracer", 64);
+}
+
+using VolumeNanoVdb = VolumeScene;
+
+// A sparse NanoVDB float grid, built with NanoVDB's own GridBuilder: two
+// balls of density (voxel size 1/32, the world's [0, 1] box), background
+// 0 everywhere else, passed to the `nanovdb` field as a UINT8 blob. The
+// larger ball on the left is brighter at its core; the grid's translation
+// moves the smaller one to the right.
+TEST_F(VolumeNanoVdb, Raycast)
+{
+  nanovdb::GridBuilder<float> builder(0.f);
+  auto voxels = builder.getAccessor();
+  auto ball = [&](int cx, int cy, int cz, int r) {
+    for (int k = cz - r; k <= cz + r; k++)
+      for (int j = cy - r; j <= cy + r; j++)
+        for (int i = cx - r; i <= cx + r; i++) {
+          const float d =
+              std::sqrt(float((i - cx) * (i - cx) + (j - cy) * (j - cy)
+                              + (k - cz) * (k - cz)))
+              / float(r);
+          if (d < 1.f)
+            voxels.setValue(nanovdb::Coord(i, j, k), 1.f - d);
+        }
+  };
+  ball(10, 16, 16, 9);
+  ball(26, 16, 16, 5);
+  const auto handle =
+      builder.getHandle<>(1.0 / 32.0, nanovdb::Vec3d(0.25, 0.0, 0.0));
+  ANARIArray1D blob = newArray1D(ANARI_UINT8, handle.data(), handle.size());
+  ANARISpatialField field = keep(anariNewSpatialField(device(), "nanovdb"));
+  setObject(field, "data", ANARI_ARRAY1D, blob);
+  anariCommitParameters(device(), field);
+  renderAndCompare(
+      newWorld({},
+          {placed(newVolumeGroup({newVolume(field)}), translation({0, 0, 0}))}),
+      topView(1.5f, 144, 96),
+      newRenderer(),
+      144,
+      96);
+}
+
+using VolumeUnstructured = VolumeScene;
+
+// One cell of each kind the unstructured field knows, left to right: a
+// tetrahedron, a hexahedron, a wedge and a pyramid (VTK ordering), their
+// vertex values a ramp along x (blue to red); below them the same cells
+// with one value each (cell.data: 0, 0.33, 0.67, 1), so each is flat.
+TEST_F(VolumeUnstructured, Raycast)
+{
+  std::vector<float> positions;
+  std::vector<uint32_t> index, offsets;
+  std::vector<uint8_t> types;
+  auto add = [&](uint8_t type, const std::vector<Vec3> &corners, float x0) {
+    offsets.push_back(uint32_t(index.size()));
+    types.push_back(type);
+    for (const Vec3 &c : corners) {
+      index.push_back(uint32_t(positions.size() / 3));
+      positions.insert(positions.end(), {c[0] + x0, c[1], c[2]});
+    }
+  };
+  add(10, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, 0.f);
+  add(12,
+      {{0, 0, 0},
+          {1, 0, 0},
+          {1, 1, 0},
+          {0, 1, 0},
+          {0, 0, 1},
+          {1, 0, 1},
+          {1, 1, 1},
+          {0, 1, 1}},
+      1.25f);
+  add(13,
+      {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}},
+      2.5f);
+  add(14, {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5f, 0.5f, 1}}, 3.75f);
+  std::vector<float> ramp;
+  for (size_t v = 0; v < positions.size() / 3; v++)
+    ramp.push_back(positions[3 * v] / 4.75f);
+  auto mesh = [&](bool perCell) {
+    ANARISpatialField field =
+        keep(anariNewSpatialField(device(), "unstructured"));
+    setArray(field, "vertex.position", ANARI_FLOAT32_VEC3, positions);
+    setArray(field, "index", ANARI_UINT32, index);
+    setArray(field, "cell.index", ANARI_UINT32, offsets);
+    setArray(field, "cell.type", ANARI_UINT8, types);
+    if (perCell) {
+      setArray(field,
+          "cell.data",
+          ANARI_FLOAT32,
+          std::vector<float>{0.f, 0.33f, 0.67f, 1.f});
+    } else {
+      setArray(field, "vertex.data", ANARI_FLOAT32, ramp);
+    }
+    anariCommitParameters(device(), field);
+    return newVolumeGroup({newVolume(field, 0.f, 1.f, 0.2f)});
+  };
+  ANARIWorld world = newWorld({},
+      {placed(mesh(false), translation({0, 1.2f, 0})),
+          placed(mesh(true), translation({0, 0, 0}))});
+  renderAndCompare(world,
+      newOrthographicCamera(
+          {2.375f, 1.1f, 3.f}, {0, 0, -1}, {0, 1, 0}, 2.4f, 2.2f),
+      newRenderer(),
+      176,
+      80);
+}
+
+// Two isosurfaces (KHR_GEOMETRY_ISOSURFACE) of a structuredRegular
+// distance field, found on its trilinear interpolant: the inner sphere
+// (isovalue 0.2, primitive.color red) seen through the outer one (0.35,
+// blue, half transparent); shaded by the field's gradient.
+class Isosurface : public VolumeScene
+{
+ protected:
+  void renderScene(const char *subtype, uint32_t frames)
+  {
+    ANARISpatialField field =
+        newFloatField(17, [](uint32_t i, uint32_t j, uint32_t k) {
+          const float x = float(i) / 16.f - 0.5f, y = float(j) / 16.f - 0.5f,
+                      z = float(k) / 16.f - 0.5f;
+          return std::sqrt(x * x + y * y + z * z);
+        });
+    ANARIGeometry iso = newGeometry("isosurface");
+    setObject(iso, "field", ANARI_SPATIAL_FIELD, field);
+    setArray(iso, "isovalue", ANARI_FLOAT32, std::vector<float>{0.2f, 0.35f});
+    setArray(iso,
+        "primitive.color",
+        ANARI_FLOAT32_VEC4,
+        std::vector<float>{0.9f, 0.2f, 0.1f, 1.f, 0.2f, 0.4f, 0.9f, 0.5f});
+    ANARIMaterial material = keep(anariNewMaterial(device(), "matte"));
+    setString(material, "color", "color");
+    setString(material, "alphaMode", "blend");
+    anariCommitParameters(device(), material);
+    ANARIWorld world = newWorld({newSurface(iso, material)});
+    ANARILight light = keep(anariNewLight(device(), "directional"));
+    setVec3(light, "direction", {-0.3f, -0.5f, -1.f});
+    setFloat(light, "irradiance", 3.f);
+    anariCommitParameters(device(), light);
+    setObject(world,
+        "light",
+        ANARI_ARRAY1D,
+        anariNewArray1D(device(), &light, nullptr, nullptr, ANARI_LIGHT, 1));
+    anariCommitParameters(device(), world);
+    ANARICamera camera = newPerspectiveCamera(
+        {0.5f, -0.6f, 1.3f}, {0, 1.1f, -0.8f}, {0, 0, 1}, 1.f, 0.9f);
+    ANARIRenderer renderer = newRenderer(subtype);
+    setVec4(renderer, "background", {0.1f, 0.1f, 0.1f, 1.f});
+    anariCommitParameters(device(), renderer);
+    renderAndCompare(world, camera, renderer, 96, 96, {}, frames);
+  }
+};
+
+TEST_F(Isosurface, Raycast)
+{
+  renderScene("raycast", 1);
+}
+
+TEST_F(Isosurface, PathTracer)
+{
+  renderScene("pathtracer", 32);
 }
 
 } // namespace

@@ -237,11 +237,13 @@ void PathTracer::shadeBounce(const RenderContext &context,
       continue;
     recordFirstHit(b);
     emitFromSurface(context, b);
-    if (b.path.bounce + 1 >= m_maxPathLength)
-      continue;
+    // The last surface a path may meet is still lit directly (its light
+    // sample then weighs fully: no BSDF sample follows to share it with).
+    const bool last = b.path.bounce + 1 >= m_maxPathLength;
     const Scattering scattering = scatteringAt(b);
-    nextEvent(context, b, scattering, shadows, contributions);
-    scatter(b, scattering, next);
+    nextEvent(context, b, scattering, last, shadows, contributions);
+    if (!last)
+      scatter(b, scattering, next);
   }
 }
 
@@ -407,6 +409,7 @@ PathTracer::Scattering PathTracer::scatteringAt(const Bounce &b) const
 void PathTracer::nextEvent(const RenderContext &context,
     const Bounce &b,
     const Scattering &scattering,
+    bool last,
     rt::RayQueue &shadows,
     std::vector<float3> &contributions) const
 {
@@ -437,7 +440,8 @@ void PathTracer::nextEvent(const RenderContext &context,
                          ? ls.distance
                          : ls.distance * (1.f - 1e-4f) - scattering.offset;
   const float pdf = ls.pdf * pickProbability;
-  const float weight = ls.delta ? 1.f : powerHeuristic(1, pdf, 1, bsdfPdf);
+  const float weight =
+      ls.delta || last ? 1.f : powerHeuristic(1, pdf, 1, bsdfPdf);
   shadows.push(b.surface.position + side * scattering.offset,
       ls.direction,
       0.f,

@@ -102,9 +102,11 @@ class PathTracer : public Renderer
   void recordFirstHit(Bounce &b) const;
   void emitFromSurface(const RenderContext &context, Bounce &b) const;
   Scattering scatteringAt(const Bounce &b) const;
+  // `last`: no BSDF sample follows (the path ends at this surface).
   void nextEvent(const RenderContext &context,
       const Bounce &b,
       const Scattering &scattering,
+      bool last,
       rt::RayQueue &shadows,
       std::vector<float3> &contributions) const;
   void scatter(

@@ -24,10 +24,14 @@ void MajorantGrid::build(const box3 &bounds,
   const float e[3] = {extent.x, extent.y, extent.z};
   float size[3];
   for (int a = 0; a < 3; a++) {
-    const float cells = std::ceil(e[a] / targetCellSize);
-    m_cells[a] = int(std::clamp(cells, 1.f, float(kMaxCells)));
-    // A flat axis still gets a cell of non-zero width.
-    size[a] = e[a] > 0.f ? e[a] / float(m_cells[a]) : 1.f;
+    // Cells of exactly the target size from the lower corner (so they line
+    // up with a field's own blocks of that size), the last one reaching
+    // past the bounds; wider where there would be too many. A flat axis
+    // still gets a cell of non-zero width.
+    size[a] =
+        e[a] > 0.f ? std::max(targetCellSize, e[a] / float(kMaxCells)) : 1.f;
+    m_cells[a] =
+        int(std::clamp(std::ceil(e[a] / size[a]), 1.f, float(kMaxCells)));
   }
   m_cellSize = {size[0], size[1], size[2]};
   m_values.resize(size_t(m_cells[0]) * m_cells[1] * m_cells[2]);

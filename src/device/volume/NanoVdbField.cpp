@@ -129,8 +129,7 @@ bool NanoVdbField::readGridGeometry(const nanovdb::GridData &grid)
   if (lo[0] > hi[0] || lo[1] > hi[1] || lo[2] > hi[2])
     return true; // no active voxels: a valid field with no values
   for (int axis = 0; axis < 3; axis++) {
-    if (std::abs(lo[axis]) > kLargestIndex
-        || std::abs(hi[axis]) > kLargestIndex) {
+    if (lo[axis] < -kLargestIndex || hi[axis] > kLargestIndex) {
       report(ANARI_SEVERITY_ERROR,
           ANARI_STATUS_INVALID_ARGUMENT,
           "'data': the grid's index bounding box exceeds +-2^30 voxels");

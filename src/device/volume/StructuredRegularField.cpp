@@ -326,12 +326,19 @@ void StructuredRegularField::valueRange(
   if (!clipToBounds(region, clipped))
     return;
   // The same mapping as sample(), so a point's cell is the one its sample
-  // reads (the last sample belongs to the last cell).
+  // reads (the last sample belongs to the last cell). The region's upper
+  // corner takes the cell it closes rather than the one it opens: on a
+  // cell face both give the same values, which the lower cell's block
+  // covers, so regions aligned with blocks read one block per axis.
   const int3 zero{0, 0, 0};
-  const int3 first =
-      min(vecCast<int>(toGrid(clipped.lower)), m_lastCell) / kBlockCells;
-  const int3 last =
-      min(vecCast<int>(toGrid(clipped.upper)), m_lastCell) / kBlockCells;
+  const int3 firstCell = min(vecCast<int>(toGrid(clipped.lower)), m_lastCell);
+  const float3 upper = toGrid(clipped.upper);
+  const int3 closing =
+      vecCast<int>(
+          float3{std::ceil(upper.x), std::ceil(upper.y), std::ceil(upper.z)})
+      - 1;
+  const int3 first = firstCell / kBlockCells;
+  const int3 last = min(max(closing, firstCell), m_lastCell) / kBlockCells;
   const int3 firstBlock = clamp(first, zero, m_blockCount - 1);
   const int3 lastBlock = clamp(last, zero, m_blockCount - 1);
   for (int bz = firstBlock.z; bz <= lastBlock.z; bz++)

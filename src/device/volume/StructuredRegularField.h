@@ -79,7 +79,7 @@ class StructuredRegularField : public SpatialField
 
   // Conservative [lo, hi] of the values sampled in each block of
   // kBlockCells^3 cells, filter footprint and overshoot included.
-  static constexpr int kBlockCells = 8;
+  static constexpr int kBlockCells = 4;
   int3 m_blockCount{0, 0, 0};
   std::vector<float2> m_blockRanges;
 };

@@ -82,15 +82,13 @@ bool UnstructuredField::readField()
   const Array *types = readArray("cell.type", {ANARI_UINT8}, badType);
   if (badType)
     return false;
-  const char *required[] = {"vertex.position", "index", "cell.index"};
-  const Array *requiredArrays[] = {positions, indices, offsets};
-  for (int i = 0; i < 3; i++) {
-    if (!requiredArrays[i]) {
+  const char *required[] = {
+      "vertex.position", "index", "cell.index", "cell.type"};
+  const Array *requiredArrays[] = {positions, indices, offsets, types};
+  for (int i = 0; i < 4; i++) {
+    if (!requiredArrays[i])
       return fail("required parameter '%s' is not set", required[i]);
-    }
   }
-  if (!types)
-    return fail("required parameter 'cell.type' is not set");
   if (!vertexData && !cellData)
     return fail("neither 'vertex.data' nor 'cell.data' is set");
   if (vertexData && cellData)

@@ -16,9 +16,9 @@ void Volume::commitParameters()
   m_id = read<uint32_t>("id", ANARI_UINT32, ~0u);
   if (!readVolume())
     return;
-  // Majorant cells of about eight data cells: fine enough to skip the
-  // empty space around features, coarse enough to cross quickly.
-  m_majorants.build(bounds(), 8.f * cellSize(), [&](const box3 &cell) {
+  // Majorant cells of four data cells: fine enough to skip the empty
+  // space around features, coarse enough to cross quickly.
+  m_majorants.build(bounds(), 4.f * cellSize(), [&](const box3 &cell) {
     float lo = 0.f, hi = -1.f;
     valueRange(cell, lo, hi);
     return lo > hi ? 0.f : maxExtinction(lo, hi);

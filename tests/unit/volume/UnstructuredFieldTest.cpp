@@ -5,6 +5,7 @@
 // the application's arrays not needed after commit.
 #include "MeshTestFixture.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -480,6 +481,55 @@ INSTANTIATE_TEST_SUITE_P(UnstructuredFieldTest,
     [](const ::testing::TestParamInfo<MalformedCase> &info) {
       return std::string(info.param.name);
     });
+
+// Random small meshes, mostly malformed: each commit either gives a field
+// that samples without reading out of range, or reports an error.
+TEST_F(UnstructuredFieldTest, RandomMeshesAreSampledOrReported)
+{
+  std::mt19937 rng(29);
+  // A random integer in [0, n) (0 when n is 0).
+  auto below = [&](int n) {
+    return n > 0 ? int(rng() % uint32_t(n)) : 0;
+  };
+  std::uniform_real_distribution<float> coordinate(-1.f, 3.f);
+  int valid = 0;
+  for (int trial = 0; trial < 300; trial++) {
+    Mesh mesh;
+    const int vertices = below(14);
+    for (int i = 0; i < vertices; i++)
+      mesh.positions.push_back(
+          {coordinate(rng), coordinate(rng), coordinate(rng)});
+    if (below(10) == 0 && vertices > 0)
+      mesh.positions[below(vertices)].y = std::nanf("");
+    const int cells = below(4);
+    const uint8_t types[] = {kTetra, kHexahedron, kWedge, kPyramid, 11};
+    for (int c = 0; c < cells; c++) {
+      mesh.cellType.push_back(types[below(below(20) == 0 ? 5 : 4)]);
+      mesh.cellIndex.push_back(
+          uint32_t(below(10) == 0 ? below(40) : mesh.index.size()));
+      for (int k = 0; k < 8; k++)
+        mesh.index.push_back(uint32_t(below(vertices + (below(10) == 0))));
+    }
+    if (below(2))
+      mesh.vertexData.resize(
+          std::max(0, vertices - (below(10) == 0 ? 1 : 0)), 1.f);
+    else
+      mesh.cellData.resize(cells + (below(10) == 0 ? 1 : 0), 2.f);
+    const size_t errorsBefore = m_errors.size();
+    UnstructuredField *f = field(mesh);
+    if (!f->isValid()) {
+      EXPECT_GT(m_errors.size(), errorsBefore) << "trial " << trial;
+      continue;
+    }
+    valid++;
+    for (int i = 0; i < 20; i++) {
+      const float v =
+          f->sample({coordinate(rng), coordinate(rng), coordinate(rng)});
+      EXPECT_TRUE(std::isnan(v) || (v >= 0.f && v <= 2.f));
+    }
+  }
+  EXPECT_GT(valid, 10);
+}
 
 TEST_F(UnstructuredFieldTest, WrongElementTypesAreErrors)
 {
