@@ -47,6 +47,42 @@ nanovdb::GridHandle<> makeVelocity(int n)
   return builder.getHandle<>(1.0, nanovdb::Vec3d(0.0), "velocity");
 }
 
+namespace {
+
+template <typename ValueT, typename BuildT>
+nanovdb::GridHandle<> makeBallOf()
+{
+  nanovdb::GridBuilder<ValueT, BuildT> builder(ValueT(0));
+  auto voxels = builder.getAccessor();
+  for (int k = 0; k < 20; k++)
+    for (int j = 0; j < 20; j++)
+      for (int i = 0; i < 20; i++) {
+        const float r =
+            std::sqrt(float((i - 10) * (i - 10) + (j - 10) * (j - 10)
+                            + (k - 10) * (k - 10)))
+            / 10.f;
+        if (r < 1.f)
+          voxels.setValue(
+              nanovdb::Coord(i, j, k), ValueT(std::lround(100.f * (1.f - r))));
+      }
+  return builder.template getHandle<>(1.0, nanovdb::Vec3d(0.0), "ball");
+}
+
+} // namespace
+
+nanovdb::GridHandle<> makeBall(const std::string &type)
+{
+  if (type == "double")
+    return makeBallOf<double, double>();
+  if (type == "int32")
+    return makeBallOf<int32_t, int32_t>();
+  if (type == "Fp8")
+    return makeBallOf<float, nanovdb::Fp8>();
+  if (type == "Fp16")
+    return makeBallOf<float, nanovdb::Fp16>();
+  return makeBallOf<float, float>();
+}
+
 std::vector<nanovdb::GridHandle<>> makeTestGrids()
 {
   std::vector<nanovdb::GridHandle<>> grids;

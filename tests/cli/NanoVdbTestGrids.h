@@ -17,6 +17,10 @@ nanovdb::GridHandle<> makeTemperatureRamp(int n);
 // A constant Vec3f grid named "velocity" (not a scalar: never rendered).
 nanovdb::GridHandle<> makeVelocity(int n);
 
+// A ball of values 0 (rim) to 100 (centre), 20 voxels across, stored as
+// `type`: "float", "double", "int32", "Fp8" or "Fp16"; named "ball".
+nanovdb::GridHandle<> makeBall(const std::string &type);
+
 // velocity, density, temperature: what the CLI tests render.
 std::vector<nanovdb::GridHandle<>> makeTestGrids();
 

@@ -1,6 +1,7 @@
 // Writes the NanoVDB files the CLI tests render into the folder given:
 // grids.nvdb (velocity, density, temperature), grids-zip.nvdb (the same,
-// ZIP-compressed), blosc.nvdb (labelled BLOSC), and broken copies: cut in
+// ZIP-compressed), ball-<type>.nvdb (one ball as float, double, int32, Fp8,
+// Fp16), blosc.nvdb (labelled BLOSC), and broken copies: cut in
 // a grid, cut in the header, a name size past the end of the file, a file
 // of something else, and a density grid whose tree points outside it.
 #include "NanoVdbTestGrids.h"
@@ -43,6 +44,9 @@ int main(int argc, char **argv)
     nanovdb::io::writeGrids(folder + "grids.nvdb", grids);
     nanovdb::io::writeGrids(
         folder + "grids-zip.nvdb", grids, nanovdb::io::Codec::ZIP);
+    for (const char *type : {"float", "double", "int32", "Fp8", "Fp16"})
+      nanovdb::io::writeGrid(folder + "ball-" + type + ".nvdb",
+          prism::render::test_grids::makeBall(type));
   } catch (const std::exception &e) {
     std::fprintf(stderr, "write_nanovdb_files: %s\n", e.what());
     return 1;
