@@ -50,9 +50,11 @@ nanovdb::GridHandle<> makeVelocity(int n)
 namespace {
 
 template <typename ValueT, typename BuildT>
-nanovdb::GridHandle<> makeBallOf()
+nanovdb::GridHandle<> makeBallOf(bool withMinMax)
 {
   nanovdb::GridBuilder<ValueT, BuildT> builder(ValueT(0));
+  if (!withMinMax)
+    builder.setStats(nanovdb::StatsMode::BBox);
   auto voxels = builder.getAccessor();
   for (int k = 0; k < 20; k++)
     for (int j = 0; j < 20; j++)
@@ -70,17 +72,17 @@ nanovdb::GridHandle<> makeBallOf()
 
 } // namespace
 
-nanovdb::GridHandle<> makeBall(const std::string &type)
+nanovdb::GridHandle<> makeBall(const std::string &type, bool withMinMax)
 {
   if (type == "double")
-    return makeBallOf<double, double>();
+    return makeBallOf<double, double>(withMinMax);
   if (type == "int32")
-    return makeBallOf<int32_t, int32_t>();
+    return makeBallOf<int32_t, int32_t>(withMinMax);
   if (type == "Fp8")
-    return makeBallOf<float, nanovdb::Fp8>();
+    return makeBallOf<float, nanovdb::Fp8>(withMinMax);
   if (type == "Fp16")
-    return makeBallOf<float, nanovdb::Fp16>();
-  return makeBallOf<float, float>();
+    return makeBallOf<float, nanovdb::Fp16>(withMinMax);
+  return makeBallOf<float, float>(withMinMax);
 }
 
 std::vector<nanovdb::GridHandle<>> makeTestGrids()

@@ -19,7 +19,8 @@ nanovdb::GridHandle<> makeVelocity(int n);
 
 // A ball of values 0 (rim) to 100 (centre), 20 voxels across, stored as
 // `type`: "float", "double", "int32", "Fp8" or "Fp16"; named "ball".
-nanovdb::GridHandle<> makeBall(const std::string &type);
+// Without min/max, the grid has bounding boxes but no value statistics.
+nanovdb::GridHandle<> makeBall(const std::string &type, bool withMinMax = true);
 
 // velocity, density, temperature: what the CLI tests render.
 std::vector<nanovdb::GridHandle<>> makeTestGrids();

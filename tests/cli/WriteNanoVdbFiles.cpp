@@ -1,9 +1,10 @@
 // Writes the NanoVDB files the CLI tests render into the folder given:
 // grids.nvdb (velocity, density, temperature), grids-zip.nvdb (the same,
 // ZIP-compressed), ball-<type>.nvdb (one ball as float, double, int32, Fp8,
-// Fp16), blosc.nvdb (labelled BLOSC), and broken copies: cut in
-// a grid, cut in the header, a name size past the end of the file, a file
-// of something else, and a density grid whose tree points outside it.
+// Fp16; and as float without min/max statistics), blosc.nvdb (labelled BLOSC),
+// and broken copies: cut in a grid, cut in the header, a name size past the end
+// of the file, a file of something else, and a density grid whose tree points
+// outside it.
 #include "NanoVdbTestGrids.h"
 
 #define NANOVDB_USE_ZIP
@@ -47,6 +48,8 @@ int main(int argc, char **argv)
     for (const char *type : {"float", "double", "int32", "Fp8", "Fp16"})
       nanovdb::io::writeGrid(folder + "ball-" + type + ".nvdb",
           prism::render::test_grids::makeBall(type));
+    nanovdb::io::writeGrid(folder + "ball-no-min-max.nvdb",
+        prism::render::test_grids::makeBall("float", false));
   } catch (const std::exception &e) {
     std::fprintf(stderr, "write_nanovdb_files: %s\n", e.what());
     return 1;

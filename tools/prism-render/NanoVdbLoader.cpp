@@ -75,16 +75,19 @@ std::string summarize(const uint8_t *bytes, uint64_t size, GridSummary &out)
       reinterpret_cast<const nanovdb::TreeData<3> *>(bytes + treeStart);
   const uint64_t rootOffset = tree->mNodeOffset[3];
   if (rootOffset > size - treeStart
-      || sizeof(RootDataT) > size - treeStart - rootOffset)
-    return "its root node lies outside the grid";
+      || sizeof(RootDataT) > size - treeStart - rootOffset
+      || rootOffset % NANOVDB_DATA_ALIGNMENT != 0)
+    return "its root node lies outside the grid or is misaligned";
   const auto &grid = *reinterpret_cast<const GridT *>(bytes);
   if (grid.hasMinMax()) {
     const auto &root =
         *reinterpret_cast<const RootDataT *>(bytes + treeStart + rootOffset);
-    out.lo = float(root.mMinimum);
-    out.hi = float(root.mMaximum);
-    out.hasValueRange =
-        std::isfinite(out.lo) && std::isfinite(out.hi) && out.lo <= out.hi;
+    const float lo = float(root.mMinimum), hi = float(root.mMaximum);
+    if (std::isfinite(lo) && std::isfinite(hi) && lo <= hi) {
+      out.lo = lo;
+      out.hi = hi;
+      out.hasValueRange = true;
+    }
   }
   return {};
 }
