@@ -1,10 +1,11 @@
 // Writes the NanoVDB files the CLI tests render into the folder given:
 // grids.nvdb (velocity, density, temperature), grids-zip.nvdb (the same,
-// ZIP-compressed), ball-<type>.nvdb (one ball as float, double, int32, Fp8,
-// Fp16; and as float without min/max statistics), blosc.nvdb (labelled BLOSC),
-// and broken copies: cut in a grid, cut in the header, a name size past the end
-// of the file, a file of something else, and a density grid whose tree points
-// outside it.
+// ZIP-compressed), ball-<type>.nvdb (one ball as float, double, int32,
+// Fp8, Fp16; and as float without min/max statistics), small-zip.nvdb (a
+// 4^3 ball, ZIP: fuzz_loader's seed), blosc.nvdb (labelled BLOSC), and
+// broken copies: cut in a grid, cut in the header, a name size past the
+// end of the file, a file of something else, and a density grid whose
+// tree points outside it.
 #include "NanoVdbTestGrids.h"
 
 #define NANOVDB_USE_ZIP
@@ -50,6 +51,10 @@ int main(int argc, char **argv)
           prism::render::test_grids::makeBall(type));
     nanovdb::io::writeGrid(folder + "ball-no-min-max.nvdb",
         prism::render::test_grids::makeBall("float", false));
+    // Small enough (ZIP) for fuzz_loader's seed corpus.
+    nanovdb::io::writeGrid(folder + "small-zip.nvdb",
+        prism::render::test_grids::makeDensityBall(4, 0.5),
+        nanovdb::io::Codec::ZIP);
   } catch (const std::exception &e) {
     std::fprintf(stderr, "write_nanovdb_files: %s\n", e.what());
     return 1;
