@@ -80,46 +80,95 @@ void accumulate(VolumeMarch &march,
 }
 
 // One volume alone over its segment: fixed steps from the segment's
-// entry, empty majorant cells crossed without sampling (the samples there
-// would add nothing: the majorant bounds every extinction in the cell).
+// entry. With skipping, empty majorant cells are crossed without sampling
+// (the samples there would add nothing: the majorant bounds every
+// extinction in the cell) and the steps of the others are sampled in runs
+// through the volume's line sampler; without, every step is sampled
+// through sample() one by one: the reference marcher.
 void marchSegment(
     const Segment &s, const MarchSettings &settings, VolumeMarch &march)
 {
   const Volume &volume = *s.placed->volume;
   const float span = s.t1 - s.t0;
   const auto steps = int64_t(std::ceil(span / s.step));
+  // Steps before this one are whole; the last may be shorter.
+  const auto wholeSteps = int64_t(std::floor(span / s.step));
   int64_t nextStep = 0;
+  // Step k: its sample's distance and the step's length.
+  auto stepAt = [&](int64_t k, float &t, float &length) {
+    const float a = s.t0 + float(k) * s.step;
+    const float b = std::min(a + s.step, s.t1);
+    t = a + settings.offset * (b - a);
+    length = b - a;
+  };
+  auto one = [&](int64_t k) {
+    float t, length, sigma = 0.f;
+    float3 color;
+    stepAt(k, t, length);
+    if (volume.sample(s.origin + s.direction * t, sigma, color))
+      accumulate(march, t, length, sigma, color, *s.placed);
+    return march.transmittance >= settings.stopTransmittance;
+  };
+  if (!settings.skipEmpty) {
+    for (int64_t k = 0; k < steps; k++) {
+      if (!one(k))
+        return;
+    }
+    return;
+  }
+  constexpr int kRun = 64;
+  float sigmas[kRun];
+  float3 colors[kRun];
   auto sampleSteps = [&](int64_t first, int64_t end) {
-    for (int64_t k = std::max(first, nextStep); k < end; k++) {
-      const float a = s.t0 + float(k) * s.step;
-      const float b = std::min(a + s.step, s.t1);
-      const float t = a + settings.offset * (b - a);
-      float sigma = 0.f;
-      float3 color;
-      if (volume.sample(s.origin + s.direction * t, sigma, color))
-        accumulate(march, t, b - a, sigma, color, *s.placed);
-      nextStep = k + 1;
-      if (march.transmittance < settings.stopTransmittance)
-        return false;
+    first = std::max(first, nextStep);
+    nextStep = std::max(nextStep, end);
+    for (int64_t k = first; k < end;) {
+      if (k >= wholeSteps) {
+        if (!one(k++))
+          return false;
+        continue;
+      }
+      const int n = int(std::min<int64_t>(kRun, std::min(end, wholeSteps) - k));
+      float t, length;
+      stepAt(k, t, length);
+      volume.sampleLine(
+          s.origin + s.direction * t, s.direction * s.step, n, sigmas, colors);
+      for (int i = 0; i < n; i++) {
+        accumulate(march,
+            t + float(i) * s.step,
+            s.step,
+            sigmas[i],
+            colors[i],
+            *s.placed);
+        if (march.transmittance < settings.stopTransmittance)
+          return false;
+      }
+      k += n;
     }
     return true;
   };
-  if (!settings.skipEmpty) {
-    sampleSteps(0, steps);
-    return;
-  }
-  volume.majorants().traverse(s.origin,
+  // Steps of consecutive cells that hold something are sampled as one run.
+  int64_t runFirst = 0, runEnd = 0;
+  const bool stopped = !volume.majorants().traverse(s.origin,
       s.direction,
       s.t0,
       s.t1,
       [&](float enter, float exit, float majorant) {
-        if (majorant <= 0.f)
-          return true;
+        if (majorant <= 0.f) {
+          const bool go = runEnd <= runFirst || sampleSteps(runFirst, runEnd);
+          runFirst = runEnd = 0;
+          return go;
+        }
         const auto first = int64_t(std::floor((enter - s.t0) / s.step));
         const auto end =
             std::min(steps, int64_t(std::ceil((exit - s.t0) / s.step)));
-        return sampleSteps(first, end);
+        if (runEnd <= runFirst)
+          runFirst = first;
+        runEnd = std::max(runEnd, end);
+        return true;
       });
+  if (!stopped && runEnd > runFirst)
+    sampleSteps(runFirst, runEnd);
 }
 
 // Overlapping volumes over [t0, t1]: every volume sampled at the finest

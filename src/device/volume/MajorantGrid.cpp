@@ -8,6 +8,8 @@ namespace prism {
 void MajorantGrid::clear()
 {
   m_values.clear();
+  m_blockValues.clear();
+  m_blocks[0] = m_blocks[1] = m_blocks[2] = 0;
   m_cells[0] = m_cells[1] = m_cells[2] = 0;
   m_maximum = 0.f;
 }
@@ -49,6 +51,20 @@ void MajorantGrid::build(const box3 &bounds,
         const float bound = cellMajorant(cell);
         m_values[i] = std::isnan(bound) ? 0.f : std::max(bound, 0.f);
         m_maximum = std::max(m_maximum, m_values[i]);
+      }
+    }
+  }
+  for (int a = 0; a < 3; a++)
+    m_blocks[a] = (m_cells[a] + kBlock - 1) / kBlock;
+  m_blockValues.assign(size_t(m_blocks[0]) * m_blocks[1] * m_blocks[2], 0.f);
+  for (int z = 0; z < m_cells[2]; z++) {
+    for (int y = 0; y < m_cells[1]; y++) {
+      for (int x = 0; x < m_cells[0]; x++) {
+        float &block = m_blockValues[(size_t(z / kBlock) * m_blocks[1]
+                                         + size_t(y / kBlock))
+                                         * m_blocks[0]
+                                     + size_t(x / kBlock)];
+        block = std::max(block, value(x, y, z));
       }
     }
   }

@@ -40,6 +40,13 @@ bool SpatialField::clipToBounds(const box3 &region, box3 &clipped) const
          && clipped.lower.z <= clipped.upper.z;
 }
 
+void SpatialField::sampleLine(
+    const float3 &start, const float3 &step, int count, float *values) const
+{
+  for (int i = 0; i < count; i++)
+    values[i] = sample(start + step * float(i));
+}
+
 float3 SpatialField::gradient(const float3 &position) const
 {
   const float h = 0.5f * cellSize();

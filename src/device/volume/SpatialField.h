@@ -44,6 +44,12 @@ class SpatialField : public Object
   // The spacing of the field's data: the step a ray marcher takes at a
   // sampling rate of 1 (one sample per cell).
   virtual float cellSize() const = 0;
+  // sample() at start + i * step for i < count, into values: the marcher's
+  // inner loop, one call per run of steps. Points must lie within bounds()
+  // (a grid clamps those that round just outside). The default calls
+  // sample() for each.
+  virtual void sampleLine(
+      const float3 &start, const float3 &step, int count, float *values) const;
 
  protected:
   void commitParameters() final;

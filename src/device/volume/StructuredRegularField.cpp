@@ -203,6 +203,23 @@ float StructuredRegularField::sample(const float3 &position) const
   return sampleLinear(grid);
 }
 
+void StructuredRegularField::sampleLine(
+    const float3 &start, const float3 &step, int count, float *values) const
+{
+  if (m_filter != FieldFilter::Linear) {
+    SpatialField::sampleLine(start, step, count, values);
+    return;
+  }
+  // In grid units, so each point costs an add and a clamp.
+  const float3 gridStart = (start - m_origin) * m_inverseSpacing;
+  const float3 gridStep = step * m_inverseSpacing;
+  for (int i = 0; i < count; i++) {
+    const float3 grid = clamp(
+        gridStart + gridStep * float(i), float3{0.f, 0.f, 0.f}, m_lastIndex);
+    values[i] = sampleLinear(grid);
+  }
+}
+
 float StructuredRegularField::sampleNearest(const float3 &grid) const
 {
   // grid >= 0, so truncation is floor: ties round up.

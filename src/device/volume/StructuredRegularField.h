@@ -25,6 +25,11 @@ class StructuredRegularField : public SpatialField
   float3 gradient(const float3 &position) const override;
   void valueRange(const box3 &region, float &lo, float &hi) const override;
   float cellSize() const override;
+  // Trilinear runs in one straight loop (other filters: sample()).
+  void sampleLine(const float3 &start,
+      const float3 &step,
+      int count,
+      float *values) const override;
 
   // The decoded sample at grid index (i, j, k); for tests and tools.
   float sampleAt(int3 index) const

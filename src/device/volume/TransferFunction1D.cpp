@@ -87,6 +87,13 @@ bool TransferFunction1D::readVolume()
   }
   // Every parameter is read before any is judged, so each is checked.
   const bool tables = readColors() & readOpacities();
+  m_table.resize(kTableSize + 1);
+  for (int i = 0; i <= kTableSize; i++) {
+    const float u = float(i) / float(kTableSize);
+    const float4 c =
+        classify(m_valueLow + (m_valueScale > 0.f ? u / m_valueScale : 0.f));
+    m_table[size_t(i)] = {c.x, c.y, c.z, extinctionOf(c.w)};
+  }
   m_field = static_cast<const SpatialField *>(
       readObject("value", {ANARI_SPATIAL_FIELD}));
   if (!m_field || !m_field->isValid()) {
@@ -210,6 +217,34 @@ bool TransferFunction1D::sample(
   extinction = extinctionOf(c.w);
   color = {c.x, c.y, c.z};
   return true;
+}
+
+void TransferFunction1D::sampleLine(const float3 &start,
+    const float3 &step,
+    int count,
+    float *extinction,
+    float3 *color) const
+{
+  constexpr int kBatch = 64;
+  float values[kBatch];
+  for (int first = 0; first < count; first += kBatch) {
+    const int n = std::min(kBatch, count - first);
+    m_field->sampleLine(start + step * float(first), step, n, values);
+    for (int i = 0; i < n; i++) {
+      const float v = values[i];
+      const bool valued = v == v; // NaN: no value, no extinction
+      const float x =
+          valued ? std::clamp((v - m_valueLow) * m_valueScale, 0.f, 1.f)
+                       * float(kTableSize)
+                 : 0.f;
+      const int k = std::min(int(x), kTableSize - 1);
+      const float f = x - float(k);
+      const float4 entry =
+          m_table[size_t(k)] * (1.f - f) + m_table[size_t(k) + 1] * f;
+      extinction[first + i] = valued ? entry.w : 0.f;
+      color[first + i] = {entry.x, entry.y, entry.z};
+    }
+  }
 }
 
 float TransferFunction1D::maxExtinction(float lo, float hi) const

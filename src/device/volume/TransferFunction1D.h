@@ -24,6 +24,13 @@ class TransferFunction1D : public Volume
   bool sample(
       const float3 &position, float &extinction, float3 &color) const override;
   float cellSize() const override;
+  // Through a table of colour and extinction by value (kTableSize entries
+  // over valueRange, linearly interpolated): no logarithm per sample.
+  void sampleLine(const float3 &start,
+      const float3 &step,
+      int count,
+      float *extinction,
+      float3 *color) const override;
 
   // The colour and final opacity the table gives field value `value`.
   float4 classify(float value) const;
@@ -46,6 +53,8 @@ class TransferFunction1D : public Volume
   std::vector<float4> m_colors;
   std::vector<float> m_opacities;
   float m_unitDistance{1.f};
+  static constexpr int kTableSize = 1024;
+  std::vector<float4> m_table; // colour and extinction, by value
 };
 
 } // namespace prism

@@ -8,6 +8,18 @@ Volume::Volume(DeviceState &device, const std::string &subtype)
     : Object(device, ANARI_VOLUME, subtype)
 {}
 
+void Volume::sampleLine(const float3 &start,
+    const float3 &step,
+    int count,
+    float *extinction,
+    float3 *color) const
+{
+  for (int i = 0; i < count; i++) {
+    if (!sample(start + step * float(i), extinction[i], color[i]))
+      extinction[i] = 0.f;
+  }
+}
+
 void Volume::commitParameters()
 {
   m_valid = false;

@@ -42,6 +42,14 @@ class Volume : public Object
   }
   // The distance between samples at a sampling rate of 1 (object space).
   virtual float cellSize() const = 0;
+  // sample() at start + i * step for i < count (points within bounds()),
+  // possibly from tables finer than any transfer function's entries: the
+  // fast path of ray marchers. The default calls sample() for each.
+  virtual void sampleLine(const float3 &start,
+      const float3 &step,
+      int count,
+      float *extinction,
+      float3 *color) const;
 
  protected:
   void commitParameters() final;
