@@ -27,6 +27,12 @@ const std::vector<DemoScene> &demoScenes()
           "a living room lit by a ceiling panel and a floor lamp: sofa, "
           "tables, chairs, a bookshelf full of books, metal and glass",
           buildFurnishedRoom},
+      {"volume",
+          "soft blobs of a 128^3 structuredRegular field in a "
+          "transferFunction1D volume (inferno map) over a ground plane",
+          buildVolumeBlobs,
+          volumeBlobsStyle,
+          buildVolumeBlobsWithStyle},
   };
   return scenes;
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "Scene.h"
+#include "TransferFunction.h"
 
 #include <anari/anari.h>
 
@@ -18,12 +19,22 @@ Scene buildRandomSpheres(ANARIDevice device);
 Scene buildMaterialBall(ANARIDevice device);
 Scene buildInstancedForest(ANARIDevice device);
 Scene buildFurnishedRoom(ANARIDevice device);
+Scene buildVolumeBlobs(ANARIDevice device);
+// demo:volume's own transfer function, and the demo with another one.
+TransferFunction volumeBlobsStyle();
+Scene buildVolumeBlobsWithStyle(
+    ANARIDevice device, const TransferFunction &style);
 
 struct DemoScene
 {
   const char *name;        // as in demo:<name>
   const char *description; // one line
   Scene (*build)(ANARIDevice device);
+  // Demos with a volume: its transfer function, and a build with another
+  // (prism-render's --tf-* options); nullptr for the others.
+  TransferFunction (*volumeStyle)() = nullptr;
+  Scene (*buildWithVolumeStyle)(
+      ANARIDevice device, const TransferFunction &style) = nullptr;
 };
 
 // Every demo scene, in a stable order.

@@ -1,10 +1,13 @@
-// prism-render's pieces that need no device: the command line, --param value
-// parsing, camera framing and the progress line.
+// prism-render's pieces that need no device: the command line (the --tf-*
+// transfer function among it), --param value parsing, camera framing and
+// the progress line.
 #include "CameraFraming.h"
+#include "ColorMaps.h"
 #include "Math.h"
 #include "Options.h"
 #include "Progress.h"
 #include "RendererParameters.h"
+#include "VolumeStyle.h"
 
 #include <gtest/gtest.h>
 
@@ -16,6 +19,7 @@
 namespace {
 
 using namespace prism::render;
+namespace scenes = prism::scenes;
 
 ParseResult parse(std::vector<const char *> arguments)
 {
@@ -99,6 +103,21 @@ TEST(Options, BadValuesNameTheOption)
           {{"s.glb", "--bench", "0"}, "--bench"},
           {{"s.glb", "--threads", "x"}, "--threads"},
           {{"s.glb", "--raw-dims", "4x4"}, "--raw-dims"},
+          {{"s.raw", "--tf-range", "1"}, "--tf-range"},
+          {{"s.raw", "--tf-range", "2,1"}, "--tf-range"},
+          {{"s.raw", "--tf-range", "1,1"}, "--tf-range"},
+          {{"s.raw", "--tf-range", "0,inf"}, "--tf-range"},
+          {{"s.raw", "--tf-map", "jet"}, "--tf-map"},
+          {{"s.raw", "--tf-map", ""}, "--tf-map"},
+          {{"s.raw", "--tf-opacity", "0,1.5"}, "--tf-opacity"},
+          {{"s.raw", "--tf-opacity", "-0.1"}, "--tf-opacity"},
+          {{"s.raw", "--tf-opacity", "0,,1"}, "--tf-opacity"},
+          {{"s.raw", "--tf-opacity", "0,nan"}, "--tf-opacity"},
+          {{"s.raw", "--tf-opacity", ""}, "--tf-opacity"},
+          {{"s.raw", "--tf-unit-distance", "0"}, "--tf-unit-distance"},
+          {{"s.raw", "--tf-unit-distance", "-1"}, "--tf-unit-distance"},
+          {{"s.raw", "--tf-unit-distance", "1e39"}, "--tf-unit-distance"},
+          {{"s.nvdb", "--grid", ""}, "--grid"},
           {{"s.glb", "--quiet=yes"}, "--quiet"},
           {{"s.glb", "--output"}, "--output"},
           {{"s.glb", "--nope"}, "--nope"},
@@ -110,6 +129,99 @@ TEST(Options, BadValuesNameTheOption)
     EXPECT_NE(r.error.find(fragment), std::string::npos)
         << "'" << r.error << "' should name " << fragment;
   }
+}
+
+TEST(Options, TransferFunction)
+{
+  const ParseResult defaults = parse({"v.raw"});
+  ASSERT_TRUE(defaults.ok()) << defaults.error;
+  const TransferFunctionOptions &d = defaults.options.transferFunction;
+  EXPECT_FALSE(d.given);
+  EXPECT_FALSE(d.valueRange.has_value());
+  EXPECT_EQ(d.colorMap, "");
+  EXPECT_TRUE(d.opacities.empty());
+  EXPECT_FALSE(d.unitDistance.has_value());
+
+  const ParseResult r = parse({"v.nvdb",
+      "--tf-range",
+      "-1.5,2e3",
+      "--tf-map=Viridis",
+      "--tf-opacity",
+      "0,0.25,1",
+      "--tf-unit-distance",
+      "0.5",
+      "--grid",
+      "density"});
+  ASSERT_TRUE(r.ok()) << r.error;
+  const TransferFunctionOptions &tf = r.options.transferFunction;
+  EXPECT_TRUE(tf.given);
+  ASSERT_TRUE(tf.valueRange.has_value());
+  EXPECT_FLOAT_EQ((*tf.valueRange)[0], -1.5f);
+  EXPECT_FLOAT_EQ((*tf.valueRange)[1], 2000.f);
+  EXPECT_EQ(tf.colorMap, "viridis");
+  EXPECT_EQ(tf.opacities, (std::vector<float>{0.f, 0.25f, 1.f}));
+  EXPECT_FLOAT_EQ(tf.unitDistance.value_or(0.f), 0.5f);
+  EXPECT_EQ(r.options.gridName, "density");
+  // One opacity is a constant; a thousand and twenty-five is too many.
+  EXPECT_TRUE(parse({"v.raw", "--tf-opacity", "0.3"}).ok());
+  std::string many = "0";
+  for (int i = 0; i < 1024; i++)
+    many += ",1";
+  EXPECT_FALSE(parse({"v.raw", "--tf-opacity", many.c_str()}).ok());
+}
+
+TEST(TransferFunction, FromOptionsAndData)
+{
+  TransferFunctionOptions options;
+  scenes::TransferFunction tf = transferFunctionFor(options, 2.f, 10.f);
+  EXPECT_EQ(tf.valueRange, (std::array<float, 2>{2.f, 10.f}));
+  EXPECT_EQ(tf.colors.size(), 5u); // coolwarm's control points
+  EXPECT_EQ(tf.opacities, (std::vector<float>{0.f, 0.05f, 0.2f, 0.5f, 1.f}));
+  EXPECT_FLOAT_EQ(tf.unitDistance, 1.f);
+  // A constant field still gets a range the device accepts.
+  tf = transferFunctionFor(options, 3.f, 3.f);
+  EXPECT_LT(tf.valueRange[0], tf.valueRange[1]);
+
+  options.valueRange = std::array<float, 2>{-1.f, 1.f};
+  options.colorMap = "grayscale";
+  options.opacities = {0.5f};
+  options.unitDistance = 4.f;
+  tf = transferFunctionFor(options, 2.f, 10.f);
+  EXPECT_EQ(tf.valueRange, (std::array<float, 2>{-1.f, 1.f}));
+  ASSERT_EQ(tf.colors.size(), 2u);
+  EXPECT_EQ(tf.colors[0], (scenes::Vec3{0.f, 0.f, 0.f}));
+  EXPECT_EQ(tf.colors[1], (scenes::Vec3{1.f, 1.f, 1.f}));
+  EXPECT_EQ(tf.opacities, (std::vector<float>{0.5f}));
+  EXPECT_FLOAT_EQ(tf.unitDistance, 4.f);
+
+  // Over a volume's own style, only what is given changes.
+  scenes::TransferFunction own;
+  own.colors = {{1.f, 0.f, 0.f}, {0.f, 1.f, 0.f}, {0.f, 0.f, 1.f}};
+  own.opacities = {0.f, 0.3f};
+  own.valueRange = {0.f, 1.f};
+  own.unitDistance = 0.1f;
+  TransferFunctionOptions onlyMap;
+  onlyMap.colorMap = "grayscale";
+  applyTransferFunctionOptions(onlyMap, own);
+  EXPECT_EQ(own.colors.size(), 2u);
+  EXPECT_EQ(own.opacities, (std::vector<float>{0.f, 0.3f}));
+  EXPECT_EQ(own.valueRange, (std::array<float, 2>{0.f, 1.f}));
+  EXPECT_FLOAT_EQ(own.unitDistance, 0.1f);
+}
+
+TEST(ColorMaps, NamedMapsDecodeToLinear)
+{
+  EXPECT_EQ(scenes::colorMapNames(), "coolwarm, viridis, inferno, grayscale");
+  for (const scenes::ColorMap &map : scenes::colorMaps()) {
+    EXPECT_GE(map.srgbControlPoints.size(), 2u) << map.name;
+    for (const scenes::Vec3 &c : scenes::linearColors(map))
+      for (float v : c)
+        EXPECT_TRUE(v >= 0.f && v <= 1.f) << map.name;
+  }
+  // sRGB 0.5 is linear 0.214.
+  const scenes::ColorMap half{"half", {{0.5f, 0.5f, 0.5f}}};
+  EXPECT_NEAR(scenes::linearColors(half)[0][0], 0.2140f, 1e-4f);
+  EXPECT_EQ(scenes::findColorMap("jet"), nullptr);
 }
 
 TEST(Options, HelpAndListNeedNoScene)

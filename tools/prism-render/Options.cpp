@@ -1,5 +1,7 @@
 #include "Options.h"
 
+#include "ColorMaps.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -69,8 +71,9 @@ struct OptionSpec
   std::function<std::string(Options &, const std::string &)> apply;
 };
 
-std::string expected(
-    const std::string &option, const char *what, const std::string &value)
+std::string expected(const std::string &option,
+    const std::string &what,
+    const std::string &value)
 {
   return option + ": expected " + what + ", got '" + value + "'";
 }
@@ -359,6 +362,70 @@ std::vector<OptionSpec> optionSpecs()
             o.rawSpacing = s;
             return {};
           }},
+      {nullptr,
+          "--grid",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            if (v.empty())
+              return "--grid: expected a grid name";
+            o.gridName = v;
+            return {};
+          }},
+      {nullptr,
+          "--tf-range",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            std::array<float, 2> range{};
+            if (!parseFloats(v, range.data(), 2) || !(range[0] < range[1]))
+              return expected("--tf-range", "LO,HI with LO < HI", v);
+            o.transferFunction.valueRange = range;
+            o.transferFunction.given = true;
+            return {};
+          }},
+      {nullptr,
+          "--tf-map",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            const std::string name = lowerCase(v);
+            if (!scenes::findColorMap(name))
+              return expected(
+                  "--tf-map", "one of " + scenes::colorMapNames(), v);
+            o.transferFunction.colorMap = name;
+            o.transferFunction.given = true;
+            return {};
+          }},
+      {nullptr,
+          "--tf-opacity",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            // Enough control points for any ramp anyone types.
+            constexpr size_t kMaxOpacities = 1024;
+            const size_t count =
+                size_t(std::count(v.begin(), v.end(), ',')) + 1;
+            std::vector<float> opacities(std::min(count, kMaxOpacities));
+            if (count > kMaxOpacities
+                || !parseFloats(v, opacities.data(), int(count))
+                || std::any_of(opacities.begin(), opacities.end(), [](float a) {
+                     return !(a >= 0.f && a <= 1.f);
+                   }))
+              return expected("--tf-opacity",
+                  "opacities V0,V1,... each from 0 to 1 (at most 1024)",
+                  v);
+            o.transferFunction.opacities = opacities;
+            o.transferFunction.given = true;
+            return {};
+          }},
+      {nullptr,
+          "--tf-unit-distance",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            float d = 0.f;
+            if (!parseFloats(v, &d, 1) || !(d > 0.f))
+              return expected("--tf-unit-distance", "a positive distance", v);
+            o.transferFunction.unitDistance = d;
+            o.transferFunction.given = true;
+            return {};
+          }},
       {"-q",
           "--quiet",
           false,
@@ -492,7 +559,8 @@ std::string helpText()
 
 Renders SCENE with an ANARI device (by default the prism device) and writes
 the image. SCENE is a glTF 2.0 file (.gltf, .glb), an OBJ file (.obj, with
-its .mtl), a raw volume grid (.raw, see --raw-dims) or demo:<name>.
+its .mtl), a raw volume grid (.raw, see --raw-dims), a NanoVDB file (.nvdb)
+or demo:<name>.
 
 Output
   -o, --output FILE      image to write: .png (8-bit sRGB), .exr or .pfm
@@ -538,6 +606,20 @@ Raw volumes
   --raw-type TYPE        uint8, int16, uint16, float32 or float64
   --raw-spacing X,Y,Z    voxel size (default 1,1,1)
 
+NanoVDB files
+  --grid NAME            the grid to render (default: the first scalar grid:
+                         float, double, int32, Fp4, Fp8, Fp16 or FpN)
+
+Volume transfer function (raw and NanoVDB files, demo:volume)
+  --tf-range LO,HI       field values the color map spans (files: the
+                         data's minimum and maximum)
+  --tf-map NAME          color map: coolwarm (files' default), viridis,
+                         inferno (demo:volume's) or grayscale
+  --tf-opacity V0,V1,... opacities from 0 to 1, evenly spaced over the range
+                         (files: 0,0.05,0.2,0.5,1)
+  --tf-unit-distance D   distance over which an opacity is reached, in the
+                         volume's world units (files: 1)
+
 Other
   --bench N              render N frames and print min/median/max frame time
   --list-demos           list the built-in demo scenes
@@ -551,6 +633,8 @@ Examples
   prism-render model.gltf --renderer debug --param mode=Ng -o normals.png
   prism-render bunny.obj --eye 0,0.1,0.3 --at 0,0.1,0 --depth depth.pfm
   prism-render skull_256x256x256_uint8.raw -o skull.png
+  prism-render cloud.nvdb --tf-map inferno --tf-opacity 0,0.3,1 -o cloud.png
+  prism-render demo:volume --renderer raycast -o volume.png
   prism-render demo:instanced-forest --bench 20 -q
   prism-render demo:random-spheres --library helide -o helide.png
 

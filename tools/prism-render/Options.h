@@ -13,6 +13,19 @@ namespace prism::render {
 
 using Vec3 = std::array<float, 3>;
 
+// How volumes are colored (--tf-*): applied by VolumeStyle.* wherever a
+// volume is made (volume files, demo:volume). What is not given keeps the
+// volume's own default (files: the data's range, coolwarm, the default
+// ramp, unit distance 1).
+struct TransferFunctionOptions
+{
+  std::optional<std::array<float, 2>> valueRange;
+  std::string colorMap;         // empty: the default
+  std::vector<float> opacities; // empty: the default
+  std::optional<float> unitDistance;
+  bool given{false}; // any --tf-* option, for "ignored" warnings
+};
+
 struct Options
 {
   std::string scene;  // a file path or demo:<name>
@@ -46,6 +59,9 @@ struct Options
   std::optional<std::array<uint64_t, 3>> rawDimensions;
   std::string rawType;
   Vec3 rawSpacing{1.f, 1.f, 1.f};
+  // NanoVDB files: the grid to render; empty: the first scalar grid.
+  std::string gridName;
+  TransferFunctionOptions transferFunction;
 
   bool quiet{false};
   bool verbose{false};

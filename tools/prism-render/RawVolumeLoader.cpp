@@ -1,7 +1,7 @@
 #include "RawVolumeLoader.h"
 
-#include "DemoScenes.h"
 #include "Objects.h"
+#include "VolumeStyle.h"
 
 #include <algorithm>
 #include <cstring>
@@ -67,12 +67,6 @@ void deleteVoxels(const void *userPtr, const void *)
   delete[] static_cast<const unsigned char *>(userPtr);
 }
 
-bool deviceRendersRawVolumes(ANARIDevice device)
-{
-  return scenes::hasSubtype(device, ANARI_SPATIAL_FIELD, "structuredRegular")
-         && scenes::hasSubtype(device, ANARI_VOLUME, "transferFunction1D");
-}
-
 } // namespace
 
 size_t rawVoxelSize(const std::string &type)
@@ -117,13 +111,16 @@ std::string resolveRawFormat(
   return {};
 }
 
-LoadResult loadRawVolume(
-    ANARIDevice device, const std::string &path, const RawVolumeFormat &format)
+LoadResult loadRawVolume(ANARIDevice device,
+    const std::string &path,
+    const RawVolumeFormat &format,
+    const TransferFunctionOptions &transferFunction)
 {
   LoadResult result;
   scenes::Scene &scene = result.scene;
   scene.name = path;
   scene.description = "raw volume";
+  scene.emitsLight = false;
   const VoxelType *type = findType(format.type);
   if (!type) {
     result.error =
@@ -151,13 +148,12 @@ LoadResult loadRawVolume(
     return result;
   }
   // The file is fine; whether it can be rendered is up to the device.
-  if (!deviceRendersRawVolumes(device)) {
-    result.error =
-        "this device does not implement KHR_SPATIAL_FIELD_STRUCTURED_REGULAR "
-        "with KHR_VOLUME_TRANSFER_FUNCTION1D, so raw volume '"
-        + path + "' cannot be rendered with it";
+  result.error = whyVolumesCannotRender(device,
+      "structuredRegular",
+      "KHR_SPATIAL_FIELD_STRUCTURED_REGULAR",
+      "raw volume '" + path + "'");
+  if (!result.error.empty())
     return result;
-  }
 
   std::unique_ptr<unsigned char[]> bytes(
       new (std::nothrow) unsigned char[expectedBytes]);
@@ -193,9 +189,6 @@ LoadResult loadRawVolume(
     lo = 0.0;
     hi = 1.0;
   }
-  const float range[2] = {float(lo / type->normalisation),
-      float(std::max(hi, lo + 1e-6) / type->normalisation)};
-
   unsigned char *voxelMemory = bytes.release();
   ANARIArray3D data = anariNewArray3D(device,
       voxelMemory,
@@ -219,26 +212,11 @@ LoadResult loadRawVolume(
   scene.bounds.extend(origin);
   scene.bounds.extend(origin + extent);
 
-  // A cool-to-warm color map over a linear opacity ramp.
-  const std::vector<scenes::Vec3> colors = {{0.23f, 0.30f, 0.75f},
-      {0.55f, 0.69f, 1.f},
-      {0.87f, 0.87f, 0.87f},
-      {0.96f, 0.6f, 0.48f},
-      {0.71f, 0.02f, 0.15f}};
-  const std::vector<float> opacities = {0.f, 0.05f, 0.2f, 0.5f, 1.f};
-  ANARIVolume volume = anariNewVolume(device, "transferFunction1D");
-  scenes::setObject(device, volume, "value", ANARI_SPATIAL_FIELD, field);
-  anariRelease(device, field);
-  scenes::setArray(device, volume, "color", ANARI_FLOAT32_VEC3, colors);
-  scenes::setArray(device, volume, "opacity", ANARI_FLOAT32, opacities);
-  anariSetParameter(device, volume, "valueRange", ANARI_FLOAT32_BOX1, range);
-  anariCommitParameters(device, volume);
-
-  ANARIWorld world = anariNewWorld(device);
-  scenes::setObjectArray(device, world, "volume", ANARI_VOLUME, {volume});
-  anariCommitParameters(device, world);
-  anariRelease(device, volume);
-  scene.world = world;
+  scene.world = newVolumeWorld(device,
+      field,
+      transferFunctionFor(transferFunction,
+          float(lo / type->normalisation),
+          float(hi / type->normalisation)));
   return result;
 }
 

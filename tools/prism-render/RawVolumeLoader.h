@@ -30,7 +30,10 @@ std::string resolveRawFormat(
 // Bytes per voxel of a type resolveRawFormat accepts (0 for others).
 size_t rawVoxelSize(const std::string &type);
 
-LoadResult loadRawVolume(
-    ANARIDevice device, const std::string &path, const RawVolumeFormat &format);
+// The field rendered through `transferFunction` (VolumeStyle.*).
+LoadResult loadRawVolume(ANARIDevice device,
+    const std::string &path,
+    const RawVolumeFormat &format,
+    const TransferFunctionOptions &transferFunction);
 
 } // namespace prism::render

@@ -7,12 +7,14 @@
 #include "FrameMemory.h"
 #include "FrameOutput.h"
 #include "GltfLoader.h"
+#include "NanoVdbLoader.h"
 #include "ObjLoader.h"
 #include "Objects.h"
 #include "Options.h"
 #include "Progress.h"
 #include "RawVolumeLoader.h"
 #include "RendererParameters.h"
+#include "VolumeStyle.h"
 
 #include <anari/anari.h>
 
@@ -143,7 +145,7 @@ void statusCallback(const void *userPtr,
                      + (message ? message : ""));
 }
 
-enum class SourceKind { Demo, Gltf, Obj, Raw };
+enum class SourceKind { Demo, Gltf, Obj, Raw, NanoVdb };
 
 std::string lowerExtension(const std::string &path)
 {
@@ -277,10 +279,12 @@ int run(int argc, char **argv)
       kind = SourceKind::Obj;
     else if (extension == ".raw")
       kind = SourceKind::Raw;
+    else if (extension == ".nvdb")
+      kind = SourceKind::NanoVdb;
     else
       return fail("'" + options.scene
               + "': unknown scene file type (expected .gltf, .glb, .obj, "
-                ".raw or demo:<name>)",
+                ".raw, .nvdb or demo:<name>)",
           kExitUsage);
     std::error_code ec;
     if (std::filesystem::is_directory(options.scene, ec))
@@ -383,12 +387,21 @@ int run(int argc, char **argv)
                   + "'");
   }
 
-  // The scene.
+  // The scene. Device errors from here on (a file the loader passed but
+  // the device refused, such as a NanoVDB tree it found corrupt) fail the
+  // run: the image would be missing what the file holds.
+  const int errorsBeforeLoad = session.status.errors.load();
   LoadResult loaded;
   const auto loadStart = std::chrono::steady_clock::now();
   switch (kind) {
   case SourceKind::Demo:
-    loaded.scene = demo->build(device);
+    if (options.transferFunction.given && demo->buildWithVolumeStyle) {
+      scenes::TransferFunction style = demo->volumeStyle();
+      applyTransferFunctionOptions(options.transferFunction, style);
+      loaded.scene = demo->buildWithVolumeStyle(device, style);
+    } else {
+      loaded.scene = demo->build(device);
+    }
     break;
   case SourceKind::Gltf: {
     GltfOptions gltf;
@@ -400,7 +413,12 @@ int run(int argc, char **argv)
     loaded = loadObj(device, options.scene);
     break;
   case SourceKind::Raw:
-    loaded = loadRawVolume(device, options.scene, rawFormat);
+    loaded = loadRawVolume(
+        device, options.scene, rawFormat, options.transferFunction);
+    break;
+  case SourceKind::NanoVdb:
+    loaded = loadNanoVdb(
+        device, options.scene, options.gridName, options.transferFunction);
     break;
   }
   scenes::Scene &scene = loaded.scene;
@@ -413,6 +431,14 @@ int run(int argc, char **argv)
     return fail(loaded.error);
   if (options.cameraIndex >= 0 && kind != SourceKind::Gltf)
     console::warning("--camera only applies to glTF files; ignored");
+  const bool hasVolume = kind == SourceKind::Raw || kind == SourceKind::NanoVdb
+                         || (demo && demo->buildWithVolumeStyle);
+  if (options.transferFunction.given && !hasVolume)
+    console::warning(
+        "--tf-* options only apply to volumes (.raw, .nvdb, demo:volume); "
+        "ignored");
+  if (!options.gridName.empty() && kind != SourceKind::NanoVdb)
+    console::warning("--grid only applies to NanoVDB files; ignored");
 
   // Scene files without lights would render black with the path tracer:
   // light them the way glTF viewers do, and say so.
@@ -499,6 +525,11 @@ int run(int argc, char **argv)
   }
   if (bounds.empty())
     bounds = scene.bounds;
+  // The bounds query waited for every commit, so the device has judged the
+  // scene by now.
+  if (session.status.errors.load() > errorsBeforeLoad)
+    return fail("the device refused the scene '" + options.scene
+                + "' (see above); no image written");
   const float aspect = float(options.width) / float(options.height);
   const CameraSetup view = frameCamera(scene.camera, bounds, aspect, options);
   // Ray tracers reject rays from beyond ~1e18; refuse such a camera here

@@ -1,17 +1,20 @@
 // libFuzzer target for prism-render's scene loaders. The first byte picks
-// the format (its value mod 4), the rest is the file, loaded from memory
+// the format (its value mod 5), the rest is the file, loaded from memory
 // into one `prism` device made once per process:
 //   0  glTF JSON       loadGltfFromMemory (external URIs not read)
 //   1  GLB             the same (the magic decides)
 //   2  OBJ             loadObj, no material library
 //   3  OBJ + MTL       loadObj; the text after the first NUL byte is the MTL
 //                      every `mtllib` gets
+//   4  NanoVDB         loadNanoVdb, through a temporary file (NanoVDB's
+//                      reader reads files)
 // Textures named by an MTL are never opened. A loaded world is committed,
 // framed by prism-render's camera framing and rendered once at 4x4 with
 // `raycast`, so what the loaders hand the device is used, not just stored.
 #include "CameraFraming.h"
 #include "GltfLoader.h"
 #include "Math.h"
+#include "NanoVdbLoader.h"
 #include "ObjLoader.h"
 
 #include <anari/anari.h>
@@ -19,7 +22,11 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <string>
+
+#include <unistd.h>
 
 namespace {
 
@@ -81,9 +88,27 @@ void render(const LoadResult &loaded)
   anariCommitParameters(d, g_session.frame);
 }
 
+constexpr int kFormats = 5;
+
+LoadResult loadNanoVdbBytes(const std::string &bytes)
+{
+  static const std::string path =
+      (std::filesystem::temp_directory_path()
+          / ("fuzz_loader-" + std::to_string(::getpid()) + ".nvdb"))
+          .string();
+  std::ofstream(path, std::ios::binary | std::ios::trunc)
+      .write(bytes.data(), std::streamsize(bytes.size()));
+  LoadResult loaded =
+      loadNanoVdb(g_session.device, path, "", TransferFunctionOptions{});
+  std::filesystem::remove(path);
+  return loaded;
+}
+
 LoadResult load(uint8_t format, const std::string &bytes)
 {
   ANARIDevice d = g_session.device;
+  if (format == 4)
+    return loadNanoVdbBytes(bytes);
   if (format < 2) {
     GltfOptions options;
     options.readExternalFiles = false;
@@ -162,11 +187,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
   if (size < 1)
     return 0;
   const std::string bytes((const char *)data + 1, size - 1);
-  LoadResult loaded = load(data[0] % 4, bytes);
+  LoadResult loaded = load(data[0] % kFormats, bytes);
   if (g_verbose)
     std::fprintf(stderr,
         "fuzz_loader: format %d: %s\n",
-        data[0] % 4,
+        data[0] % kFormats,
         loaded.ok() ? "loaded and rendered" : loaded.error.c_str());
   if (loaded.scene.world) {
     render(loaded);

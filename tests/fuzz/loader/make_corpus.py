@@ -1,10 +1,13 @@
 #!/usr/bin/env python3
 """Writes fuzz_loader's seed corpus into corpus/ and its dictionary
 fuzz_loader.dict (the outputs are committed; rerun after changing this). Each file is one format byte (0 glTF JSON,
-1 GLB, 2 OBJ, 3 OBJ + MTL after a NUL byte) and the file itself: valid
+1 GLB, 2 OBJ, 3 OBJ + MTL after a NUL byte, 4 NanoVDB) and the file itself: valid
 scenes that reach most of the loaders' mapping, and edge cases each broken
 in one way. The glTF scenes are built with the CLI tests' asset helpers
-(tests/cli/data/make_assets.py)."""
+(tests/cli/data/make_assets.py). The NanoVDB seeds need a file NanoVDB
+wrote: give the CLI tests' small-zip.nvdb (build/tests/cli/nvdb/, from
+write_nanovdb_files) as the first argument (see README.md for why they are
+not committed yet)."""
 import base64
 import json
 import math
@@ -16,7 +19,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "cli", "data"))
 import make_assets as assets  # noqa: E402
 
-GLTF, GLB, OBJ, OBJ_MTL = 0, 1, 2, 3
+GLTF, GLB, OBJ, OBJ_MTL, NANOVDB = 0, 1, 2, 3, 4
 FLOAT, UBYTE, USHORT, UINT = 5126, 5121, 5123, 5125
 
 
@@ -267,7 +270,7 @@ def dictionary():
         return "".join(c if c.isalnum() else "_" for c in text.strip()) or "_"
     lines = ["# fuzz_loader's dictionary (written by make_corpus.py): glTF keys",
              "# and values, GLB chunk tags, OBJ and MTL keywords, numbers at the",
-             "# edges of int and float."]
+             "# edges of int and float, NanoVDB's magic and codecs."]
     lines += ['gltf_key_%s="\\"%s\\":"' % (k, k) for k in GLTF_KEYS]
     lines += ['gltf_value_%s="\\"%s\\""' % (name(v), v) for v in GLTF_VALUES]
     lines += ['glb_magic="glTF"', 'glb_json="JSON"', 'glb_bin="BIN\\x00"',
@@ -275,6 +278,10 @@ def dictionary():
     lines += ['obj_%s="%s"' % (name(k), k) for k in OBJ_KEYWORDS]
     lines += ['mtl_%s="%s"' % (name(k), k) for k in MTL_KEYWORDS]
     lines += ['number_%d="%s"' % (i, n) for i, n in enumerate(EDGE_NUMBERS)]
+    # NanoVDB: the file magic, codecs NONE/ZIP/BLOSC, 2^32 - 16 (a size).
+    lines += ['nvdb_magic="NanoVDB0"', 'nvdb_codec_none="\\x00\\x00"',
+              'nvdb_codec_zip="\\x01\\x00"', 'nvdb_codec_blosc="\\x02\\x00"',
+              'nvdb_huge="\\xf0\\xff\\xff\\xff"']
     with open(os.path.join(HERE, "fuzz_loader.dict"), "w") as f:
         f.write("\n".join(lines) + "\n")
 
@@ -337,6 +344,12 @@ def main():
     # OBJ + MTL
     write("objmtl-cube", OBJ_MTL, assets.CUBE_OBJ + "\0" + assets.CUBE_MTL)
     write("objmtl-features", OBJ_MTL, FEATURES_OBJ + "\0" + MATERIALS_MTL)
+    # NanoVDB: a 4^3 ball, ZIP-compressed (small), whole and cut short.
+    if len(sys.argv) > 1:
+        with open(sys.argv[1], "rb") as f:
+            nvdb = f.read()
+        write("nvdb-small-zip", NANOVDB, nvdb)
+        write("nvdb-small-zip-truncated", NANOVDB, nvdb[: len(nvdb) // 2])
 
 
 if __name__ == "__main__":
