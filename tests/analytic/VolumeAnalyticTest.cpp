@@ -339,6 +339,37 @@ TEST_F(VolumeTest, ExtremeScalesFinishWithFinitePixels)
   EXPECT_TRUE(problems().empty());
 }
 
+TEST_F(VolumeTest, ValueRangeNarrowerThanItsReciprocalStillSortsValues)
+{
+  // valueRange [0, 1e-44]: 1 / 1e-44 overflows a float (and 0 * inf is
+  // NaN). Values of 0 sit at the range's start (opacity 0: the slab is
+  // clear); values of 1 lie above it and take the last opacity (0.5 per
+  // unit: the slab of depth 2 transmits 0.25).
+  const float black[3] = {0, 0, 0}, white[4] = {1, 1, 1, 1};
+  for (const float value : {0.f, 1.f}) {
+    ANARIVolume v =
+        volume(field(3, 3, 5, 2.f, [&](float, float, float) { return value; }),
+            black,
+            {0.f, 0.f, 0.5f});
+    const float range[2] = {0.f, 1e-44f};
+    anariSetParameter(m_device, v, "valueRange", ANARI_FLOAT32_BOX1, range);
+    anariCommitParameters(m_device, v);
+    ANARIWorld w = volumeWorld(v);
+    ANARICamera c = orthographic(kEye, kDown, 0.5f);
+    for (const char *subtype : {"raycast", "pathtracer"}) {
+      ANARIRenderer r = withBackground(subtype, white);
+      EXPECT_NEAR(centralMean(accumulatedColor(w, c, r, 8, 1), 8),
+          value == 0.f ? 1.f : 0.25f,
+          value == 0.f ? 1e-6f : 0.2f)
+          << subtype << " value " << value;
+      anariRelease(m_device, r);
+    }
+    anariRelease(m_device, w);
+    anariRelease(m_device, c);
+  }
+  EXPECT_TRUE(problems().empty());
+}
+
 TEST_F(VolumeTest, BadVolumesAreReportedAndSkipped)
 {
   // Commits apply when a frame starts: each case renders once.

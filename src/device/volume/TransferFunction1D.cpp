@@ -7,12 +7,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace prism {
 namespace {
 
 // Opacity is capped here: 1 would mean an infinite extinction.
 constexpr float kMaxOpacity = 1.f - 1e-6f;
+
+// u clamped to [0, 1], NaN (an infinite value over an empty valueRange)
+// to 0: every table index stays in range.
+float unitClamp(float u)
+{
+  return u > 0.f ? (u < 1.f ? u : 1.f) : 0.f;
+}
 
 // The table entry at normalised position u in [0, 1], linearly
 // interpolated between entries (the first at 0, the last at 1).
@@ -22,7 +30,7 @@ T lookup(const std::vector<T> &table, float u)
   const size_t last = table.size() - 1;
   if (last == 0)
     return table[0];
-  const float x = std::clamp(u, 0.f, 1.f) * float(last);
+  const float x = unitClamp(u) * float(last);
   const size_t i = std::min(size_t(x), last - 1);
   const float f = x - float(i);
   return table[i] * (1.f - f) + table[i + 1] * f;
@@ -33,10 +41,15 @@ T lookup(const std::vector<T> &table, float u)
 template <typename T, typename Get>
 float tableMax(const std::vector<T> &table, float u0, float u1, Get get)
 {
+  // NaN ends (an unknown range) span the whole table.
+  if (!(u0 == u0) || !(u1 == u1)) {
+    u0 = 0.f;
+    u1 = 1.f;
+  }
   float best = std::max(get(lookup(table, u0)), get(lookup(table, u1)));
   const size_t last = table.size() - 1;
-  const float x0 = std::clamp(u0, 0.f, 1.f) * float(last);
-  const float x1 = std::clamp(u1, 0.f, 1.f) * float(last);
+  const float x0 = unitClamp(u0) * float(last);
+  const float x1 = unitClamp(u1) * float(last);
   for (size_t i = size_t(std::ceil(x0)); float(i) <= x1 && i <= last; i++)
     best = std::max(best, get(table[i]));
   return best;
@@ -76,7 +89,11 @@ bool TransferFunction1D::readVolume()
     high = 1.f;
   }
   m_valueLow = low;
-  m_valueScale = high > low ? 1.f / (high - low) : 0.f;
+  // A range too narrow for its reciprocal still sorts values below, in
+  // and above it (never inf * 0).
+  m_valueScale = high > low ? std::min(
+                     1.f / (high - low), std::numeric_limits<float>::max())
+                            : 0.f;
   m_unitDistance = read<float>("unitDistance", ANARI_FLOAT32, 1.f);
   if (!(m_unitDistance > 0.f) || !std::isfinite(m_unitDistance)) {
     report(ANARI_SEVERITY_WARNING,
@@ -233,10 +250,9 @@ void TransferFunction1D::sampleLine(const float3 &start,
     for (int i = 0; i < n; i++) {
       const float v = values[i];
       const bool valued = v == v; // NaN: no value, no extinction
-      const float x =
-          valued ? std::clamp((v - m_valueLow) * m_valueScale, 0.f, 1.f)
-                       * float(kTableSize)
-                 : 0.f;
+      const float x = valued ? unitClamp((v - m_valueLow) * m_valueScale)
+                                   * float(kTableSize)
+                             : 0.f;
       const int k = std::min(int(x), kTableSize - 1);
       const float f = x - float(k);
       const float4 entry =

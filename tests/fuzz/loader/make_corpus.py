@@ -6,8 +6,7 @@ scenes that reach most of the loaders' mapping, and edge cases each broken
 in one way. The glTF scenes are built with the CLI tests' asset helpers
 (tests/cli/data/make_assets.py). The NanoVDB seeds need a file NanoVDB
 wrote: give the CLI tests' small-zip.nvdb (build/tests/cli/nvdb/, from
-write_nanovdb_files) as the first argument (see README.md for why they are
-not committed yet)."""
+write_nanovdb_files) as the first argument."""
 import base64
 import json
 import math
