@@ -370,6 +370,35 @@ TEST_F(VolumeTest, ValueRangeNarrowerThanItsReciprocalStillSortsValues)
   EXPECT_TRUE(problems().empty());
 }
 
+TEST_F(VolumeTest, ColorAlphaScalesOpacityAndInvisibleVolumesAreSkipped)
+{
+  // A FLOAT32_VEC4 colour's alpha multiplies the opacity (spec 5.12.1):
+  // alpha 0.5 and opacity 1 absorb half per unit, so a slab of depth 2
+  // transmits 0.25; with visible false the slab is not drawn at all.
+  const float white[4] = {1, 1, 1, 1};
+  const float halfBlack[4] = {0, 0, 0, 0.5f};
+  ANARICamera c = orthographic(kEye, kDown, 0.5f);
+  ANARIRenderer r = withBackground("raycast", white);
+  for (const bool visible : {true, false}) {
+    ANARIVolume v = anariNewVolume(m_device, "transferFunction1D");
+    ANARISpatialField f = field(3, 3, 5, 2.f, constant);
+    anariSetParameter(m_device, v, "value", ANARI_SPATIAL_FIELD, &f);
+    anariRelease(m_device, f);
+    anariSetParameter(m_device, v, "color", ANARI_FLOAT32_VEC4, halfBlack);
+    anariSetParameter(m_device, v, "visible", ANARI_BOOL, &visible);
+    anariCommitParameters(m_device, v);
+    ANARIWorld w = volumeWorld(v);
+    EXPECT_NEAR(centralMean(accumulatedColor(w, c, r, 8, 1), 8),
+        visible ? 0.25f : 1.f,
+        1e-3f)
+        << "visible " << visible;
+    anariRelease(m_device, w);
+  }
+  for (ANARIObject o : {(ANARIObject)c, (ANARIObject)r})
+    anariRelease(m_device, o);
+  EXPECT_TRUE(problems().empty());
+}
+
 TEST_F(VolumeTest, BadVolumesAreReportedAndSkipped)
 {
   // Commits apply when a frame starts: each case renders once.
