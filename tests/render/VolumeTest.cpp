@@ -112,6 +112,31 @@ class VolumeScene : public RenderTest
     anariCommitParameters(device(), instance);
     return instance;
   }
+  // Renders `world` (given one directional light) from `eye` along `view`
+  // (z up) at 96 x 96 over a dark background, against the reference.
+  void renderLit(ANARIWorld world,
+      const Vec3 &lightDirection,
+      float irradiance,
+      const Vec3 &eye,
+      const Vec3 &view,
+      const char *subtype,
+      uint32_t frames)
+  {
+    ANARILight light = keep(anariNewLight(device(), "directional"));
+    setVec3(light, "direction", lightDirection);
+    setFloat(light, "irradiance", irradiance);
+    anariCommitParameters(device(), light);
+    setObject(world,
+        "light",
+        ANARI_ARRAY1D,
+        anariNewArray1D(device(), &light, nullptr, nullptr, ANARI_LIGHT, 1));
+    anariCommitParameters(device(), world);
+    ANARICamera camera = newPerspectiveCamera(eye, view, {0, 0, 1}, 1.f, 0.9f);
+    ANARIRenderer renderer = newRenderer(subtype);
+    setVec4(renderer, "background", {0.1f, 0.1f, 0.15f, 1.f});
+    anariCommitParameters(device(), renderer);
+    renderAndCompare(world, camera, renderer, 96, 96, {}, frames);
+  }
   // Looking down -z at [0, width] x [0, 1] from above.
   ANARICamera topView(float width, uint32_t pixelsWide, uint32_t pixelsHigh)
   {
@@ -249,21 +274,13 @@ class VolumeAndSurfaces : public VolumeScene
         {newSurface(sphere, newMatte({0.6f, 0.6f, 0.6f})),
             newSurface(floor, newMatte({0.2f, 0.6f, 0.2f}))});
     ANARIWorld world = newWorld({}, {placed(group, translation({0, 0, 0}))});
-    ANARILight light = keep(anariNewLight(device(), "directional"));
-    setVec3(light, "direction", {-0.3f, -0.2f, -1.f});
-    setFloat(light, "irradiance", 2.f);
-    anariCommitParameters(device(), light);
-    setObject(world,
-        "light",
-        ANARI_ARRAY1D,
-        anariNewArray1D(device(), &light, nullptr, nullptr, ANARI_LIGHT, 1));
-    anariCommitParameters(device(), world);
-    ANARICamera camera = newPerspectiveCamera(
-        {0.5f, -1.2f, 1.4f}, {0, 1.7f, -1.2f}, {0, 0, 1}, 1.f, 0.9f);
-    ANARIRenderer renderer = newRenderer(subtype);
-    setVec4(renderer, "background", {0.1f, 0.1f, 0.15f, 1.f});
-    anariCommitParameters(device(), renderer);
-    renderAndCompare(world, camera, renderer, 96, 96, {}, frames);
+    renderLit(world,
+        {-0.3f, -0.2f, -1.f},
+        2.f,
+        {0.5f, -1.2f, 1.4f},
+        {0, 1.7f, -1.2f},
+        subtype,
+        frames);
   }
 };
 
@@ -409,22 +426,13 @@ class Isosurface : public VolumeScene
     setString(material, "color", "color");
     setString(material, "alphaMode", "blend");
     anariCommitParameters(device(), material);
-    ANARIWorld world = newWorld({newSurface(iso, material)});
-    ANARILight light = keep(anariNewLight(device(), "directional"));
-    setVec3(light, "direction", {-0.3f, -0.5f, -1.f});
-    setFloat(light, "irradiance", 3.f);
-    anariCommitParameters(device(), light);
-    setObject(world,
-        "light",
-        ANARI_ARRAY1D,
-        anariNewArray1D(device(), &light, nullptr, nullptr, ANARI_LIGHT, 1));
-    anariCommitParameters(device(), world);
-    ANARICamera camera = newPerspectiveCamera(
-        {0.5f, -0.6f, 1.3f}, {0, 1.1f, -0.8f}, {0, 0, 1}, 1.f, 0.9f);
-    ANARIRenderer renderer = newRenderer(subtype);
-    setVec4(renderer, "background", {0.1f, 0.1f, 0.1f, 1.f});
-    anariCommitParameters(device(), renderer);
-    renderAndCompare(world, camera, renderer, 96, 96, {}, frames);
+    renderLit(newWorld({newSurface(iso, material)}),
+        {-0.3f, -0.5f, -1.f},
+        3.f,
+        {0.5f, -0.6f, 1.3f},
+        {0, 1.1f, -0.8f},
+        subtype,
+        frames);
   }
 };
 
