@@ -27,21 +27,23 @@ class ObjectTestFixture : public ::testing::Test
                                        ANARIStatusSeverity severity,
                                        ANARIStatusCode,
                                        const char *message) {
+      auto *fixture = (ObjectTestFixture *)user;
+      fixture->m_messages.push_back({severity, message});
       if (severity <= ANARI_SEVERITY_ERROR)
-        ((std::vector<std::string> *)user)->push_back(message);
+        fixture->m_errors.push_back(message);
     };
     const auto device = (ANARIObject)m_device.this_device();
     m_device.setParameter(
         device, "statusCallback", ANARI_STATUS_CALLBACK, &callback);
     m_device.setParameter(
-        device, "statusCallbackUserData", ANARI_VOID_POINTER, &m_errors);
+        device, "statusCallbackUserData", ANARI_VOID_POINTER, this);
   }
   void TearDown() override
   {
     for (Object *object : m_objects)
       object->releaseInternal();
-    for (ANARIObject array : m_arrays)
-      m_device.release(array);
+    for (ANARIObject handle : m_handles)
+      m_device.release(handle);
   }
 
   template <typename T>
@@ -62,7 +64,7 @@ class ObjectTestFixture : public ::testing::Test
     if (count > 0)
       std::memcpy(result->map(), values.data(), values.size() * sizeof(T));
     result->unmap();
-    m_arrays.push_back(handle);
+    m_handles.push_back(handle);
     return result;
   }
   static void set(
@@ -90,10 +92,16 @@ class ObjectTestFixture : public ::testing::Test
     return false;
   }
 
-  std::vector<std::string> m_errors;
+  struct Message
+  {
+    ANARIStatusSeverity severity;
+    std::string text;
+  };
+  std::vector<Message> m_messages;   // every message
+  std::vector<std::string> m_errors; // the error and fatal ones
   Device m_device{nullptr};
   std::vector<Object *> m_objects;
-  std::vector<ANARIObject> m_arrays;
+  std::vector<ANARIObject> m_handles; // released in TearDown
 };
 
 } // namespace prism::testing

@@ -2,8 +2,7 @@
 // and spatial fields and commit them the way a flush does.
 #pragma once
 
-#include "Device.h"
-#include "array/Array.h"
+#include "../ObjectTestFixture.h"
 #include "volume/SpatialField.h"
 
 #include "anari/frontend/type_utility.h"
@@ -18,37 +17,13 @@
 
 namespace prism {
 
-class FieldTest : public ::testing::Test
+// The object fixture (tests/unit/ObjectTestFixture.h) plus fields made
+// through the device's factory and 3D arrays.
+class FieldTest : public testing::ObjectTestFixture
 {
  protected:
-  struct Message
-  {
-    ANARIStatusSeverity severity;
-    std::string text;
-  };
-
-  void SetUp() override
-  {
-    ANARIStatusCallback callback = [](const void *user,
-                                       ANARIDevice,
-                                       ANARIObject,
-                                       ANARIDataType,
-                                       ANARIStatusSeverity severity,
-                                       ANARIStatusCode,
-                                       const char *message) {
-      ((std::vector<Message> *)user)->push_back({severity, message});
-    };
-    const auto device = (ANARIObject)m_device.this_device();
-    m_device.setParameter(
-        device, "statusCallback", ANARI_STATUS_CALLBACK, &callback);
-    m_device.setParameter(
-        device, "statusCallbackUserData", ANARI_VOID_POINTER, &m_messages);
-  }
-  void TearDown() override
-  {
-    for (ANARIObject handle : m_handles)
-      m_device.release(handle);
-  }
+  using ObjectTestFixture::reported;
+  using ObjectTestFixture::set;
 
   // A field of `subtype` made through the device's factory.
   SpatialField *field(const char *subtype)
@@ -91,12 +66,6 @@ class FieldTest : public ::testing::Test
   {
     object->stageParameter(
         name, Parameter::make(ANARI_FLOAT32_VEC3, &value, nullptr));
-  }
-  static void commit(Object *object)
-  {
-    object->snapshotForCommit();
-    object->applyCommit();
-    object->finalize();
   }
   // Whether a message of `severity` containing `part` was reported.
   bool reported(ANARIStatusSeverity severity, const char *part) const
@@ -163,10 +132,6 @@ class FieldTest : public ::testing::Test
     f.valueRange({bounds.upper + 1.f, bounds.upper + 2.f}, lo, hi);
     EXPECT_GT(lo, hi) << label;
   }
-
-  std::vector<Message> m_messages;
-  Device m_device{nullptr};
-  std::vector<ANARIObject> m_handles;
 };
 
 } // namespace prism
