@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <mutex>
@@ -261,6 +262,10 @@ class Payload
     std::string out;
     for (size_t i = 0; i < length && m_next < m_size; i++)
       out.push_back(char(m_data[m_next++]));
+    // The device reads a C string: the name ends at its first NUL for the
+    // interpreter too (or "frameCompletionCallbackUserData\0x" would get a
+    // value the interpreter never meant for the completion callback).
+    out.resize(std::strlen(out.c_str()));
     return out;
   }
 
