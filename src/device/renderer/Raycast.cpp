@@ -288,8 +288,9 @@ void Raycast::renderTile(const RenderContext &context,
         packet.tMin[i],
         end);
   };
+  bool inVolume[kLanes] = {}; // per lane of the packet just traced
   auto prepareLane = [&](int i, uint32_t x, uint32_t y) {
-    if (volumes && meetsVolume(i)) {
+    if (inVolume[i]) {
       shading.setLane(i, lastSurface, false);
       shading.otherwise[i] = true;
       shading.samples[i] = shadeSample(context, laneRay(i), laneHit(i), x, y);
@@ -358,7 +359,13 @@ void Raycast::renderTile(const RenderContext &context,
                        || (packet.geometryId[i] == lastSurface.geometryKey
                            && packet.instanceId[i] == lastSurface.instanceKey);
       }
-      if (sameSurface && (lastSurface.flat || !anyHit) && !volumes) {
+      // Lanes whose rays cross a volume are marched (only if any can).
+      bool anyVolume = false;
+      if (volumes) {
+        for (int i = 0; i < kLanes; i++)
+          anyVolume |= inVolume[i] = i < count && meetsVolume(i);
+      }
+      if (sameSurface && (lastSurface.flat || !anyHit) && !anyVolume) {
         for (int i = 0; i < kLanes; i++) {
           shading.setLane(
               i, lastSurface, packet.geometryId[i] != rt::kInvalidId);
