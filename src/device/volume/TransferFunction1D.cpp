@@ -107,8 +107,7 @@ bool TransferFunction1D::readVolume()
   m_table.resize(kTableSize + 1);
   for (int i = 0; i <= kTableSize; i++) {
     const float u = float(i) / float(kTableSize);
-    const float4 c =
-        classify(m_valueLow + (m_valueScale > 0.f ? u / m_valueScale : 0.f));
+    const float4 c = classifyNormalized(u);
     m_table[size_t(i)] = {c.x, c.y, c.z, extinctionOf(c.w)};
   }
   m_field = static_cast<const SpatialField *>(
@@ -212,7 +211,11 @@ float TransferFunction1D::cellSize() const
 
 float4 TransferFunction1D::classify(float value) const
 {
-  const float u = (value - m_valueLow) * m_valueScale;
+  return classifyNormalized((value - m_valueLow) * m_valueScale);
+}
+
+float4 TransferFunction1D::classifyNormalized(float u) const
+{
   const float4 color = lookup(m_colors, u);
   return {color.x, color.y, color.z, color.w * lookup(m_opacities, u)};
 }

@@ -34,6 +34,9 @@ class TransferFunction1D : public Volume
 
   // The colour and final opacity the table gives field value `value`.
   float4 classify(float value) const;
+  // The same for a value's position u in valueRange (0 at its start, 1 at
+  // its end).
+  float4 classifyNormalized(float u) const;
   // The extinction of an opacity (capped just below 1, where the density
   // would be infinite).
   float extinctionOf(float opacity) const;
