@@ -319,25 +319,42 @@ void DataParallelDevice::renderComposited(
   frame.keepDepth(true);
   Device::renderFrame(handle);
   const FrameBuffers &local = frame.linearPixels();
-  CompositedImage image = compositeByDepth(
-      communicator, state.width, state.height, local.color, local.depth);
-  if (image.color.empty())
-    return; // not rank 0
+  DepthCompositor compositor(communicator, state.width, state.height);
+  const CompositedImage image = compositor.composite(local.color, local.depth);
+  const bool rankZero = !image.color.empty();
   std::map<std::string, MappedChannel> assembled;
-  const ANARIDataType colorType = frame.channelType("channel.color");
-  if (colorType != ANARI_UNKNOWN) {
-    MappedChannel &color = assembled["channel.color"];
-    color.type = colorType;
-    color.pixels.resize(image.color.size() * pixelSize(colorType));
-    writeColorPixels(
-        colorType, image.color.data(), image.color.size(), color.pixels.data());
-  }
-  const ANARIDataType depthType = frame.channelType("channel.depth");
-  if (depthType == ANARI_FLOAT32) {
-    MappedChannel &depth = assembled["channel.depth"];
-    depth.type = depthType;
-    depth.pixels.resize(image.depth.size() * sizeof(float));
-    std::memcpy(depth.pixels.data(), image.depth.data(), depth.pixels.size());
+  for (const char *name : kChannelNames) {
+    const ANARIDataType type = frame.channelType(name);
+    if (type == ANARI_UNKNOWN)
+      continue;
+    MappedChannel channel{type, {}};
+    const std::string channelName = name;
+    if (channelName == "channel.color") {
+      if (!rankZero)
+        continue;
+      channel.pixels.resize(image.color.size() * pixelSize(type));
+      writeColorPixels(
+          type, image.color.data(), image.color.size(), channel.pixels.data());
+    } else if (channelName == "channel.depth") {
+      if (!rankZero)
+        continue;
+      channel.pixels.resize(image.depth.size() * sizeof(float));
+      std::memcpy(
+          channel.pixels.data(), image.depth.data(), channel.pixels.size());
+    } else {
+      // Channels that do not blend show the nearest fragment's process.
+      uint32_t width = 0, height = 0;
+      ANARIDataType mappedType = ANARI_UNKNOWN;
+      const void *pixels =
+          Device::frameBufferMap(handle, name, &width, &height, &mappedType);
+      const bool usable = pixels && mappedType == type && width == state.width
+                          && height == state.height;
+      channel.pixels = compositor.takeNearest(
+          usable ? (const unsigned char *)pixels : nullptr, pixelSize(type));
+      if (!rankZero)
+        continue;
+    }
+    assembled[name] = std::move(channel);
   }
   std::lock_guard lock(m_stateMutex);
   state.assembled = std::move(assembled);

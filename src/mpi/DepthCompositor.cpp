@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numeric>
 #include <stdexcept>
@@ -10,64 +11,91 @@
 namespace prism::mpi {
 namespace {
 
-// One process's contribution to one pixel, sent as plain floats.
+// One process's contribution to one pixel.
 struct Fragment
 {
   float4 color;
   float depth;
 };
-constexpr int kFloatsPerFragment = 5;
-static_assert(sizeof(Fragment) == kFloatsPerFragment * sizeof(float));
 
-// First pixel of the band of rows `rank` composites.
-size_t bandBegin(int rank, int ranks, uint32_t width, uint32_t height)
+std::vector<int> countsOf(
+    const std::vector<size_t> &pixels, size_t unit, bool offsets)
 {
-  return size_t(uint64_t(height) * uint64_t(rank) / uint64_t(ranks)) * width;
-}
-
-// Front to back with the "under" operator on premultiplied color (what
-// prism's renderers write); background (infinite depth) is the same on every
-// process, so only the first one counts, after every surface.
-Fragment blend(Fragment *fragments, int count)
-{
-  std::stable_sort(fragments,
-      fragments + count,
-      [](const Fragment &a, const Fragment &b) { return a.depth < b.depth; });
-  Fragment result{float4{0.f, 0.f, 0.f, 0.f}, fragments[0].depth};
-  for (int i = 0; i < count && result.color.w < 1.f; i++) {
-    const Fragment &f = fragments[i];
-    const float rest = 1.f - result.color.w;
-    result.color.x += rest * f.color.x;
-    result.color.y += rest * f.color.y;
-    result.color.z += rest * f.color.z;
-    result.color.w += rest * f.color.w;
-    if (std::isinf(f.depth))
-      break;
+  std::vector<int> out(pixels.size() - 1);
+  for (size_t r = 0; r + 1 < pixels.size(); r++) {
+    const size_t value =
+        (offsets ? pixels[r] : pixels[r + 1] - pixels[r]) * unit;
+    if (value > size_t(INT_MAX))
+      throw std::length_error("frame too large to composite with MPI");
+    out[r] = int(value);
   }
-  return result;
-}
-
-int checkedCount(size_t count)
-{
-  if (count > size_t(INT_MAX))
-    throw std::length_error("frame too large to composite with MPI");
-  return int(count);
+  return out;
 }
 
 } // namespace
 
-CompositedImage compositeByDepth(MPI_Comm communicator,
-    uint32_t width,
-    uint32_t height,
-    const std::vector<float4> &color,
-    const std::vector<float> &depth)
+DepthCompositor::DepthCompositor(
+    MPI_Comm communicator, uint32_t width, uint32_t height)
+    : m_communicator(communicator), m_width(width), m_height(height)
 {
-  int rank = 0, ranks = 1;
-  MPI_Comm_rank(communicator, &rank);
-  MPI_Comm_size(communicator, &ranks);
-  const size_t pixels = size_t(width) * height;
-  checkedCount(pixels * kFloatsPerFragment);
+  MPI_Comm_rank(communicator, &m_rank);
+  MPI_Comm_size(communicator, &m_ranks);
+  // Rank r composites rows height*r/ranks up to height*(r+1)/ranks.
+  for (int r = 0; r <= m_ranks; r++) {
+    m_bandBegin.push_back(
+        size_t(uint64_t(height) * uint64_t(r) / uint64_t(m_ranks)) * width);
+  }
+  // Fragments are the largest unit exchanged: check the counts once.
+  countsOf(m_bandBegin, sizeof(Fragment), true);
+}
 
+std::vector<unsigned char> DepthCompositor::exchangeBands(
+    const unsigned char *image, size_t unit) const
+{
+  const size_t bandPixels = m_bandBegin[m_rank + 1] - m_bandBegin[m_rank];
+  const std::vector<int> sendCounts = countsOf(m_bandBegin, unit, false);
+  const std::vector<int> sendOffsets = countsOf(m_bandBegin, unit, true);
+  std::vector<int> receiveCounts(m_ranks), receiveOffsets(m_ranks);
+  for (int r = 0; r < m_ranks; r++) {
+    receiveCounts[r] = int(bandPixels * unit);
+    receiveOffsets[r] = int(r * bandPixels * unit);
+  }
+  std::vector<unsigned char> incoming(bandPixels * unit * m_ranks);
+  MPI_Alltoallv(image,
+      sendCounts.data(),
+      sendOffsets.data(),
+      MPI_BYTE,
+      incoming.data(),
+      receiveCounts.data(),
+      receiveOffsets.data(),
+      MPI_BYTE,
+      m_communicator);
+  return incoming;
+}
+
+std::vector<unsigned char> DepthCompositor::gatherBands(
+    const unsigned char *band, size_t unit) const
+{
+  const std::vector<int> counts = countsOf(m_bandBegin, unit, false);
+  const std::vector<int> offsets = countsOf(m_bandBegin, unit, true);
+  std::vector<unsigned char> image(
+      m_rank == 0 ? size_t(m_width) * m_height * unit : 0);
+  MPI_Gatherv(band,
+      counts[m_rank],
+      MPI_BYTE,
+      image.data(),
+      counts.data(),
+      offsets.data(),
+      MPI_BYTE,
+      0,
+      m_communicator);
+  return image;
+}
+
+CompositedImage DepthCompositor::composite(
+    const std::vector<float4> &color, const std::vector<float> &depth)
+{
+  const size_t pixels = size_t(m_width) * m_height;
   // NaN depths sort as nothing hit, so the order stays strict.
   const float infinity = std::numeric_limits<float>::infinity();
   const bool rendered = color.size() == pixels && depth.size() == pixels;
@@ -77,65 +105,81 @@ CompositedImage compositeByDepth(MPI_Comm communicator,
                       std::isnan(depth[i]) ? infinity : depth[i]}
                            : Fragment{float4{0.f, 0.f, 0.f, 0.f}, infinity};
   }
+  const std::vector<unsigned char> incoming =
+      exchangeBands((const unsigned char *)outgoing.data(), sizeof(Fragment));
+  const size_t bandPixels = m_bandBegin[m_rank + 1] - m_bandBegin[m_rank];
+  auto fragment = [&](int rank, size_t pixel) {
+    Fragment f;
+    std::memcpy(&f,
+        incoming.data() + (rank * bandPixels + pixel) * sizeof(Fragment),
+        sizeof(Fragment));
+    return f;
+  };
 
-  const size_t myBegin = bandBegin(rank, ranks, width, height);
-  const size_t myPixels = bandBegin(rank + 1, ranks, width, height) - myBegin;
-  std::vector<int> sendCounts(ranks), sendOffsets(ranks), receiveCounts(ranks),
-      receiveOffsets(ranks);
-  for (int r = 0; r < ranks; r++) {
-    const size_t begin = bandBegin(r, ranks, width, height);
-    const size_t end = bandBegin(r + 1, ranks, width, height);
-    sendCounts[r] = int((end - begin) * kFloatsPerFragment);
-    sendOffsets[r] = int(begin * kFloatsPerFragment);
-    receiveCounts[r] = int(myPixels * kFloatsPerFragment);
-    receiveOffsets[r] = checkedCount(r * myPixels * kFloatsPerFragment);
+  std::vector<Fragment> band(bandPixels);
+  m_nearestRank.assign(bandPixels, 0);
+  std::vector<int> order(m_ranks);
+  std::vector<Fragment> perRank(m_ranks);
+  for (size_t p = 0; p < bandPixels; p++) {
+    for (int r = 0; r < m_ranks; r++)
+      perRank[r] = fragment(r, p);
+    // Front to back; equal depths go to the lower rank.
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+      return perRank[a].depth < perRank[b].depth;
+    });
+    m_nearestRank[p] = order[0];
+    // The "under" operator on premultiplied color (what prism's renderers
+    // write). Background (infinite depth) is the same on every process, so
+    // only the first one counts, after every surface.
+    Fragment result{float4{0.f, 0.f, 0.f, 0.f}, perRank[order[0]].depth};
+    for (int i = 0; i < m_ranks && result.color.w < 1.f; i++) {
+      const Fragment &f = perRank[order[i]];
+      const float rest = 1.f - result.color.w;
+      result.color.x += rest * f.color.x;
+      result.color.y += rest * f.color.y;
+      result.color.z += rest * f.color.z;
+      result.color.w += rest * f.color.w;
+      if (std::isinf(f.depth))
+        break;
+    }
+    band[p] = result;
   }
-  std::vector<Fragment> incoming(myPixels * ranks);
-  MPI_Alltoallv(outgoing.data(),
-      sendCounts.data(),
-      sendOffsets.data(),
-      MPI_FLOAT,
-      incoming.data(),
-      receiveCounts.data(),
-      receiveOffsets.data(),
-      MPI_FLOAT,
-      communicator);
 
-  std::vector<Fragment> band(myPixels);
-  std::vector<Fragment> perPixel(ranks);
-  for (size_t p = 0; p < myPixels; p++) {
-    // Gathered in rank order, so equal depths resolve to the lowest rank.
-    for (int r = 0; r < ranks; r++)
-      perPixel[r] = incoming[r * myPixels + p];
-    band[p] = blend(perPixel.data(), ranks);
-  }
-
-  std::vector<int> bandCounts(ranks), bandOffsets(ranks);
-  for (int r = 0; r < ranks; r++) {
-    bandCounts[r] = sendCounts[r];
-    bandOffsets[r] = sendOffsets[r];
-  }
-  std::vector<Fragment> image(rank == 0 ? pixels : 0);
-  MPI_Gatherv(band.data(),
-      int(myPixels * kFloatsPerFragment),
-      MPI_FLOAT,
-      image.data(),
-      bandCounts.data(),
-      bandOffsets.data(),
-      MPI_FLOAT,
-      0,
-      communicator);
-
+  const std::vector<unsigned char> image =
+      gatherBands((const unsigned char *)band.data(), sizeof(Fragment));
   CompositedImage result;
-  if (rank == 0) {
+  if (m_rank == 0) {
     result.color.resize(pixels);
     result.depth.resize(pixels);
     for (size_t i = 0; i < pixels; i++) {
-      result.color[i] = image[i].color;
-      result.depth[i] = image[i].depth;
+      Fragment f;
+      std::memcpy(&f, image.data() + i * sizeof(Fragment), sizeof(Fragment));
+      result.color[i] = f.color;
+      result.depth[i] = f.depth;
     }
   }
   return result;
+}
+
+std::vector<unsigned char> DepthCompositor::takeNearest(
+    const unsigned char *local, size_t bytesPerPixel)
+{
+  std::vector<unsigned char> zeros;
+  if (!local) {
+    zeros.assign(size_t(m_width) * m_height * bytesPerPixel, 0);
+    local = zeros.data();
+  }
+  const std::vector<unsigned char> incoming =
+      exchangeBands(local, bytesPerPixel);
+  const size_t bandPixels = m_bandBegin[m_rank + 1] - m_bandBegin[m_rank];
+  std::vector<unsigned char> band(bandPixels * bytesPerPixel);
+  for (size_t p = 0; p < bandPixels; p++) {
+    std::memcpy(band.data() + p * bytesPerPixel,
+        incoming.data() + (m_nearestRank[p] * bandPixels + p) * bytesPerPixel,
+        bytesPerPixel);
+  }
+  return gatherBands(band.data(), bytesPerPixel);
 }
 
 } // namespace prism::mpi

@@ -158,7 +158,8 @@ inline ANARIRenderer newRenderer(ANARIDevice device, const char *subtype)
   return renderer;
 }
 
-// A frame of these objects with FLOAT32_VEC4 color and FLOAT32 depth.
+// A frame of these objects with FLOAT32_VEC4 color, FLOAT32 depth and
+// FLOAT32_VEC3 normal and albedo.
 inline ANARIFrame newFrame(ANARIDevice device,
     ANARIWorld world,
     ANARICamera camera,
@@ -175,6 +176,11 @@ inline ANARIFrame newFrame(ANARIDevice device,
       device, frame, "channel.color", ANARI_DATA_TYPE, &colorType);
   anariSetParameter(
       device, frame, "channel.depth", ANARI_DATA_TYPE, &depthType);
+  const ANARIDataType vectorType = ANARI_FLOAT32_VEC3;
+  anariSetParameter(
+      device, frame, "channel.normal", ANARI_DATA_TYPE, &vectorType);
+  anariSetParameter(
+      device, frame, "channel.albedo", ANARI_DATA_TYPE, &vectorType);
   anariSetParameter(device, frame, "world", ANARI_WORLD, &world);
   anariSetParameter(device, frame, "camera", ANARI_CAMERA, &camera);
   anariSetParameter(device, frame, "renderer", ANARI_RENDERER, &renderer);
@@ -189,6 +195,8 @@ struct Image
   uint32_t height{0};
   std::vector<float> color; // RGBA per pixel
   std::vector<float> depth;
+  std::vector<float> normal; // XYZ per pixel
+  std::vector<float> albedo; // RGB per pixel
 };
 
 inline Image readFrame(ANARIDevice device, ANARIFrame frame)
@@ -212,6 +220,18 @@ inline Image readFrame(ANARIDevice device, ANARIFrame frame)
     image.depth.assign(
         (const float *)depth, (const float *)depth + size_t(width) * height);
   anariUnmapFrame(device, frame, "channel.depth");
+  for (const char *channel : {"channel.normal", "channel.albedo"}) {
+    const void *pixels =
+        anariMapFrame(device, frame, channel, &width, &height, &type);
+    if (pixels && type == ANARI_FLOAT32_VEC3 && width == image.width
+        && height == image.height) {
+      auto &to = std::string(channel) == "channel.normal" ? image.normal
+                                                          : image.albedo;
+      to.assign((const float *)pixels,
+          (const float *)pixels + size_t(width) * height * 3);
+    }
+    anariUnmapFrame(device, frame, channel);
+  }
   return image;
 }
 

@@ -175,7 +175,14 @@ void checkComposite(const Render &composited,
   check(hits > want.depth.size() / 4 && hits < want.depth.size(),
       label + ": the view shows boxes and background (" + std::to_string(hits)
           + " of " + std::to_string(want.depth.size()) + " pixels hit)");
-  size_t depthMismatches = 0, colorMismatches = 0, ownDiffers = 0;
+  check(got.normal.size() == want.normal.size()
+            && got.albedo.size() == want.albedo.size()
+            && want.normal.size() == 3 * want.depth.size(),
+      label + ": rank 0 maps normal and albedo of the frame's size");
+  if (g_failures)
+    return;
+  size_t depthMismatches = 0, colorMismatches = 0, vectorMismatches = 0,
+         ownDiffers = 0;
   for (size_t i = 0; i < want.depth.size(); i++) {
     // Bitwise: equal infinities, and no tolerance for finite depths.
     depthMismatches +=
@@ -183,6 +190,12 @@ void checkComposite(const Render &composited,
     colorMismatches +=
         std::memcmp(&got.color[4 * i], &want.color[4 * i], 4 * sizeof(float))
         != 0;
+    vectorMismatches +=
+        std::memcmp(&got.normal[3 * i], &want.normal[3 * i], 3 * sizeof(float))
+            != 0
+        || std::memcmp(
+               &got.albedo[3 * i], &want.albedo[3 * i], 3 * sizeof(float))
+               != 0;
     ownDiffers +=
         std::memcmp(&mine.image.depth[i], &want.depth[i], sizeof(float)) != 0;
   }
@@ -192,6 +205,10 @@ void checkComposite(const Render &composited,
   check(colorMismatches == 0,
       label + ": color equals the single-process raycast color ("
           + std::to_string(colorMismatches) + " pixels differ)");
+  check(vectorMismatches == 0,
+      label + ": normal and albedo are the nearest process's, as in the"
+              " single-process render ("
+          + std::to_string(vectorMismatches) + " pixels differ)");
   int ranks = 1;
   for (int owner : owners)
     ranks = std::max(ranks, owner + 1);

@@ -66,13 +66,16 @@ int environmentNumber(const char *name, int fallback)
 bool rowEqual(const Image &a, const Image &b, uint32_t y)
 {
   const size_t begin = size_t(y) * kWidth;
-  return std::memcmp(&a.color[4 * begin],
-             &b.color[4 * begin],
-             4 * kWidth * sizeof(float))
-             == 0
-         && std::memcmp(
-                &a.depth[begin], &b.depth[begin], kWidth * sizeof(float))
-                == 0;
+  auto same = [&](const std::vector<float> &x,
+                  const std::vector<float> &z,
+                  size_t components) {
+    return std::memcmp(&x[components * begin],
+               &z[components * begin],
+               components * kWidth * sizeof(float))
+           == 0;
+  };
+  return same(a.color, b.color, 4) && same(a.depth, b.depth, 1)
+         && same(a.normal, b.normal, 3) && same(a.albedo, b.albedo, 3);
 }
 
 } // namespace
@@ -92,10 +95,14 @@ int main()
     }
   };
   const size_t pixels = size_t(kWidth) * kHeight;
-  check(want.color.size() == 4 * pixels && want.depth.size() == pixels,
+  check(want.color.size() == 4 * pixels && want.depth.size() == pixels
+            && want.normal.size() == 3 * pixels
+            && want.albedo.size() == 3 * pixels,
       "the prism device renders the reference");
-  check(got.color.size() == 4 * pixels && got.depth.size() == pixels,
-      "the library under test renders color and depth of the frame's size");
+  check(got.color.size() == 4 * pixels && got.depth.size() == pixels
+            && got.normal.size() == 3 * pixels
+            && got.albedo.size() == 3 * pixels,
+      "the library under test renders every channel at the frame's size");
   if (failures)
     return 1;
   // The path tracer's image is no flat color: shadows and shading vary.
