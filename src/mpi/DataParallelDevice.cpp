@@ -10,6 +10,7 @@
 #include "anari/frontend/type_utility.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <limits>
@@ -28,6 +29,10 @@ DataParallelDevice::DataParallelDevice(ANARILibrary library) : Device(library)
   // An unmodified single-process program chooses its mode from outside.
   if (const char *mode = std::getenv("PRISM_MPI_MODE"))
     setMode(ANARI_STRING, mode);
+  if (const char *timeout = std::getenv("PRISM_MPI_TIMEOUT")) {
+    const float seconds = std::strtof(timeout, nullptr);
+    setTimeout(ANARI_FLOAT32, &seconds);
+  }
 }
 
 DataParallelDevice::~DataParallelDevice()
@@ -58,6 +63,31 @@ void DataParallelDevice::setMode(ANARIDataType type, const void *mem)
     return;
   }
   m_mode = *mode;
+}
+
+void DataParallelDevice::setTimeout(ANARIDataType type, const void *mem)
+{
+  double seconds = 0.0;
+  if (type == ANARI_FLOAT32 && mem)
+    seconds = *(const float *)mem;
+  else if (type == ANARI_FLOAT64 && mem)
+    seconds = *(const double *)mem;
+  else
+    seconds = std::numeric_limits<double>::quiet_NaN();
+  if (!(seconds >= 0.0) || !std::isfinite(seconds)) {
+    std::string message =
+        "device: parameter 'mpiTimeout' must be a FLOAT32"
+        " or FLOAT64 number of seconds, 0 or more (got ";
+    message.append(anari::toString(type)).append("); it stays ");
+    message.append(std::to_string(m_timeoutSeconds));
+    reportStatus(this_device(),
+        ANARI_DEVICE,
+        ANARI_SEVERITY_ERROR,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        message);
+    return;
+  }
+  m_timeoutSeconds = seconds;
 }
 
 ANARIFrame DataParallelDevice::newFrame()
@@ -96,6 +126,10 @@ try {
   const std::string parameter = name ? name : "";
   if (object == (ANARIObject)this_device() && parameter == "mode") {
     setMode(type, mem);
+    return;
+  }
+  if (object == (ANARIObject)this_device() && parameter == "mpiTimeout") {
+    setTimeout(type, mem);
     return;
   }
   if (parameter == "mpiCommunicator" && lookup(object)) {
@@ -280,21 +314,18 @@ try {
     state->assembled.clear();
   }
   const MPI_Comm communicator = state->communicator.committed;
-  bool allValid = false;
-  const std::string problem =
-      disagreement(describe(frame, *state), communicator, allValid);
-  if (!problem.empty()) {
+  const RendezvousResult meeting = m_rendezvous.meet(
+      describe(frame, *state), communicator, m_timeoutSeconds);
+  if (!meeting.render) {
     reportStatus(handle,
         ANARI_FRAME,
         ANARI_SEVERITY_ERROR,
         ANARI_STATUS_INVALID_OPERATION,
-        "anariRenderFrame: the processes of the frame's communicator"
-        " disagree, so nothing is rendered: "
-            + problem);
+        "anariRenderFrame: nothing is rendered: " + meeting.problem);
     return;
   }
   state->renders++;
-  if (!frame || !allValid) {
+  if (!frame || !meeting.allValid) {
     Device::renderFrame(handle); // reports what the frame lacks
     return;
   }

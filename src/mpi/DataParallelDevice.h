@@ -7,6 +7,7 @@
 #include "FrameAgreement.h"
 #include "MpiSession.h"
 #include "RenderMode.h"
+#include "Rendezvous.h"
 
 #include "Device.h"
 
@@ -76,6 +77,7 @@ class DataParallelDevice : public prism::Device
   };
 
   void setMode(ANARIDataType type, const void *mem);
+  void setTimeout(ANARIDataType type, const void *mem);
   // The parameter entry of a frame or world; NULL for other objects.
   CommunicatorParameter *communicatorOf(ANARIObject object);
   FrameDescriptor describe(Frame *frame, const FrameState &state) const;
@@ -91,7 +93,9 @@ class DataParallelDevice : public prism::Device
       ANARIObject world, bool foundLocally, float bounds[6]);
 
   MpiSession m_session;
+  Rendezvous m_rendezvous; // before m_session ends MPI
   RenderMode m_mode{RenderMode::Composite};
+  double m_timeoutSeconds{0.0}; // <= 0: wait for every process forever
   uint64_t m_framesCreated{0};
   std::mutex m_stateMutex; // guards the maps below
   std::map<ANARIObject, FrameState> m_frames;

@@ -41,23 +41,8 @@ void listDifferences(std::string &message,
 
 } // namespace
 
-std::string disagreement(
-    const FrameDescriptor &local, MPI_Comm communicator, bool &allValid)
+std::string describeDisagreement(const std::vector<FrameDescriptor> &all)
 {
-  int size = 1;
-  MPI_Comm_size(communicator, &size);
-  std::vector<FrameDescriptor> all(size);
-  MPI_Allgather(&local,
-      sizeof(FrameDescriptor),
-      MPI_BYTE,
-      all.data(),
-      sizeof(FrameDescriptor),
-      MPI_BYTE,
-      communicator);
-  allValid = true;
-  for (const FrameDescriptor &d : all)
-    allValid = allValid && d.valid;
-
   auto number = [](uint64_t v) {
     return std::to_string(v);
   };

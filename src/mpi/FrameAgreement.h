@@ -1,12 +1,11 @@
 // What every process of a communicator must agree on before a collective
-// render, exchanged in one allgather so a disagreement is reported on every
-// process instead of leaving some of them waiting in a collective forever.
+// render, so a disagreement is reported on every process instead of leaving
+// some of them waiting in a collective forever.
 #pragma once
-
-#include <mpi.h>
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace prism::mpi {
 
@@ -24,6 +23,9 @@ struct FrameDescriptor
 {
   uint64_t frameIndex{0};  // creation order of the frame on this device
   uint64_t renderIndex{0}; // how many collective renders it had before
+  // This process's count of meetings at anariRenderFrame, so each answer is
+  // matched to its question (processes may count differently: not compared).
+  uint64_t attempt{0};
   uint32_t width{0};
   uint32_t height{0};
   uint32_t mode{0};
@@ -33,9 +35,8 @@ struct FrameDescriptor
   char renderer[32]{}; // the renderer's subtype, cut to fit
 };
 
-// Empty when every process of `communicator` gave the same descriptor,
+// Empty when every descriptor (one per rank, in rank order) is the same,
 // otherwise one line naming each disagreement and the ranks on each side.
-std::string disagreement(
-    const FrameDescriptor &local, MPI_Comm communicator, bool &allValid);
+std::string describeDisagreement(const std::vector<FrameDescriptor> &all);
 
 } // namespace prism::mpi

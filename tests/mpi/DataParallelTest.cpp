@@ -6,11 +6,13 @@
 
 #include <mpi.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 using namespace prism::mpi_test;
@@ -321,6 +323,67 @@ void scenarioMismatch()
     checkComposite(agreed, owners, kEyeA, "after mismatches");
 }
 
+// A process that does not come to anariRenderFrame is reported, naming it,
+// once the device's mpiTimeout passes; the processes then render together.
+void scenarioAbsent()
+{
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  const int absent = ranks - 1;
+  const std::vector<int> owners = boxOwners(ranks, 9);
+  Status status;
+  Device mpi("prism_mpi", status);
+  check(mpi.device != nullptr, "prism_mpi loads");
+  if (!mpi.device)
+    return;
+  const float timeout = 1.f;
+  anariSetParameter(
+      mpi.device, mpi.device, "mpiTimeout", ANARI_FLOAT32, &timeout);
+  ANARIDevice d = mpi.device;
+  ANARIWorld world = newBoxesWorld(d, boxesOf(owners, rank));
+  ANARICamera camera = newCamera(d, kEyeA, 1.f);
+  ANARIRenderer renderer = newRenderer(d, "raycast");
+  ANARIFrame frame = newFrame(d, world, camera, renderer, kSize, kSize);
+  if (rank != absent) {
+    const double start = MPI_Wtime();
+    anariRenderFrame(d, frame);
+    const double waited = MPI_Wtime() - start;
+    check(oneErrorMentioning(status,
+              {"rank " + std::to_string(absent),
+                  "did not call anariRenderFrame within 1 s"}),
+        "the absent rank is reported");
+    check(waited >= 0.9 && waited < 10.0,
+        "the others waited about the timeout (" + std::to_string(waited)
+            + " s)");
+  } else {
+    // Comes to its first anariRenderFrame only after the others gave up.
+    std::this_thread::sleep_for(std::chrono::milliseconds(2500));
+  }
+  const float patient = 30.f;
+  anariSetParameter(
+      mpi.device, mpi.device, "mpiTimeout", ANARI_FLOAT32, &patient);
+  Render together;
+  anariRenderFrame(d, frame);
+  anariFrameReady(d, frame, ANARI_WAIT);
+  together.image = readFrame(d, frame);
+  together.boundsFound = anariGetProperty(d,
+      world,
+      "bounds",
+      ANARI_FLOAT32_BOX3,
+      together.bounds,
+      sizeof(together.bounds),
+      ANARI_WAIT);
+  for (const std::string &e : status.take())
+    check(false, "rendering together reports nothing, got: " + e);
+  if (rank == 0)
+    checkComposite(together, owners, kEyeA, "after an absent rank");
+  anariRelease(d, frame);
+  anariRelease(d, renderer);
+  anariRelease(d, camera);
+  anariRelease(d, world);
+}
+
 // Bad parameters are reported, and the extension is advertised.
 void scenarioParameters()
 {
@@ -354,6 +417,15 @@ void scenarioParameters()
   anariSetParameter(mpi.device, mpi.device, "mode", ANARI_INT32, &notAString);
   check(oneErrorMentioning(status, {"mode", "INT32"}),
       "a mode that is no string is reported");
+
+  const float negative = -1.f;
+  anariSetParameter(
+      mpi.device, mpi.device, "mpiTimeout", ANARI_FLOAT32, &negative);
+  check(oneErrorMentioning(status, {"mpiTimeout", "0 or more"}),
+      "a negative mpiTimeout is reported");
+  anariSetParameter(mpi.device, mpi.device, "mpiTimeout", ANARI_STRING, "5");
+  check(oneErrorMentioning(status, {"mpiTimeout", "STRING"}),
+      "an mpiTimeout that is no number is reported");
 
   ANARIFrame frame = anariNewFrame(mpi.device);
   anariSetParameter(
@@ -389,6 +461,8 @@ int main(int argc, char **argv)
     scenarioSubcommunicator();
   else if (scenario == "mismatch")
     scenarioMismatch();
+  else if (scenario == "absent")
+    scenarioAbsent();
   else if (scenario == "parameters")
     scenarioParameters();
   else
