@@ -41,6 +41,15 @@ DataParallelDevice::~DataParallelDevice()
   taskPool().wait();
 }
 
+void DataParallelDevice::reportBadDeviceParameter(const std::string &message)
+{
+  reportStatus(this_device(),
+      ANARI_DEVICE,
+      ANARI_SEVERITY_ERROR,
+      ANARI_STATUS_INVALID_ARGUMENT,
+      message);
+}
+
 void DataParallelDevice::setMode(ANARIDataType type, const void *mem)
 {
   const auto mode = type == ANARI_STRING && mem
@@ -55,11 +64,7 @@ void DataParallelDevice::setMode(ANARIDataType type, const void *mem)
     else
       message.append(anari::toString(type));
     message.append("); it stays '").append(toString(m_mode)).append("'");
-    reportStatus(this_device(),
-        ANARI_DEVICE,
-        ANARI_SEVERITY_ERROR,
-        ANARI_STATUS_INVALID_ARGUMENT,
-        message);
+    reportBadDeviceParameter(message);
     return;
   }
   m_mode = *mode;
@@ -80,11 +85,7 @@ void DataParallelDevice::setTimeout(ANARIDataType type, const void *mem)
         " or FLOAT64 number of seconds, 0 or more (got ";
     message.append(anari::toString(type)).append("); it stays ");
     message.append(std::to_string(m_timeoutSeconds));
-    reportStatus(this_device(),
-        ANARI_DEVICE,
-        ANARI_SEVERITY_ERROR,
-        ANARI_STATUS_INVALID_ARGUMENT,
-        message);
+    reportBadDeviceParameter(message);
     return;
   }
   m_timeoutSeconds = seconds;

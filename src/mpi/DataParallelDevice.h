@@ -76,6 +76,7 @@ class DataParallelDevice : public prism::Device
     std::map<std::string, MappedChannel> assembled; // rank 0 only
   };
 
+  void reportBadDeviceParameter(const std::string &message);
   void setMode(ANARIDataType type, const void *mem);
   void setTimeout(ANARIDataType type, const void *mem);
   // The parameter entry of a frame or world; NULL for other objects.

@@ -13,6 +13,7 @@
 #include <mutex>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 using namespace prism::mpi_test;
@@ -70,6 +71,14 @@ bool oneErrorMentioning(Status &status,
   return all;
 }
 
+std::pair<int, int> worldRankAndSize()
+{
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  return {rank, ranks};
+}
+
 struct Device
 {
   ANARILibrary library{nullptr};
@@ -79,6 +88,7 @@ struct Device
     library =
         anariLoadLibrary(name, StatusRecorder::callback, &status.m_recorder);
     device = library ? anariNewDevice(library, "default") : nullptr;
+    check(device != nullptr, std::string(name) + " loads");
   }
   ~Device()
   {
@@ -237,7 +247,6 @@ void compositeOn(MPI_Comm communicator, uint32_t seed, const std::string &label)
   Status status;
   {
     Device mpi("prism_mpi", status);
-    check(mpi.device != nullptr, "prism_mpi loads");
     if (!mpi.device)
       return;
     const char *mode = "composite";
@@ -267,9 +276,7 @@ void scenarioComposite()
 // communicator.
 void scenarioSubcommunicator()
 {
-  int rank = 0, ranks = 1;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  const auto [rank, ranks] = worldRankAndSize();
   MPI_Comm group;
   MPI_Comm_split(MPI_COMM_WORLD, rank % 2, rank, &group);
   compositeOn(group,
@@ -282,14 +289,11 @@ void scenarioSubcommunicator()
 // processes stay in step for the next, agreeing, render.
 void scenarioMismatch()
 {
-  int rank = 0, ranks = 1;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  const auto [rank, ranks] = worldRankAndSize();
   const int odd = ranks - 1;
   const std::vector<int> owners = boxOwners(ranks, 3);
   Status status;
   Device mpi("prism_mpi", status);
-  check(mpi.device != nullptr, "prism_mpi loads");
   if (!mpi.device)
     return;
   MPI_Comm comm = MPI_COMM_WORLD;
@@ -327,14 +331,11 @@ void scenarioMismatch()
 // once the device's mpiTimeout passes; the processes then render together.
 void scenarioAbsent()
 {
-  int rank = 0, ranks = 1;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  const auto [rank, ranks] = worldRankAndSize();
   const int absent = ranks - 1;
   const std::vector<int> owners = boxOwners(ranks, 9);
   Status status;
   Device mpi("prism_mpi", status);
-  check(mpi.device != nullptr, "prism_mpi loads");
   if (!mpi.device)
     return;
   const float timeout = 1.f;
@@ -389,7 +390,6 @@ void scenarioParameters()
 {
   Status status;
   Device mpi("prism_mpi", status);
-  check(mpi.device != nullptr, "prism_mpi loads");
   if (!mpi.device)
     return;
   const char **extensions = anariGetDeviceExtensions(mpi.library, "default");
