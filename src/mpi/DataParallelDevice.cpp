@@ -5,7 +5,11 @@
 
 #include "frame/Frame.h"
 #include "frame/PixelFormat.h"
+#include "geometry/Geometry.h"
 #include "renderer/Renderer.h"
+#include "world/Group.h"
+#include "world/Surface.h"
+#include "world/World.h"
 
 #include "anari/frontend/type_utility.h"
 
@@ -268,6 +272,29 @@ const void *DataParallelDevice::frameBufferMap(ANARIFrame frame,
   return Device::frameBufferMap(frame, channel, width, height, pixelType);
 }
 
+void DataParallelDevice::fingerprintWorld(
+    const World &world, FrameDescriptor &d)
+{
+  const box3 bounds = world.bounds();
+  const float corners[6] = {bounds.lower.x,
+      bounds.lower.y,
+      bounds.lower.z,
+      bounds.upper.x,
+      bounds.upper.y,
+      bounds.upper.z};
+  std::memcpy(d.worldBounds, corners, sizeof(corners));
+  for (uint32_t i = 0; i < world.placementCount(); i++) {
+    const Group &group = *world.placement(i).group;
+    for (uint32_t s = 0; s < group.surfaceCount(); s++) {
+      const Surface *surface = group.surface(s);
+      if (surface && surface->geometry())
+        d.worldPrimitives += surface->geometry()->primitiveCount();
+    }
+  }
+  d.worldLights = uint32_t(world.lights().size());
+  d.worldVolumes = uint32_t(world.volumes().size());
+}
+
 FrameDescriptor DataParallelDevice::describe(
     Frame *frame, const FrameState &state) const
 {
@@ -282,6 +309,8 @@ FrameDescriptor DataParallelDevice::describe(
   d.valid = frame->isValid() ? 1 : 0;
   for (int c = 0; c < kChannelCount; c++)
     d.channelTypes[c] = frame->channelType(kChannelNames[c]);
+  if (m_mode == RenderMode::Replicated && frame->world())
+    fingerprintWorld(*frame->world(), d);
   if (const Renderer *renderer = frame->renderer()) {
     const std::string &subtype = renderer->subtype();
     std::memcpy(d.renderer,
@@ -301,9 +330,12 @@ try {
   Frame *frame = object && object->type() == ANARI_FRAME
                      ? static_cast<Frame *>(object)
                      : nullptr;
-  // The committed size, renderer and channels are what the processes
-  // compare.
-  flushCommits();
+  // The committed size, renderer, channels and world are what the
+  // processes compare.
+  if (frame)
+    flushCommitsAndRefresh(*frame);
+  else
+    flushCommits();
   FrameState unknownFrame; // a stale handle still answers the agreement
   unknownFrame.index = ~0ull;
   FrameState *state = &unknownFrame;

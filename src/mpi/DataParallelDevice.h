@@ -20,7 +20,8 @@
 
 namespace prism {
 class Frame;
-}
+class World;
+} // namespace prism
 
 namespace prism::mpi {
 
@@ -82,6 +83,8 @@ class DataParallelDevice : public prism::Device
   // The parameter entry of a frame or world; NULL for other objects.
   CommunicatorParameter *communicatorOf(ANARIObject object);
   FrameDescriptor describe(Frame *frame, const FrameState &state) const;
+  // Replicated mode: what must be the same in every process's world.
+  static void fingerprintWorld(const World &world, FrameDescriptor &d);
   void renderComposited(ANARIFrame handle,
       Frame &frame,
       FrameState &state,

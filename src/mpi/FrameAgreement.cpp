@@ -3,6 +3,7 @@
 
 #include "anari/frontend/type_utility.h"
 
+#include <cstdio>
 #include <cstring>
 #include <map>
 #include <vector>
@@ -106,6 +107,28 @@ std::string describeDisagreement(const std::vector<FrameDescriptor> &all)
         return std::string(d.renderer, strnlen(d.renderer, sizeof(d.renderer)));
       },
       [](const std::string &v) { return "'" + v + "'"; });
+  listDifferences(
+      message,
+      "world (bounds, primitives, lights, volumes)",
+      all,
+      [](const FrameDescriptor &d) {
+        const float *b = d.worldBounds;
+        char text[256];
+        std::snprintf(text,
+            sizeof(text),
+            "(%g,%g,%g)-(%g,%g,%g), %llu primitives, %u lights, %u volumes",
+            b[0],
+            b[1],
+            b[2],
+            b[3],
+            b[4],
+            b[5],
+            (unsigned long long)d.worldPrimitives,
+            d.worldLights,
+            d.worldVolumes);
+        return std::string(text);
+      },
+      [](const std::string &v) { return v; });
   return message;
 }
 

@@ -33,6 +33,13 @@ struct FrameDescriptor
   // ANARIDataType of each of kChannelNames, ANARI_UNKNOWN when not enabled.
   uint32_t channelTypes[kChannelCount]{};
   char renderer[32]{}; // the renderer's subtype, cut to fit
+  // A cheap fingerprint of the world, set only where every process must
+  // hold the same one (replicated mode): its bounds and how many surface
+  // primitives, lights and volumes it places.
+  float worldBounds[6]{};
+  uint64_t worldPrimitives{0};
+  uint32_t worldLights{0};
+  uint32_t worldVolumes{0};
 };
 
 // Empty when every descriptor (one per rank, in rank order) is the same,

@@ -320,6 +320,22 @@ void scenarioMismatch()
             status, {"disagree", "renderer", "'ao' " + odder}, true),
       "a renderer mismatch is reported naming the ranks");
 
+  // Replicated rendering needs the same world everywhere: rank 0 holding
+  // every box and the others their share differ in the fingerprint.
+  anariSetParameter(mpi.device, mpi.device, "mode", ANARI_STRING, "replicated");
+  renderBoxes(mpi.device,
+      boxesOf(owners, rank == 0 ? -1 : rank),
+      kEyeA,
+      "raycast",
+      &comm);
+  check(oneErrorMentioning(status,
+            {"disagree",
+                "world (bounds, primitives, lights, volumes)",
+                "768 primitives, 0 lights, 0 volumes on rank 0"},
+            true),
+      "replicated worlds that differ are reported");
+  anariSetParameter(mpi.device, mpi.device, "mode", ANARI_STRING, "composite");
+
   const Render agreed =
       renderBoxes(mpi.device, boxesOf(owners, rank), kEyeA, "raycast", &comm);
   check(status.take().empty(), "an agreeing render reports nothing");

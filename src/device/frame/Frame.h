@@ -57,6 +57,10 @@ class Frame : public Object
   {
     return m_renderer;
   }
+  const World *world() const
+  {
+    return m_world;
+  }
   // What a data-parallel device asks of the next renders: only the tile
   // rows whose index modulo `parts` is `part`, and the depth buffer even
   // when channel.depth is not enabled (compositing sorts by it).
