@@ -231,6 +231,15 @@ int DataParallelDevice::getProperty(ANARIObject object,
     uint64_t size,
     ANARIWaitMask mask)
 {
+  if (name && std::string(name) == "mpiBytesSent" && type == ANARI_UINT64 && mem
+      && size >= sizeof(uint64_t)) {
+    std::lock_guard lock(m_stateMutex);
+    auto it = m_frames.find(object);
+    if (it != m_frames.end() && lookup(object)) {
+      std::memcpy(mem, &it->second.bytesSent, sizeof(uint64_t));
+      return 1;
+    }
+  }
   const int found = Device::getProperty(object, name, type, mem, size, mask);
   const bool worldBounds = m_session.usable() && (mask & ANARI_WAIT) && name
                            && std::string(name) == "bounds"
@@ -345,6 +354,7 @@ try {
     if (frame && it != m_frames.end())
       state = &it->second;
     state->assembled.clear();
+    state->bytesSent = 0;
   }
   const MPI_Comm communicator = state->communicator.committed;
   const RendezvousResult meeting = m_rendezvous.meet(
@@ -422,6 +432,7 @@ void DataParallelDevice::renderComposited(
   }
   std::lock_guard lock(m_stateMutex);
   state.assembled = std::move(assembled);
+  state.bytesSent = compositor.bytesSent();
 }
 
 void DataParallelDevice::renderReplicated(
@@ -430,6 +441,7 @@ void DataParallelDevice::renderReplicated(
   int rank = 0, ranks = 1;
   MPI_Comm_rank(communicator, &rank);
   MPI_Comm_size(communicator, &ranks);
+  uint64_t bytesSent = 0;
   frame.shareTileRows(uint32_t(rank), uint32_t(ranks));
   frame.keepDepth(false);
   Device::renderFrame(handle);
@@ -457,12 +469,14 @@ void DataParallelDevice::renderReplicated(
         state.width,
         state.height,
         pixelSize(type),
-        Frame::kTileSize);
+        Frame::kTileSize,
+        bytesSent);
     if (rank == 0)
       assembled[name] = MappedChannel{type, std::move(image)};
   }
   std::lock_guard lock(m_stateMutex);
   state.assembled = std::move(assembled);
+  state.bytesSent = bytesSent;
 }
 
 } // namespace prism::mpi

@@ -74,6 +74,7 @@ class DataParallelDevice : public prism::Device
     CommunicatorParameter communicator;
     uint32_t width{0};
     uint32_t height{0};
+    uint64_t bytesSent{0}; // by this process in the last collective render
     std::map<std::string, MappedChannel> assembled; // rank 0 only
   };
 

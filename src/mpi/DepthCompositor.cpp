@@ -61,6 +61,8 @@ std::vector<unsigned char> DepthCompositor::exchangeBands(
     receiveOffsets[r] = int(r * bandPixels * unit);
   }
   std::vector<unsigned char> incoming(bandPixels * unit * m_ranks);
+  for (int r = 0; r < m_ranks; r++)
+    m_bytesSent += r == m_rank ? 0 : uint64_t(sendCounts[r]);
   MPI_Alltoallv(image,
       sendCounts.data(),
       sendOffsets.data(),
@@ -80,6 +82,7 @@ std::vector<unsigned char> DepthCompositor::gatherBands(
   const std::vector<int> offsets = countsOf(m_bandBegin, unit, true);
   std::vector<unsigned char> image(
       m_rank == 0 ? size_t(m_width) * m_height * unit : 0);
+  m_bytesSent += m_rank == 0 ? 0 : uint64_t(counts[m_rank]);
   MPI_Gatherv(band,
       counts[m_rank],
       MPI_BYTE,

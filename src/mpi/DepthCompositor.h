@@ -40,6 +40,12 @@ class DepthCompositor
   std::vector<unsigned char> takeNearest(
       const unsigned char *local, size_t bytesPerPixel);
 
+  // Bytes this process has sent to the others so far.
+  uint64_t bytesSent() const
+  {
+    return m_bytesSent;
+  }
+
  private:
   // Every process's band to its owner, then the bands to rank 0, of
   // `unit`-byte pixels.
@@ -55,6 +61,7 @@ class DepthCompositor
   uint32_t m_height;
   std::vector<size_t> m_bandBegin; // first pixel of each rank's band, + end
   std::vector<int> m_nearestRank;  // per pixel of this process's band
+  mutable uint64_t m_bytesSent{0};
 };
 
 } // namespace prism::mpi

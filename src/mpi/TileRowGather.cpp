@@ -11,7 +11,8 @@ std::vector<unsigned char> gatherTileRows(MPI_Comm communicator,
     uint32_t width,
     uint32_t height,
     size_t bytesPerPixel,
-    uint32_t tileSize)
+    uint32_t tileSize,
+    uint64_t &bytesSent)
 {
   int rank = 0, ranks = 1;
   MPI_Comm_rank(communicator, &rank);
@@ -34,6 +35,7 @@ std::vector<unsigned char> gatherTileRows(MPI_Comm communicator,
   }
 
   std::vector<unsigned char> packed(rank == 0 ? rowBytes * height : 0);
+  bytesSent += rank == 0 ? 0 : uint64_t(counts[rank]);
   MPI_Gatherv(mine.data(),
       counts[rank],
       MPI_BYTE,

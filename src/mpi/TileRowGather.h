@@ -20,13 +20,15 @@ inline int ownerOfRow(uint32_t y, uint32_t tileSize, int ranks)
 
 // Collective over `communicator`: `local` holds this process's width x height
 // pixels of `bytesPerPixel` bytes, correct in the rows it owns. Rank 0 gets
-// the assembled image, the others an empty vector. Throws std::length_error
-// when a channel is too large for MPI's int counts.
+// the assembled image, the others an empty vector; `bytesSent` grows by what
+// this process sent. Throws std::length_error when a channel is too large
+// for MPI's int counts.
 std::vector<unsigned char> gatherTileRows(MPI_Comm communicator,
     const unsigned char *local,
     uint32_t width,
     uint32_t height,
     size_t bytesPerPixel,
-    uint32_t tileSize);
+    uint32_t tileSize,
+    uint64_t &bytesSent);
 
 } // namespace prism::mpi

@@ -110,6 +110,7 @@ struct Render
   Image image;
   float bounds[6]{};
   bool boundsFound{false};
+  uint64_t bytesSent{0}; // the frame's mpiBytesSent (prism_mpi only)
 };
 
 Render renderBoxes(ANARIDevice device,
@@ -144,6 +145,13 @@ Render renderBoxes(ANARIDevice device,
       ANARI_FLOAT32_BOX3,
       result.bounds,
       sizeof(result.bounds),
+      ANARI_WAIT);
+  anariGetProperty(device,
+      frame,
+      "mpiBytesSent",
+      ANARI_UINT64,
+      &result.bytesSent,
+      sizeof(result.bytesSent),
       ANARI_WAIT);
   anariRelease(device, frame);
   anariRelease(device, renderer);
@@ -256,6 +264,16 @@ void compositeOn(MPI_Comm communicator, uint32_t seed, const std::string &label)
       MPI_Comm comm = communicator;
       const Render composited =
           renderBoxes(mpi.device, boxesOf(owners, rank), eye, "raycast", &comm);
+      // Rank 0 sends every other band its fragments (RGBA and depth, 20
+      // bytes) and its normal and albedo (12 bytes each), and gathers.
+      const uint64_t band0 = uint64_t(kSize / ranks) * kSize;
+      const uint64_t expected =
+          (uint64_t(kSize) * kSize - band0) * (20 + 12 + 12);
+      if (rank == 0) {
+        check(composited.bytesSent == expected,
+            label + ": rank 0 sent " + std::to_string(composited.bytesSent)
+                + " bytes, expected " + std::to_string(expected));
+      }
       if (rank == 0)
         checkComposite(composited,
             owners,
