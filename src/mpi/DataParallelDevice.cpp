@@ -1,6 +1,7 @@
 #include "DataParallelDevice.h"
 
 #include "DepthCompositor.h"
+#include "PoliteWait.h"
 #include "TileRowGather.h"
 
 #include "frame/Frame.h"
@@ -393,6 +394,7 @@ void DataParallelDevice::renderComposited(
   frame.keepDepth(true);
   Device::renderFrame(handle);
   const FrameBuffers &local = frame.linearPixels();
+  politeBarrier(communicator);
   DepthCompositor compositor(communicator, state.width, state.height);
   const CompositedImage image = compositor.composite(local.color, local.depth);
   const bool rankZero = !image.color.empty();
@@ -446,6 +448,7 @@ void DataParallelDevice::renderReplicated(
   frame.keepDepth(false);
   Device::renderFrame(handle);
   frame.ready(ANARI_WAIT);
+  politeBarrier(communicator);
   std::map<std::string, MappedChannel> assembled;
   for (const char *name : kChannelNames) {
     const ANARIDataType type = frame.channelType(name);

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <numeric>
 #include <stdexcept>
 
 namespace prism::mpi {
@@ -127,10 +126,13 @@ CompositedImage DepthCompositor::composite(
     for (int r = 0; r < m_ranks; r++)
       perRank[r] = fragment(r, p);
     // Front to back; equal depths go to the lower rank.
-    std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-      return perRank[a].depth < perRank[b].depth;
-    });
+    // Insertion sort: stable, and no allocation for a handful of ranks.
+    for (int r = 0; r < m_ranks; r++) {
+      int i = r;
+      for (; i > 0 && perRank[order[i - 1]].depth > perRank[r].depth; i--)
+        order[i] = order[i - 1];
+      order[i] = r;
+    }
     m_nearestRank[p] = order[0];
     // The "under" operator on premultiplied color (what prism's renderers
     // write). Background (infinite depth) is the same on every process, so

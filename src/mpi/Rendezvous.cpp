@@ -1,10 +1,10 @@
 #include "Rendezvous.h"
+#include "PoliteWait.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
-#include <thread>
 
 namespace prism::mpi {
 namespace {
@@ -30,24 +30,6 @@ struct Verdict
   uint64_t attempt{0};
   char problem[2048]{};
 };
-
-using Clock = std::chrono::steady_clock;
-
-// Polls `request` until it completes (true) or `deadline` passes (false);
-// sleeps between polls, so a process waiting for slower ones leaves its core
-// to them.
-bool waitUntil(MPI_Request &request, Clock::time_point deadline, bool forever)
-{
-  for (;;) {
-    int done = 0;
-    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
-    if (done)
-      return true;
-    if (!forever && Clock::now() >= deadline)
-      return false;
-    std::this_thread::sleep_for(std::chrono::microseconds(100));
-  }
-}
 
 // Cancels a receive that timed out; false when its message had arrived
 // meanwhile (the receive then completed and its buffer holds the message).

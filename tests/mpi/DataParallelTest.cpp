@@ -1,7 +1,7 @@
 // The prism_mpi device under mpirun: `data_parallel_test SCENARIO`, run by
 // ctest with 1, 2 and 4 processes. Each scenario compares rank 0's image with
 // the plain prism device rendering the whole scene in one process.
-#include "BoxesScene.h"
+#include "BoxGrid.h"
 #include "StatusRecorder.h"
 
 #include <mpi.h>
@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-using namespace prism::mpi_test;
+using namespace prism::scenes;
 
 namespace {
 

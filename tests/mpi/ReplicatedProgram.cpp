@@ -4,14 +4,14 @@
 // it with ANARI_LIBRARY=prism_mpi and PRISM_MPI_MODE=replicated under
 // `mpirun -np 1/2/4`; only rank 0's image is defined, so the other ranks
 // check just the tile rows they rendered themselves.
-#include "BoxesScene.h"
+#include "BoxGrid.h"
 
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
 
-using namespace prism::mpi_test;
+using namespace prism::scenes;
 
 namespace {
 

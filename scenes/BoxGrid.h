@@ -1,6 +1,8 @@
-// The paper's test scene: a 4x4x4 grid of boxes, each owned by one process
-// of a random but reproducible interleaving, rendered through the public
-// C API only (so the same code drives prism and prism_mpi).
+// The data-parallel paper's test scene: a grid of boxes (4x4x4 unless
+// asked), each owned by one process of a random but reproducible
+// interleaving, built through the public C API only (so the same code
+// drives prism and prism_mpi). Header-only: the MPI tests and benchmark use
+// it without the scenes library.
 #pragma once
 
 #include <anari/anari.h>
@@ -13,15 +15,17 @@
 #include <string>
 #include <vector>
 
-namespace prism::mpi_test {
+namespace prism::scenes {
 
 constexpr int kBoxesPerSide = 4;
-constexpr int kBoxCount = kBoxesPerSide * kBoxesPerSide * kBoxesPerSide;
 
-// Which of `processes` owns each box: a shuffle seeded by `seed`, dealt out
-// in turn, so every process holds a scattered, near-equal share.
-inline std::vector<int> boxOwners(int processes, uint32_t seed)
+// Which of `processes` owns each of the side^3 boxes: a shuffle seeded by
+// `seed`, dealt out in turn, so every process holds a scattered, near-equal
+// share.
+inline std::vector<int> boxOwners(
+    int processes, uint32_t seed, int side = kBoxesPerSide)
 {
+  const int kBoxCount = side * side * side;
   std::vector<int> order(kBoxCount);
   for (int i = 0; i < kBoxCount; i++)
     order[i] = i;
@@ -40,17 +44,20 @@ inline std::vector<int> boxOwners(int processes, uint32_t seed)
 inline std::vector<int> boxesOf(const std::vector<int> &owners, int process)
 {
   std::vector<int> boxes;
-  for (int i = 0; i < kBoxCount; i++) {
+  for (int i = 0; i < int(owners.size()); i++) {
     if (process < 0 || owners[i] == process)
       boxes.push_back(i);
   }
   return boxes;
 }
 
-// One triangle geometry holding `boxes`, each with its own color (a
+// One triangle geometry holding `boxes` of a side^3 grid (unit spacing,
+// centered on x = `offsetX`, y = z = 0), each with its own color (a
 // primitive attribute), in a surface with a matte material reading it.
-inline ANARIWorld newBoxesWorld(
-    ANARIDevice device, const std::vector<int> &boxes)
+inline ANARIWorld newBoxesWorld(ANARIDevice device,
+    const std::vector<int> &boxes,
+    int side = kBoxesPerSide,
+    float offsetX = 0.f)
 {
   std::vector<float> positions;
   std::vector<uint32_t> indices;
@@ -62,8 +69,10 @@ inline ANARIWorld newBoxesWorld(
       {0, 4, 6, 2},
       {1, 3, 7, 5}};
   for (int box : boxes) {
-    const int gx = box % 4, gy = (box / 4) % 4, gz = box / 16;
-    const float center[3] = {gx - 1.5f, gy - 1.5f, gz - 1.5f};
+    const int gx = box % side, gy = (box / side) % side,
+              gz = box / (side * side);
+    const float middle = float(side - 1) / 2.f;
+    const float center[3] = {offsetX + (gx - middle), gy - middle, gz - middle};
     const float half = 0.3f;
     const uint32_t first = uint32_t(positions.size() / 3);
     for (int corner = 0; corner < 8; corner++) {
@@ -71,9 +80,10 @@ inline ANARIWorld newBoxesWorld(
       positions.push_back(center[1] + (corner & 2 ? half : -half));
       positions.push_back(center[2] + (corner & 4 ? half : -half));
     }
-    const float color[4] = {0.2f + 0.8f * float(gx) / 3.f,
-        0.2f + 0.8f * float(gy) / 3.f,
-        0.2f + 0.8f * float(gz) / 3.f,
+    const float last = float(std::max(side - 1, 1));
+    const float color[4] = {0.2f + 0.8f * float(gx) / last,
+        0.2f + 0.8f * float(gy) / last,
+        0.2f + 0.8f * float(gz) / last,
         1.f};
     for (const auto &face : faces) {
       const uint32_t quad[6] = {0, 1, 2, 0, 2, 3};
@@ -235,4 +245,4 @@ inline Image readFrame(ANARIDevice device, ANARIFrame frame)
   return image;
 }
 
-} // namespace prism::mpi_test
+} // namespace prism::scenes
