@@ -246,12 +246,18 @@ void checkComposite(const Render &composited,
 
 // Every process renders its share of the boxes on `communicator`; the
 // communicator's rank 0 checks the result, for two views in turn.
-void compositeOn(MPI_Comm communicator, uint32_t seed, const std::string &label)
+// The boxes are dealt to the first `holders` ranks (all when 0); the others'
+// worlds are empty.
+void compositeOn(MPI_Comm communicator,
+    uint32_t seed,
+    const std::string &label,
+    int holders = 0)
 {
   int rank = 0, ranks = 1;
   MPI_Comm_rank(communicator, &rank);
   MPI_Comm_size(communicator, &ranks);
-  const std::vector<int> owners = boxOwners(ranks, seed);
+  const std::vector<int> owners =
+      boxOwners(holders > 0 ? holders : ranks, seed);
   Status status;
   {
     Device mpi("prism_mpi", status);
@@ -288,6 +294,9 @@ void compositeOn(MPI_Comm communicator, uint32_t seed, const std::string &label)
 void scenarioComposite()
 {
   compositeOn(MPI_COMM_WORLD, 7, "composite");
+  const int ranks = worldRankAndSize().second;
+  if (ranks > 1)
+    compositeOn(MPI_COMM_WORLD, 8, "composite, last rank empty", ranks - 1);
 }
 
 // Two groups of processes render different scenes at once, each on its own
