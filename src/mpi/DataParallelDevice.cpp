@@ -375,6 +375,15 @@ try {
   }
   state->width = frame->width();
   state->height = frame->height();
+  if (frame->renderer()->denoise() && !state->denoiseWarned) {
+    state->denoiseWarned = true;
+    reportStatus(handle,
+        ANARI_FRAME,
+        ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_OPERATION,
+        "anariRenderFrame: the renderer's 'denoise' is not applied to the"
+        " image rank 0 assembles from several processes");
+  }
   if (m_mode == RenderMode::Composite)
     renderComposited(handle, *frame, *state, communicator);
   else

@@ -75,6 +75,7 @@ class DataParallelDevice : public prism::Device
     uint32_t width{0};
     uint32_t height{0};
     uint64_t bytesSent{0}; // by this process in the last collective render
+    bool denoiseWarned{false};
     std::map<std::string, MappedChannel> assembled; // rank 0 only
   };
 

@@ -35,14 +35,16 @@ void check(bool ok, const std::string &what)
 class Status
 {
  public:
-  std::vector<std::string> take()
+  // The messages of `worst` severity or worse (errors by default).
+  std::vector<std::string> take(
+      ANARIStatusSeverity worst = ANARI_SEVERITY_ERROR)
   {
-    std::vector<std::string> errors;
+    std::vector<std::string> messages;
     for (const StatusMessage &m : m_recorder.take()) {
-      if (m.severity <= ANARI_SEVERITY_ERROR)
-        errors.push_back(m.text);
+      if (m.severity <= worst)
+        messages.push_back(m.text);
     }
-    return errors;
+    return messages;
   }
   StatusRecorder m_recorder;
 };
@@ -487,6 +489,30 @@ void scenarioParameters()
       renderBoxes(mpi.device, boxesOf(owners, 0), kEyeB, "raycast", &comm);
   checkComposite(render, owners, kEyeB, "after bad parameters");
   check(status.take().empty(), "rendering reports nothing");
+
+  // A denoising renderer: rank 0's assembled image is not denoised, which
+  // is said once per frame.
+  ANARIWorld world = newBoxesWorld(mpi.device, boxesOf(owners, 0));
+  ANARICamera camera = newCamera(mpi.device, kEyeA, 1.f);
+  ANARIRenderer renderer = newRenderer(mpi.device, "raycast");
+  const bool denoise = true;
+  anariSetParameter(mpi.device, renderer, "denoise", ANARI_BOOL, &denoise);
+  anariCommitParameters(mpi.device, renderer);
+  ANARIFrame denoised =
+      newFrame(mpi.device, world, camera, renderer, kSize, kSize);
+  for (int i = 0; i < 2; i++) {
+    anariRenderFrame(mpi.device, denoised);
+    anariFrameReady(mpi.device, denoised, ANARI_WAIT);
+  }
+  const std::vector<std::string> warnings = status.take(ANARI_SEVERITY_WARNING);
+  check(
+      warnings.size() == 1
+          && warnings[0].find("'denoise' is not applied") != std::string::npos,
+      "a denoising renderer is warned about once");
+  anariRelease(mpi.device, denoised);
+  anariRelease(mpi.device, renderer);
+  anariRelease(mpi.device, camera);
+  anariRelease(mpi.device, world);
 }
 
 } // namespace
