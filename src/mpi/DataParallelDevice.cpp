@@ -232,15 +232,8 @@ int DataParallelDevice::getProperty(ANARIObject object,
     uint64_t size,
     ANARIWaitMask mask)
 {
-  if (name && std::string(name) == "mpiBytesSent" && type == ANARI_UINT64 && mem
-      && size >= sizeof(uint64_t)) {
-    std::lock_guard lock(m_stateMutex);
-    auto it = m_frames.find(object);
-    if (it != m_frames.end() && lookup(object)) {
-      std::memcpy(mem, &it->second.bytesSent, sizeof(uint64_t));
-      return 1;
-    }
-  }
+  if (int answered = getFrameProperty(object, name, type, mem, size))
+    return answered;
   const int found = Device::getProperty(object, name, type, mem, size, mask);
   const bool worldBounds = m_session.usable() && (mask & ANARI_WAIT) && name
                            && std::string(name) == "bounds"
@@ -258,6 +251,36 @@ int DataParallelDevice::getProperty(ANARIObject object,
   } catch (...) {
     return found;
   }
+}
+
+int DataParallelDevice::getFrameProperty(ANARIObject object,
+    const char *name,
+    ANARIDataType type,
+    void *mem,
+    uint64_t size)
+{
+  const std::string property = name ? name : "";
+  std::lock_guard lock(m_stateMutex);
+  auto it = m_frames.find(object);
+  if (it == m_frames.end() || !lookup(object) || !mem)
+    return 0;
+  if (property == "mpiBytesSent" && type == ANARI_UINT64
+      && size >= sizeof(uint64_t)) {
+    std::memcpy(mem, &it->second.bytesSent, sizeof(uint64_t));
+    return 1;
+  }
+  if ((property == "mpiRank" || property == "mpiSize") && type == ANARI_INT32
+      && size >= sizeof(int32_t) && m_session.usable()) {
+    int value = 0;
+    if (property == "mpiRank")
+      MPI_Comm_rank(it->second.communicator.committed, &value);
+    else
+      MPI_Comm_size(it->second.communicator.committed, &value);
+    const int32_t answer = value;
+    std::memcpy(mem, &answer, sizeof(answer));
+    return 1;
+  }
+  return 0;
 }
 
 const void *DataParallelDevice::frameBufferMap(ANARIFrame frame,

@@ -95,6 +95,13 @@ class DataParallelDevice : public prism::Device
       Frame &frame,
       FrameState &state,
       MPI_Comm communicator);
+  // The frame properties this device adds (mpiBytesSent, mpiRank,
+  // mpiSize); 0 when `name` is none of them.
+  int getFrameProperty(ANARIObject object,
+      const char *name,
+      ANARIDataType type,
+      void *mem,
+      uint64_t size);
   bool collectiveWorldBounds(
       ANARIObject world, bool foundLocally, float bounds[6]);
 
