@@ -88,7 +88,9 @@ void DataParallelDevice::setTimeout(ANARIDataType type, const void *mem)
     std::string message =
         "device: parameter 'mpiTimeout' must be a FLOAT32"
         " or FLOAT64 number of seconds, 0 or more (got ";
-    message.append(anari::toString(type)).append("); it stays ");
+    message.append(std::isnan(seconds) ? std::string(anari::toString(type))
+                                       : std::to_string(seconds));
+    message.append("); it stays ");
     message.append(std::to_string(m_timeoutSeconds));
     reportBadDeviceParameter(message);
     return;
@@ -194,6 +196,22 @@ void DataParallelDevice::commitParameters(ANARIObject object)
       communicator->committed = communicator->staged;
   }
   Device::commitParameters(object);
+}
+
+void DataParallelDevice::release(ANARIObject object)
+{
+  if (object == (ANARIObject)this_device()) {
+    Device::release(object); // may delete this device: nothing after it
+    return;
+  }
+  Device::release(object);
+  // The application's last reference is gone: so is what this device kept
+  // for the frame or world (an assembled image can be large).
+  if (!lookup(object)) {
+    std::lock_guard lock(m_stateMutex);
+    m_frames.erase(object);
+    m_worlds.erase(object);
+  }
 }
 
 bool DataParallelDevice::collectiveWorldBounds(

@@ -40,6 +40,7 @@ class DataParallelDevice : public prism::Device
   void unsetParameter(ANARIObject object, const char *name) override;
   void unsetAllParameters(ANARIObject object) override;
   void commitParameters(ANARIObject object) override;
+  void release(ANARIObject object) override;
   int getProperty(ANARIObject object,
       const char *name,
       ANARIDataType type,
