@@ -435,6 +435,12 @@ try {
       ANARI_SEVERITY_ERROR,
       ANARI_STATUS_UNKNOWN_ERROR,
       std::string("anariRenderFrame: ") + e.what());
+} catch (...) {
+  reportStatus(handle,
+      ANARI_FRAME,
+      ANARI_SEVERITY_ERROR,
+      ANARI_STATUS_UNKNOWN_ERROR,
+      "anariRenderFrame: failed for an unknown reason");
 }
 
 void DataParallelDevice::renderComposited(

@@ -58,10 +58,11 @@ Rendezvous::~Rendezvous()
   MPI_Finalized(&finalized);
   if (finalized)
     return;
+  forgetSentMessages();
   for (PendingSend &pending : m_pendingSends) {
-    if (pending.request != MPI_REQUEST_NULL)
-      MPI_Request_free(&pending.request);
-    (void)pending.bytes.release(); // MPI may still read it: never freed
+    // Never received (its receiver gave up): MPI may still read the buffer.
+    MPI_Request_free(&pending.request);
+    (void)pending.bytes.release();
   }
 }
 
