@@ -246,6 +246,50 @@ void checkComposite(const Render &composited,
       label + ": world bounds are the union over every rank");
 }
 
+// A frame with channel.color alone still composites by depth (the device
+// keeps the depth buffer without the channel): rank 0's color equals the
+// single-process color.
+void compositeColorOnly(ANARIDevice device,
+    const std::vector<int> &owners,
+    int rank,
+    MPI_Comm communicator,
+    const std::string &label)
+{
+  ANARIWorld world = newBoxesWorld(device, boxesOf(owners, rank));
+  ANARICamera camera = newCamera(device, kEyeB, 1.f);
+  ANARIRenderer renderer = newRenderer(device, "raycast");
+  ANARIFrame frame = newFrame(device, world, camera, renderer, kSize, kSize);
+  for (const char *channel :
+      {"channel.depth", "channel.normal", "channel.albedo"})
+    anariUnsetParameter(device, frame, channel);
+  anariSetParameter(
+      device, frame, "mpiCommunicator", ANARI_VOID_POINTER, &communicator);
+  anariCommitParameters(device, frame);
+  anariRenderFrame(device, frame);
+  anariFrameReady(device, frame, ANARI_WAIT);
+  uint32_t width = 0, height = 0;
+  ANARIDataType type = ANARI_UNKNOWN;
+  const float *color = (const float *)anariMapFrame(
+      device, frame, "channel.color", &width, &height, &type);
+  if (rank == 0) {
+    Status status;
+    Device prism("prism", status);
+    const Render whole = renderBoxes(
+        prism.device, boxesOf(owners, -1), kEyeB, "raycast", nullptr);
+    const std::vector<float> &want = whole.image.color;
+    check(color && type == ANARI_FLOAT32_VEC4 && width == kSize
+              && height == kSize && want.size() == size_t(kSize) * kSize * 4
+              && std::memcmp(color, want.data(), want.size() * sizeof(float))
+                     == 0,
+        label + ": a color-only frame composites to the single-process color");
+  }
+  anariUnmapFrame(device, frame, "channel.color");
+  anariRelease(device, frame);
+  anariRelease(device, renderer);
+  anariRelease(device, camera);
+  anariRelease(device, world);
+}
+
 // Every process renders its share of the boxes on `communicator`; the
 // communicator's rank 0 checks the result, for two views in turn.
 // The boxes are dealt to the first `holders` ranks (all when 0); the others'
@@ -288,6 +332,7 @@ void compositeOn(MPI_Comm communicator,
             eye,
             label + (eye == kEyeA ? " view A" : " view B"));
     }
+    compositeColorOnly(mpi.device, owners, rank, communicator, label);
   }
   for (const std::string &e : status.take())
     check(false, label + ": unexpected error: " + e);
