@@ -5,7 +5,7 @@
 //
 //   mpirun -np N prism-bench-mpi [--mode composite|replicated]
 //       [--scaling strong|weak] [--renderer raycast|pathtracer]
-//       [--size PIXELS] [--side BOXES] [--frames N]
+//       [--size PIXELS] [--side BOXES] [--frames N] [--threads N]
 #include "BoxGrid.h"
 
 #include <mpi.h>
@@ -29,6 +29,7 @@ struct Options
   uint32_t size = 512;
   int side = 8;
   int frames = 5;
+  int threads = 0; // per process; 0: every hardware thread
 };
 
 bool parse(int argc, char **argv, Options &o)
@@ -45,6 +46,8 @@ bool parse(int argc, char **argv, Options &o)
       o.size = uint32_t(std::max(1, std::atoi(value.c_str())));
     else if (key == "--side")
       o.side = std::max(1, std::atoi(value.c_str()));
+    else if (key == "--threads")
+      o.threads = std::max(0, std::atoi(value.c_str()));
     else if (key == "--frames")
       o.frames = std::max(1, std::atoi(value.c_str()));
     else
@@ -78,6 +81,8 @@ int main(int argc, char **argv)
     MPI_Abort(MPI_COMM_WORLD, 1);
   }
   anariSetParameter(device, device, "mode", ANARI_STRING, o.mode.c_str());
+  const int32_t threads = o.threads;
+  anariSetParameter(device, device, "numThreads", ANARI_INT32, &threads);
 
   // Strong: one grid, split over the processes (composite) or whole on
   // every one (replicated). Weak (composite only, where each process's data
@@ -136,12 +141,14 @@ int main(int argc, char **argv)
   MPI_Reduce(&bytes, &totalBytes, 1, MPI_UINT64_T, MPI_SUM, 0, MPI_COMM_WORLD);
   if (rank == 0) {
     std::printf(
-        "mode %s scaling %s renderer %s ranks %d size %u boxes/rank %d: "
+        "mode %s scaling %s renderer %s ranks %d threads/rank %s size %u "
+        "boxes/rank %d: "
         "median frame %.2f ms, %.2f MB sent per frame (all ranks)\n",
         o.mode.c_str(),
         o.scaling.c_str(),
         o.renderer.c_str(),
         ranks,
+        o.threads > 0 ? std::to_string(o.threads).c_str() : "all",
         o.size,
         weak || replicated ? o.side * o.side * o.side
                            : o.side * o.side * o.side / ranks,

@@ -98,6 +98,25 @@ void DataParallelDevice::setTimeout(ANARIDataType type, const void *mem)
   m_timeoutSeconds = seconds;
 }
 
+void DataParallelDevice::setThreads(ANARIDataType type, const void *mem)
+{
+  const int32_t threads = (type == ANARI_INT32 || type == ANARI_UINT32) && mem
+                              ? *(const int32_t *)mem
+                              : -1;
+  if (threads < 0) {
+    std::string message =
+        "device: parameter 'numThreads' must be an INT32 or UINT32 count, 0"
+        " (every hardware thread) or more (got ";
+    message.append((type == ANARI_INT32 || type == ANARI_UINT32) && mem
+                       ? std::to_string(threads)
+                       : std::string(anari::toString(type)));
+    message.append("); it is ignored");
+    reportBadDeviceParameter(message);
+    return;
+  }
+  taskPool().setThreads(threads);
+}
+
 ANARIFrame DataParallelDevice::newFrame()
 {
   ANARIFrame frame = Device::newFrame();
@@ -138,6 +157,10 @@ try {
   }
   if (object == (ANARIObject)this_device() && parameter == "mpiTimeout") {
     setTimeout(type, mem);
+    return;
+  }
+  if (object == (ANARIObject)this_device() && parameter == "numThreads") {
+    setThreads(type, mem);
     return;
   }
   if (parameter == "mpiCommunicator" && lookup(object)) {

@@ -83,6 +83,7 @@ class DataParallelDevice : public prism::Device
   void reportBadDeviceParameter(const std::string &message);
   void setMode(ANARIDataType type, const void *mem);
   void setTimeout(ANARIDataType type, const void *mem);
+  void setThreads(ANARIDataType type, const void *mem);
   // The parameter entry of a frame or world; NULL for other objects.
   CommunicatorParameter *communicatorOf(ANARIObject object);
   FrameDescriptor describe(Frame *frame, const FrameState &state) const;

@@ -531,6 +531,16 @@ void scenarioParameters()
       "an mpiCommunicator of another type is reported");
   anariRelease(mpi.device, frame);
 
+  const int32_t negativeThreads = -2;
+  anariSetParameter(
+      mpi.device, mpi.device, "numThreads", ANARI_INT32, &negativeThreads);
+  check(oneErrorMentioning(status, {"numThreads", "-2"}),
+      "a negative numThreads is reported");
+  // One thread per process from here on (the image must not change).
+  const int32_t oneThread = 1;
+  anariSetParameter(
+      mpi.device, mpi.device, "numThreads", ANARI_INT32, &oneThread);
+
   // The device still renders correctly after all that.
   const std::vector<int> owners = boxOwners(1, 5);
   const Render render =
