@@ -1,0 +1,217 @@
+#include "RenderSession.h"
+
+#include "AnariWorldBuilder.h"
+#include "ImageIO.h"
+
+#include <cmath>
+
+namespace prism::nsi {
+
+namespace {
+
+void onAnariStatus(const void *userData,
+    ANARIDevice,
+    ANARIObject,
+    ANARIDataType,
+    ANARIStatusSeverity severity,
+    ANARIStatusCode,
+    const char *message)
+{
+  // Only problems reach the NSI handler; ANARI's chatter stays out.
+  if (severity > ANARI_SEVERITY_WARNING || !message)
+    return;
+  const auto *report = static_cast<const ReportFunction *>(userData);
+  (*report)(severity == ANARI_SEVERITY_WARNING ? NSIErrWarning : NSIErrError,
+      std::string("ANARI: ") + message);
+}
+
+std::array<float, 3> cameraPoint(
+    const Matrix &m, std::array<double, 3> p, bool vector)
+{
+  auto q = vector ? transformVector(m, p) : transformPoint(m, p);
+  return {float(q[0]), float(q[1]), float(q[2])};
+}
+
+} // namespace
+
+RenderSession::RenderSession(ReportFunction report, Stopped stopped)
+    : m_report(std::move(report)), m_stopped(std::move(stopped))
+{}
+
+RenderSession::~RenderSession()
+{
+  stop();
+}
+
+void RenderSession::release()
+{
+  if (m_device) {
+    if (m_world)
+      anariRelease(m_device, m_world);
+    if (m_renderer)
+      anariRelease(m_device, m_renderer);
+    anariRelease(m_device, m_device);
+  }
+  if (m_library)
+    anariUnloadLibrary(m_library);
+  m_world = nullptr;
+  m_renderer = nullptr;
+  m_device = nullptr;
+  m_library = nullptr;
+}
+
+bool RenderSession::start(
+    const std::string &library, const ResolvedScene &scene)
+{
+  stop();
+  m_library = anariLoadLibrary(library.c_str(), onAnariStatus, &m_report);
+  if (!m_library) {
+    m_report(NSIErrError, "cannot load the ANARI library '" + library + "'");
+    return false;
+  }
+  m_device = anariNewDevice(m_library, "default");
+  if (!m_device) {
+    m_report(
+        NSIErrError, "ANARI library '" + library + "' has no default device");
+    release();
+    return false;
+  }
+  AnariWorld world = buildAnariWorld(m_device, scene, m_report);
+  m_world = world.world;
+  m_renderer = anariNewRenderer(m_device, "default");
+  const float black[4] = {0, 0, 0, 1};
+  anariSetParameter(
+      m_device, m_renderer, "background", ANARI_FLOAT32_VEC4, black);
+  anariSetParameter(m_device,
+      m_renderer,
+      "ambientColor",
+      ANARI_FLOAT32_VEC3,
+      world.ambientColor.data());
+  anariSetParameter(m_device,
+      m_renderer,
+      "ambientRadiance",
+      ANARI_FLOAT32,
+      &world.ambientRadiance);
+  anariCommitParameters(m_device, m_renderer);
+  m_cameras = scene.cameras;
+  if (m_cameras.empty())
+    m_report(NSIErrWarning,
+        "no camera with a screen hangs under .root; nothing is rendered");
+  m_stopRequested = false;
+  m_done = false;
+  m_thread = std::thread([this] { renderAll(); });
+  return true;
+}
+
+void RenderSession::wait()
+{
+  if (m_thread.joinable())
+    m_thread.join();
+}
+
+void RenderSession::stop()
+{
+  m_stopRequested = true;
+  wait();
+  release();
+}
+
+void RenderSession::renderAll()
+{
+  bool completed = true;
+  for (const CameraItem &item : m_cameras) {
+    const Framing framing =
+        frameCamera(item.orthographic, item.fov, item.screen);
+    ANARICamera camera = anariNewCamera(
+        m_device, item.orthographic ? "orthographic" : "perspective");
+    const auto position = cameraPoint(item.worldFromCamera, {0, 0, 0}, false);
+    const auto direction = cameraPoint(item.worldFromCamera, {0, 0, -1}, true);
+    const auto up = cameraPoint(item.worldFromCamera, {0, 1, 0}, true);
+    anariSetParameter(
+        m_device, camera, "position", ANARI_FLOAT32_VEC3, position.data());
+    anariSetParameter(
+        m_device, camera, "direction", ANARI_FLOAT32_VEC3, direction.data());
+    anariSetParameter(m_device, camera, "up", ANARI_FLOAT32_VEC3, up.data());
+    anariSetParameter(
+        m_device, camera, "aspect", ANARI_FLOAT32, &framing.aspect);
+    if (item.orthographic)
+      anariSetParameter(
+          m_device, camera, "height", ANARI_FLOAT32, &framing.height);
+    else
+      anariSetParameter(m_device, camera, "fovy", ANARI_FLOAT32, &framing.fovy);
+    anariSetParameter(m_device,
+        camera,
+        "imageRegion",
+        ANARI_FLOAT32_BOX2,
+        framing.imageRegion.data());
+    anariCommitParameters(m_device, camera);
+
+    ANARIFrame frame = anariNewFrame(m_device);
+    const uint32_t size[2] = {framing.frameWidth, framing.frameHeight};
+    anariSetParameter(m_device, frame, "size", ANARI_UINT32_VEC2, size);
+    const ANARIDataType colorType = ANARI_FLOAT32_VEC4;
+    anariSetParameter(
+        m_device, frame, "channel.color", ANARI_DATA_TYPE, &colorType);
+    const bool accumulate = true;
+    anariSetParameter(m_device, frame, "accumulation", ANARI_BOOL, &accumulate);
+    anariSetParameter(m_device, frame, "renderer", ANARI_RENDERER, &m_renderer);
+    anariSetParameter(m_device, frame, "camera", ANARI_CAMERA, &camera);
+    anariSetParameter(m_device, frame, "world", ANARI_WORLD, &m_world);
+    anariCommitParameters(m_device, frame);
+    anariRelease(m_device, camera);
+
+    for (int sample = 0; sample < item.oversampling; ++sample) {
+      if (m_stopRequested) {
+        completed = false;
+        break;
+      }
+      anariRenderFrame(m_device, frame);
+      anariFrameReady(m_device, frame, ANARI_WAIT);
+    }
+
+    uint32_t width = 0, height = 0;
+    ANARIDataType type = ANARI_UNKNOWN;
+    const auto *pixels = static_cast<const float *>(anariMapFrame(
+        m_device, frame, "channel.color", &width, &height, &type));
+    image::Image picture(width, height);
+    if (pixels && type == ANARI_FLOAT32_VEC4) {
+      for (size_t i = 0; i < picture.pixels.size(); ++i)
+        picture.pixels[i] = {pixels[4 * i],
+            pixels[4 * i + 1],
+            pixels[4 * i + 2],
+            pixels[4 * i + 3]};
+    }
+    anariUnmapFrame(m_device, frame, "channel.color");
+    anariRelease(m_device, frame);
+
+    for (const OutputItem &output : item.outputs) {
+      if (output.driverName == "idisplay" || output.driverName.empty())
+        continue;
+      if (output.variableName != "Ci")
+        m_report(NSIErrWarning,
+            "output layer '" + output.layerHandle + "': variable '"
+                + output.variableName
+                + "' is not supported; Ci written instead");
+      if (output.fileName.empty()) {
+        m_report(NSIErrWarning,
+            "output driver for layer '" + output.layerHandle
+                + "' has no imagefilename");
+        continue;
+      }
+      image::Image written = picture;
+      if (!output.withAlpha) {
+        for (auto &p : written.pixels)
+          p.a = 1.f;
+      }
+      auto status = image::write(output.fileName, written);
+      if (!status.ok())
+        m_report(NSIErrError,
+            "cannot write '" + output.fileName + "': " + status.error);
+    }
+  }
+  m_done = true;
+  if (m_stopped)
+    m_stopped(completed ? NSIRenderCompleted : NSIRenderAborted);
+}
+
+} // namespace prism::nsi

@@ -1,0 +1,73 @@
+// What the SceneResolver makes of a node graph: plain data in world terms,
+// ready to become ANARI objects. No ANARI types here.
+#pragma once
+
+#include "CameraFraming.h"
+#include "Matrix.h"
+#include "ShaderTable.h"
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace prism::nsi {
+
+// Triangles (one vertex per face-vertex, so face-varying data needs no
+// welding) or spheres, in object space.
+struct GeometryData
+{
+  bool spheres{false};
+  std::vector<float> positions; // xyz
+  std::vector<float> normals;   // xyz per position, or empty
+  std::vector<float> radii;     // spheres
+  std::vector<uint32_t> triangles;
+};
+
+// One geometry with one resolved shader, placed once or more.
+struct SurfaceItem
+{
+  std::string geometryHandle;
+  std::string shaderHandle; // empty: the default material
+  ShaderDescription shader;
+  bool visibleToCamera{true};
+  std::vector<Matrix> worldFromObject;
+};
+
+struct LightItem
+{
+  enum class Kind { Quad, Point, Ambient, Directional, Hdri };
+  Kind kind{Kind::Quad};
+  ShaderDescription shader;
+  std::array<float, 3> position{}, edge1{}, edge2{}, direction{0, 0, -1};
+  float radius{0};
+  float angularDiameter{0};
+  bool visibleToCamera{true};
+};
+
+struct OutputItem
+{
+  std::string layerHandle, variableName, driverName, fileName;
+  bool withAlpha{false};
+};
+
+struct CameraItem
+{
+  std::string handle;
+  bool orthographic{false};
+  double fov{35.0};
+  Matrix worldFromCamera{kIdentity};
+  ScreenSettings screen;
+  int oversampling{1};
+  std::vector<OutputItem> outputs;
+};
+
+struct ResolvedScene
+{
+  std::map<std::string, GeometryData> geometries; // by node handle
+  std::vector<SurfaceItem> surfaces;
+  std::vector<LightItem> lights;
+  std::vector<CameraItem> cameras;
+};
+
+} // namespace prism::nsi

@@ -1,0 +1,366 @@
+#include "SceneResolver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <set>
+
+namespace prism::nsi {
+
+namespace {
+
+// Deeper chains than this are taken to be a mistake, not a scene.
+constexpr int kMaxDepth = 256;
+
+// An `attributes` node met on the way to a geometry; level 0 is nearest.
+struct AttributesOnPath
+{
+  const Node *node;
+  int level;
+};
+
+class Resolver
+{
+ public:
+  Resolver(const Graph &graph,
+      const ReportFunction &report,
+      const std::function<std::string(const std::string &)> &expandPath)
+      : m_graph(graph), m_report(report), m_expandPath(expandPath)
+  {}
+
+  ResolvedScene run()
+  {
+    visit(NSI_SCENE_ROOT, kIdentity, {}, 0);
+    return std::move(m_scene);
+  }
+
+ private:
+  void warnOnce(const std::string &message)
+  {
+    if (m_warned.insert(message).second)
+      m_report(NSIErrWarning, message);
+  }
+
+  Matrix localMatrix(const Node &node)
+  {
+    const Value *v = node.attribute("transformationmatrix");
+    if (!v)
+      return kIdentity;
+    const auto n = v->numbers();
+    if (n.size() < 16) {
+      warnOnce("transformationmatrix without 16 numbers; identity used");
+      return kIdentity;
+    }
+    Matrix m;
+    for (int i = 0; i < 16; ++i)
+      m[i] = n[i];
+    return m;
+  }
+
+  void visit(const std::string &handle,
+      const Matrix &worldFromParent,
+      std::vector<AttributesOnPath> attributes,
+      int depth)
+  {
+    const Node *node = m_graph.find(handle);
+    if (!node)
+      return;
+    if (depth > kMaxDepth) {
+      warnOnce("transform chain deeper than 256 at '" + handle + "'; cut");
+      return;
+    }
+    Matrix world = worldFromParent;
+    if (node->type == "transform")
+      world = compose(localMatrix(*node), worldFromParent);
+    // Attributes nearer the geometry get a lower level.
+    for (auto &a : attributes)
+      ++a.level;
+    for (const Input *input : node->inputsOf("geometryattributes")) {
+      if (const Node *a = m_graph.find(input->from))
+        attributes.push_back({a, 0});
+    }
+
+    const std::string &type = node->type;
+    if (type == "root" || type == "transform") {
+      for (const Input *input : node->inputsOf("objects"))
+        visit(input->from, world, attributes, depth + 1);
+    } else if (type == "mesh" || type == "particles") {
+      geometry(handle, *node, world, attributes);
+    } else if (type == "perspectivecamera" || type == "orthographiccamera") {
+      camera(handle, *node, world);
+    } else if (type == "environment") {
+      environment(handle, *node, world, attributes);
+    } else {
+      warnOnce("'" + type + "' nodes are not supported yet ('" + handle
+               + "' is not rendered)");
+    }
+  }
+
+  // The highest priority wins, then the nearest, then the last connected.
+  const Node *resolveShader(const std::vector<AttributesOnPath> &attributes,
+      std::string &shaderHandle)
+  {
+    const Node *best = nullptr;
+    int bestPriority = 0, bestLevel = 0;
+    for (auto &a : attributes) {
+      for (const Input *input : a.node->inputsOf("surfaceshader")) {
+        const Node *shader = m_graph.find(input->from);
+        if (!shader)
+          continue;
+        const bool better =
+            !best || input->priority > bestPriority
+            || (input->priority == bestPriority && a.level <= bestLevel);
+        if (better) {
+          best = shader;
+          shaderHandle = input->from;
+          bestPriority = input->priority;
+          bestLevel = a.level;
+        }
+      }
+    }
+    return best;
+  }
+
+  // An int attribute resolved like the shader; nullopt when none is set.
+  std::optional<int> resolveInt(
+      const std::vector<AttributesOnPath> &attributes, const std::string &name)
+  {
+    std::optional<int> result;
+    double bestPriority = 0;
+    int bestLevel = 0;
+    for (auto &a : attributes) {
+      const Value *v = a.node->attribute(name);
+      if (!v)
+        continue;
+      const Value *p = a.node->attribute(name + ".priority");
+      const double priority = p ? p->number(0) : 0;
+      if (!result || priority > bestPriority
+          || (priority == bestPriority && a.level <= bestLevel)) {
+        result = int(v->number(1));
+        bestPriority = priority;
+        bestLevel = a.level;
+      }
+    }
+    return result;
+  }
+
+  static std::array<float, 3> toFloat(const std::array<double, 3> &v)
+  {
+    return {float(v[0]), float(v[1]), float(v[2])};
+  }
+
+  void geometry(const std::string &handle,
+      const Node &node,
+      const Matrix &world,
+      const std::vector<AttributesOnPath> &attributes)
+  {
+    if (resolveInt(attributes, "visibility").value_or(1) == 0)
+      return;
+    const bool cameraSees =
+        resolveInt(attributes, "visibility.camera").value_or(1) != 0;
+    auto built = m_scene.geometries.find(handle);
+    if (built == m_scene.geometries.end()) {
+      if (m_failed.count(handle))
+        return;
+      auto data = node.type == "mesh" ? buildMesh(handle, node, m_report)
+                                      : buildParticles(handle, node, m_report);
+      if (!data) {
+        m_failed.insert(handle);
+        return;
+      }
+      built = m_scene.geometries.emplace(handle, std::move(*data)).first;
+    }
+    const GeometryData &data = built->second;
+
+    std::string shaderHandle;
+    const Node *shaderNode = resolveShader(attributes, shaderHandle);
+    ShaderDescription shader;
+    if (shaderNode) {
+      shader = describeShader(*shaderNode);
+      if (!shader.recognised)
+        warnOnce("shader '" + shaderHandle + "' ('" + shader.shaderName
+                 + "') is not recognised; a grey matte is used");
+    }
+    if (shader.kind == ShaderDescription::Kind::Emitter
+        && light(data, world, shader, cameraSees))
+      return;
+    if (shader.kind == ShaderDescription::Kind::Emitter) {
+      // Other emitting geometry glows: an emissive surface.
+      shader.emissive = {shader.color[0] * shader.intensity,
+          shader.color[1] * shader.intensity,
+          shader.color[2] * shader.intensity};
+      shader.color = {0, 0, 0};
+    }
+    const std::string key =
+        handle + '\n' + shaderHandle + '\n' + (cameraSees ? "1" : "0");
+    auto [it, added] = m_surfaceIndex.emplace(key, m_scene.surfaces.size());
+    if (added) {
+      SurfaceItem item;
+      item.geometryHandle = handle;
+      item.shaderHandle = shaderHandle;
+      item.shader = shader;
+      item.visibleToCamera = cameraSees;
+      m_scene.surfaces.push_back(std::move(item));
+    }
+    m_scene.surfaces[it->second].worldFromObject.push_back(world);
+  }
+
+  // One planar quad or one particle with an emitter is an ANARI light.
+  bool light(const GeometryData &data,
+      const Matrix &world,
+      const ShaderDescription &shader,
+      bool cameraSees)
+  {
+    auto point = [&](size_t i) {
+      return transformPoint(world,
+          {data.positions[3 * i],
+              data.positions[3 * i + 1],
+              data.positions[3 * i + 2]});
+    };
+    LightItem light;
+    light.shader = shader;
+    light.visibleToCamera = cameraSees;
+    if (!data.spheres && data.positions.size() == 12
+        && data.triangles.size() == 6) {
+      const auto v0 = point(0), v1 = point(1), v3 = point(3);
+      light.kind = LightItem::Kind::Quad;
+      light.position = toFloat(v0);
+      light.edge1 = toFloat({v3[0] - v0[0], v3[1] - v0[1], v3[2] - v0[2]});
+      light.edge2 = toFloat({v1[0] - v0[0], v1[1] - v0[1], v1[2] - v0[2]});
+    } else if (data.spheres && data.radii.size() == 1) {
+      light.kind = LightItem::Kind::Point;
+      light.position = toFloat(point(0));
+      light.radius = data.radii[0];
+    } else {
+      return false;
+    }
+    m_scene.lights.push_back(light);
+    return true;
+  }
+
+  void environment(const std::string &handle,
+      const Node &node,
+      const Matrix &world,
+      const std::vector<AttributesOnPath> &attributes)
+  {
+    std::string shaderHandle;
+    const Node *shaderNode = resolveShader(attributes, shaderHandle);
+    if (!shaderNode) {
+      warnOnce("environment '" + handle + "' has no shader; ignored");
+      return;
+    }
+    LightItem light;
+    light.shader = describeShader(*shaderNode);
+    light.visibleToCamera =
+        resolveInt(attributes, "visibility.camera").value_or(1) != 0;
+    const Value *angle = node.attribute("angle");
+    const double degrees = angle ? angle->number(360) : 360;
+    using Kind = ShaderDescription::Kind;
+    if (degrees < 360 || light.shader.kind == Kind::DistantLight) {
+      light.kind = LightItem::Kind::Directional;
+      light.direction = toFloat(transformVector(world, {0, 0, -1}));
+      light.angularDiameter = float(degrees * M_PI / 180);
+    } else if (!light.shader.image.empty()) {
+      light.kind = LightItem::Kind::Hdri;
+      light.shader.image = m_expandPath(light.shader.image);
+      light.direction = toFloat(transformVector(world, {0, 0, -1}));
+      light.edge1 = toFloat(transformVector(world, {0, 1, 0})); // up
+    } else {
+      light.kind = LightItem::Kind::Ambient;
+    }
+    m_scene.lights.push_back(light);
+  }
+
+  std::vector<double> numbers(const Node &node, const char *name)
+  {
+    const Value *v = node.attribute(name);
+    return v ? v->numbers() : std::vector<double>{};
+  }
+
+  void camera(const std::string &handle, const Node &node, const Matrix &world)
+  {
+    CameraItem item;
+    item.handle = handle;
+    item.orthographic = node.type == "orthographiccamera";
+    item.worldFromCamera = world;
+    if (const Value *fov = node.attribute("fov"))
+      item.fov = fov->number(35);
+    const auto screens = node.inputsOf("screens");
+    if (screens.empty()) {
+      warnOnce("camera '" + handle + "' has no screen; nothing to render");
+      return;
+    }
+    if (screens.size() > 1)
+      warnOnce(
+          "camera '" + handle + "' has several screens; the first is used");
+    const Node *screen = m_graph.find(screens.front()->from);
+    if (!screen)
+      return;
+    const auto resolution = numbers(*screen, "resolution");
+    if (resolution.size() >= 2 && resolution[0] >= 1 && resolution[1] >= 1
+        && resolution[0] <= 65536 && resolution[1] <= 65536) {
+      item.screen.width = uint32_t(resolution[0]);
+      item.screen.height = uint32_t(resolution[1]);
+    } else if (!resolution.empty()) {
+      warnOnce("screen '" + screens.front()->from
+               + "': bad 'resolution'; 640x480 used");
+    }
+    const auto window = numbers(*screen, "screenwindow");
+    if (window.size() == 4) {
+      item.screen.hasWindow = true;
+      item.screen.window = {window[0], window[1], window[2], window[3]};
+    }
+    const auto crop = numbers(*screen, "crop");
+    if (crop.size() == 4)
+      item.screen.crop = {crop[0], crop[1], crop[2], crop[3]};
+    const auto aspect = numbers(*screen, "pixelaspectratio");
+    if (aspect.size() == 1 && aspect[0] > 0)
+      item.screen.pixelAspectRatio = aspect[0];
+    const auto oversampling = numbers(*screen, "oversampling");
+    if (!oversampling.empty())
+      item.oversampling = int(std::clamp(oversampling[0], 1.0, 4096.0));
+
+    for (const Input *layerInput : screen->inputsOf("outputlayers")) {
+      const Node *layer = m_graph.find(layerInput->from);
+      if (!layer)
+        continue;
+      const Value *variable = layer->attribute("variablename");
+      const Value *alpha = layer->attribute("withalpha");
+      for (const Input *driverInput : layer->inputsOf("outputdrivers")) {
+        const Node *driver = m_graph.find(driverInput->from);
+        if (!driver)
+          continue;
+        OutputItem output;
+        output.layerHandle = layerInput->from;
+        output.variableName = variable ? variable->string("Ci") : "Ci";
+        output.withAlpha = alpha && alpha->number(0) != 0;
+        const Value *name = driver->attribute("drivername");
+        const Value *file = driver->attribute("imagefilename");
+        output.driverName = name ? name->string() : "";
+        output.fileName = m_expandPath(file ? file->string() : "");
+        item.outputs.push_back(output);
+      }
+    }
+    m_scene.cameras.push_back(std::move(item));
+  }
+
+  const Graph &m_graph;
+  const ReportFunction &m_report;
+  const std::function<std::string(const std::string &)> &m_expandPath;
+  ResolvedScene m_scene;
+  std::map<std::string, size_t> m_surfaceIndex;
+  std::set<std::string> m_failed;
+  std::set<std::string> m_warned;
+};
+
+} // namespace
+
+ResolvedScene resolveScene(const Graph &graph,
+    const ReportFunction &report,
+    const std::function<std::string(const std::string &)> &expandPath)
+{
+  return Resolver(graph, report, expandPath).run();
+}
+
+} // namespace prism::nsi
