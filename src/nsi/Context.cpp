@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <sstream>
 
 namespace prism::nsi {
 
@@ -49,6 +50,13 @@ Context::Context(NSIContext_t id, const ParameterList &params)
     if (params.find("streamcompression"))
       report(NSIErrWarning,
           "NSIBegin: stream compression is not supported; writing plain text");
+    // "apistream" here makes included streams inline into the written one.
+    std::string types = params.string("executeprocedurals", "");
+    for (char &c : types)
+      c = c == ',' ? ' ' : c;
+    std::istringstream names(types);
+    for (std::string name; names >> name;)
+      m_executedTypes.insert(name);
     m_writer = std::make_unique<StreamWriter>(target);
     if (!m_writer->ok()) {
       report(NSIErrError, "NSIBegin: cannot write the stream '" + target + "'");
@@ -146,9 +154,9 @@ void Context::disconnect(const std::string &from,
 
 void Context::evaluate(const ParameterList &params)
 {
-  if (m_writer)
-    return m_writer->statement("Evaluate", {}, params);
   const std::string type = params.string("type", "");
+  if (m_writer && !m_executedTypes.count(type))
+    return m_writer->statement("Evaluate", {}, params);
   if (type == "apistream") {
     const std::string fileName = params.string("filename", "");
     if (fileName.empty()) {

@@ -64,6 +64,8 @@ class Context
   std::unique_ptr<StreamWriter> m_writer; // set for `type apistream`
   std::unique_ptr<RenderSession> m_render;
   std::set<std::string> m_openStreams; // includes being read, against cycles
+  // Evaluate types a stream-writing context runs rather than records.
+  std::set<std::string> m_executedTypes;
 };
 
 // Prints to stderr with the level, as NSI's default handler does.

@@ -263,15 +263,16 @@ void StreamReader::read(const std::string &text)
     }
     std::vector<std::string> operands;
     bool ok = true;
+    // Peek first: a missing operand must not swallow the next keyword.
     for (size_t i = 0; i < operandCount && ok; ++i) {
-      Token t = tokens.next();
-      ok = t.kind == Kind::String;
-      operands.push_back(t.text);
+      ok = tokens.peek().kind == Kind::String;
+      if (ok)
+        operands.push_back(tokens.next().text);
     }
     double time = 0;
     if (ok && hasTime) {
-      Token t = tokens.next();
-      ok = t.kind == Kind::Number && parseNumber(t.text, time);
+      ok = tokens.peek().kind == Kind::Number
+           && parseNumber(tokens.next().text, time);
     }
     if (!ok) {
       problem(keyword.line, keyword.text + " is missing its operands");
