@@ -1,0 +1,328 @@
+// Scenes rendered through libnsi on the prism device, checked by pixels:
+// the facts file's Example 1, and the camera-framing scene whose lit pixels
+// are predicted from NSI's fov / screenwindow / crop formulas.
+#include "NsiTestSupport.h"
+
+#include "ImageIO.h"
+
+#include <cmath>
+
+namespace {
+
+using prism::image::Image;
+
+class Render : public NsiTest
+{
+ protected:
+  Image readImage(const std::string &file)
+  {
+    auto result = prism::image::read(file);
+    EXPECT_TRUE(result.ok()) << file << ": " << result.error;
+    return result.image;
+  }
+  // Luminance of the pixel in column x, row y counted from the TOP.
+  static float value(const Image &image, uint32_t x, uint32_t yFromTop)
+  {
+    const auto &p = image.at(x, image.height - 1 - yFromTop);
+    return (p.r + p.g + p.b) / 3.f;
+  }
+};
+
+// Example 1 at 64x48 (the facts file's text otherwise unchanged).
+const char *kExample1 = R"(# Floor lit by a hidden quad light, written as a PNG.
+Create "cam_xf" "transform"
+SetAttribute "cam_xf"
+  "transformationmatrix" "doublematrix" 1 [ 1 0 0 0  0 1 0 0  0 0 1 0  0 1 6 1 ]
+Connect "cam_xf" "" ".root" "objects"
+Create "cam" "perspectivecamera"
+SetAttribute "cam"
+  "fov" "float" 1 45
+Connect "cam" "" "cam_xf" "objects"
+Create "scr" "screen"
+SetAttribute "scr"
+  "resolution" "int[2]" 1 [ 64 48 ]
+  "oversampling" "int" 1 16
+Connect "scr" "" "cam" "screens"
+Create "beauty" "outputlayer"
+SetAttribute "beauty"
+  "variablename" "string" 1 "Ci"
+  "scalarformat" "string" 1 "uint8"
+Connect "beauty" "" "scr" "outputlayers"
+Create "file" "outputdriver"
+SetAttribute "file"
+  "drivername" "string" 1 "png"
+  "imagefilename" "string" 1 "${PRISM_NSI_OUT}/example1.png"
+Connect "file" "" "beauty" "outputdrivers"
+Create "floor" "mesh"
+SetAttribute "floor"
+  "nvertices" "int" 1 4
+  "P" "point" 4 [ -3 0 3  3 0 3  3 0 -3  -3 0 -3 ]
+Connect "floor" "" ".root" "objects"
+Create "grey" "shader"
+SetAttribute "grey"
+  "shaderfilename" "string" 1 "${DELIGHT}/osl/dlPrincipled.oso"
+  "i_color" "color" 1 [ 0.6 0.6 0.6 ]
+Create "floor_attr" "attributes"
+Connect "grey" "" "floor_attr" "surfaceshader"
+Connect "floor_attr" "" "floor" "geometryattributes"
+Create "lamp_xf" "transform"
+SetAttribute "lamp_xf"
+  "transformationmatrix" "doublematrix" 1 [ 1 0 0 0  0 1 0 0  0 0 1 0  0 3 0 1 ]
+Connect "lamp_xf" "" ".root" "objects"
+Create "lamp" "mesh"
+SetAttribute "lamp"
+  "nvertices" "int" 1 4
+  "P" "point" 4 [ -0.5 0 -0.5  0.5 0 -0.5  0.5 0 0.5  -0.5 0 0.5 ]
+Connect "lamp" "" "lamp_xf" "objects"
+Create "glow" "shader"
+SetAttribute "glow"
+  "shaderfilename" "string" 1 "emitter"
+  "power" "float" 1 100
+Create "lamp_attr" "attributes"
+SetAttribute "lamp_attr"
+  "visibility.camera" "int" 1 0
+Connect "glow" "" "lamp_attr" "surfaceshader"
+Connect "lamp_attr" "" "lamp_xf" "geometryattributes"
+RenderControl
+  "action" "string" 1 "start"
+RenderControl
+  "action" "string" 1 "wait"
+)";
+
+TEST_F(Render, Example1)
+{
+  const std::string scene = writeFile("example1.nsi", kExample1);
+  ::setenv("PRISM_NSI_OUT", m_dir.c_str(), 1);
+  NSIContext_t ctx = beginRender();
+  include(ctx, scene);
+  NSIEnd(ctx);
+  ::unsetenv("PRISM_NSI_OUT");
+  EXPECT_EQ(m_messages.problems(), "");
+  const Image image = readImage(path("example1.png"));
+  ASSERT_EQ(image.width, 64u);
+  ASSERT_EQ(image.height, 48u);
+  // Camera at height 1 looking along -Z with a 45 degree vertical fov
+  // (tan 22.5 = 0.414): the floor runs from its far edge (z = -3, row 30.4)
+  // to its near edge (z = 3, row 43.3); the point under the lamp (z = 0) is
+  // row 33.7. Above and below the floor, the black background.
+  const float floorUnderLamp = value(image, 32, 34);
+  EXPECT_GT(floorUnderLamp, 0.05f);
+  for (uint32_t row : {0u, 12u, 24u, 29u, 45u, 47u})
+    EXPECT_EQ(value(image, 32, row), 0.f) << "row " << row;
+  for (uint32_t row = 32; row <= 42; ++row)
+    EXPECT_GT(value(image, 32, row), 0.f) << "row " << row;
+  // The lamp (rows 3-6, columns 29-35) is hidden from the camera: black,
+  // though seen directly it would be far brighter than anything.
+  for (uint32_t y = 3; y <= 6; ++y)
+    for (uint32_t x = 29; x <= 35; ++x)
+      EXPECT_EQ(value(image, x, y), 0.f) << x << "," << y;
+  // Light falls off away from the lamp: the floor under it is brighter
+  // than the floor near the camera.
+  EXPECT_GT(floorUnderLamp, 2 * value(image, 32, 42));
+}
+
+struct FramingCase
+{
+  const char *name;
+  bool orthographic;
+  double fov;
+  bool hasWindow;
+  double window[4];        // left, bottom, right, top
+  double crop[4];          // x0, y0, x1, y1 (y down)
+  double squareX, squareY; // centre of the 2x2 square at distance 10
+};
+
+void PrintTo(const FramingCase &c, std::ostream *out)
+{
+  *out << c.name;
+}
+
+class Framing : public Render, public ::testing::WithParamInterface<FramingCase>
+{};
+
+// An NSI camera at the origin looking down -Z, a white 2x2 square at z = -10
+// lit by a uniform environment, rendered at 64x48.
+TEST_P(Framing, LightsThePredictedPixels)
+{
+  const FramingCase &c = GetParam();
+  const uint32_t width = 64, height = 48;
+  const std::string output = path("framing.png");
+
+  NSI::Context nsi;
+  NSI::ArgumentList begin;
+  begin.addPointer("errorhandler",
+      reinterpret_cast<const void *>(&MessageRecorder::handler));
+  begin.addPointer("errorhandlerdata", &m_messages);
+  ASSERT_TRUE(nsi.Begin(begin));
+  nsi.Create(
+      "cam", c.orthographic ? "orthographiccamera" : "perspectivecamera");
+  nsi.Connect("cam", "", NSI_SCENE_ROOT, "objects");
+  if (!c.orthographic)
+    nsi.SetAttribute("cam", NSI::ArgumentList().addFloat("fov", float(c.fov)));
+  nsi.Create("scr", "screen");
+  NSI::ArgumentList screen;
+  const int resolution[2] = {int(width), int(height)};
+  screen.add("resolution", NSITypeInteger, resolution, 1, 2, NSIParamIsArray);
+  screen.addInteger("oversampling", 4);
+  if (c.hasWindow)
+    screen.add("screenwindow", NSITypeDouble, c.window, 2, 2, NSIParamIsArray);
+  const float crop[4] = {
+      float(c.crop[0]), float(c.crop[1]), float(c.crop[2]), float(c.crop[3])};
+  screen.add("crop", NSITypeFloat, crop, 2, 2, NSIParamIsArray);
+  nsi.SetAttribute("scr", screen);
+  nsi.Connect("scr", "", "cam", "screens");
+  nsi.Create("layer", "outputlayer");
+  nsi.SetAttribute(
+      "layer", NSI::ArgumentList().addString("variablename", "Ci"));
+  nsi.Connect("layer", "", "scr", "outputlayers");
+  nsi.Create("driver", "outputdriver");
+  nsi.SetAttribute("driver",
+      NSI::ArgumentList()
+          .addString("drivername", "png")
+          .addString("imagefilename", output.c_str()));
+  nsi.Connect("driver", "", "layer", "outputdrivers");
+
+  nsi.Create("square", "mesh");
+  const float x = float(c.squareX), y = float(c.squareY);
+  const float points[12] = {x - 1,
+      y - 1,
+      -10,
+      x + 1,
+      y - 1,
+      -10,
+      x + 1,
+      y + 1,
+      -10,
+      x - 1,
+      y + 1,
+      -10};
+  nsi.SetAttribute("square",
+      NSI::ArgumentList()
+          .addInteger("nvertices", 4)
+          .add("P", NSITypePoint, points, 4));
+  nsi.Connect("square", "", NSI_SCENE_ROOT, "objects");
+  nsi.Create("white", "shader");
+  const float one[3] = {1, 1, 1};
+  nsi.SetAttribute("white",
+      NSI::ArgumentList()
+          .addString("shaderfilename", "lambert")
+          .add("i_color", NSITypeColor, one));
+  nsi.Create("white_attr", "attributes");
+  nsi.Connect("white", "", "white_attr", "surfaceshader");
+  nsi.Connect("white_attr", "", "square", "geometryattributes");
+
+  nsi.Create("sky", "environment");
+  nsi.Connect("sky", "", NSI_SCENE_ROOT, "objects");
+  nsi.Create("sky_shader", "shader");
+  nsi.SetAttribute("sky_shader",
+      NSI::ArgumentList()
+          .addString("shaderfilename", "environmentLight")
+          .addFloat("intensity", 1));
+  nsi.Create("sky_attr", "attributes");
+  nsi.Connect("sky_shader", "", "sky_attr", "surfaceshader");
+  nsi.Connect("sky_attr", "", "sky", "geometryattributes");
+
+  nsi.RenderControl(NSI::ArgumentList().addString("action", "start"));
+  nsi.RenderControl(NSI::ArgumentList().addString("action", "wait"));
+  nsi.End();
+  EXPECT_EQ(m_messages.problems(), "");
+
+  // The prediction, from the facts file's formulas: the window (default
+  // [-a, a] x [-1, 1]) spans [l s, r s] x [b s, t s] at distance 1, with
+  // s = tan(fov / 2) (1 for orthographic, the window then in camera units).
+  double l = -double(width) / height, r = -l, b = -1, t = 1;
+  if (c.hasWindow) {
+    l = c.window[0];
+    b = c.window[1];
+    r = c.window[2];
+    t = c.window[3];
+  }
+  const double s = c.orthographic ? 1.0 : std::tan(c.fov * M_PI / 360.0);
+  const double distance = c.orthographic ? 1.0 : 10.0;
+  // The crop keeps whole pixels: columns [cx0, cx1), rows [cy0, cy1) from the
+  // top.
+  const uint32_t cx0 = uint32_t(std::floor(c.crop[0] * width));
+  const uint32_t cx1 = uint32_t(std::ceil(c.crop[2] * width));
+  const uint32_t cy0 = uint32_t(std::floor(c.crop[1] * height));
+  const uint32_t cy1 = uint32_t(std::ceil(c.crop[3] * height));
+
+  const Image image = readImage(output);
+  ASSERT_EQ(image.width, cx1 - cx0);
+  ASSERT_EQ(image.height, cy1 - cy0);
+  int predictedLit = 0, interiorMismatches = 0, edgeMismatches = 0;
+  for (uint32_t row = cy0; row < cy1; ++row) {
+    for (uint32_t col = cx0; col < cx1; ++col) {
+      // Where the pixel centre's ray meets the square's plane.
+      const double wx = l + (col + 0.5) / width * (r - l);
+      const double wy = t - (row + 0.5) / height * (t - b);
+      const double px = wx * s * distance, py = wy * s * distance;
+      const bool inside = std::abs(px - x) < 1 && std::abs(py - y) < 1;
+      // The distance to the square's outline, in pixels.
+      const double pixelSize = (r - l) * s * distance / width;
+      const double edge = std::min(std::abs(std::abs(px - x) - 1),
+                              std::abs(std::abs(py - y) - 1))
+                          / pixelSize;
+      const bool lit = value(image, col - cx0, row - cy0) > 0.3f;
+      predictedLit += inside;
+      if (lit != inside)
+        (edge < 1.0 ? edgeMismatches : interiorMismatches)++;
+    }
+  }
+  EXPECT_GT(predictedLit, 20)
+      << "the square must be in the picture for the test to mean anything";
+  EXPECT_EQ(interiorMismatches, 0) << c.name;
+  // Edge pixels may go either way, but most agree.
+  EXPECT_LE(edgeMismatches, predictedLit / 3) << c.name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Nsi,
+    Framing,
+    ::testing::Values(
+        FramingCase{"centred", false, 30, false, {}, {0, 0, 1, 1}, 0, 0},
+        FramingCase{"narrow", false, 15, false, {}, {0, 0, 1, 1}, 0.3, -0.2},
+        FramingCase{"offset_square", false, 40, false, {}, {0, 0, 1, 1}, 2, 1},
+        FramingCase{"off_centre_window",
+            false,
+            30,
+            true,
+            {-0.5, -1, 1.5, 1},
+            {0, 0, 1, 1},
+            1,
+            0},
+        FramingCase{"tall_window",
+            false,
+            25,
+            true,
+            {-1, -0.5, 1, 1.5},
+            {0, 0, 1, 1},
+            0,
+            1},
+        FramingCase{
+            "crop", false, 30, false, {}, {0.25, 0.1, 0.8, 0.7}, 0.5, 0.5},
+        FramingCase{"crop_off_centre_window",
+            false,
+            30,
+            true,
+            {0, -1, 2, 1},
+            {0.3, 0.3, 1, 0.9},
+            3,
+            0},
+        FramingCase{"orthographic",
+            true,
+            0,
+            true,
+            {-3, -2, 3, 2},
+            {0, 0, 1, 1},
+            1,
+            -0.5},
+        FramingCase{"orthographic_crop",
+            true,
+            0,
+            true,
+            {-2, -3, 4, 1.5},
+            {0.2, 0.1, 0.9, 0.6},
+            1,
+            0}),
+    [](const auto &info) { return std::string(info.param.name); });
+
+} // namespace
