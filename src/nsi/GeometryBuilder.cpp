@@ -1,5 +1,7 @@
 #include "GeometryBuilder.h"
 
+#include "PolygonTriangulation.h"
+
 #include <cmath>
 
 namespace prism::nsi {
@@ -111,15 +113,19 @@ std::optional<GeometryData> buildMesh(
     }
   }
   size_t first = 0;
+  std::vector<std::array<double, 3>> corners;
   for (double nv : nvertices) {
     const size_t n = nv > 0 ? size_t(nv) : 0;
-    // A fan from the first vertex: right for convex polygons.
-    for (size_t i = 1; i + 1 < n; ++i) {
-      uint32_t a = uint32_t(first), b = uint32_t(first + i),
-               c = uint32_t(first + i + 1);
+    corners.clear();
+    for (size_t k = first; k < first + n; ++k)
+      corners.push_back({data.positions[3 * k],
+          data.positions[3 * k + 1],
+          data.positions[3 * k + 2]});
+    for (auto [a, b, c] : triangulatePolygon(corners)) {
       if (flip)
         std::swap(b, c);
-      data.triangles.insert(data.triangles.end(), {a, b, c});
+      data.triangles.insert(data.triangles.end(),
+          {uint32_t(first + a), uint32_t(first + b), uint32_t(first + c)});
     }
     first += n;
   }
