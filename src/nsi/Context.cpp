@@ -70,7 +70,8 @@ Context::Context(NSIContext_t id, const ParameterList &params)
 
 Context::~Context()
 {
-  m_render.reset(); // stops and joins before the graph goes
+  if (m_render)
+    m_render->stop(); // the render thread reports through this context
 }
 
 void Context::report(int level, const std::string &message) const
@@ -200,21 +201,31 @@ void Context::renderControl(const ParameterList &params)
   if (action == "start") {
     startRender(params);
   } else if (action == "wait") {
-    if (m_render)
-      m_render->wait();
+    finishRender(false);
   } else if (action == "synchronize") {
     // Without interactive updates yet, a synchronize renders the scene anew.
-    if (m_render)
-      m_render->stop();
+    finishRender(true);
     startRender(params);
   } else if (action == "stop") {
-    if (m_render)
-      m_render->stop();
+    finishRender(true);
   } else if (action == "suspend" || action == "resume") {
     report(NSIErrInfo, "NSIRenderControl: '" + action + "' is ignored");
   } else {
     report(NSIErrError, "NSIRenderControl: unknown action '" + action + "'");
   }
+}
+
+void Context::finishRender(bool stop)
+{
+  std::shared_ptr<RenderSession> render = m_render;
+  if (!render)
+    return;
+  mutex.unlock();
+  if (stop)
+    render->stop();
+  else
+    render->wait();
+  mutex.lock();
 }
 
 void Context::startRender(const ParameterList &params)
@@ -239,7 +250,7 @@ void Context::startRender(const ParameterList &params)
       callback(callbackData, id, status);
     };
   const ResolvedScene scene = resolveScene(m_graph, reporter(), expandPath);
-  m_render = std::make_unique<RenderSession>(reporter(), stopped);
+  m_render = std::make_shared<RenderSession>(reporter(), stopped);
   if (!m_render->start(m_anariLibrary, scene))
     m_render.reset();
 }

@@ -54,6 +54,9 @@ class Context
  private:
   void includeStream(const std::string &fileName);
   void startRender(const ParameterList &params);
+  // Waits for (or stops) the render without holding the context lock, so
+  // other threads and the stopped callback can use the context meanwhile.
+  void finishRender(bool stop);
 
   NSIContext_t m_id;
   bool m_ok{true};
@@ -62,7 +65,8 @@ class Context
   std::string m_anariLibrary{"prism"};
   Graph m_graph;
   std::unique_ptr<StreamWriter> m_writer; // set for `type apistream`
-  std::unique_ptr<RenderSession> m_render;
+  // Shared so a thread waiting without the lock keeps it alive.
+  std::shared_ptr<RenderSession> m_render;
   std::set<std::string> m_openStreams; // includes being read, against cycles
   // Evaluate types a stream-writing context runs rather than records.
   std::set<std::string> m_executedTypes;

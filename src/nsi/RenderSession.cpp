@@ -98,13 +98,14 @@ bool RenderSession::start(
     m_report(NSIErrWarning,
         "no camera with a screen hangs under .root; nothing is rendered");
   m_stopRequested = false;
-  m_done = false;
+  m_running = true;
   m_thread = std::thread([this] { renderAll(); });
   return true;
 }
 
 void RenderSession::wait()
 {
+  std::lock_guard lock(m_joinMutex);
   if (m_thread.joinable())
     m_thread.join();
 }
@@ -112,7 +113,9 @@ void RenderSession::wait()
 void RenderSession::stop()
 {
   m_stopRequested = true;
-  wait();
+  std::lock_guard lock(m_joinMutex);
+  if (m_thread.joinable())
+    m_thread.join();
   release();
 }
 
@@ -160,13 +163,18 @@ void RenderSession::renderAll()
     anariCommitParameters(m_device, frame);
     anariRelease(m_device, camera);
 
-    for (int sample = 0; sample < item.oversampling; ++sample) {
+    int samples = 0;
+    for (; samples < item.oversampling; ++samples) {
       if (m_stopRequested) {
         completed = false;
         break;
       }
       anariRenderFrame(m_device, frame);
       anariFrameReady(m_device, frame, ANARI_WAIT);
+    }
+    if (samples == 0) { // stopped before the first frame: nothing to write
+      anariRelease(m_device, frame);
+      break;
     }
 
     uint32_t width = 0, height = 0;
@@ -209,7 +217,7 @@ void RenderSession::renderAll()
             "cannot write '" + output.fileName + "': " + status.error);
     }
   }
-  m_done = true;
+  m_running = false;
   if (m_stopped)
     m_stopped(completed ? NSIRenderCompleted : NSIRenderAborted);
 }

@@ -10,6 +10,7 @@
 
 #include <atomic>
 #include <functional>
+#include <mutex>
 #include <string>
 #include <thread>
 
@@ -33,7 +34,7 @@ class RenderSession
   void stop();
   bool running() const
   {
-    return m_thread.joinable() && !m_done;
+    return m_running;
   }
 
  private:
@@ -48,8 +49,9 @@ class RenderSession
   ANARIRenderer m_renderer{nullptr};
   std::vector<CameraItem> m_cameras;
   std::atomic<bool> m_stopRequested{false};
-  std::atomic<bool> m_done{false};
+  std::atomic<bool> m_running{false}; // from start until the thread ends
   std::thread m_thread;
+  std::mutex m_joinMutex; // one thread joins (and releases) at a time
 };
 
 } // namespace prism::nsi

@@ -6,6 +6,7 @@
 #include "ImageIO.h"
 
 #include <cmath>
+#include <mutex>
 
 namespace {
 
@@ -119,6 +120,105 @@ TEST_F(Render, Example1)
   // Light falls off away from the lamp: the floor under it is brighter
   // than the floor near the camera.
   EXPECT_GT(floorUnderLamp, 2 * value(image, 32, 42));
+}
+
+// What the stopped callback saw.
+struct StopRecord
+{
+  std::mutex mutex;
+  std::vector<std::pair<NSIContext_t, int>> calls;
+
+  static void callback(void *data, NSIContext_t ctx, int status)
+  {
+    auto *self = static_cast<StopRecord *>(data);
+    std::lock_guard lock(self->mutex);
+    self->calls.emplace_back(ctx, status);
+  }
+};
+
+// A camera, screen and one PNG output; `oversampling` frames per render.
+void minimalScene(
+    NSIContext_t ctx, int size, int oversampling, const std::string &output)
+{
+  NSICreate(ctx, "cam", "perspectivecamera", 0, nullptr);
+  NSIConnect(ctx, "cam", "", NSI_SCENE_ROOT, "objects", 0, nullptr);
+  NSICreate(ctx, "scr", "screen", 0, nullptr);
+  NSI::ArgumentList screen;
+  const int resolution[2] = {size, size};
+  screen.add("resolution", NSITypeInteger, resolution, 1, 2, NSIParamIsArray);
+  screen.addInteger("oversampling", oversampling);
+  NSISetAttribute(ctx, "scr", screen.size(), screen.data());
+  NSIConnect(ctx, "scr", "", "cam", "screens", 0, nullptr);
+  NSICreate(ctx, "layer", "outputlayer", 0, nullptr);
+  NSIConnect(ctx, "layer", "", "scr", "outputlayers", 0, nullptr);
+  NSICreate(ctx, "driver", "outputdriver", 0, nullptr);
+  NSI::ArgumentList driver;
+  driver.addString("drivername", "png")
+      .addString("imagefilename", output.c_str());
+  NSISetAttribute(ctx, "driver", driver.size(), driver.data());
+  NSIConnect(ctx, "driver", "", "layer", "outputdrivers", 0, nullptr);
+}
+
+void renderControl(
+    NSIContext_t ctx, const char *action, StopRecord *record = nullptr)
+{
+  NSI::ArgumentList args;
+  args.addString("action", action);
+  if (record) {
+    args.addPointer("stoppedcallback",
+        reinterpret_cast<const void *>(&StopRecord::callback));
+    args.addPointer("stoppedcallbackdata", record);
+  }
+  NSIRenderControl(ctx, args.size(), args.data());
+}
+
+TEST_F(Render, StoppedCallbackReportsCompletion)
+{
+  StopRecord record;
+  NSIContext_t ctx = beginRender();
+  minimalScene(ctx, 8, 2, path("done.png"));
+  renderControl(ctx, "start", &record);
+  renderControl(ctx, "wait");
+  {
+    std::lock_guard lock(record.mutex);
+    ASSERT_EQ(record.calls.size(), 1u);
+    EXPECT_EQ(record.calls[0].first, ctx);
+    EXPECT_EQ(record.calls[0].second, NSIRenderCompleted);
+  }
+  EXPECT_TRUE(std::filesystem::exists(path("done.png")));
+  // A second start after the first ended renders again.
+  renderControl(ctx, "start", &record);
+  renderControl(ctx, "wait");
+  NSIEnd(ctx);
+  EXPECT_EQ(record.calls.size(), 2u);
+  EXPECT_EQ(m_messages.problems(), "");
+}
+
+TEST_F(Render, StopAbortsALongRender)
+{
+  StopRecord record;
+  NSIContext_t ctx = beginRender();
+  // 4096 samples of 256x256: far longer than the test waits.
+  minimalScene(ctx, 256, 4096, path("stopped.png"));
+  renderControl(ctx, "start", &record);
+  renderControl(ctx, "start"); // while running: refused
+  EXPECT_TRUE(reportedOnce(m_messages, {"'start' while a render is running"}));
+  renderControl(ctx, "stop");
+  {
+    std::lock_guard lock(record.mutex);
+    ASSERT_EQ(record.calls.size(), 1u);
+    EXPECT_EQ(record.calls[0].second, NSIRenderAborted);
+  }
+  NSIEnd(ctx);
+}
+
+TEST_F(Render, EndWhileRenderingStopsCleanly)
+{
+  NSIContext_t ctx = beginRender();
+  minimalScene(ctx, 256, 4096, path("ended.png"));
+  renderControl(ctx, "start");
+  NSIEnd(ctx);
+  EXPECT_EQ(m_messages.problems(), "");
 }
 
 struct FramingCase
