@@ -1,7 +1,9 @@
 // nsi-render: reads ASCII NSI streams (plain or gzip) and renders them
 // through libnsi on an ANARI library (prism unless --library says otherwise).
 // The stream's own RenderControl calls start the render; a stream without
-// them is started and waited for here.
+// them is started and waited for here. With --write, nothing is rendered:
+// the calls the streams make are written to one ASCII stream (includes
+// inlined), which checks and normalises streams.
 #include <nsi.hpp>
 
 #include <cstdio>
@@ -26,10 +28,12 @@ void onMessage(void *, int level, int, const char *message)
 void usage(std::FILE *out)
 {
   std::fputs(
-      "usage: nsi-render [--library NAME] [--start] FILE.nsi...\n"
+      "usage: nsi-render [--library NAME] [--start] [--write OUT] FILE.nsi...\n"
       "  --library NAME  the ANARI library to render with (default: prism)\n"
       "  --start         start and wait for a render after reading the files\n"
-      "                  (for streams without RenderControl calls)\n",
+      "                  (for streams without RenderControl calls)\n"
+      "  --write OUT     render nothing: write the calls the files make to\n"
+      "                  the ASCII stream OUT (\"stdout\" for the terminal)\n",
       out);
 }
 
@@ -37,7 +41,7 @@ void usage(std::FILE *out)
 
 int main(int argc, char **argv)
 {
-  std::string library;
+  std::string library, writeTo;
   bool start = false;
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
@@ -47,6 +51,8 @@ int main(int argc, char **argv)
       return 0;
     } else if (arg == "--library" && i + 1 < argc) {
       library = argv[++i];
+    } else if (arg == "--write" && i + 1 < argc) {
+      writeTo = argv[++i];
     } else if (arg == "--start") {
       start = true;
     } else if (!arg.empty() && arg[0] == '-') {
@@ -65,6 +71,11 @@ int main(int argc, char **argv)
   begin.addPointer("errorhandler", reinterpret_cast<const void *>(&onMessage));
   if (!library.empty())
     begin.addString("anarilibrary", library.c_str());
+  if (!writeTo.empty()) {
+    begin.addString("type", "apistream")
+        .addString("streamfilename", writeTo.c_str())
+        .addString("executeprocedurals", "apistream");
+  }
   NSI::Context nsi;
   if (!nsi.Begin(begin)) {
     std::fputs("nsi-render: cannot begin an NSI context\n", stderr);
