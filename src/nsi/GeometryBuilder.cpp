@@ -8,6 +8,13 @@ namespace prism::nsi {
 
 namespace {
 
+// Counts and indices arrive as numbers of any type: anything that is not a
+// whole number of a sane size becomes -1 (rejected later as out of range).
+int64_t toIndex(double d)
+{
+  return d >= 0 && d < 1e15 && d == std::floor(d) ? int64_t(d) : -1;
+}
+
 std::vector<double> numbersOf(const Node &node, const char *name)
 {
   const Value *v = node.attribute(name);
@@ -23,7 +30,7 @@ std::optional<std::vector<int64_t>> indicesOf(
     return std::nullopt;
   std::vector<int64_t> out;
   for (double d : v->numbers())
-    out.push_back(int64_t(d));
+    out.push_back(toIndex(d));
   return out;
 }
 
@@ -46,8 +53,11 @@ std::optional<GeometryData> buildMesh(
   if (nvertices.empty())
     return fail("no 'nvertices'");
   size_t total = 0;
-  for (double n : nvertices)
-    total += n > 0 ? size_t(n) : 0;
+  for (double n : nvertices) {
+    if (toIndex(n) < 0)
+      return fail("'nvertices' holds " + std::to_string(n));
+    total += size_t(n);
+  }
   // One `nvertices` value with no others means one polygon.
   if (total != faceVertexCount)
     return fail("'nvertices' adds up to " + std::to_string(total)
@@ -115,7 +125,7 @@ std::optional<GeometryData> buildMesh(
   size_t first = 0;
   std::vector<std::array<double, 3>> corners;
   for (double nv : nvertices) {
-    const size_t n = nv > 0 ? size_t(nv) : 0;
+    const size_t n = size_t(toIndex(nv)); // checked above
     corners.clear();
     for (size_t k = first; k < first + n; ++k)
       corners.push_back({data.positions[3 * k],

@@ -12,6 +12,8 @@ namespace {
 
 // Deeper chains than this are taken to be a mistake, not a scene.
 constexpr int kMaxDepth = 256;
+// Frames past these sizes would not fit in memory; a typo, not a wish.
+constexpr double kMaxSide = 32768, kMaxPixels = double(1 << 26);
 
 // An `attributes` node met on the way to a geometry; level 0 is nearest.
 struct AttributesOnPath
@@ -286,6 +288,8 @@ class Resolver
     item.worldFromCamera = world;
     if (const Value *fov = node.attribute("fov"))
       item.fov = fov->number(35);
+    if (!std::isfinite(item.fov))
+      item.fov = 35;
     const auto screens = node.inputsOf("screens");
     if (screens.empty()) {
       warnOnce("camera '" + handle + "' has no screen; nothing to render");
@@ -299,7 +303,8 @@ class Resolver
       return;
     const auto resolution = numbers(*screen, "resolution");
     if (resolution.size() >= 2 && resolution[0] >= 1 && resolution[1] >= 1
-        && resolution[0] <= 65536 && resolution[1] <= 65536) {
+        && resolution[0] <= kMaxSide && resolution[1] <= kMaxSide
+        && resolution[0] * resolution[1] <= kMaxPixels) {
       item.screen.width = uint32_t(resolution[0]);
       item.screen.height = uint32_t(resolution[1]);
     } else if (!resolution.empty()) {
@@ -319,7 +324,9 @@ class Resolver
       item.screen.pixelAspectRatio = aspect[0];
     const auto oversampling = numbers(*screen, "oversampling");
     if (!oversampling.empty())
-      item.oversampling = int(std::clamp(oversampling[0], 1.0, 4096.0));
+      item.oversampling = std::isfinite(oversampling[0])
+                              ? int(std::clamp(oversampling[0], 1.0, 4096.0))
+                              : 1;
 
     for (const Input *layerInput : screen->inputsOf("outputlayers")) {
       const Node *layer = m_graph.find(layerInput->from);

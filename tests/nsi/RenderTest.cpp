@@ -221,6 +221,42 @@ TEST_F(Render, EndWhileRenderingStopsCleanly)
   EXPECT_EQ(m_messages.problems(), "");
 }
 
+TEST_F(Render, BadSceneDataIsReportedNotRendered)
+{
+  const std::string scene = writeFile("bad.nsi", R"(
+Create "cam" "perspectivecamera" Connect "cam" "" ".root" "objects"
+SetAttribute "cam" "fov" "float" 1 nan
+Create "scr" "screen" Connect "scr" "" "cam" "screens"
+SetAttribute "scr" "resolution" "int[2]" 1 [ 1000000 1000000 ]
+  "oversampling" "float" 1 nan
+Create "huge" "mesh" Connect "huge" "" ".root" "objects"
+SetAttribute "huge" "nvertices" "double" 1 1e300 "P" "point" 3 [ 0 0 0 1 0 0 0 1 0 ]
+Create "outside" "mesh" Connect "outside" "" ".root" "objects"
+SetAttribute "outside" "nvertices" "int" 1 3 "P" "point" 3 [ 0 0 0 1 0 0 0 1 0 ]
+  "P.indices" "int" 3 [ 0 1 7 ]
+Create "short" "mesh" Connect "short" "" ".root" "objects"
+SetAttribute "short" "nvertices" "int" 2 [ 3 3 ] "P" "point" 3 [ 0 0 0 1 0 0 0 1 0 ]
+Create "dust" "particles" Connect "dust" "" ".root" "objects"
+SetAttribute "dust" "P" "point" 2 [ 0 0 -5 1 0 -5 ] "width" "float" 3 [ 1 1 1 ]
+Create "knot" "curves" Connect "knot" "" ".root" "objects"
+RenderControl "action" "string" 1 "start"
+RenderControl "action" "string" 1 "wait"
+)");
+  NSIContext_t ctx = beginRender();
+  include(ctx, scene);
+  NSIEnd(ctx);
+  const std::string problems = m_messages.problems();
+  for (const char *expected : {"mesh 'huge': 'nvertices' holds",
+           "mesh 'outside': 'P.indices' holds 7, outside 'P'",
+           "mesh 'short': 'nvertices' adds up to 6 but there are 3",
+           "particles 'dust': 'width' count does not match 'P'",
+           "'curves' nodes are not supported yet",
+           "bad 'resolution'"})
+    EXPECT_NE(problems.find(expected), std::string::npos) << expected << "\n"
+                                                          << problems;
+  EXPECT_EQ(m_messages.problems(NSIErrError), "");
+}
+
 struct FramingCase
 {
   const char *name;
