@@ -2,6 +2,10 @@
 
 #include "AnariWorldBuilder.h"
 #include "ImageIO.h"
+#include "OutputChannels.h"
+
+#include <algorithm>
+#include <map>
 
 #include <cmath>
 
@@ -152,9 +156,26 @@ void RenderSession::renderAll()
     ANARIFrame frame = anariNewFrame(m_device);
     const uint32_t size[2] = {framing.frameWidth, framing.frameHeight};
     anariSetParameter(m_device, frame, "size", ANARI_UINT32_VEC2, size);
-    const ANARIDataType colorType = ANARI_FLOAT32_VEC4;
-    anariSetParameter(
-        m_device, frame, "channel.color", ANARI_DATA_TYPE, &colorType);
+    // The channels the layers ask for (unknown variables: black, warned).
+    std::vector<const FrameChannel *> channels{channelForVariable("Ci")};
+    anariSetParameter(m_device,
+        frame,
+        channels[0]->name,
+        ANARI_DATA_TYPE,
+        &channels[0]->type);
+    for (const OutputItem &output : item.outputs) {
+      const FrameChannel *channel = channelForVariable(output.variableName);
+      if (!channel) {
+        m_report(NSIErrWarning,
+            "output layer '" + output.layerHandle + "': variable '"
+                + output.variableName + "' has no ANARI channel; black");
+      } else if (std::find(channels.begin(), channels.end(), channel)
+                 == channels.end()) {
+        anariSetParameter(
+            m_device, frame, channel->name, ANARI_DATA_TYPE, &channel->type);
+        channels.push_back(channel);
+      }
+    }
     const bool accumulate = true;
     anariSetParameter(m_device, frame, "accumulation", ANARI_BOOL, &accumulate);
     anariSetParameter(m_device, frame, "renderer", ANARI_RENDERER, &m_renderer);
@@ -177,36 +198,24 @@ void RenderSession::renderAll()
       break;
     }
 
-    uint32_t width = 0, height = 0;
-    ANARIDataType type = ANARI_UNKNOWN;
-    const auto *pixels = static_cast<const float *>(anariMapFrame(
-        m_device, frame, "channel.color", &width, &height, &type));
-    image::Image picture(width, height);
-    if (pixels && type == ANARI_FLOAT32_VEC4) {
-      for (size_t i = 0; i < picture.pixels.size(); ++i)
-        picture.pixels[i] = {pixels[4 * i],
-            pixels[4 * i + 1],
-            pixels[4 * i + 2],
-            pixels[4 * i + 3]};
-    }
-    anariUnmapFrame(m_device, frame, "channel.color");
+    std::map<const FrameChannel *, image::Image> pictures;
+    for (const FrameChannel *channel : channels)
+      pictures[channel] = readFrameChannel(m_device, frame, *channel);
     anariRelease(m_device, frame);
 
     for (const OutputItem &output : item.outputs) {
       if (output.driverName == "idisplay" || output.driverName.empty())
         continue;
-      if (output.variableName != "Ci")
-        m_report(NSIErrWarning,
-            "output layer '" + output.layerHandle + "': variable '"
-                + output.variableName
-                + "' is not supported; Ci written instead");
       if (output.fileName.empty()) {
         m_report(NSIErrWarning,
             "output driver for layer '" + output.layerHandle
                 + "' has no imagefilename");
         continue;
       }
-      image::Image written = picture;
+      const FrameChannel *channel = channelForVariable(output.variableName);
+      image::Image written =
+          channel ? pictures.at(channel)
+                  : image::Image(framing.frameWidth, framing.frameHeight);
       if (!output.withAlpha) {
         for (auto &p : written.pixels)
           p.a = 1.f;

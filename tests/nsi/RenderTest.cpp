@@ -5,6 +5,7 @@
 
 #include "ImageIO.h"
 
+#include <algorithm>
 #include <cmath>
 #include <mutex>
 
@@ -255,6 +256,72 @@ RenderControl "action" "string" 1 "wait"
     EXPECT_NE(problems.find(expected), std::string::npos) << expected << "\n"
                                                           << problems;
   EXPECT_EQ(m_messages.problems(NSIErrError), "");
+}
+
+TEST_F(Render, OutputLayersWriteTheirChannels)
+{
+  // A white square facing the camera 10 units away, filling the middle.
+  std::string layers;
+  for (auto [variable, file] : {std::pair{"Ci", "color.exr"},
+           {"z", "depth.exr"},
+           {"N.world", "normal.exr"},
+           {"albedo", "albedo.pfm"},
+           {"mystery", "mystery.png"}}) {
+    layers += std::string("Create \"") + variable + "\" \"outputlayer\"\n"
+        + "SetAttribute \"" + variable + "\" \"variablename\" \"string\" 1 \""
+        + variable + "\"\n" + "Connect \"" + variable
+        + "\" \"\" \"scr\" \"outputlayers\"\n" + "Create \"" + file
+        + "\" \"outputdriver\"\n" + "SetAttribute \"" + file
+        + "\" \"drivername\" \"string\" 1 \"exr\" \"imagefilename\" "
+          "\"string\" 1 \"${PRISM_NSI_OUT}/"
+        + file + "\"\n" + "Connect \"" + file + "\" \"\" \"" + variable
+        + "\" \"outputdrivers\"\n";
+  }
+  const std::string scene =
+      writeFile("layers.nsi",
+          R"(Create "cam" "perspectivecamera" Connect "cam" "" ".root" "objects"
+SetAttribute "cam" "fov" "float" 1 30
+Create "scr" "screen" Connect "scr" "" "cam" "screens"
+SetAttribute "scr" "resolution" "int[2]" 1 [ 16 16 ] "oversampling" "int" 1 2
+Create "sq" "mesh" Connect "sq" "" ".root" "objects"
+SetAttribute "sq" "nvertices" "int" 1 4
+  "P" "point" 4 [ -1 -1 -10  1 -1 -10  1 1 -10  -1 1 -10 ]
+Create "white" "shader" SetAttribute "white" "shaderfilename" "string" 1 "lambert"
+  "i_color" "color" 1 [ 1 1 1 ]
+Create "attr" "attributes" Connect "white" "" "attr" "surfaceshader"
+Connect "attr" "" "sq" "geometryattributes"
+)" + layers + R"(RenderControl "action" "string" 1 "start"
+RenderControl "action" "string" 1 "wait"
+)");
+  ::setenv("PRISM_NSI_OUT", m_dir.c_str(), 1);
+  NSIContext_t ctx = beginRender();
+  include(ctx, scene);
+  NSIEnd(ctx);
+  ::unsetenv("PRISM_NSI_OUT");
+  const std::string problems = m_messages.problems();
+  EXPECT_NE(problems.find("variable 'mystery' has no ANARI channel"),
+      std::string::npos)
+      << problems;
+  EXPECT_EQ(std::count(problems.begin(), problems.end(), '\n'), 1) << problems;
+
+  // The middle pixels see the square's centre region, straight ahead.
+  const Image depth = readImage(path("depth.exr"));
+  const Image normal = readImage(path("normal.exr"));
+  const Image albedo = readImage(path("albedo.pfm"));
+  const Image mystery = readImage(path("mystery.png"));
+  ASSERT_EQ(depth.width, 16u);
+  ASSERT_EQ(normal.width, 16u);
+  ASSERT_EQ(albedo.width, 16u);
+  ASSERT_EQ(mystery.width, 16u);
+  const auto &d = depth.at(8, 8);
+  EXPECT_NEAR(d.r, 10.0f, 0.05f); // distance along a ray 2 degrees off axis
+  EXPECT_EQ(d.r, d.g);
+  EXPECT_TRUE(std::isinf(depth.at(0, 0).r))
+      << depth.at(0, 0).r; // the corner misses
+  EXPECT_NEAR(normal.at(8, 8).b, 1.0f, 1e-4f);
+  EXPECT_NEAR(normal.at(8, 8).r, 0.0f, 1e-4f);
+  EXPECT_NEAR(albedo.at(8, 8).g, 1.0f, 1e-4f);
+  EXPECT_EQ(mystery.at(8, 8).r, 0.f);
 }
 
 struct FramingCase
