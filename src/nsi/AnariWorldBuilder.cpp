@@ -209,14 +209,32 @@ AnariWorld buildAnariWorld(ANARIDevice device,
         device, group, "surface", newArray(device, ANARI_SURFACE, &surface, 1));
     anariCommitParameters(device, group);
     anariRelease(device, surface);
-    for (const Matrix &m : item.worldFromObject) {
-      float transform[16];
-      for (int i = 0; i < 16; ++i)
-        transform[i] = float(m[i]);
-      ANARIInstance instance = anariNewInstance(device, "transform");
+    for (const Placement &placement : item.worldFromObject) {
+      std::vector<float> transforms;
+      for (const Matrix &m : placement)
+        transforms.insert(transforms.end(), m.begin(), m.end());
+      const bool moves = placement.size() > 1;
+      ANARIInstance instance =
+          anariNewInstance(device, moves ? "motionTransform" : "transform");
       anariSetParameter(device, instance, "group", ANARI_GROUP, &group);
-      anariSetParameter(
-          device, instance, "transform", ANARI_FLOAT32_MAT4, transform);
+      if (moves) {
+        // Uniform over the shutter, which the camera maps to [0, 1].
+        setArray(device,
+            instance,
+            "motion.transform",
+            newArray(device,
+                ANARI_FLOAT32_MAT4,
+                transforms.data(),
+                placement.size()));
+        const float time[2] = {0.f, 1.f};
+        anariSetParameter(device, instance, "time", ANARI_FLOAT32_BOX1, time);
+      } else {
+        anariSetParameter(device,
+            instance,
+            "transform",
+            ANARI_FLOAT32_MAT4,
+            transforms.data());
+      }
       anariCommitParameters(device, instance);
       instances.push_back(instance);
     }

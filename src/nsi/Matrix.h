@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <vector>
 
 namespace prism::nsi {
 
@@ -9,6 +10,8 @@ namespace prism::nsi {
 // column-major FLOAT32_MAT4 holds the same 16 numbers in the same order.
 using Matrix = std::array<double, 16>;
 constexpr Matrix kIdentity{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+// One placement's matrix at each motion time (one entry when still).
+using Placement = std::vector<Matrix>;
 
 // p * m for a row vector p = (x, y, z, w).
 std::array<double, 3> transformPoint(

@@ -98,6 +98,7 @@ bool RenderSession::start(
       &world.ambientRadiance);
   anariCommitParameters(m_device, m_renderer);
   m_cameras = scene.cameras;
+  m_hasMotion = scene.hasMotion;
   if (m_cameras.empty())
     m_report(NSIErrWarning,
         "no camera with a screen hangs under .root; nothing is rendered");
@@ -146,6 +147,11 @@ void RenderSession::renderAll()
           m_device, camera, "height", ANARI_FLOAT32, &framing.height);
     else
       anariSetParameter(m_device, camera, "fovy", ANARI_FLOAT32, &framing.fovy);
+    if (m_hasMotion) {
+      const float shutter[2] = {0.f, 1.f}; // the motion samples' time range
+      anariSetParameter(
+          m_device, camera, "shutter", ANARI_FLOAT32_BOX1, shutter);
+    }
     anariSetParameter(m_device,
         camera,
         "imageRegion",

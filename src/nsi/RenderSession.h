@@ -48,6 +48,7 @@ class RenderSession
   ANARIWorld m_world{nullptr};
   ANARIRenderer m_renderer{nullptr};
   std::vector<CameraItem> m_cameras;
+  bool m_hasMotion{false};
   std::atomic<bool> m_stopRequested{false};
   std::atomic<bool> m_running{false}; // from start until the thread ends
   std::thread m_thread;

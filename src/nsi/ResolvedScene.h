@@ -31,7 +31,7 @@ struct SurfaceItem
   std::string shaderHandle; // empty: the default material
   ShaderDescription shader;
   bool visibleToCamera{true};
-  std::vector<Matrix> worldFromObject;
+  std::vector<Placement> worldFromObject;
 };
 
 struct LightItem
@@ -64,6 +64,9 @@ struct CameraItem
 
 struct ResolvedScene
 {
+  // Some placement moves: its matrices span the shutter, which ANARI sees
+  // as the time range [0, 1].
+  bool hasMotion{false};
   std::map<std::string, GeometryData> geometries; // by node handle
   std::vector<SurfaceItem> surfaces;
   std::vector<LightItem> lights;

@@ -12,6 +12,8 @@ namespace {
 
 // Deeper chains than this are taken to be a mistake, not a scene.
 constexpr int kMaxDepth = 256;
+// More samples than this along the shutter add nothing visible.
+constexpr size_t kMaxMotionSteps = 32;
 // Frames past these sizes would not fit in memory; a typo, not a wish.
 constexpr double kMaxSide = 32768, kMaxPixels = double(1 << 26);
 
@@ -33,7 +35,8 @@ class Resolver
 
   ResolvedScene run()
   {
-    visit(NSI_SCENE_ROOT, kIdentity, {}, 0);
+    m_times = motionTimes();
+    visit(NSI_SCENE_ROOT, {kIdentity}, {}, 0);
     return std::move(m_scene);
   }
 
@@ -44,12 +47,43 @@ class Resolver
       m_report(NSIErrWarning, message);
   }
 
-  Matrix localMatrix(const Node &node)
+  // The times at which moving transforms are sampled: uniform over the
+  // first camera's shutterrange, as many as the most samples any transform
+  // has; none (a still image) without a shutter or without samples.
+  std::vector<double> motionTimes()
   {
-    const Value *v = node.attribute("transformationmatrix");
-    if (!v)
-      return kIdentity;
-    const auto n = v->numbers();
+    double open = 0, close = 0;
+    for (auto &[handle, node] : m_graph.nodes()) {
+      if (node.type != "perspectivecamera" && node.type != "orthographiccamera")
+        continue;
+      const Value *range = node.attribute("shutterrange");
+      const auto n = range ? range->numbers() : std::vector<double>{};
+      if (n.size() == 2 && std::isfinite(n[0]) && std::isfinite(n[1])
+          && n[1] > n[0]) {
+        open = n[0];
+        close = n[1];
+        break;
+      }
+    }
+    size_t steps = 0;
+    for (auto &[handle, node] : m_graph.nodes()) {
+      auto it = node.attributes.find("transformationmatrix");
+      if (it != node.attributes.end() && !it->second.value)
+        steps = std::max(steps, it->second.samples.size());
+    }
+    if (close <= open || steps < 2)
+      return {};
+    steps = std::min<size_t>(steps, kMaxMotionSteps);
+    std::vector<double> times;
+    for (size_t k = 0; k < steps; ++k)
+      times.push_back(open + (close - open) * double(k) / double(steps - 1));
+    return times;
+  }
+
+  // A matrix from one attribute value; identity (warned) when malformed.
+  Matrix matrixOf(const Value &value)
+  {
+    const auto n = value.numbers();
     if (n.size() < 16) {
       warnOnce("transformationmatrix without 16 numbers; identity used");
       return kIdentity;
@@ -60,8 +94,41 @@ class Resolver
     return m;
   }
 
+  // The node's matrix at each of m_times, or once when it does not move.
+  Placement localMatrices(const Node &node)
+  {
+    auto it = node.attributes.find("transformationmatrix");
+    if (it == node.attributes.end())
+      return {kIdentity};
+    const Attribute &attribute = it->second;
+    if (attribute.value || attribute.samples.empty())
+      return {attribute.value ? matrixOf(*attribute.value) : kIdentity};
+    const auto &samples = attribute.samples;
+    if (samples.size() == 1 || m_times.size() < 2)
+      return {matrixOf(samples.begin()->second)};
+    // Linear in each element between the samples around t, held outside.
+    Placement out;
+    for (double t : m_times) {
+      auto after = samples.lower_bound(t);
+      if (after == samples.begin()) {
+        out.push_back(matrixOf(after->second));
+      } else if (after == samples.end()) {
+        out.push_back(matrixOf(std::prev(after)->second));
+      } else {
+        auto before = std::prev(after);
+        const double w = (t - before->first) / (after->first - before->first);
+        const Matrix a = matrixOf(before->second), b = matrixOf(after->second);
+        Matrix m;
+        for (int i = 0; i < 16; ++i)
+          m[i] = a[i] + w * (b[i] - a[i]);
+        out.push_back(m);
+      }
+    }
+    return out;
+  }
+
   void visit(const std::string &handle,
-      const Matrix &worldFromParent,
+      const Placement &worldFromParent,
       std::vector<AttributesOnPath> attributes,
       int depth)
   {
@@ -72,9 +139,16 @@ class Resolver
       warnOnce("transform chain deeper than 256 at '" + handle + "'; cut");
       return;
     }
-    Matrix world = worldFromParent;
-    if (node->type == "transform")
-      world = compose(localMatrix(*node), worldFromParent);
+    Placement world = worldFromParent;
+    if (node->type == "transform") {
+      const Placement local = localMatrices(*node);
+      world.resize(std::max(local.size(), worldFromParent.size()));
+      for (size_t k = 0; k < world.size(); ++k)
+        world[k] = compose(local[std::min(k, local.size() - 1)],
+            worldFromParent[std::min(k, worldFromParent.size() - 1)]);
+      if (world.size() > 1)
+        m_scene.hasMotion = true;
+    }
     // Attributes nearer the geometry get a lower level.
     for (auto &a : attributes)
       ++a.level;
@@ -154,7 +228,7 @@ class Resolver
 
   void geometry(const std::string &handle,
       const Node &node,
-      const Matrix &world,
+      const Placement &world,
       const std::vector<AttributesOnPath> &attributes)
   {
     if (resolveInt(attributes, "visibility").value_or(1) == 0)
@@ -185,7 +259,7 @@ class Resolver
                  + "') is not recognised; a grey matte is used");
     }
     if (shader.kind == ShaderDescription::Kind::Emitter
-        && light(data, world, shader, cameraSees))
+        && light(data, world.front(), shader, cameraSees))
       return;
     if (shader.kind == ShaderDescription::Kind::Emitter) {
       // Other emitting geometry glows: an emissive surface.
@@ -243,9 +317,10 @@ class Resolver
 
   void environment(const std::string &handle,
       const Node &node,
-      const Matrix &world,
+      const Placement &placement,
       const std::vector<AttributesOnPath> &attributes)
   {
+    const Matrix &world = placement.front(); // lights do not move yet
     std::string shaderHandle;
     const Node *shaderNode = resolveShader(attributes, shaderHandle);
     if (!shaderNode) {
@@ -280,8 +355,10 @@ class Resolver
     return v ? v->numbers() : std::vector<double>{};
   }
 
-  void camera(const std::string &handle, const Node &node, const Matrix &world)
+  void camera(
+      const std::string &handle, const Node &node, const Placement &placement)
   {
+    const Matrix &world = placement.front(); // the pose at shutter open
     CameraItem item;
     item.handle = handle;
     item.orthographic = node.type == "orthographiccamera";
@@ -359,6 +436,7 @@ class Resolver
   std::map<std::string, size_t> m_surfaceIndex;
   std::set<std::string> m_failed;
   std::set<std::string> m_warned;
+  std::vector<double> m_times;
 };
 
 } // namespace

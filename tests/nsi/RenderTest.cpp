@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <mutex>
 
 namespace {
@@ -322,6 +323,89 @@ RenderControl "action" "string" 1 "wait"
   EXPECT_NEAR(normal.at(8, 8).r, 0.0f, 1e-4f);
   EXPECT_NEAR(albedo.at(8, 8).g, 1.0f, 1e-4f);
   EXPECT_EQ(mystery.at(8, 8).r, 0.f);
+}
+
+// A white 2x2 square 10 units ahead moving from x = -2 to x = 2 (two
+// transform samples at t = 0 and 1), under a uniform environment, seen by a
+// camera with `shutter` (or none) at 64x16: the image, read back.
+Image movingSquare(NSIContext_t ctx, bool shutter, const std::string &output)
+{
+  std::string text =
+      R"(Create "cam" "perspectivecamera" Connect "cam" "" ".root" "objects"
+SetAttribute "cam" "fov" "float" 1 30
+Create "scr" "screen" Connect "scr" "" "cam" "screens"
+SetAttribute "scr" "resolution" "int[2]" 1 [ 64 16 ] "oversampling" "int" 1 256
+Create "layer" "outputlayer" Connect "layer" "" "scr" "outputlayers"
+Create "file" "outputdriver" Connect "file" "" "layer" "outputdrivers"
+Create "xf" "transform" Connect "xf" "" ".root" "objects"
+SetAttributeAtTime "xf" 0 "transformationmatrix" "doublematrix" 1 [ 1 0 0 0 0 1 0 0 0 0 1 0 -2 0 0 1 ]
+SetAttributeAtTime "xf" 1 "transformationmatrix" "doublematrix" 1 [ 1 0 0 0 0 1 0 0 0 0 1 0 2 0 0 1 ]
+Create "sq" "mesh" Connect "sq" "" "xf" "objects"
+SetAttribute "sq" "nvertices" "int" 1 4 "P" "point" 4 [ -1 -1 -10  1 -1 -10  1 1 -10  -1 1 -10 ]
+Create "white" "shader" SetAttribute "white" "shaderfilename" "string" 1 "lambert"
+  "i_color" "color" 1 [ 1 1 1 ]
+Create "attr" "attributes" Connect "white" "" "attr" "surfaceshader"
+Connect "attr" "" "sq" "geometryattributes"
+Create "sky" "environment" Connect "sky" "" ".root" "objects"
+Create "light" "shader" SetAttribute "light" "shaderfilename" "string" 1 "environmentLight"
+Create "sky_attr" "attributes" Connect "light" "" "sky_attr" "surfaceshader"
+Connect "sky_attr" "" "sky" "geometryattributes"
+)";
+  if (shutter)
+    text += "SetAttribute \"cam\" \"shutterrange\" \"double\" 2 [ 0 1 ]\n";
+  text += "SetAttribute \"file\" \"drivername\" \"string\" 1 \"exr\" \"imagefilename\" \"string\" 1 \"" + output
+      + "\"\nRenderControl \"action\" \"string\" 1 \"start\"\nRenderControl \"action\" \"string\" 1 \"wait\"\n";
+  const std::string file = output + ".nsi";
+  std::ofstream(file) << text;
+  NSI::ArgumentList args;
+  args.addString("type", "apistream").addString("filename", file.c_str());
+  NSIEvaluate(ctx, args.size(), args.data());
+  auto result = prism::image::read(output);
+  EXPECT_TRUE(result.ok()) << result.error;
+  return result.image;
+}
+
+TEST_F(Render, TransformSamplesBlurAcrossTheShutter)
+{
+  NSIContext_t ctx = beginRender();
+  const Image blurred = movingSquare(ctx, true, path("blurred.exr"));
+  NSIEnd(ctx);
+  ctx = beginRender();
+  const Image still = movingSquare(ctx, false, path("still.exr"));
+  NSIEnd(ctx);
+  EXPECT_EQ(m_messages.problems(), "");
+  ASSERT_EQ(blurred.width, 64u);
+  ASSERT_EQ(still.width, 64u);
+  // World x of a column's centre on the square's plane: the window is
+  // [-4, 4] wide (64 / 16), times tan(15 deg), at distance 10.
+  const double s = std::tan(15 * M_PI / 180);
+  auto worldX = [&](uint32_t col) {
+    return (-4 + 8 * (col + 0.5) / 64) * s * 10;
+  };
+  int checked = 0;
+  for (uint32_t col = 0; col < 64; ++col) {
+    const double x = worldX(col);
+    // The share of the shutter during which the square (centre -2 + 4t,
+    // half width 1) covers x.
+    const double covered =
+        std::max(0.0, std::min(x + 1, 2.0) - std::max(x - 1, -2.0)) / 4;
+    float blur = 0, plain = 0;
+    for (uint32_t row = 6; row < 10; ++row) {
+      blur += blurred.at(col, row).r / 4;
+      plain += still.at(col, row).r / 4;
+    }
+    // Pixels are a third of a unit wide: away from the ends of each ramp.
+    if (std::abs(std::abs(x) - 3) > 0.5 && std::abs(std::abs(x) - 1) > 0.5) {
+      EXPECT_NEAR(blur, covered, 0.12) << "column " << col << ", x " << x;
+      ++checked;
+    }
+    // Without a shutter the first sample holds: the square at x = -2.
+    if (std::abs(std::abs(x + 2) - 1) > 0.5) {
+      EXPECT_EQ(plain > 0.5f, std::abs(x + 2) < 1)
+          << "column " << col << ", x " << x;
+    }
+  }
+  EXPECT_GT(checked, 30);
 }
 
 struct FramingCase
