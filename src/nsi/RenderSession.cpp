@@ -147,6 +147,18 @@ void RenderSession::renderAll()
           m_device, camera, "height", ANARI_FLOAT32, &framing.height);
     else
       anariSetParameter(m_device, camera, "fovy", ANARI_FLOAT32, &framing.fovy);
+    const float near = float(item.near), far = float(item.far);
+    anariSetParameter(m_device, camera, "near", ANARI_FLOAT32, &near);
+    if (std::isfinite(far))
+      anariSetParameter(m_device, camera, "far", ANARI_FLOAT32, &far);
+    if (item.apertureRadius > 0) {
+      const float aperture = float(item.apertureRadius);
+      const float focus = float(item.focusDistance);
+      anariSetParameter(
+          m_device, camera, "apertureRadius", ANARI_FLOAT32, &aperture);
+      anariSetParameter(
+          m_device, camera, "focusDistance", ANARI_FLOAT32, &focus);
+    }
     if (m_hasMotion) {
       const float shutter[2] = {0.f, 1.f}; // the motion samples' time range
       anariSetParameter(

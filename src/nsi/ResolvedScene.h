@@ -7,6 +7,7 @@
 #include "ShaderTable.h"
 
 #include <array>
+#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
@@ -57,6 +58,8 @@ struct CameraItem
   bool orthographic{false};
   double fov{35.0};
   Matrix worldFromCamera{kIdentity};
+  double near{0}, far{INFINITY};              // clippingrange
+  double apertureRadius{0}, focusDistance{1}; // depthoffield.*
   ScreenSettings screen;
   int oversampling{1};
   std::vector<OutputItem> outputs;

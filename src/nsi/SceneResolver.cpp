@@ -367,6 +367,28 @@ class Resolver
       item.fov = fov->number(35);
     if (!std::isfinite(item.fov))
       item.fov = 35;
+    const auto clipping = numbers(node, "clippingrange");
+    if (clipping.size() == 2 && clipping[0] >= 0 && clipping[1] > clipping[0]) {
+      item.near = clipping[0];
+      item.far = clipping[1];
+    }
+    // Depth of field: aperture radius = focal length / (2 f-stop).
+    const Value *dof = node.attribute("depthoffield.enable");
+    if (dof && dof->number(0) != 0) {
+      const auto fstop = numbers(node, "depthoffield.fstop");
+      const auto focalLength = numbers(node, "depthoffield.focallength");
+      const auto focus = numbers(node, "depthoffield.focaldistance");
+      if (fstop.size() == 1 && focalLength.size() == 1 && focus.size() == 1
+          && fstop[0] > 0 && focalLength[0] > 0 && focus[0] > 0
+          && std::isfinite(focalLength[0] / fstop[0])) {
+        item.apertureRadius = focalLength[0] / (2 * fstop[0]);
+        item.focusDistance = focus[0];
+      } else {
+        warnOnce("camera '" + handle
+            + "': depthoffield needs positive fstop, focallength and "
+              "focaldistance; no depth of field");
+      }
+    }
     const auto screens = node.inputsOf("screens");
     if (screens.empty()) {
       warnOnce("camera '" + handle + "' has no screen; nothing to render");

@@ -325,22 +325,29 @@ RenderControl "action" "string" 1 "wait"
   EXPECT_EQ(mystery.at(8, 8).r, 0.f);
 }
 
-// A white 2x2 square 10 units ahead moving from x = -2 to x = 2 (two
-// transform samples at t = 0 and 1), under a uniform environment, seen by a
-// camera with `shutter` (or none) at 64x16: the image, read back.
-Image movingSquare(NSIContext_t ctx, bool shutter, const std::string &output)
+// A white 2x2 square 10 units ahead (hung under `parent`, which the
+// caller creates) under a uniform environment, seen by a camera at the
+// origin with fov 30 plus `camera` attributes and a screen with `screen`
+// attributes; rendered to the EXR `output`, which is read back.
+Image renderWhiteSquare(NSIContext_t ctx,
+    const std::string &parent,
+    const std::string &camera,
+    const std::string &screen,
+    const std::string &output)
 {
-  std::string text =
+  const std::string text =
       R"(Create "cam" "perspectivecamera" Connect "cam" "" ".root" "objects"
-SetAttribute "cam" "fov" "float" 1 30
+SetAttribute "cam" "fov" "float" 1 30 )"
+      + camera + R"(
 Create "scr" "screen" Connect "scr" "" "cam" "screens"
-SetAttribute "scr" "resolution" "int[2]" 1 [ 64 16 ] "oversampling" "int" 1 256
+SetAttribute "scr" )"
+      + screen + R"(
 Create "layer" "outputlayer" Connect "layer" "" "scr" "outputlayers"
 Create "file" "outputdriver" Connect "file" "" "layer" "outputdrivers"
-Create "xf" "transform" Connect "xf" "" ".root" "objects"
-SetAttributeAtTime "xf" 0 "transformationmatrix" "doublematrix" 1 [ 1 0 0 0 0 1 0 0 0 0 1 0 -2 0 0 1 ]
-SetAttributeAtTime "xf" 1 "transformationmatrix" "doublematrix" 1 [ 1 0 0 0 0 1 0 0 0 0 1 0 2 0 0 1 ]
-Create "sq" "mesh" Connect "sq" "" "xf" "objects"
+SetAttribute "file" "drivername" "string" 1 "exr" "imagefilename" "string" 1 ")"
+      + output + R"("
+Create "sq" "mesh" Connect "sq" "" ")"
+      + parent + R"(" "objects"
 SetAttribute "sq" "nvertices" "int" 1 4 "P" "point" 4 [ -1 -1 -10  1 -1 -10  1 1 -10  -1 1 -10 ]
 Create "white" "shader" SetAttribute "white" "shaderfilename" "string" 1 "lambert"
   "i_color" "color" 1 [ 1 1 1 ]
@@ -350,11 +357,8 @@ Create "sky" "environment" Connect "sky" "" ".root" "objects"
 Create "light" "shader" SetAttribute "light" "shaderfilename" "string" 1 "environmentLight"
 Create "sky_attr" "attributes" Connect "light" "" "sky_attr" "surfaceshader"
 Connect "sky_attr" "" "sky" "geometryattributes"
+RenderControl "action" "string" 1 "start" RenderControl "action" "string" 1 "wait"
 )";
-  if (shutter)
-    text += "SetAttribute \"cam\" \"shutterrange\" \"double\" 2 [ 0 1 ]\n";
-  text += "SetAttribute \"file\" \"drivername\" \"string\" 1 \"exr\" \"imagefilename\" \"string\" 1 \"" + output
-      + "\"\nRenderControl \"action\" \"string\" 1 \"start\"\nRenderControl \"action\" \"string\" 1 \"wait\"\n";
   const std::string file = output + ".nsi";
   std::ofstream(file) << text;
   NSI::ArgumentList args;
@@ -363,6 +367,26 @@ Connect "sky_attr" "" "sky" "geometryattributes"
   auto result = prism::image::read(output);
   EXPECT_TRUE(result.ok()) << result.error;
   return result.image;
+}
+
+// The square moving from x = -2 to x = 2 (transform samples at t = 0 and
+// 1), at 64x16, with the shutter open over [0, 1] or no shutter at all.
+Image movingSquare(NSIContext_t ctx, bool shutter, const std::string &output)
+{
+  NSICreate(ctx, "xf", "transform", 0, nullptr);
+  NSIConnect(ctx, "xf", "", NSI_SCENE_ROOT, "objects", 0, nullptr);
+  for (double t : {0.0, 1.0}) {
+    const double m[16] = {
+        1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 4 * t - 2, 0, 0, 1};
+    NSI::ArgumentList args;
+    args.add("transformationmatrix", NSITypeDoubleMatrix, m);
+    NSISetAttributeAtTime(ctx, "xf", t, args.size(), args.data());
+  }
+  return renderWhiteSquare(ctx,
+      "xf",
+      shutter ? R"("shutterrange" "double" 2 [ 0 1 ])" : "",
+      R"("resolution" "int[2]" 1 [ 64 16 ] "oversampling" "int" 1 256)",
+      output);
 }
 
 TEST_F(Render, TransformSamplesBlurAcrossTheShutter)
@@ -406,6 +430,50 @@ TEST_F(Render, TransformSamplesBlurAcrossTheShutter)
     }
   }
   EXPECT_GT(checked, 30);
+}
+
+TEST_F(Render, ClippingRangeAndDepthOfField)
+{
+  auto render = [&](const std::string &attributes, const char *name) {
+    NSIContext_t ctx = beginRender();
+    Image image = renderWhiteSquare(ctx,
+        NSI_SCENE_ROOT,
+        attributes,
+        R"("resolution" "int[2]" 1 [ 32 32 ] "oversampling" "int" 1 64)",
+        path(name));
+    NSIEnd(ctx);
+    return image;
+  };
+  const Image sharp = render("", "sharp.exr");
+  const Image near =
+      render(R"("clippingrange" "double" 2 [ 11 100 ])", "near.exr");
+  const Image far =
+      render(R"("clippingrange" "double" 2 [ 0.1 9 ])", "far.exr");
+  const Image kept =
+      render(R"("clippingrange" "double" 2 [ 9 11 ])", "kept.exr");
+  // Focused at 1 with a 0.1 aperture radius (focal length 0.2, f/1): at 10
+  // a point spreads over a disk of 0.09 / (2 tan 15 / 32) = 5.4 pixels.
+  const Image blurred = render(
+      R"("depthoffield.enable" "int" 1 1 "depthoffield.fstop" "double" 1 1
+      "depthoffield.focallength" "double" 1 0.2 "depthoffield.focaldistance" "double" 1 1)",
+      "blurred.exr");
+  const Image focused = render(
+      R"("depthoffield.enable" "int" 1 1 "depthoffield.fstop" "double" 1 1
+      "depthoffield.focallength" "double" 1 0.2 "depthoffield.focaldistance" "double" 1 10)",
+      "focused.exr");
+  EXPECT_EQ(m_messages.problems(), "");
+  // The square spans columns 10 to 22 (16 +- 16 / (10 tan 15)).
+  EXPECT_GT(value(sharp, 16, 16), 0.8f);
+  EXPECT_EQ(value(near, 16, 16), 0.f);
+  EXPECT_EQ(value(far, 16, 16), 0.f);
+  EXPECT_GT(value(kept, 16, 16), 0.8f);
+  // Column 6 lies 4 pixels outside: black when sharp or focused on the
+  // square, reached by the blur when focused at 1; column 11, just inside,
+  // loses light to it.
+  EXPECT_EQ(value(sharp, 6, 16), 0.f);
+  EXPECT_LT(value(focused, 6, 16), 0.02f);
+  EXPECT_GT(value(blurred, 6, 16), 0.05f); // about 8 % of the disk reaches
+  EXPECT_LT(value(blurred, 11, 16), 0.9f * value(sharp, 11, 16));
 }
 
 struct FramingCase
