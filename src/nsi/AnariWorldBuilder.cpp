@@ -49,14 +49,22 @@ void setVec3(ANARIDevice device,
 
 ANARIGeometry newGeometry(ANARIDevice device, const GeometryData &data)
 {
-  ANARIGeometry geometry =
-      anariNewGeometry(device, data.spheres ? "sphere" : "triangle");
+  ANARIGeometry geometry = anariNewGeometry(
+      device, data.spheres ? "sphere" : (data.curves ? "curve" : "triangle"));
   const size_t vertices = data.positions.size() / 3;
   setArray(device,
       geometry,
       "vertex.position",
       newArray(device, ANARI_FLOAT32_VEC3, data.positions.data(), vertices));
-  if (data.spheres) {
+  if (data.spheres || data.curves) {
+    if (data.curves)
+      setArray(device,
+          geometry,
+          "primitive.index",
+          newArray(device,
+              ANARI_UINT32,
+              data.segmentStarts.data(),
+              data.segmentStarts.size()));
     setArray(device,
         geometry,
         "vertex.radius",

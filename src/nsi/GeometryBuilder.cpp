@@ -55,7 +55,7 @@ std::optional<GeometryData> buildMesh(
   size_t total = 0;
   for (double n : nvertices) {
     if (toIndex(n) < 0)
-      return fail("'nvertices' holds " + std::to_string(n));
+      return fail("'nvertices' holds " + shortNumber(n));
     total += size_t(n);
   }
   // One `nvertices` value with no others means one polygon.

@@ -19,9 +19,11 @@ namespace prism::nsi {
 struct GeometryData
 {
   bool spheres{false};
-  std::vector<float> positions; // xyz
-  std::vector<float> normals;   // xyz per position, or empty
-  std::vector<float> radii;     // spheres
+  bool curves{false};                  // round linear segments
+  std::vector<float> positions;        // xyz
+  std::vector<float> normals;          // xyz per position, or empty
+  std::vector<float> radii;            // spheres and curves, per position
+  std::vector<uint32_t> segmentStarts; // curves
   std::vector<uint32_t> triangles;
 };
 

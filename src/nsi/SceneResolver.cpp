@@ -1,5 +1,7 @@
 #include "SceneResolver.h"
 
+#include "CurveTessellation.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -161,7 +163,8 @@ class Resolver
     if (type == "root" || type == "transform") {
       for (const Input *input : node->inputsOf("objects"))
         visit(input->from, world, attributes, depth + 1);
-    } else if (type == "mesh" || type == "particles") {
+    } else if (type == "mesh" || type == "particles" || type == "curves"
+               || type == "cubiccurves" || type == "linearcurves") {
       geometry(handle, *node, world, attributes);
     } else if (type == "perspectivecamera" || type == "orthographiccamera") {
       camera(handle, *node, world);
@@ -240,7 +243,9 @@ class Resolver
       if (m_failed.count(handle))
         return;
       auto data = node.type == "mesh" ? buildMesh(handle, node, m_report)
-                                      : buildParticles(handle, node, m_report);
+                  : node.type == "particles"
+                      ? buildParticles(handle, node, m_report)
+                      : buildCurves(handle, node, m_report);
       if (!data) {
         m_failed.insert(handle);
         return;

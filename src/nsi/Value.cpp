@@ -1,5 +1,6 @@
 #include "Value.h"
 
+#include <cstdio>
 #include <cstring>
 
 namespace prism::nsi {
@@ -81,6 +82,13 @@ double Value::number(double fallback) const
 std::string Value::string(const std::string &fallback) const
 {
   return strings.empty() ? fallback : strings.front();
+}
+
+std::string shortNumber(double number)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", number);
+  return text;
 }
 
 bool valueFromParam(const NSIParam_t &param, Value &value, std::string &error)

@@ -33,6 +33,9 @@ struct Value
   bool operator==(const Value &) const = default;
 };
 
+// A number for messages: "1e+300", "7", "nan".
+std::string shortNumber(double number);
+
 // Copies `param` into `value`; false with `error` when the parameter is not
 // one NSI can carry (no name, unknown type, negative sizes, missing data).
 bool valueFromParam(const NSIParam_t &param, Value &value, std::string &error);

@@ -241,6 +241,7 @@ SetAttribute "short" "nvertices" "int" 2 [ 3 3 ] "P" "point" 3 [ 0 0 0 1 0 0 0 1
 Create "dust" "particles" Connect "dust" "" ".root" "objects"
 SetAttribute "dust" "P" "point" 2 [ 0 0 -5 1 0 -5 ] "width" "float" 3 [ 1 1 1 ]
 Create "knot" "curves" Connect "knot" "" ".root" "objects"
+Create "fog" "volume" Connect "fog" "" ".root" "objects"
 RenderControl "action" "string" 1 "start"
 RenderControl "action" "string" 1 "wait"
 )");
@@ -248,11 +249,12 @@ RenderControl "action" "string" 1 "wait"
   include(ctx, scene);
   NSIEnd(ctx);
   const std::string problems = m_messages.problems();
-  for (const char *expected : {"mesh 'huge': 'nvertices' holds",
+  for (const char *expected : {"mesh 'huge': 'nvertices' holds 1e+300;",
            "mesh 'outside': 'P.indices' holds 7, outside 'P'",
            "mesh 'short': 'nvertices' adds up to 6 but there are 3",
            "particles 'dust': 'width' count does not match 'P'",
-           "'curves' nodes are not supported yet",
+           "curves 'knot': no 'P'",
+           "'volume' nodes are not supported yet",
            "bad 'resolution'"})
     EXPECT_NE(problems.find(expected), std::string::npos) << expected << "\n"
                                                           << problems;
@@ -325,12 +327,21 @@ RenderControl "action" "string" 1 "wait"
   EXPECT_EQ(mystery.at(8, 8).r, 0.f);
 }
 
-// A white 2x2 square 10 units ahead (hung under `parent`, which the
-// caller creates) under a uniform environment, seen by a camera at the
-// origin with fov 30 plus `camera` attributes and a screen with `screen`
-// attributes; rendered to the EXR `output`, which is read back.
-Image renderWhiteSquare(NSIContext_t ctx,
-    const std::string &parent,
+// The white 2x2 square 10 units ahead, hung under `parent`.
+std::string whiteSquare(const std::string &parent)
+{
+  return R"(Create "shape" "mesh" Connect "shape" "" ")" + parent
+         + R"(" "objects"
+SetAttribute "shape" "nvertices" "int" 1 4 "P" "point" 4 [ -1 -1 -10  1 -1 -10  1 1 -10  -1 1 -10 ]
+)";
+}
+
+// White geometry (`shape`, made by the `geometry` statements) under a
+// uniform environment, seen by a camera at the origin with fov 30 plus
+// `camera` attributes and a screen with `screen` attributes; rendered to the
+// EXR `output`, which is read back.
+Image renderWhite(NSIContext_t ctx,
+    const std::string &geometry,
     const std::string &camera,
     const std::string &screen,
     const std::string &output)
@@ -346,13 +357,13 @@ Create "layer" "outputlayer" Connect "layer" "" "scr" "outputlayers"
 Create "file" "outputdriver" Connect "file" "" "layer" "outputdrivers"
 SetAttribute "file" "drivername" "string" 1 "exr" "imagefilename" "string" 1 ")"
       + output + R"("
-Create "sq" "mesh" Connect "sq" "" ")"
-      + parent + R"(" "objects"
-SetAttribute "sq" "nvertices" "int" 1 4 "P" "point" 4 [ -1 -1 -10  1 -1 -10  1 1 -10  -1 1 -10 ]
+
+)" + geometry
+      + R"(
 Create "white" "shader" SetAttribute "white" "shaderfilename" "string" 1 "lambert"
   "i_color" "color" 1 [ 1 1 1 ]
 Create "attr" "attributes" Connect "white" "" "attr" "surfaceshader"
-Connect "attr" "" "sq" "geometryattributes"
+Connect "attr" "" "shape" "geometryattributes"
 Create "sky" "environment" Connect "sky" "" ".root" "objects"
 Create "light" "shader" SetAttribute "light" "shaderfilename" "string" 1 "environmentLight"
 Create "sky_attr" "attributes" Connect "light" "" "sky_attr" "surfaceshader"
@@ -382,8 +393,8 @@ Image movingSquare(NSIContext_t ctx, bool shutter, const std::string &output)
     args.add("transformationmatrix", NSITypeDoubleMatrix, m);
     NSISetAttributeAtTime(ctx, "xf", t, args.size(), args.data());
   }
-  return renderWhiteSquare(ctx,
-      "xf",
+  return renderWhite(ctx,
+      whiteSquare("xf"),
       shutter ? R"("shutterrange" "double" 2 [ 0 1 ])" : "",
       R"("resolution" "int[2]" 1 [ 64 16 ] "oversampling" "int" 1 256)",
       output);
@@ -436,8 +447,8 @@ TEST_F(Render, ClippingRangeAndDepthOfField)
 {
   auto render = [&](const std::string &attributes, const char *name) {
     NSIContext_t ctx = beginRender();
-    Image image = renderWhiteSquare(ctx,
-        NSI_SCENE_ROOT,
+    Image image = renderWhite(ctx,
+        whiteSquare(NSI_SCENE_ROOT),
         attributes,
         R"("resolution" "int[2]" 1 [ 32 32 ] "oversampling" "int" 1 64)",
         path(name));
@@ -474,6 +485,34 @@ TEST_F(Render, ClippingRangeAndDepthOfField)
   EXPECT_LT(value(focused, 6, 16), 0.02f);
   EXPECT_GT(value(blurred, 6, 16), 0.05f); // about 8 % of the disk reaches
   EXPECT_LT(value(blurred, 11, 16), 0.9f * value(sharp, 11, 16));
+}
+
+TEST_F(Render, CurvesAreRoundSegments)
+{
+  // A linear curve of width 1 across the view at distance 10, and a
+  // catmull-rom one above it (extrapolated, so it spans its points).
+  NSIContext_t ctx = beginRender();
+  const Image image = renderWhite(ctx,
+      R"(Create "shape" "transform" Connect "shape" "" ".root" "objects"
+Create "line" "linearcurves" Connect "line" "" "shape" "objects"
+SetAttribute "line" "nvertices" "int" 1 2 "P" "point" 2 [ -5 0 -10  5 0 -10 ] "width" "float" 1 1
+Create "wave" "curves" Connect "wave" "" "shape" "objects"
+SetAttribute "wave" "nvertices" "int" 1 4 "extrapolate" "int" 1 1 "width" "float" 1 0.5
+  "P" "point" 4 [ -2 2 -10  -1 2 -10  1 2 -10  2 2 -10 ])",
+      "",
+      R"("resolution" "int[2]" 1 [ 32 32 ] "oversampling" "int" 1 16)",
+      path("curves.exr"));
+  NSIEnd(ctx);
+  EXPECT_EQ(m_messages.problems(), "");
+  // Pixels are 2 tan 15 * 10 / 32 = 0.167 units: the line covers rows
+  // 13-18 (half width 0.5 = 3 pixels), the wave rows 6-8 around y = 2,
+  // columns 4-28 (x from -2 to 2).
+  EXPECT_GT(value(image, 3, 16), 0.8f);
+  EXPECT_GT(value(image, 28, 15), 0.8f);
+  EXPECT_EQ(value(image, 16, 11), 0.f);
+  EXPECT_EQ(value(image, 16, 21), 0.f);
+  EXPECT_GT(value(image, 16, 4), 0.8f) << "the wave";
+  EXPECT_EQ(value(image, 1, 4), 0.f) << "left of the wave";
 }
 
 struct FramingCase
