@@ -5,6 +5,7 @@
 #include "StreamReader.h"
 #include "StreamSource.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -123,6 +124,15 @@ void Context::deleteAttribute(
   m_graph.deleteAttribute(handle, name);
 }
 
+namespace {
+// An int connection parameter; 0 when absent or not a sane number.
+int connectionInt(const ParameterList &params, const char *name)
+{
+  const double value = params.number(name, 0);
+  return std::isfinite(value) && std::abs(value) < 1e9 ? int(value) : 0;
+}
+} // namespace
+
 void Context::connect(const std::string &from,
     const std::string &fromAttr,
     const std::string &to,
@@ -139,8 +149,9 @@ void Context::connect(const std::string &from,
       fromAttr,
       to,
       toAttr,
-      int(params.number("priority", 0)),
-      int(params.number("strength", 0)));
+      connectionInt(params, "priority"),
+      connectionInt(params, "strength"),
+      connectionInt(params, "index"));
 }
 
 void Context::disconnect(const std::string &from,

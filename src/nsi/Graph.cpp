@@ -180,7 +180,8 @@ void Graph::connect(const std::string &from,
     const std::string &to,
     const std::string &toAttr,
     int priority,
-    int strength)
+    int strength,
+    int index)
 {
   Node *source = lookup(from, "NSIConnect");
   Node *target = lookup(to, "NSIConnect");
@@ -197,10 +198,11 @@ void Graph::connect(const std::string &from,
         && input.toAttr == toAttr) {
       input.priority = priority; // connecting again updates, never duplicates
       input.strength = strength;
+      input.index = index;
       return;
     }
   }
-  target->inputs.push_back({from, fromAttr, toAttr, priority, strength});
+  target->inputs.push_back({from, fromAttr, toAttr, priority, strength, index});
   source->outputs.push_back({fromAttr, to, toAttr});
 }
 

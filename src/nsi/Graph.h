@@ -28,6 +28,7 @@ struct Input
   std::string from, fromAttr, toAttr;
   int priority{0};
   int strength{0};
+  int index{0}; // orders the models of an `instances` node
 };
 
 // A connection leaving one of a node's attributes.
@@ -67,7 +68,8 @@ class Graph
       const std::string &to,
       const std::string &toAttr,
       int priority,
-      int strength);
+      int strength,
+      int index = 0);
   void disconnect(const std::string &from,
       const std::string &fromAttr,
       const std::string &to,

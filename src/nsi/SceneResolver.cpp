@@ -166,6 +166,8 @@ class Resolver
     } else if (type == "mesh" || type == "particles" || type == "curves"
                || type == "cubiccurves" || type == "linearcurves") {
       geometry(handle, *node, world, attributes);
+    } else if (type == "instances") {
+      instances(handle, *node, world, attributes, depth);
     } else if (type == "perspectivecamera" || type == "orthographiccamera") {
       camera(handle, *node, world);
     } else if (type == "environment") {
@@ -173,6 +175,48 @@ class Resolver
     } else {
       warnOnce("'" + type + "' nodes are not supported yet ('" + handle
                + "' is not rendered)");
+    }
+  }
+
+  // Each instance places the model whose connection `index` matches its
+  // `modelindices` entry (0 without them) with its own matrix.
+  void instances(const std::string &handle,
+      const Node &node,
+      const Placement &world,
+      const std::vector<AttributesOnPath> &attributes,
+      int depth)
+  {
+    const auto matrices = numbers(node, "transformationmatrices");
+    const auto models = numbers(node, "modelindices");
+    const auto disabled = numbers(node, "disabledinstances");
+    const size_t count = matrices.size() / 16;
+    if (!models.empty() && models.size() != count) {
+      warnOnce("instances '" + handle
+          + "': 'modelindices' does not match 'transformationmatrices'; "
+            "ignored");
+      return;
+    }
+    std::map<int, std::string> sources;
+    for (const Input *input : node.inputsOf("sourcemodels"))
+      sources[input->index] = input->from;
+    const std::set<double> skipped(disabled.begin(), disabled.end());
+    for (size_t i = 0; i < count; ++i) {
+      const double model = models.empty() ? 0 : models[i];
+      if (!(model >= 0 && model < 1e9) || skipped.count(double(i)))
+        continue; // negative (or not a number): not rendered
+      auto source = sources.find(int(model));
+      if (source == sources.end()) {
+        warnOnce("instances '" + handle + "': no source model with index "
+                 + shortNumber(model));
+        continue;
+      }
+      Matrix local;
+      for (int k = 0; k < 16; ++k)
+        local[k] = matrices[16 * i + k];
+      Placement placed = world;
+      for (Matrix &m : placed)
+        m = compose(local, m);
+      visit(source->second, placed, attributes, depth + 1);
     }
   }
 

@@ -515,6 +515,35 @@ SetAttribute "wave" "nvertices" "int" 1 4 "extrapolate" "int" 1 1 "width" "float
   EXPECT_EQ(value(image, 1, 4), 0.f) << "left of the wave";
 }
 
+TEST_F(Render, InstancesPlaceTheirModels)
+{
+  NSIContext_t ctx = beginRender();
+  const Image image = renderWhite(ctx,
+      R"(Create "shape" "instances" Connect "shape" "" ".root" "objects"
+Create "big" "mesh" SetAttribute "big" "nvertices" "int" 1 4
+  "P" "point" 4 [ -1 -1 -10  1 -1 -10  1 1 -10  -1 1 -10 ]
+Create "small" "mesh" SetAttribute "small" "nvertices" "int" 1 4
+  "P" "point" 4 [ -0.25 -0.25 -10  0.25 -0.25 -10  0.25 0.25 -10  -0.25 0.25 -10 ]
+Connect "big" "" "shape" "sourcemodels" "index" "int" 1 0
+Connect "small" "" "shape" "sourcemodels" "index" "int" 1 1
+SetAttribute "shape" "transformationmatrices" "doublematrix" 4 [
+  1 0 0 0 0 1 0 0 0 0 1 0 -3 0 0 1   1 0 0 0 0 1 0 0 0 0 1 0 3 0 0 1
+  1 0 0 0 0 1 0 0 0 0 1 0 0 3 0 1    1 0 0 0 0 1 0 0 0 0 1 0 0 -3 0 1 ]
+  "modelindices" "int" 4 [ 0 1 0 -1 ] "disabledinstances" "int" 1 2)",
+      R"("fov" "float" 1 60)",
+      R"("resolution" "int[2]" 1 [ 32 32 ] "oversampling" "int" 1 4)",
+      path("instances.exr"));
+  NSIEnd(ctx);
+  EXPECT_EQ(m_messages.problems(), "");
+  // tan 30 * 10 = 5.77 units per half image (16 pixels).
+  EXPECT_GT(value(image, 7, 16), 0.8f) << "model 0 at x = -3";
+  EXPECT_GT(value(image, 24, 16), 0.8f) << "model 1 at x = 3";
+  EXPECT_EQ(value(image, 21, 16), 0.f) << "model 1 is the small one";
+  EXPECT_EQ(value(image, 16, 7), 0.f) << "instance 2 is disabled";
+  EXPECT_EQ(value(image, 16, 24), 0.f) << "instance 3 has model -1";
+  EXPECT_EQ(value(image, 16, 16), 0.f) << "nothing at the origin";
+}
+
 struct FramingCase
 {
   const char *name;
