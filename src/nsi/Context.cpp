@@ -48,9 +48,11 @@ Context::Context(NSIContext_t id, const ParameterList &params)
       report(NSIErrWarning,
           "NSIBegin: stream format '" + format
               + "' is not supported; writing the ASCII format");
-    if (params.find("streamcompression"))
+    const std::string compression = params.string("streamcompression", "");
+    if (!compression.empty() && compression != "gzip")
       report(NSIErrWarning,
-          "NSIBegin: stream compression is not supported; writing plain text");
+          "NSIBegin: stream compression '" + compression
+              + "' is not supported; writing plain text");
     // "apistream" here makes included streams inline into the written one.
     std::string types = params.string("executeprocedurals", "");
     for (char &c : types)
@@ -58,7 +60,7 @@ Context::Context(NSIContext_t id, const ParameterList &params)
     std::istringstream names(types);
     for (std::string name; names >> name;)
       m_executedTypes.insert(name);
-    m_writer = std::make_unique<StreamWriter>(target);
+    m_writer = std::make_unique<StreamWriter>(target, compression == "gzip");
     if (!m_writer->ok()) {
       report(NSIErrError, "NSIBegin: cannot write the stream '" + target + "'");
       m_ok = false;

@@ -215,7 +215,11 @@ void Graph::disconnect(const std::string &from,
     return;
   if (to != kAll && !lookup(to, "NSIDisconnect"))
     return;
-  for (auto &[handle, node] : m_nodes) {
+  for (auto &entry : m_nodes) {
+    // Not a structured binding: clang before 16 cannot capture those in a
+    // lambda.
+    const std::string &handle = entry.first;
+    Node &node = entry.second;
     if (!matches(to, handle))
       continue;
     std::erase_if(node.inputs, [&](const Input &input) {

@@ -1,5 +1,6 @@
 #include "StreamWriter.h"
 
+#include <unistd.h>
 #include <charconv>
 #include <cstring>
 #include <sstream>
@@ -104,26 +105,50 @@ std::string formatDouble(double value)
   return text;
 }
 
-StreamWriter::StreamWriter(const std::string &target)
+StreamWriter::StreamWriter(const std::string &target, bool gzip)
 {
   if (target == "stdout") {
     m_file = stdout;
   } else if (target == "stderr") {
     m_file = stderr;
-  } else {
+  } else if (!gzip) {
     m_file = std::fopen(target.c_str(), "wb");
     m_owned = m_file != nullptr;
   }
-  if (m_file) {
-    std::fputs("# NSI ASCII stream\n# written by Prism libnsi\n", m_file);
+  if (gzip) {
+    // The standard streams are compressed through a duplicate descriptor,
+    // so closing it leaves them open.
+    m_gzip = m_file ? gzdopen(dup(fileno(m_file)), "wb")
+                    : gzopen(target.c_str(), "wb");
+    m_file = nullptr;
+    m_owned = false;
   }
+  write("# NSI ASCII stream\n# written by Prism libnsi\n");
 }
 
 StreamWriter::~StreamWriter()
 {
+  if (m_gzip)
+    gzclose(m_gzip);
   if (m_owned)
     std::fclose(m_file);
   else if (m_file)
+    std::fflush(m_file);
+}
+
+void StreamWriter::write(const std::string &text)
+{
+  if (m_gzip)
+    gzwrite(m_gzip, text.data(), unsigned(text.size()));
+  else if (m_file)
+    std::fwrite(text.data(), 1, text.size(), m_file);
+}
+
+void StreamWriter::flush()
+{
+  // gzip streams are only complete when closed; flushing them mid-stream
+  // would cost compression for nothing.
+  if (m_file)
     std::fflush(m_file);
 }
 
@@ -132,7 +157,7 @@ void StreamWriter::statement(const char *keyword,
     const ParameterList &params,
     std::optional<double> time)
 {
-  if (!m_file)
+  if (!ok())
     return;
   std::string line = keyword;
   for (auto &operand : operands) {
@@ -144,10 +169,10 @@ void StreamWriter::statement(const char *keyword,
     line += formatDouble(*time);
   }
   line += "\n";
-  std::fputs(line.c_str(), m_file);
+  write(line);
   for (auto &param : params.values)
     parameter(param);
-  std::fflush(m_file);
+  flush();
 }
 
 void StreamWriter::parameter(const NamedValue &param)
@@ -202,7 +227,7 @@ void StreamWriter::parameter(const NamedValue &param)
     }
   }
   line += " ]\n";
-  std::fputs(line.c_str(), m_file);
+  write(line);
 }
 
 } // namespace prism::nsi

@@ -5,6 +5,8 @@
 
 #include "ParameterList.h"
 
+#include <zlib.h>
+
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -14,15 +16,16 @@ namespace prism::nsi {
 class StreamWriter
 {
  public:
-  // `target` is a file name, "stdout" or "stderr". Check ok() afterwards.
-  explicit StreamWriter(const std::string &target);
+  // `target` is a file name, "stdout" or "stderr"; `gzip` compresses what
+  // is written. Check ok() afterwards.
+  explicit StreamWriter(const std::string &target, bool gzip = false);
   ~StreamWriter();
   StreamWriter(const StreamWriter &) = delete;
   StreamWriter &operator=(const StreamWriter &) = delete;
 
   bool ok() const
   {
-    return m_file != nullptr;
+    return m_file != nullptr || m_gzip != nullptr;
   }
 
   // `operands` are the strings after the keyword; `time` is written after
@@ -34,8 +37,11 @@ class StreamWriter
 
  private:
   void parameter(const NamedValue &param);
+  void write(const std::string &text);
+  void flush();
 
   std::FILE *m_file{nullptr};
+  gzFile m_gzip{nullptr}; // instead of m_file when compressing
   bool m_owned{false};
 };
 

@@ -255,4 +255,24 @@ TEST_F(Stream, GzipStreamsAreInflated)
   EXPECT_EQ(m_messages.problems(), "");
 }
 
+TEST_F(Stream, GzipStreamsAreWrittenAndReadBack)
+{
+  const std::string compressed = path("written.nsi.gz");
+  NSI::ArgumentList begin;
+  begin.addString("type", "apistream")
+      .addString("streamfilename", compressed.c_str())
+      .addString("streamcompression", "gzip");
+  NSIContext_t ctx = NSIBegin(begin.size(), begin.data());
+  ASSERT_NE(ctx, NSI_BAD_CONTEXT);
+  NSICreate(ctx, "g", "transform", 0, nullptr);
+  NSIEnd(ctx);
+  const std::string bytes = readFile(compressed);
+  ASSERT_GE(bytes.size(), 2u);
+  EXPECT_EQ(uint8_t(bytes[0]), 0x1f);
+  EXPECT_EQ(uint8_t(bytes[1]), 0x8b);
+  EXPECT_EQ(
+      body(rewrite(compressed, "out.nsi")), "Create \"g\" \"transform\"\n");
+  EXPECT_EQ(m_messages.problems(), "");
+}
+
 } // namespace
