@@ -145,6 +145,25 @@ ANARILight newLight(
     setFloat(device, light, "radius", item.radius);
     setBrightness(device, light, item.shader);
     break;
+  case Kind::Spot:
+    light = anariNewLight(device, "spot");
+    setVec3(device, light, "position", item.position);
+    setVec3(device, light, "direction", item.direction);
+    setFloat(device, light, "openingAngle", item.openingAngle);
+    setFloat(device, light, "falloffAngle", item.falloffAngle);
+    // A spot has no area: power, else intensity.
+    setFloat(device,
+        light,
+        item.shader.hasPower ? "power" : "intensity",
+        item.shader.hasPower ? item.shader.power : item.shader.intensity);
+    break;
+  case Kind::Ring:
+    light = anariNewLight(device, "ring");
+    setVec3(device, light, "position", item.position);
+    setVec3(device, light, "direction", item.direction);
+    setFloat(device, light, "radius", item.radius);
+    setBrightness(device, light, item.shader);
+    break;
   case Kind::Directional:
     light = anariNewLight(device, "directional");
     setVec3(device, light, "direction", item.direction);

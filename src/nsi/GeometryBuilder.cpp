@@ -169,6 +169,12 @@ std::optional<GeometryData> buildParticles(const std::string &handle,
   for (size_t i = 0; i < count; ++i)
     data.radii.push_back(
         float(std::abs(widths[widths.size() == 1 ? 0 : i]) / 2));
+  // Normals orient particles that are lights (spots, rings).
+  const std::vector<double> normals = numbersOf(particles, "N");
+  if (normals.size() == points.size()) {
+    for (double n : normals)
+      data.normals.push_back(float(n));
+  }
   return data;
 }
 

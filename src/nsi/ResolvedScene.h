@@ -39,12 +39,13 @@ struct SurfaceItem
 
 struct LightItem
 {
-  enum class Kind { Quad, Point, Ambient, Directional, Hdri };
+  enum class Kind { Quad, Point, Spot, Ring, Ambient, Directional, Hdri };
   Kind kind{Kind::Quad};
   ShaderDescription shader;
   std::array<float, 3> position{}, edge1{}, edge2{}, direction{0, 0, -1};
   float radius{0};
   float angularDiameter{0};
+  float openingAngle{0}, falloffAngle{0}; // spot, radians
   bool visibleToCamera{true};
 };
 

@@ -354,9 +354,24 @@ class Resolver
       light.edge1 = toFloat({v3[0] - v0[0], v3[1] - v0[1], v3[2] - v0[2]});
       light.edge2 = toFloat({v1[0] - v0[0], v1[1] - v0[1], v1[2] - v0[2]});
     } else if (data.spheres && data.radii.size() == 1) {
-      light.kind = LightItem::Kind::Point;
       light.position = toFloat(point(0));
       light.radius = data.radii[0];
+      // Spots and rings face along N, else the node's -Z.
+      std::array<double, 3> axis{0, 0, -1};
+      if (data.normals.size() == 3)
+        axis = {data.normals[0], data.normals[1], data.normals[2]};
+      light.direction = toFloat(transformVector(world, axis));
+      if (shader.shaderName == "spotLight") {
+        // 3Delight's penumbra widens the cone rather than eating into it.
+        light.kind = LightItem::Kind::Spot;
+        light.openingAngle =
+            float((shader.coneAngle + 2 * shader.penumbraAngle) * M_PI / 180);
+        light.falloffAngle = float(shader.penumbraAngle * M_PI / 180);
+      } else if (shader.shaderName == "areaLight" && data.normals.size() == 3) {
+        light.kind = LightItem::Kind::Ring;
+      } else {
+        light.kind = LightItem::Kind::Point;
+      }
     } else {
       return false;
     }

@@ -125,6 +125,8 @@ ShaderDescription describeShader(const Node &shader)
              || name == "spotLight") {
     d.kind = Kind::Emitter;
     lightBrightness(shader, d);
+    d.coneAngle = number(shader, "coneAngle", 40.f);
+    d.penumbraAngle = number(shader, "penumbraAngle", 0.f);
   } else if (name == "environmentLight") {
     d.kind = Kind::EnvironmentLight;
     lightBrightness(shader, d);

@@ -38,7 +38,8 @@ struct ShaderDescription
   float power{0.f};
   float intensity{1.f};
   bool normalizeArea{true};
-  std::string image; // environmentLight's map
+  std::string image;                     // environmentLight's map
+  float coneAngle{40}, penumbraAngle{0}; // spotLight, degrees
 };
 
 // "/path/dlPrincipled.oso" -> "dlPrincipled".

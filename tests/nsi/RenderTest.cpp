@@ -337,15 +337,23 @@ SetAttribute "shape" "nvertices" "int" 1 4 "P" "point" 4 [ -1 -1 -10  1 -1 -10  
 }
 
 // White geometry (`shape`, made by the `geometry` statements) under a
-// uniform environment, seen by a camera at the origin with fov 30 plus
-// `camera` attributes and a screen with `screen` attributes; rendered to the
-// EXR `output`, which is read back.
+// uniform environment (unless `ambient` is false), seen by a camera at the
+// origin with fov 30 plus `camera` attributes and a screen with `screen`
+// attributes; rendered to the EXR `output`, which is read back.
 Image renderWhite(NSIContext_t ctx,
     const std::string &geometry,
     const std::string &camera,
     const std::string &screen,
-    const std::string &output)
+    const std::string &output,
+    bool ambient = true)
 {
+  const std::string sky =
+      ambient ? R"(Create "sky" "environment" Connect "sky" "" ".root" "objects"
+Create "light" "shader" SetAttribute "light" "shaderfilename" "string" 1 "environmentLight"
+Create "sky_attr" "attributes" Connect "light" "" "sky_attr" "surfaceshader"
+Connect "sky_attr" "" "sky" "geometryattributes"
+)"
+              : "";
   const std::string text =
       R"(Create "cam" "perspectivecamera" Connect "cam" "" ".root" "objects"
 SetAttribute "cam" "fov" "float" 1 30 )"
@@ -364,11 +372,8 @@ Create "white" "shader" SetAttribute "white" "shaderfilename" "string" 1 "lamber
   "i_color" "color" 1 [ 1 1 1 ]
 Create "attr" "attributes" Connect "white" "" "attr" "surfaceshader"
 Connect "attr" "" "shape" "geometryattributes"
-Create "sky" "environment" Connect "sky" "" ".root" "objects"
-Create "light" "shader" SetAttribute "light" "shaderfilename" "string" 1 "environmentLight"
-Create "sky_attr" "attributes" Connect "light" "" "sky_attr" "surfaceshader"
-Connect "sky_attr" "" "sky" "geometryattributes"
-RenderControl "action" "string" 1 "start" RenderControl "action" "string" 1 "wait"
+)" + sky
+      + R"(RenderControl "action" "string" 1 "start" RenderControl "action" "string" 1 "wait"
 )";
   const std::string file = output + ".nsi";
   std::ofstream(file) << text;
@@ -542,6 +547,49 @@ SetAttribute "shape" "transformationmatrices" "doublematrix" 4 [
   EXPECT_EQ(value(image, 16, 7), 0.f) << "instance 2 is disabled";
   EXPECT_EQ(value(image, 16, 24), 0.f) << "instance 3 has model -1";
   EXPECT_EQ(value(image, 16, 16), 0.f) << "nothing at the origin";
+}
+
+TEST_F(Render, ParticleLights)
+{
+  // A white floor seen from 10 above, lit only by one particle 3 above it:
+  // a spot pointing down (cone 20 degrees: a disk of radius 3 tan 10 =
+  // 0.53), or a point light.
+  // The stream is not line based: the camera's attributes may end in
+  // statements, here hanging it under a transform looking down.
+  const std::string camera = R"(Disconnect "cam" "" ".root" "objects"
+Create "up" "transform" Connect "up" "" ".root" "objects"
+SetAttribute "up" "transformationmatrix" "doublematrix" 1 [ 1 0 0 0  0 0 -1 0  0 1 0 0  0 10 0 1 ]
+Connect "cam" "" "up" "objects")";
+  auto render = [&](const char *shader, const char *name) {
+    const std::string geometry =
+        std::string(
+            R"(Create "shape" "mesh" Connect "shape" "" ".root" "objects"
+SetAttribute "shape" "nvertices" "int" 1 4 "P" "point" 4 [ -5 0 5  5 0 5  5 0 -5  -5 0 -5 ]
+Create "bulb" "particles" Connect "bulb" "" ".root" "objects"
+SetAttribute "bulb" "P" "point" 1 [ 0 3 0 ] "N" "normal" 1 [ 0 -1 0 ] "width" "float" 1 0.01
+Create "bulb_shader" "shader" SetAttribute "bulb_shader" "shaderfilename" "string" 1 ")")
+        + shader + R"(" "coneAngle" "float" 1 20 "intensity" "float" 1 10
+Create "bulb_attr" "attributes" Connect "bulb_shader" "" "bulb_attr" "surfaceshader"
+Connect "bulb_attr" "" "bulb" "geometryattributes")";
+    NSIContext_t ctx = beginRender();
+    Image image = renderWhite(ctx,
+        geometry,
+        camera,
+        R"("resolution" "int[2]" 1 [ 32 32 ] "oversampling" "int" 1 4)",
+        path(name),
+        false);
+    NSIEnd(ctx);
+    return image;
+  };
+  const Image spot = render("spotLight", "spot.exr");
+  const Image point = render("pointLight", "point.exr");
+  EXPECT_EQ(m_messages.problems(), "");
+  // 2.68 units per half image: the spot's disk is 3 pixels in radius.
+  EXPECT_GT(value(spot, 16, 16), 0.1f);
+  EXPECT_EQ(value(spot, 16, 22), 0.f);
+  EXPECT_EQ(value(spot, 22, 16), 0.f);
+  EXPECT_GT(value(point, 16, 22), 0.1f);
+  EXPECT_GT(value(point, 22, 16), 0.1f);
 }
 
 struct FramingCase
