@@ -69,9 +69,26 @@ std::optional<GeometryData> buildMesh(
         return fail("'P.indices' holds " + std::to_string(i) + ", outside 'P'");
     }
   }
-  if (mesh.attribute("nholes"))
-    report(NSIErrWarning,
-        "mesh '" + handle + "': 'nholes' is not supported; holes are filled");
+  // Loops per face: the outline, then `nholes` holes (default: none).
+  std::vector<size_t> loopsPerFace(nvertices.size(), 1);
+  if (mesh.attribute("nholes")) {
+    const std::vector<double> holes = numbersOf(mesh, "nholes");
+    size_t loops = 0;
+    bool valid = true;
+    for (double h : holes) {
+      valid = valid && toIndex(h) >= 0;
+      loops += valid ? 1 + size_t(h) : 0;
+    }
+    if (valid && loops == nvertices.size()) {
+      loopsPerFace.clear();
+      for (double h : holes)
+        loopsPerFace.push_back(1 + size_t(h));
+    } else {
+      report(NSIErrWarning,
+          "mesh '" + handle
+              + "': 'nholes' does not match 'nvertices'; every loop is a face");
+    }
+  }
   if (mesh.attribute("subdivision.scheme"))
     report(NSIErrWarning,
         "mesh '" + handle
@@ -122,22 +139,33 @@ std::optional<GeometryData> buildMesh(
         data.normals.push_back(float(normals[3 * n + c]));
     }
   }
-  size_t first = 0;
-  std::vector<std::array<double, 3>> corners;
-  for (double nv : nvertices) {
-    const size_t n = size_t(toIndex(nv)); // checked above
-    corners.clear();
-    for (size_t k = first; k < first + n; ++k)
-      corners.push_back({data.positions[3 * k],
-          data.positions[3 * k + 1],
-          data.positions[3 * k + 2]});
-    for (auto [a, b, c] : triangulatePolygon(corners)) {
+  size_t first = 0, loop = 0;
+  for (size_t loops : loopsPerFace) {
+    // Corners are numbered through the face's loops, from `first`.
+    std::vector<std::vector<Corner>> faceLoops;
+    for (size_t l = 0; l < loops; ++l, ++loop) {
+      const size_t n = size_t(toIndex(nvertices[loop])); // checked above
+      std::vector<Corner> corners;
+      for (size_t k = first; k < first + n; ++k) {
+        corners.push_back({data.positions[3 * k],
+            data.positions[3 * k + 1],
+            data.positions[3 * k + 2]});
+      }
+      faceLoops.push_back(std::move(corners));
+      first += n;
+    }
+    size_t faceSize = 0;
+    for (auto &l : faceLoops)
+      faceSize += l.size();
+    const size_t faceFirst = first - faceSize;
+    for (auto [a, b, c] : triangulatePolygonWithHoles(faceLoops)) {
       if (flip)
         std::swap(b, c);
       data.triangles.insert(data.triangles.end(),
-          {uint32_t(first + a), uint32_t(first + b), uint32_t(first + c)});
+          {uint32_t(faceFirst + a),
+              uint32_t(faceFirst + b),
+              uint32_t(faceFirst + c)});
     }
-    first += n;
   }
   if (data.triangles.empty())
     return fail("no polygon has three vertices");

@@ -98,4 +98,67 @@ TEST(PolygonTriangulation, DegenerateInputStillEnds)
       2u);
 }
 
+// The loops' corners numbered through, as triangulatePolygonWithHoles does.
+Corners flatten(const std::vector<Corners> &loops)
+{
+  Corners all;
+  for (auto &loop : loops)
+    all.insert(all.end(), loop.begin(), loop.end());
+  return all;
+}
+
+// Triangles keep the outline's winding, cover its area less the holes', and
+// none has its centre in a hole.
+void expectCoversWithHoles(
+    const std::vector<Corners> &loops, size_t expectedTriangles)
+{
+  const auto triangles = prism::nsi::triangulatePolygonWithHoles(loops);
+  const Corners all = flatten(loops);
+  ASSERT_EQ(triangles.size(), expectedTriangles);
+  double area = std::abs(polygonArea(loops[0]));
+  for (size_t h = 1; h < loops.size(); ++h)
+    area -= std::abs(polygonArea(loops[h]));
+  const double sign = polygonArea(loops[0]) > 0 ? 1 : -1;
+  double total = 0;
+  for (auto [a, b, c] : triangles) {
+    ASSERT_LT(std::max({a, b, c}), all.size());
+    const double t = signedArea(all[a], all[b], all[c]);
+    EXPECT_GE(t * sign, 0) << "a triangle turned over";
+    total += std::abs(t);
+    const double cx = (all[a][0] + all[b][0] + all[c][0]) / 3;
+    const double cy = (all[a][1] + all[b][1] + all[c][1]) / 3;
+    for (size_t h = 1; h < loops.size(); ++h) {
+      double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+      for (auto &p : loops[h]) {
+        x0 = std::min(x0, p[0]);
+        x1 = std::max(x1, p[0]);
+        y0 = std::min(y0, p[1]);
+        y1 = std::max(y1, p[1]);
+      }
+      EXPECT_FALSE(cx > x0 && cx < x1 && cy > y0 && cy < y1)
+          << "a triangle fills hole " << h;
+    }
+  }
+  EXPECT_NEAR(total, area, 1e-9);
+}
+
+TEST(PolygonTriangulation, SquareWithASquareHole)
+{
+  const Corners outline{{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}};
+  // Clockwise as NSI writes holes, and counter-clockwise: both work.
+  Corners hole{{1, 1, 0}, {1, 3, 0}, {3, 3, 0}, {3, 1, 0}};
+  expectCoversWithHoles({outline, hole}, 8);
+  std::reverse(hole.begin(), hole.end());
+  expectCoversWithHoles({outline, hole}, 8);
+}
+
+TEST(PolygonTriangulation, TwoHolesSideBySide)
+{
+  const Corners outline{{0, 0, 0}, {10, 0, 0}, {10, 4, 0}, {0, 4, 0}};
+  const Corners left{{1, 1, 0}, {1, 3, 0}, {3, 3, 0}, {3, 1, 0}};
+  const Corners right{{6, 1, 0}, {6, 3, 0}, {8, 2, 0}};
+  // n + 2 h - 2 triangles: 11 corners, 2 holes: 13.
+  expectCoversWithHoles({outline, left, right}, 13);
+}
+
 } // namespace

@@ -592,6 +592,27 @@ Connect "bulb_attr" "" "bulb" "geometryattributes")";
   EXPECT_GT(value(point, 22, 16), 0.1f);
 }
 
+TEST_F(Render, MeshHolesStayOpen)
+{
+  // A 2x2 square with a 1x1 hole (nholes 1: two loops, one face) 10 ahead.
+  NSIContext_t ctx = beginRender();
+  const Image image = renderWhite(ctx,
+      R"(Create "shape" "mesh" Connect "shape" "" ".root" "objects"
+SetAttribute "shape" "nvertices" "int" 2 [ 4 4 ] "nholes" "int" 1 1
+  "P" "point" 8 [ -1 -1 -10  1 -1 -10  1 1 -10  -1 1 -10
+                  -0.5 -0.5 -10  -0.5 0.5 -10  0.5 0.5 -10  0.5 -0.5 -10 ])",
+      "",
+      R"("resolution" "int[2]" 1 [ 32 32 ] "oversampling" "int" 1 4)",
+      path("hole.exr"));
+  NSIEnd(ctx);
+  EXPECT_EQ(m_messages.problems(), "");
+  // 0.1675 units per pixel: the hole spans columns 13-19, the ring 10-22.
+  EXPECT_EQ(value(image, 16, 16), 0.f) << "the hole";
+  EXPECT_GT(value(image, 20, 16), 0.8f) << "the ring right of it";
+  EXPECT_GT(value(image, 16, 11), 0.8f) << "the ring above it";
+  EXPECT_EQ(value(image, 25, 16), 0.f) << "outside";
+}
+
 struct FramingCase
 {
   const char *name;
