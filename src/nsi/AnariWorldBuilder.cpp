@@ -275,6 +275,10 @@ AnariWorld buildAnariWorld(ANARIDevice device,
     if (item.kind == LightItem::Kind::Ambient) {
       out.ambientColor = item.shader.color;
       out.ambientRadiance += item.shader.intensity;
+      if (item.visibleToCamera) {
+        for (int c = 0; c < 3; ++c)
+          out.background[c] += item.shader.color[c] * item.shader.intensity;
+      }
       continue;
     }
     if (ANARILight light = newLight(device, item, report))

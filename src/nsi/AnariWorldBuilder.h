@@ -15,6 +15,9 @@ struct AnariWorld
   // Ambient light, which ANARI puts on the renderer rather than the world.
   std::array<float, 3> ambientColor{1, 1, 1};
   float ambientRadiance{0};
+  // What camera rays that miss see: a uniform environment visible to the
+  // camera shows as its colour; else black.
+  std::array<float, 4> background{0, 0, 0, 1};
 };
 
 AnariWorld buildAnariWorld(ANARIDevice device,

@@ -83,9 +83,11 @@ bool RenderSession::start(
   AnariWorld world = buildAnariWorld(m_device, scene, m_report);
   m_world = world.world;
   m_renderer = anariNewRenderer(m_device, "default");
-  const float black[4] = {0, 0, 0, 1};
-  anariSetParameter(
-      m_device, m_renderer, "background", ANARI_FLOAT32_VEC4, black);
+  anariSetParameter(m_device,
+      m_renderer,
+      "background",
+      ANARI_FLOAT32_VEC4,
+      world.background.data());
   anariSetParameter(m_device,
       m_renderer,
       "ambientColor",

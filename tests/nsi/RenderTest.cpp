@@ -337,23 +337,30 @@ SetAttribute "shape" "nvertices" "int" 1 4 "P" "point" 4 [ -1 -1 -10  1 -1 -10  
 }
 
 // White geometry (`shape`, made by the `geometry` statements) under a
-// uniform environment (unless `ambient` is false), seen by a camera at the
-// origin with fov 30 plus `camera` attributes and a screen with `screen`
-// attributes; rendered to the EXR `output`, which is read back.
+// uniform environment (hidden from the camera, seen, or none at all),
+// seen by a camera at the origin with fov 30 plus `camera` attributes and a
+// screen with `screen` attributes; rendered to the EXR `output`, which is
+// read back.
+enum class Sky { None, Hidden, Visible };
+
 Image renderWhite(NSIContext_t ctx,
     const std::string &geometry,
     const std::string &camera,
     const std::string &screen,
     const std::string &output,
-    bool ambient = true)
+    Sky lighting = Sky::Hidden)
 {
-  const std::string sky =
-      ambient ? R"(Create "sky" "environment" Connect "sky" "" ".root" "objects"
+  std::string sky;
+  if (lighting != Sky::None) {
+    sky = R"(Create "sky" "environment" Connect "sky" "" ".root" "objects"
 Create "light" "shader" SetAttribute "light" "shaderfilename" "string" 1 "environmentLight"
 Create "sky_attr" "attributes" Connect "light" "" "sky_attr" "surfaceshader"
 Connect "sky_attr" "" "sky" "geometryattributes"
-)"
-              : "";
+)";
+  }
+  if (lighting == Sky::Hidden)
+    sky += R"(SetAttribute "sky_attr" "visibility.camera" "int" 1 0
+)";
   const std::string text =
       R"(Create "cam" "perspectivecamera" Connect "cam" "" ".root" "objects"
 SetAttribute "cam" "fov" "float" 1 30 )"
@@ -577,7 +584,7 @@ Connect "bulb_attr" "" "bulb" "geometryattributes")";
         camera,
         R"("resolution" "int[2]" 1 [ 32 32 ] "oversampling" "int" 1 4)",
         path(name),
-        false);
+        Sky::None);
     NSIEnd(ctx);
     return image;
   };
@@ -590,6 +597,28 @@ Connect "bulb_attr" "" "bulb" "geometryattributes")";
   EXPECT_EQ(value(spot, 22, 16), 0.f);
   EXPECT_GT(value(point, 16, 22), 0.1f);
   EXPECT_GT(value(point, 22, 16), 0.1f);
+}
+
+TEST_F(Render, UniformEnvironmentIsSeenUnlessHidden)
+{
+  auto render = [&](Sky sky, const char *name) {
+    NSIContext_t ctx = beginRender();
+    Image image = renderWhite(ctx,
+        whiteSquare(NSI_SCENE_ROOT),
+        "",
+        R"("resolution" "int[2]" 1 [ 16 16 ] "oversampling" "int" 1 4)",
+        path(name),
+        sky);
+    NSIEnd(ctx);
+    return image;
+  };
+  const Image seen = render(Sky::Visible, "seen.exr");
+  const Image hidden = render(Sky::Hidden, "hidden.exr");
+  EXPECT_EQ(m_messages.problems(), "");
+  EXPECT_FLOAT_EQ(value(seen, 0, 0), 1.f); // the environment's colour
+  EXPECT_EQ(value(hidden, 0, 0), 0.f);
+  EXPECT_GT(value(hidden, 8, 8), 0.8f); // the square, lit either way
+  EXPECT_GT(value(seen, 8, 8), 0.8f);
 }
 
 TEST_F(Render, MeshHolesStayOpen)
@@ -713,6 +742,8 @@ TEST_P(Framing, LightsThePredictedPixels)
   nsi.Create("sky_attr", "attributes");
   nsi.Connect("sky_shader", "", "sky_attr", "surfaceshader");
   nsi.Connect("sky_attr", "", "sky", "geometryattributes");
+  nsi.SetAttribute(
+      "sky_attr", NSI::ArgumentList().addInteger("visibility.camera", 0));
 
   nsi.RenderControl(NSI::ArgumentList().addString("action", "start"));
   nsi.RenderControl(NSI::ArgumentList().addString("action", "wait"));
