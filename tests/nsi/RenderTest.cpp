@@ -621,6 +621,39 @@ TEST_F(Render, UniformEnvironmentIsSeenUnlessHidden)
   EXPECT_GT(value(seen, 8, 8), 0.8f);
 }
 
+TEST_F(Render, SynchronizeShowsEdits)
+{
+  // The white square rendered, then turned red and moved right, then
+  // synchronized: the output file shows the edit.
+  NSIContext_t ctx = beginRender();
+  const std::string output = path("edited.exr");
+  const Image before = renderWhite(ctx,
+      whiteSquare("move"),
+      R"(Create "move" "transform" Connect "move" "" ".root" "objects")",
+      R"("resolution" "int[2]" 1 [ 16 16 ] "oversampling" "int" 1 4)",
+      output);
+  NSI::ArgumentList red;
+  const float color[3] = {1, 0, 0};
+  red.add("i_color", NSITypeColor, color);
+  NSISetAttribute(ctx, "white", red.size(), red.data());
+  NSI::ArgumentList right;
+  const double m[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1.5, 0, 0, 1};
+  right.add("transformationmatrix", NSITypeDoubleMatrix, m);
+  NSISetAttribute(ctx, "move", right.size(), right.data());
+  renderControl(ctx, "synchronize");
+  renderControl(ctx, "wait");
+  NSIEnd(ctx);
+  EXPECT_EQ(m_messages.problems(), "");
+  const Image after = readImage(output);
+  ASSERT_EQ(after.width, 16u);
+  // 0.335 units per pixel: the square covered columns 5-10 (x from -1 to
+  // 1), and covers 9-15 (x from 0.5 to 2.5) after the edit.
+  EXPECT_GT(before.at(5, 8).g, 0.8f);
+  EXPECT_EQ(after.at(5, 8).r, 0.f);
+  EXPECT_GT(after.at(12, 8).r, 0.8f);
+  EXPECT_EQ(after.at(12, 8).g, 0.f);
+}
+
 TEST_F(Render, MeshHolesStayOpen)
 {
   // A 2x2 square with a 1x1 hole (nholes 1: two loops, one face) 10 ahead.
