@@ -14,6 +14,9 @@ namespace {
 
 // Deeper chains than this are taken to be a mistake, not a scene.
 constexpr int kMaxDepth = 256;
+// Nodes reached along all paths from .root, at most: shared transforms
+// multiply paths, and a few dozen levels of them must not hang the render.
+constexpr size_t kMaxVisits = size_t(1) << 21;
 // More samples than this along the shutter add nothing visible.
 constexpr size_t kMaxMotionSteps = 32;
 // Frames past these sizes would not fit in memory; a typo, not a wish.
@@ -139,6 +142,12 @@ class Resolver
       return;
     if (depth > kMaxDepth) {
       warnOnce("transform chain deeper than 256 at '" + handle + "'; cut");
+      return;
+    }
+    if (++m_visits > kMaxVisits) {
+      warnOnce(
+          "the scene has too many placements (over 2^21); the rest "
+          "are not rendered");
       return;
     }
     Placement world = worldFromParent;
@@ -523,6 +532,7 @@ class Resolver
   std::set<std::string> m_failed;
   std::set<std::string> m_warned;
   std::vector<double> m_times;
+  size_t m_visits{0};
 };
 
 } // namespace

@@ -654,6 +654,38 @@ TEST_F(Render, SynchronizeShowsEdits)
   EXPECT_EQ(after.at(12, 8).g, 0.f);
 }
 
+TEST_F(Render, SharedTransformsCannotExplode)
+{
+  // 40 levels, each transform hung twice under the next: 2^40 paths from
+  // .root to the mesh. Resolving them all would never end.
+  NSIContext_t ctx = beginRender();
+  NSICreate(ctx, "m", "mesh", 0, nullptr);
+  // A stream, not string concatenation: GCC 12 raises a false -Wrestrict.
+  auto name = [](char prefix, int level) {
+    std::ostringstream text;
+    text << prefix << level;
+    return text.str();
+  };
+  std::string below = "m";
+  for (int level = 0; level < 40; ++level) {
+    const std::string a = name('a', level), b = name('b', level);
+    const std::string above = name('t', level);
+    for (const std::string &handle : {a, b, above})
+      NSICreate(ctx, handle.c_str(), "transform", 0, nullptr);
+    for (const std::string &parent : {a, b}) {
+      NSIConnect(ctx, below.c_str(), "", parent.c_str(), "objects", 0, nullptr);
+      NSIConnect(ctx, parent.c_str(), "", above.c_str(), "objects", 0, nullptr);
+    }
+    below = above;
+  }
+  NSIConnect(ctx, below.c_str(), "", NSI_SCENE_ROOT, "objects", 0, nullptr);
+  renderControl(ctx, "start");
+  renderControl(ctx, "wait");
+  NSIEnd(ctx);
+  EXPECT_NE(m_messages.problems().find("too many placements (over 2^21)"),
+      std::string::npos);
+}
+
 TEST_F(Render, MeshHolesStayOpen)
 {
   // A 2x2 square with a 1x1 hole (nholes 1: two loops, one face) 10 ahead.
