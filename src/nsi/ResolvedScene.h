@@ -19,7 +19,9 @@ namespace prism::nsi {
 struct GeometryData
 {
   bool spheres{false};
-  bool curves{false};                  // round linear segments
+  bool curves{false};  // round linear segments
+  bool isPlane{false}; // an NSI plane's big square
+  double planeHalfSize{0};
   std::vector<float> positions;        // xyz
   std::vector<float> normals;          // xyz per position, or empty
   std::vector<float> radii;            // spheres and curves, per position

@@ -42,6 +42,7 @@ class Resolver
   {
     m_times = motionTimes();
     visit(NSI_SCENE_ROOT, {kIdentity}, {}, 0);
+    sizePlanes();
     return std::move(m_scene);
   }
 
@@ -50,6 +51,75 @@ class Resolver
   {
     if (m_warned.insert(message).second)
       m_report(NSIErrWarning, message);
+  }
+
+  // NSI planes are infinite (z = 0 in their space, facing +Z); ANARI gets
+  // a square 100 times wider than everything else in the scene, cameras
+  // included, as seen from each plane's origin.
+  void sizePlanes()
+  {
+    std::array<double, 3> low{INFINITY, INFINITY, INFINITY};
+    std::array<double, 3> high{-INFINITY, -INFINITY, -INFINITY};
+    auto grow = [&](const std::array<double, 3> &p) {
+      for (int c = 0; c < 3; ++c) {
+        low[c] = std::min(low[c], p[c]);
+        high[c] = std::max(high[c], p[c]);
+      }
+    };
+    for (auto &camera : m_scene.cameras)
+      grow(transformPoint(camera.worldFromCamera, {0, 0, 0}));
+    for (auto &item : m_scene.surfaces) {
+      const GeometryData &data = m_scene.geometries.at(item.geometryHandle);
+      if (data.positions.empty())
+        continue; // a plane
+      std::array<double, 3> a{INFINITY, INFINITY, INFINITY};
+      std::array<double, 3> b{-INFINITY, -INFINITY, -INFINITY};
+      float margin = 0;
+      for (float r : data.radii)
+        margin = std::max(margin, r);
+      for (size_t i = 0; i < data.positions.size(); i += 3) {
+        for (int c = 0; c < 3; ++c) {
+          a[c] = std::min(a[c], double(data.positions[i + c]) - margin);
+          b[c] = std::max(b[c], double(data.positions[i + c]) + margin);
+        }
+      }
+      for (const Placement &placement : item.worldFromObject) {
+        for (int corner = 0; corner < 8; ++corner) {
+          grow(transformPoint(placement.front(),
+              {corner & 1 ? b[0] : a[0],
+                  corner & 2 ? b[1] : a[1],
+                  corner & 4 ? b[2] : a[2]}));
+        }
+      }
+    }
+    if (!(low[0] <= high[0]))
+      low = high = {0, 0, 0};
+    const std::array<double, 3> centre{
+        (low[0] + high[0]) / 2, (low[1] + high[1]) / 2, (low[2] + high[2]) / 2};
+    const double diagonal =
+        std::hypot(high[0] - low[0], high[1] - low[1], high[2] - low[2]);
+    for (auto &item : m_scene.surfaces) {
+      GeometryData &data = m_scene.geometries.at(item.geometryHandle);
+      if (!data.positions.empty() && !data.isPlane)
+        continue;
+      double half = data.planeHalfSize;
+      for (const Placement &placement : item.worldFromObject) {
+        const Matrix &m = placement.front();
+        const double scale = std::max(std::hypot(m[0], m[1], m[2]), 1e-12);
+        const std::array<double, 3> origin{m[12], m[13], m[14]};
+        const double reach = std::hypot(centre[0] - origin[0],
+                                 centre[1] - origin[1],
+                                 centre[2] - origin[2])
+                             + diagonal + 1;
+        half = std::max(half, 100 * reach / scale);
+      }
+      const float s = float(half);
+      data.isPlane = true;
+      data.planeHalfSize = half;
+      data.positions = {-s, -s, 0, s, -s, 0, s, s, 0, -s, s, 0};
+      data.triangles = {0, 1, 2, 0, 2, 3};
+      data.normals = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
+    }
   }
 
   // The times at which moving transforms are sampled: uniform over the
@@ -172,8 +242,9 @@ class Resolver
     if (type == "root" || type == "transform") {
       for (const Input *input : node->inputsOf("objects"))
         visit(input->from, world, attributes, depth + 1);
-    } else if (type == "mesh" || type == "particles" || type == "curves"
-               || type == "cubiccurves" || type == "linearcurves") {
+    } else if (type == "mesh" || type == "particles" || type == "plane"
+               || type == "curves" || type == "cubiccurves"
+               || type == "linearcurves") {
       geometry(handle, *node, world, attributes);
     } else if (type == "instances") {
       instances(handle, *node, world, attributes, depth);
@@ -295,10 +366,15 @@ class Resolver
     if (built == m_scene.geometries.end()) {
       if (m_failed.count(handle))
         return;
-      auto data = node.type == "mesh" ? buildMesh(handle, node, m_report)
-                  : node.type == "particles"
-                      ? buildParticles(handle, node, m_report)
-                      : buildCurves(handle, node, m_report);
+      std::optional<GeometryData> data;
+      if (node.type == "mesh")
+        data = buildMesh(handle, node, m_report);
+      else if (node.type == "particles")
+        data = buildParticles(handle, node, m_report);
+      else if (node.type == "plane")
+        data = GeometryData{}; // sized once the whole scene is known
+      else
+        data = buildCurves(handle, node, m_report);
       if (!data) {
         m_failed.insert(handle);
         return;

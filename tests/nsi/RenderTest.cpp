@@ -686,6 +686,27 @@ TEST_F(Render, SharedTransformsCannotExplode)
       std::string::npos);
 }
 
+TEST_F(Render, PlanesReachTheHorizon)
+{
+  // A plane turned to be the ground (its +Z up), the camera 1 above it
+  // looking along -Z: everything below the horizon is ground, even where
+  // the rays meet it 40 units away.
+  NSIContext_t ctx = beginRender();
+  const Image image = renderWhite(ctx,
+      R"(Create "ground" "transform" Connect "ground" "" ".root" "objects"
+SetAttribute "ground" "transformationmatrix" "doublematrix" 1 [ 1 0 0 0  0 0 -1 0  0 1 0 0  0 -1 0 1 ]
+Create "shape" "plane" Connect "shape" "" "ground" "objects")",
+      "",
+      R"("resolution" "int[2]" 1 [ 32 32 ] "oversampling" "int" 1 4)",
+      path("plane.exr"));
+  NSIEnd(ctx);
+  EXPECT_EQ(m_messages.problems(), "");
+  for (uint32_t row = 17; row < 32; ++row)
+    EXPECT_GT(value(image, 16, row), 0.5f) << "row " << row;
+  for (uint32_t row = 0; row < 16; ++row)
+    EXPECT_EQ(value(image, 16, row), 0.f) << "row " << row;
+}
+
 TEST_F(Render, MeshHolesStayOpen)
 {
   // A 2x2 square with a 1x1 hole (nholes 1: two loops, one face) 10 ahead.
