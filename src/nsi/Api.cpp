@@ -92,8 +92,13 @@ NSI_API void NSIEnd(NSIContext_t ctx)
       reportWithoutContext("NSIEnd: unknown context " + std::to_string(ctx));
       return;
     }
-    std::lock_guard lock(context->mutex);
-    context.reset(); // stops the render; other threads' copies keep it alive
+    {
+      // Calls under way on other threads finish first.
+      std::lock_guard lock(context->mutex);
+    }
+    // Stops the render; other threads' copies keep the context alive. (Not
+    // under the lock: the lock dies with the context.)
+    context.reset();
   } catch (...) {
     reportWithoutContext("NSIEnd: internal error");
   }
