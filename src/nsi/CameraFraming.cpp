@@ -12,7 +12,11 @@ Framing frameCamera(
   const double height = std::max<uint32_t>(screen.height, 1);
   const double a = width * screen.pixelAspectRatio / height;
   double l = -a, b = -1, r = a, t = 1;
-  if (screen.hasWindow) {
+  auto finite = [](const std::array<double, 4> &v) {
+    return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2])
+           && std::isfinite(v[3]);
+  };
+  if (screen.hasWindow && finite(screen.window)) {
     l = screen.window[0];
     b = screen.window[1];
     r = screen.window[2];
@@ -53,8 +57,10 @@ Framing frameCamera(
         end = std::max(end, first + 1);
       };
   uint32_t x0, x1, row0, row1;
-  pixelRange(screen.crop[0], screen.crop[2], width, x0, x1);
-  pixelRange(screen.crop[1], screen.crop[3], height, row0, row1);
+  const std::array<double, 4> crop =
+      finite(screen.crop) ? screen.crop : std::array<double, 4>{0, 0, 1, 1};
+  pixelRange(crop[0], crop[2], width, x0, x1);
+  pixelRange(crop[1], crop[3], height, row0, row1);
   framing.frameWidth = x1 - x0;
   framing.frameHeight = row1 - row0;
 

@@ -325,8 +325,9 @@ class Resolver
     return best;
   }
 
-  // An int attribute resolved like the shader; nullopt when none is set.
-  std::optional<int> resolveInt(
+  // An on/off attribute (visibility...) resolved by its `.priority`, then
+  // nearness, as 1 or 0; nullopt when none is set.
+  std::optional<int> resolveFlag(
       const std::vector<AttributesOnPath> &attributes, const std::string &name)
   {
     std::optional<int> result;
@@ -340,7 +341,8 @@ class Resolver
       const double priority = p ? p->number(0) : 0;
       if (!result || priority > bestPriority
           || (priority == bestPriority && a.level <= bestLevel)) {
-        result = int(v->number(1));
+        const double number = v->number(1);
+        result = number != 0 ? 1 : 0; // on or off is all that is read
         bestPriority = priority;
         bestLevel = a.level;
       }
@@ -358,10 +360,10 @@ class Resolver
       const Placement &world,
       const std::vector<AttributesOnPath> &attributes)
   {
-    if (resolveInt(attributes, "visibility").value_or(1) == 0)
+    if (resolveFlag(attributes, "visibility").value_or(1) == 0)
       return;
     const bool cameraSees =
-        resolveInt(attributes, "visibility.camera").value_or(1) != 0;
+        resolveFlag(attributes, "visibility.camera").value_or(1) != 0;
     auto built = m_scene.geometries.find(handle);
     if (built == m_scene.geometries.end()) {
       if (m_failed.count(handle))
@@ -479,7 +481,7 @@ class Resolver
     LightItem light;
     light.shader = describeShader(*shaderNode);
     light.visibleToCamera =
-        resolveInt(attributes, "visibility.camera").value_or(1) != 0;
+        resolveFlag(attributes, "visibility.camera").value_or(1) != 0;
     const Value *angle = node.attribute("angle");
     const double degrees = angle ? angle->number(360) : 360;
     using Kind = ShaderDescription::Kind;

@@ -69,6 +69,15 @@ TEST(CameraFraming, DegenerateInputStaysFinite)
   EXPECT_TRUE(std::isfinite(f.fovy) && f.fovy > 0);
   EXPECT_GE(f.frameWidth, 1u);
   EXPECT_GE(f.frameHeight, 1u);
+  // Not-a-number windows and crops fall back to the defaults.
+  screen.width = 8;
+  screen.height = 4;
+  screen.window = {NAN, 0, 1, 1};
+  screen.crop = {0, NAN, 1, 1};
+  const auto g = frameCamera(false, 90, screen);
+  EXPECT_EQ(g.frameWidth, 8u);
+  EXPECT_EQ(g.frameHeight, 4u);
+  EXPECT_NEAR(g.aspect, 2.f, 1e-6);
 }
 
 } // namespace
