@@ -217,9 +217,13 @@ AnariWorld buildAnariWorld(ANARIDevice device,
     const ReportFunction &report)
 {
   AnariWorld out;
+  // Only the geometry some surface uses (a mesh split by facesets is not).
   std::map<std::string, ANARIGeometry> geometries;
-  for (auto &[handle, data] : scene.geometries)
-    geometries[handle] = newGeometry(device, data);
+  for (auto &item : scene.surfaces) {
+    if (!geometries.count(item.geometryHandle))
+      geometries[item.geometryHandle] =
+          newGeometry(device, scene.geometries.at(item.geometryHandle));
+  }
 
   std::vector<ANARIInstance> instances;
   for (auto &item : scene.surfaces) {

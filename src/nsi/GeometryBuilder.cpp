@@ -140,6 +140,7 @@ std::optional<GeometryData> buildMesh(
     }
   }
   size_t first = 0, loop = 0;
+  uint32_t face = 0;
   for (size_t loops : loopsPerFace) {
     // Corners are numbered through the face's loops, from `first`.
     std::vector<std::vector<Corner>> faceLoops;
@@ -165,7 +166,9 @@ std::optional<GeometryData> buildMesh(
           {uint32_t(faceFirst + a),
               uint32_t(faceFirst + b),
               uint32_t(faceFirst + c)});
+      data.triangleFaces.push_back(face);
     }
+    ++face;
   }
   if (data.triangles.empty())
     return fail("no polygon has three vertices");

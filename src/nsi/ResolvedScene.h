@@ -27,6 +27,7 @@ struct GeometryData
   std::vector<float> radii;            // spheres and curves, per position
   std::vector<uint32_t> segmentStarts; // curves
   std::vector<uint32_t> triangles;
+  std::vector<uint32_t> triangleFaces; // the polygon each triangle is of
 };
 
 // One geometry with one resolved shader, placed once or more.

@@ -360,10 +360,6 @@ class Resolver
       const Placement &world,
       const std::vector<AttributesOnPath> &attributes)
   {
-    if (resolveFlag(attributes, "visibility").value_or(1) == 0)
-      return;
-    const bool cameraSees =
-        resolveFlag(attributes, "visibility.camera").value_or(1) != 0;
     auto built = m_scene.geometries.find(handle);
     if (built == m_scene.geometries.end()) {
       if (m_failed.count(handle))
@@ -383,7 +379,76 @@ class Resolver
       }
       built = m_scene.geometries.emplace(handle, std::move(*data)).first;
     }
-    const GeometryData &data = built->second;
+    const auto facesets = node.inputsOf("facesets");
+    if (node.type != "mesh" || facesets.empty()) {
+      placeSurface(handle, world, attributes);
+      return;
+    }
+    // Each faceset's faces are a surface of their own, its attributes the
+    // nearest; the faces in no set keep the mesh's.
+    std::set<uint32_t> inSomeSet;
+    for (const Input *input : facesets) {
+      const Node *faceset = m_graph.find(input->from);
+      if (!faceset || faceset->type != "faceset")
+        continue;
+      std::set<uint32_t> faces;
+      for (double f : numbers(*faceset, "faces")) {
+        if (f >= 0 && f < 4e9)
+          faces.insert(uint32_t(f));
+      }
+      inSomeSet.insert(faces.begin(), faces.end());
+      const std::string part = handle + '\x1f' + input->from;
+      if (!addPart(
+              handle, part, [&](uint32_t f) { return faces.count(f) > 0; }))
+        continue;
+      std::vector<AttributesOnPath> nearer = attributes;
+      for (auto &a : nearer)
+        ++a.level;
+      for (const Input *a : faceset->inputsOf("geometryattributes")) {
+        if (const Node *setAttributes = m_graph.find(a->from))
+          nearer.push_back({setAttributes, 0});
+      }
+      placeSurface(part, world, nearer);
+    }
+    const std::string rest = handle + '\x1f';
+    if (addPart(handle, rest, [&](uint32_t f) { return !inSomeSet.count(f); }))
+      placeSurface(rest, world, attributes);
+  }
+
+  // The triangles of `whole` whose faces `keep` accepts, as geometry `part`
+  // (made once); false when there are none.
+  template <typename Keep>
+  bool addPart(const std::string &whole, const std::string &part, Keep keep)
+  {
+    auto found = m_scene.geometries.find(part);
+    if (found == m_scene.geometries.end()) {
+      const GeometryData &source = m_scene.geometries.at(whole);
+      GeometryData subset = source;
+      subset.triangles.clear();
+      subset.triangleFaces.clear();
+      for (size_t t = 0; t < source.triangleFaces.size(); ++t) {
+        if (!keep(source.triangleFaces[t]))
+          continue;
+        subset.triangles.insert(subset.triangles.end(),
+            source.triangles.begin() + 3 * t,
+            source.triangles.begin() + 3 * t + 3);
+        subset.triangleFaces.push_back(source.triangleFaces[t]);
+      }
+      found = m_scene.geometries.emplace(part, std::move(subset)).first;
+    }
+    return !found->second.triangles.empty();
+  }
+
+  // One placement of built geometry `key` with the attributes on its path.
+  void placeSurface(const std::string &key,
+      const Placement &world,
+      const std::vector<AttributesOnPath> &attributes)
+  {
+    if (resolveFlag(attributes, "visibility").value_or(1) == 0)
+      return;
+    const bool cameraSees =
+        resolveFlag(attributes, "visibility.camera").value_or(1) != 0;
+    const GeometryData &data = m_scene.geometries.at(key);
 
     std::string shaderHandle;
     const Node *shaderNode = resolveShader(attributes, shaderHandle);
@@ -404,12 +469,13 @@ class Resolver
           shader.color[2] * shader.intensity};
       shader.color = {0, 0, 0};
     }
-    const std::string key =
-        handle + '\n' + shaderHandle + '\n' + (cameraSees ? "1" : "0");
-    auto [it, added] = m_surfaceIndex.emplace(key, m_scene.surfaces.size());
+    const std::string surfaceKey =
+        key + '\n' + shaderHandle + '\n' + (cameraSees ? "1" : "0");
+    auto [it, added] =
+        m_surfaceIndex.emplace(surfaceKey, m_scene.surfaces.size());
     if (added) {
       SurfaceItem item;
-      item.geometryHandle = handle;
+      item.geometryHandle = key;
       item.shaderHandle = shaderHandle;
       item.shader = shader;
       item.visibleToCamera = cameraSees;

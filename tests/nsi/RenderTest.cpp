@@ -707,6 +707,35 @@ Create "shape" "plane" Connect "shape" "" "ground" "objects")",
     EXPECT_EQ(value(image, 16, row), 0.f) << "row " << row;
 }
 
+TEST_F(Render, FacesetsTakeTheirOwnShader)
+{
+  // Two faces side by side; face 1 is in a faceset with a red shader, face
+  // 0 keeps the mesh's white one.
+  NSIContext_t ctx = beginRender();
+  const Image image = renderWhite(ctx,
+      R"(Create "shape" "mesh" Connect "shape" "" ".root" "objects"
+SetAttribute "shape" "nvertices" "int" 2 [ 4 4 ]
+  "P" "point" 8 [ -2 -1 -10  0 -1 -10  0 1 -10  -2 1 -10   0 -1 -10  2 -1 -10  2 1 -10  0 1 -10 ]
+Create "right" "faceset" Connect "right" "" "shape" "facesets"
+SetAttribute "right" "faces" "int" 1 1
+Create "red" "shader" SetAttribute "red" "shaderfilename" "string" 1 "lambert"
+  "i_color" "color" 1 [ 1 0 0 ]
+Create "red_attr" "attributes" Connect "red" "" "red_attr" "surfaceshader"
+Connect "red_attr" "" "right" "geometryattributes")",
+      "",
+      R"("resolution" "int[2]" 1 [ 32 16 ] "oversampling" "int" 1 4)",
+      path("faceset.exr"));
+  NSIEnd(ctx);
+  EXPECT_EQ(m_messages.problems(), "");
+  // 0.335 units per pixel (a window 4 wide): face 0 spans columns 10-16,
+  // face 1 16-22.
+  const auto &left = image.at(12, 8), &right = image.at(19, 8);
+  EXPECT_GT(left.r, 0.8f);
+  EXPECT_GT(left.g, 0.8f);
+  EXPECT_GT(right.r, 0.8f);
+  EXPECT_EQ(right.g, 0.f);
+}
+
 TEST_F(Render, MeshHolesStayOpen)
 {
   // A 2x2 square with a 1x1 hole (nholes 1: two loops, one face) 10 ahead.
