@@ -201,9 +201,18 @@ void Context::includeStream(const std::string &fileName)
     report(NSIErrError, "NSIEvaluate: cannot read '" + fileName + "': " + why);
     return;
   }
+  // Open while read, however the reading ends.
+  struct OpenStream
+  {
+    std::set<std::string> &open;
+    std::string key;
+    ~OpenStream()
+    {
+      open.erase(key);
+    }
+  } guard{m_openStreams, key};
   m_openStreams.insert(key);
   StreamReader(m_id, reporter(), fileName).read(text);
-  m_openStreams.erase(key);
 }
 
 void Context::renderControl(const ParameterList &params)
@@ -216,9 +225,16 @@ void Context::renderControl(const ParameterList &params)
   } else if (action == "wait") {
     finishRender(false);
   } else if (action == "synchronize") {
-    // Without interactive updates yet, a synchronize renders the scene anew.
+    // Without incremental updates yet, a synchronize renders the scene anew:
+    // a render under way is restarted (and says so), and the new one ends
+    // "synchronized".
+    const bool wasRunning = m_render && m_render->running();
+    if (m_render)
+      m_render->silenceStopped();
     finishRender(true);
-    startRender(params);
+    if (wasRunning && m_stopped)
+      m_stopped(NSIRenderRestarted);
+    startRender(params, true);
   } else if (action == "stop") {
     finishRender(true);
   } else if (action == "suspend" || action == "resume") {
@@ -241,7 +257,7 @@ void Context::finishRender(bool stop)
   mutex.lock();
 }
 
-void Context::startRender(const ParameterList &params)
+void Context::startRender(const ParameterList &params, bool synchronizing)
 {
   if (m_render && m_render->running()) {
     report(NSIErrError,
@@ -253,15 +269,22 @@ void Context::startRender(const ParameterList &params)
     report(NSIErrWarning,
         "NSIRenderControl: interactive and progressive renders are not "
         "supported; rendering once");
+  // The callback stays with the context until another is given.
   auto callback =
       reinterpret_cast<NSIRenderStopped_t>(params.pointer("stoppedcallback"));
   void *callbackData = params.pointer("stoppedcallbackdata");
   const NSIContext_t id = m_id;
-  RenderSession::Stopped stopped;
-  if (callback)
-    stopped = [callback, callbackData, id](int status) {
+  if (callback) {
+    m_stopped = [callback, callbackData, id](int status) {
       callback(callbackData, id, status);
     };
+  }
+  RenderSession::Stopped stopped = m_stopped;
+  if (synchronizing && stopped) {
+    stopped = [report = m_stopped](int status) {
+      report(status == NSIRenderCompleted ? NSIRenderSynchronized : status);
+    };
+  }
   const ResolvedScene scene = resolveScene(m_graph, reporter(), expandPath);
   m_render = std::make_shared<RenderSession>(reporter(), stopped);
   if (!m_render->start(m_anariLibrary, scene))

@@ -53,7 +53,9 @@ class Context
 
  private:
   void includeStream(const std::string &fileName);
-  void startRender(const ParameterList &params);
+  // `synchronizing`: the render's completion is reported as
+  // NSIRenderSynchronized.
+  void startRender(const ParameterList &params, bool synchronizing = false);
   // Waits for (or stops) the render without holding the context lock, so
   // other threads and the stopped callback can use the context meanwhile.
   void finishRender(bool stop);
@@ -67,6 +69,7 @@ class Context
   std::unique_ptr<StreamWriter> m_writer; // set for `type apistream`
   // Shared so a thread waiting without the lock keeps it alive.
   std::shared_ptr<RenderSession> m_render;
+  RenderSession::Stopped m_stopped;    // the last stoppedcallback given
   std::set<std::string> m_openStreams; // includes being read, against cycles
   // Evaluate types a stream-writing context runs rather than records.
   std::set<std::string> m_executedTypes;

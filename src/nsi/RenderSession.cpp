@@ -247,7 +247,7 @@ void RenderSession::renderAll()
     }
   }
   m_running = false;
-  if (m_stopped)
+  if (m_stopped && !m_silent)
     m_stopped(completed ? NSIRenderCompleted : NSIRenderAborted);
 }
 

@@ -32,6 +32,11 @@ class RenderSession
   bool start(const std::string &library, const ResolvedScene &scene);
   void wait();
   void stop();
+  // The stopped callback is not called for this render (it is replaced).
+  void silenceStopped()
+  {
+    m_silent = true;
+  }
   bool running() const
   {
     return m_running;
@@ -51,6 +56,7 @@ class RenderSession
   bool m_hasMotion{false};
   std::atomic<bool> m_stopRequested{false};
   std::atomic<bool> m_running{false}; // from start until the thread ends
+  std::atomic<bool> m_silent{false};
   std::thread m_thread;
   std::mutex m_joinMutex; // one thread joins (and releases) at a time
 };

@@ -214,6 +214,21 @@ TEST_F(Render, StopAbortsALongRender)
   NSIEnd(ctx);
 }
 
+TEST_F(Render, SynchronizeRestartsARunningRender)
+{
+  StopRecord record;
+  NSIContext_t ctx = beginRender();
+  minimalScene(ctx, 256, 4096, path("restarted.png"));
+  renderControl(ctx, "start", &record);
+  renderControl(ctx, "synchronize"); // the callback given at start stays
+  renderControl(ctx, "stop");
+  NSIEnd(ctx);
+  std::lock_guard lock(record.mutex);
+  ASSERT_EQ(record.calls.size(), 2u);
+  EXPECT_EQ(record.calls[0].second, NSIRenderRestarted);
+  EXPECT_EQ(record.calls[1].second, NSIRenderAborted);
+}
+
 TEST_F(Render, EndWhileRenderingStopsCleanly)
 {
   NSIContext_t ctx = beginRender();
@@ -640,10 +655,13 @@ TEST_F(Render, SynchronizeShowsEdits)
   const double m[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1.5, 0, 0, 1};
   right.add("transformationmatrix", NSITypeDoubleMatrix, m);
   NSISetAttribute(ctx, "move", right.size(), right.data());
-  renderControl(ctx, "synchronize");
+  StopRecord record;
+  renderControl(ctx, "synchronize", &record);
   renderControl(ctx, "wait");
   NSIEnd(ctx);
   EXPECT_EQ(m_messages.problems(), "");
+  ASSERT_EQ(record.calls.size(), 1u);
+  EXPECT_EQ(record.calls[0].second, NSIRenderSynchronized);
   const Image after = readImage(output);
   ASSERT_EQ(after.width, 16u);
   // 0.335 units per pixel: the square covered columns 5-10 (x from -1 to
