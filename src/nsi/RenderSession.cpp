@@ -240,7 +240,10 @@ void RenderSession::renderAll()
         for (auto &p : written.pixels)
           p.a = 1.f;
       }
-      auto status = image::write(output.fileName, written);
+      image::WriteOptions options;
+      options.exrPixelType = output.halfFloat ? image::ExrPixelType::Half
+                                              : image::ExrPixelType::Float;
+      auto status = image::write(output.fileName, written, options);
       if (!status.ok())
         m_report(NSIErrError,
             "cannot write '" + output.fileName + "': " + status.error);

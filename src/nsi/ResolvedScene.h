@@ -56,6 +56,7 @@ struct OutputItem
 {
   std::string layerHandle, variableName, driverName, fileName;
   bool withAlpha{false};
+  bool halfFloat{false}; // scalarformat "half": EXR files in half floats
 };
 
 struct CameraItem

@@ -658,6 +658,8 @@ class Resolver
         output.layerHandle = layerInput->from;
         output.variableName = variable ? variable->string("Ci") : "Ci";
         output.withAlpha = alpha && alpha->number(0) != 0;
+        const Value *format = layer->attribute("scalarformat");
+        output.halfFloat = format && format->string() == "half";
         const Value *name = driver->attribute("drivername");
         const Value *file = driver->attribute("imagefilename");
         output.driverName = name ? name->string() : "";

@@ -295,6 +295,7 @@ TEST_F(Render, OutputLayersWriteTheirChannels)
         + file + "\"\n" + "Connect \"" + file + "\" \"\" \"" + variable
         + "\" \"outputdrivers\"\n";
   }
+  layers += "SetAttribute \"z\" \"scalarformat\" \"string\" 1 \"half\"\n";
   const std::string scene =
       writeFile("layers.nsi",
           R"(Create "cam" "perspectivecamera" Connect "cam" "" ".root" "objects"
@@ -332,7 +333,10 @@ RenderControl "action" "string" 1 "wait"
   ASSERT_EQ(albedo.width, 16u);
   ASSERT_EQ(mystery.width, 16u);
   const auto &d = depth.at(8, 8);
-  EXPECT_NEAR(d.r, 10.0f, 0.05f); // distance along a ray 2 degrees off axis
+  EXPECT_NEAR(d.r, 10.0f, 0.05f); // distance along a ray 1 degree off axis
+  // Written as half floats (scalarformat "half"): 10.0014 became a multiple
+  // of 2^-7, the step of halves between 8 and 16.
+  EXPECT_EQ(d.r * 128, std::round(d.r * 128)) << d.r;
   EXPECT_EQ(d.r, d.g);
   EXPECT_TRUE(std::isinf(depth.at(0, 0).r))
       << depth.at(0, 0).r; // the corner misses
