@@ -49,7 +49,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
   render.addString("anarilibrary", "prism-fuzz-no-such-library");
   readInto(render, path);
   NSI::ArgumentList stream;
-  stream.addString("type", "apistream").addString("streamfilename", "/dev/null");
+  stream.addString("type", "apistream")
+      .addString("streamfilename", "/dev/null");
   readInto(stream, path);
   return 0;
 }
