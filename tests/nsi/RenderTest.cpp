@@ -586,30 +586,39 @@ TEST_F(Render, ParticleLights)
 Create "up" "transform" Connect "up" "" ".root" "objects"
 SetAttribute "up" "transformationmatrix" "doublematrix" 1 [ 1 0 0 0  0 0 -1 0  0 1 0 0  0 10 0 1 ]
 Connect "cam" "" "up" "objects")";
-  auto render = [&](const char *shader, const char *name) {
-    const std::string geometry =
-        std::string(
-            R"(Create "shape" "mesh" Connect "shape" "" ".root" "objects"
+  auto render =
+      [&](const char *shader, const char *name, const char *normal = "0 -1 0") {
+        const std::string geometry =
+            std::string(
+                R"(Create "shape" "mesh" Connect "shape" "" ".root" "objects"
 SetAttribute "shape" "nvertices" "int" 1 4 "P" "point" 4 [ -5 0 5  5 0 5  5 0 -5  -5 0 -5 ]
 Create "bulb" "particles" Connect "bulb" "" ".root" "objects"
-SetAttribute "bulb" "P" "point" 1 [ 0 3 0 ] "N" "normal" 1 [ 0 -1 0 ] "width" "float" 1 0.01
-Create "bulb_shader" "shader" SetAttribute "bulb_shader" "shaderfilename" "string" 1 ")")
-        + shader + R"(" "coneAngle" "float" 1 20 "intensity" "float" 1 10
+SetAttribute "bulb" "P" "point" 1 [ 0 3 0 ] "width" "float" 1 0.01 "N" "normal" 1 [ )")
+            + normal + R"( ]
+Create "bulb_shader" "shader" SetAttribute "bulb_shader" "shaderfilename" "string" 1 ")"
+            + shader + R"(" "coneAngle" "float" 1 20 "intensity" "float" 1 10
 Create "bulb_attr" "attributes" Connect "bulb_shader" "" "bulb_attr" "surfaceshader"
 Connect "bulb_attr" "" "bulb" "geometryattributes")";
-    NSIContext_t ctx = beginRender();
-    Image image = renderWhite(ctx,
-        geometry,
-        camera,
-        R"("resolution" "int[2]" 1 [ 32 32 ] "oversampling" "int" 1 4)",
-        path(name),
-        Sky::None);
-    NSIEnd(ctx);
-    return image;
-  };
+        NSIContext_t ctx = beginRender();
+        Image image = renderWhite(ctx,
+            geometry,
+            camera,
+            R"("resolution" "int[2]" 1 [ 32 32 ] "oversampling" "int" 1 4)",
+            path(name),
+            Sky::None);
+        NSIEnd(ctx);
+        return image;
+      };
   const Image spot = render("spotLight", "spot.exr");
   const Image point = render("pointLight", "point.exr");
+  // An area light on a particle with N is a ring facing N: the floor is lit
+  // when it faces down, not when it faces up.
+  const Image ringDown = render("areaLight", "ring-down.exr");
+  const Image ringUp = render("areaLight", "ring-up.exr", "0 1 0");
   EXPECT_EQ(m_messages.problems(), "");
+  EXPECT_GT(value(ringDown, 16, 16), 0.1f);
+  EXPECT_GT(value(ringDown, 22, 16), 0.1f);
+  EXPECT_EQ(value(ringUp, 16, 16), 0.f);
   // 2.68 units per half image: the spot's disk is 3 pixels in radius.
   EXPECT_GT(value(spot, 16, 16), 0.1f);
   EXPECT_EQ(value(spot, 16, 22), 0.f);
