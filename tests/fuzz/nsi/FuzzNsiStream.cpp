@@ -14,17 +14,27 @@ namespace {
 
 void quiet(void *, int, int, const char *) {}
 
-// The input as a file, since streams are read from files.
+// The input as a file, since streams are read from files; removed when
+// the process ends.
+struct InputFile
+{
+  std::string path =
+      "/tmp/prism-fuzz-nsi-" + std::to_string(::getpid()) + ".nsi";
+  ~InputFile()
+  {
+    std::remove(path.c_str());
+  }
+};
+
 std::string writeInput(const uint8_t *data, size_t size)
 {
-  static const std::string path =
-      "/tmp/prism-fuzz-nsi-" + std::to_string(::getpid()) + ".nsi";
-  std::FILE *file = std::fopen(path.c_str(), "wb");
+  static const InputFile input;
+  std::FILE *file = std::fopen(input.path.c_str(), "wb");
   if (!file)
     return {};
   std::fwrite(data, 1, size, file);
   std::fclose(file);
-  return path;
+  return input.path;
 }
 
 void readInto(NSI::ArgumentList &begin, const std::string &path)
