@@ -559,8 +559,10 @@ std::string helpText()
 
 Renders SCENE with an ANARI device (by default the prism device) and writes
 the image. SCENE is a glTF 2.0 file (.gltf, .glb), an OBJ file (.obj, with
-its .mtl), a raw volume grid (.raw, see --raw-dims), a NanoVDB file (.nvdb)
-or demo:<name>.
+its .mtl), a raw volume grid (.raw, see --raw-dims), a NanoVDB file (.nvdb),
+an ASCII NSI stream (recognised by its content, plain or gzip; rendered by
+libnsi: its own screen and output drivers decide size, samples and files,
+only --library applies) or demo:<name>.
 
 Output
   -o, --output FILE      image to write: .png (8-bit sRGB), .exr or .pfm

@@ -8,6 +8,7 @@
 #include "FrameOutput.h"
 #include "GltfLoader.h"
 #include "NanoVdbLoader.h"
+#include "NsiScene.h"
 #include "ObjLoader.h"
 #include "Objects.h"
 #include "Options.h"
@@ -271,6 +272,9 @@ int run(int argc, char **argv)
           "unknown demo scene '" + sceneName + "' (demos: " + names + ")",
           kExitUsage);
     }
+  } else if (isNsiScene(options.scene)) {
+    // An NSI stream names its own camera, resolution and output files.
+    return renderNsiScene(options);
   } else {
     const std::string extension = lowerExtension(options.scene);
     if (extension == ".gltf" || extension == ".glb")
@@ -284,7 +288,7 @@ int run(int argc, char **argv)
     else
       return fail("'" + options.scene
               + "': unknown scene file type (expected .gltf, .glb, .obj, "
-                ".raw, .nvdb or demo:<name>)",
+                ".raw, .nvdb, an NSI stream or demo:<name>)",
           kExitUsage);
     std::error_code ec;
     if (std::filesystem::is_directory(options.scene, ec))

@@ -1,0 +1,294 @@
+#include "Context.h"
+
+#include "PathExpansion.h"
+#include "SceneResolver.h"
+#include "StreamReader.h"
+#include "StreamSource.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+
+namespace prism::nsi {
+
+void defaultErrorHandler(void *, int level, int, const char *message)
+{
+  const char *prefix = level >= NSIErrError     ? "error: "
+                       : level == NSIErrWarning ? "warning: "
+                       : level == NSIErrInfo    ? "info: "
+                                                : "";
+  // Plain messages are printed as given, with no newline added.
+  std::fprintf(stderr,
+      "%s%s%s",
+      prefix,
+      message ? message : "",
+      level == NSIErrMessage ? "" : "\n");
+}
+
+Context::Context(NSIContext_t id, const ParameterList &params)
+    : m_id(id), m_graph([this](int level, const std::string &message) {
+        report(level, message);
+      })
+{
+  m_errorHandler =
+      reinterpret_cast<NSIErrorHandler_t>(params.pointer("errorhandler"));
+  m_errorHandlerData = params.pointer("errorhandlerdata");
+  if (const char *library = std::getenv("PRISM_NSI_ANARI_LIBRARY");
+      library && *library)
+    m_anariLibrary = library;
+  m_anariLibrary = params.string("anarilibrary", m_anariLibrary);
+
+  const std::string type = params.string("type", "render");
+  if (type == "apistream") {
+    const std::string target = params.string("streamfilename", "stdout");
+    const std::string format = params.string("streamformat", "nsi");
+    if (format != "nsi" && format != "autonsi")
+      report(NSIErrWarning,
+          "NSIBegin: stream format '" + format
+              + "' is not supported; writing the ASCII format");
+    const std::string compression = params.string("streamcompression", "");
+    if (!compression.empty() && compression != "gzip")
+      report(NSIErrWarning,
+          "NSIBegin: stream compression '" + compression
+              + "' is not supported; writing plain text");
+    // "apistream" here makes included streams inline into the written one.
+    std::string types = params.string("executeprocedurals", "");
+    for (char &c : types)
+      c = c == ',' ? ' ' : c;
+    std::istringstream names(types);
+    for (std::string name; names >> name;)
+      m_executedTypes.insert(name);
+    m_writer = std::make_unique<StreamWriter>(target, compression == "gzip");
+    if (!m_writer->ok()) {
+      report(NSIErrError, "NSIBegin: cannot write the stream '" + target + "'");
+      m_ok = false;
+    }
+  } else if (type != "render") {
+    report(NSIErrError, "NSIBegin: unknown context type '" + type + "'");
+    m_ok = false;
+  }
+}
+
+Context::~Context()
+{
+  if (m_render)
+    m_render->stop(); // the render thread reports through this context
+}
+
+void Context::report(int level, const std::string &message) const
+{
+  NSIErrorHandler_t handler =
+      m_errorHandler ? m_errorHandler : defaultErrorHandler;
+  handler(m_errorHandlerData, level, 0, message.c_str());
+}
+
+ReportFunction Context::reporter() const
+{
+  return [this](int level, const std::string &message) {
+    report(level, message);
+  };
+}
+
+void Context::create(const std::string &handle,
+    const std::string &type,
+    const ParameterList &params)
+{
+  if (m_writer)
+    return m_writer->statement("Create", {handle, type}, params);
+  m_graph.create(handle, type);
+}
+
+void Context::remove(const std::string &handle, const ParameterList &params)
+{
+  if (m_writer)
+    return m_writer->statement("Delete", {handle}, params);
+  m_graph.remove(handle, params.number("recursive", 0) != 0);
+}
+
+void Context::setAttribute(const std::string &handle,
+    const ParameterList &params,
+    std::optional<double> time)
+{
+  if (m_writer)
+    return m_writer->statement(
+        time ? "SetAttributeAtTime" : "SetAttribute", {handle}, params, time);
+  for (auto &param : params.values)
+    m_graph.setAttribute(handle, param.name, param.value, time);
+}
+
+void Context::deleteAttribute(
+    const std::string &handle, const std::string &name)
+{
+  if (m_writer)
+    return m_writer->statement("DeleteAttribute", {handle, name}, {});
+  m_graph.deleteAttribute(handle, name);
+}
+
+namespace {
+// An int connection parameter; 0 when absent or not a sane number.
+int connectionInt(const ParameterList &params, const char *name)
+{
+  const double value = params.number(name, 0);
+  return std::isfinite(value) && std::abs(value) < 1e9 ? int(value) : 0;
+}
+} // namespace
+
+void Context::connect(const std::string &from,
+    const std::string &fromAttr,
+    const std::string &to,
+    const std::string &toAttr,
+    const ParameterList &params)
+{
+  if (m_writer)
+    return m_writer->statement("Connect", {from, fromAttr, to, toAttr}, params);
+  if (params.find("value"))
+    report(NSIErrWarning,
+        "NSIConnect: 'value' overrides are not supported; connected without "
+        "it");
+  m_graph.connect(from,
+      fromAttr,
+      to,
+      toAttr,
+      connectionInt(params, "priority"),
+      connectionInt(params, "strength"),
+      connectionInt(params, "index"));
+}
+
+void Context::disconnect(const std::string &from,
+    const std::string &fromAttr,
+    const std::string &to,
+    const std::string &toAttr)
+{
+  if (m_writer)
+    return m_writer->statement("Disconnect", {from, fromAttr, to, toAttr}, {});
+  m_graph.disconnect(from, fromAttr, to, toAttr);
+}
+
+void Context::evaluate(const ParameterList &params)
+{
+  const std::string type = params.string("type", "");
+  if (m_writer && !m_executedTypes.count(type))
+    return m_writer->statement("Evaluate", {}, params);
+  if (type == "apistream") {
+    const std::string fileName = params.string("filename", "");
+    if (fileName.empty()) {
+      report(NSIErrError, "NSIEvaluate: 'apistream' without a 'filename'");
+      return;
+    }
+    includeStream(expandPath(fileName));
+  } else if (type == "lua" || type == "dynamiclibrary") {
+    report(NSIErrError, "NSIEvaluate: type '" + type + "' is not supported");
+  } else {
+    report(NSIErrError, "NSIEvaluate: unknown type '" + type + "'");
+  }
+}
+
+void Context::includeStream(const std::string &fileName)
+{
+  std::error_code error;
+  std::string key = std::filesystem::weakly_canonical(fileName, error).string();
+  if (error)
+    key = fileName;
+  if (m_openStreams.count(key)) {
+    report(NSIErrError,
+        "NSIEvaluate: '" + fileName + "' includes itself; not read again");
+    return;
+  }
+  std::string text, why;
+  if (!readStreamText(fileName, text, why)) {
+    report(NSIErrError, "NSIEvaluate: cannot read '" + fileName + "': " + why);
+    return;
+  }
+  // Open while read, however the reading ends.
+  struct OpenStream
+  {
+    std::set<std::string> &open;
+    std::string key;
+    ~OpenStream()
+    {
+      open.erase(key);
+    }
+  } guard{m_openStreams, key};
+  m_openStreams.insert(key);
+  StreamReader(m_id, reporter(), fileName).read(text);
+}
+
+void Context::renderControl(const ParameterList &params)
+{
+  if (m_writer)
+    return m_writer->statement("RenderControl", {}, params);
+  const std::string action = params.string("action", "");
+  if (action == "start") {
+    startRender(params);
+  } else if (action == "wait") {
+    finishRender(false);
+  } else if (action == "synchronize") {
+    // Without incremental updates yet, a synchronize renders the scene anew:
+    // a render under way is restarted (and says so), and the new one ends
+    // "synchronized".
+    const bool wasRunning = m_render && m_render->running();
+    if (m_render)
+      m_render->silenceStopped();
+    finishRender(true);
+    if (wasRunning && m_stopped)
+      m_stopped(NSIRenderRestarted);
+    startRender(params, true);
+  } else if (action == "stop") {
+    finishRender(true);
+  } else if (action == "suspend" || action == "resume") {
+    report(NSIErrInfo, "NSIRenderControl: '" + action + "' is ignored");
+  } else {
+    report(NSIErrError, "NSIRenderControl: unknown action '" + action + "'");
+  }
+}
+
+void Context::finishRender(bool stop)
+{
+  std::shared_ptr<RenderSession> render = m_render;
+  if (!render)
+    return;
+  mutex.unlock();
+  if (stop)
+    render->stop();
+  else
+    render->wait();
+  mutex.lock();
+}
+
+void Context::startRender(const ParameterList &params, bool synchronizing)
+{
+  if (m_render && m_render->running()) {
+    report(NSIErrError,
+        "NSIRenderControl: 'start' while a render is running; ignored");
+    return;
+  }
+  if (params.number("interactive", 0) != 0
+      || params.number("progressive", 0) != 0)
+    report(NSIErrWarning,
+        "NSIRenderControl: interactive and progressive renders are not "
+        "supported; rendering once");
+  // The callback stays with the context until another is given.
+  auto callback =
+      reinterpret_cast<NSIRenderStopped_t>(params.pointer("stoppedcallback"));
+  void *callbackData = params.pointer("stoppedcallbackdata");
+  const NSIContext_t id = m_id;
+  if (callback) {
+    m_stopped = [callback, callbackData, id](int status) {
+      callback(callbackData, id, status);
+    };
+  }
+  RenderSession::Stopped stopped = m_stopped;
+  if (synchronizing && stopped) {
+    stopped = [report = m_stopped](int status) {
+      report(status == NSIRenderCompleted ? NSIRenderSynchronized : status);
+    };
+  }
+  const ResolvedScene scene = resolveScene(m_graph, reporter(), expandPath);
+  m_render = std::make_shared<RenderSession>(reporter(), stopped);
+  if (!m_render->start(m_anariLibrary, scene))
+    m_render.reset();
+}
+
+} // namespace prism::nsi

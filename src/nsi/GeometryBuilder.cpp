@@ -1,0 +1,212 @@
+#include "GeometryBuilder.h"
+
+#include "PolygonTriangulation.h"
+
+#include <cmath>
+
+namespace prism::nsi {
+
+namespace {
+
+// Counts and indices arrive as numbers of any type: anything that is not a
+// whole number of a sane size becomes -1 (rejected later as out of range).
+int64_t toIndex(double d)
+{
+  return d >= 0 && d < 1e15 && d == std::floor(d) ? int64_t(d) : -1;
+}
+
+std::vector<double> numbersOf(const Node &node, const char *name)
+{
+  const Value *v = node.attribute(name);
+  return v ? v->numbers() : std::vector<double>{};
+}
+
+// The indices of `name`.indices, or nothing when absent.
+std::optional<std::vector<int64_t>> indicesOf(
+    const Node &node, const std::string &name)
+{
+  const Value *v = node.attribute(name + ".indices");
+  if (!v)
+    return std::nullopt;
+  std::vector<int64_t> out;
+  for (double d : v->numbers())
+    out.push_back(toIndex(d));
+  return out;
+}
+
+} // namespace
+
+std::optional<GeometryData> buildMesh(
+    const std::string &handle, const Node &mesh, const ReportFunction &report)
+{
+  auto fail = [&](const std::string &why) {
+    report(NSIErrWarning, "mesh '" + handle + "': " + why + "; not rendered");
+    return std::nullopt;
+  };
+  const std::vector<double> points = numbersOf(mesh, "P");
+  const std::vector<double> nvertices = numbersOf(mesh, "nvertices");
+  if (points.empty() || points.size() % 3)
+    return fail("no 'P'");
+  const size_t pointCount = points.size() / 3;
+  auto pointIndices = indicesOf(mesh, "P");
+  size_t faceVertexCount = pointIndices ? pointIndices->size() : pointCount;
+  if (nvertices.empty())
+    return fail("no 'nvertices'");
+  size_t total = 0;
+  for (double n : nvertices) {
+    if (toIndex(n) < 0)
+      return fail("'nvertices' holds " + shortNumber(n));
+    total += size_t(n);
+  }
+  // One `nvertices` value with no others means one polygon.
+  if (total != faceVertexCount)
+    return fail("'nvertices' adds up to " + std::to_string(total)
+                + " but there are " + std::to_string(faceVertexCount)
+                + " face vertices");
+  if (pointIndices) {
+    for (int64_t i : *pointIndices) {
+      if (i < 0 || size_t(i) >= pointCount)
+        return fail("'P.indices' holds " + std::to_string(i) + ", outside 'P'");
+    }
+  }
+  // Loops per face: the outline, then `nholes` holes (default: none).
+  std::vector<size_t> loopsPerFace(nvertices.size(), 1);
+  if (mesh.attribute("nholes")) {
+    const std::vector<double> holes = numbersOf(mesh, "nholes");
+    size_t loops = 0;
+    bool valid = true;
+    for (double h : holes) {
+      valid = valid && toIndex(h) >= 0;
+      loops += valid ? 1 + size_t(h) : 0;
+    }
+    if (valid && loops == nvertices.size()) {
+      loopsPerFace.clear();
+      for (double h : holes)
+        loopsPerFace.push_back(1 + size_t(h));
+    } else {
+      report(NSIErrWarning,
+          "mesh '" + handle
+              + "': 'nholes' does not match 'nvertices'; every loop is a face");
+    }
+  }
+  if (mesh.attribute("subdivision.scheme"))
+    report(NSIErrWarning,
+        "mesh '" + handle
+            + "': subdivision is not supported; the cage is rendered");
+
+  // Normals: per point (as P), per face vertex, or indexed.
+  const std::vector<double> normals = numbersOf(mesh, "N");
+  auto normalIndices = indicesOf(mesh, "N");
+  enum class NormalSource { None, PerPoint, PerFaceVertex, Indexed } source{};
+  if (!normals.empty() && normals.size() % 3 == 0) {
+    const size_t n = normals.size() / 3;
+    if (normalIndices && normalIndices->size() == faceVertexCount) {
+      source = NormalSource::Indexed;
+      for (int64_t i : *normalIndices) {
+        if (i < 0 || size_t(i) >= n) {
+          report(NSIErrWarning,
+              "mesh '" + handle
+                  + "': 'N.indices' out of range; normals ignored");
+          source = NormalSource::None;
+          break;
+        }
+      }
+    } else if (n == pointCount) {
+      source = NormalSource::PerPoint;
+    } else if (n == faceVertexCount) {
+      source = NormalSource::PerFaceVertex;
+    } else {
+      report(NSIErrWarning,
+          "mesh '" + handle + "': 'N' does not match the vertices; ignored");
+    }
+  }
+
+  const bool flip = mesh.attribute("clockwisewinding")
+                    && mesh.attribute("clockwisewinding")->number(0) != 0;
+  GeometryData data;
+  data.positions.reserve(faceVertexCount * 3);
+  for (size_t k = 0; k < faceVertexCount; ++k) {
+    const size_t p = pointIndices ? size_t((*pointIndices)[k]) : k;
+    for (int c = 0; c < 3; ++c)
+      data.positions.push_back(float(points[3 * p + c]));
+    if (source != NormalSource::None) {
+      size_t n = k;
+      if (source == NormalSource::PerPoint)
+        n = p;
+      else if (source == NormalSource::Indexed)
+        n = size_t((*normalIndices)[k]);
+      for (int c = 0; c < 3; ++c)
+        data.normals.push_back(float(normals[3 * n + c]));
+    }
+  }
+  size_t first = 0, loop = 0;
+  uint32_t face = 0;
+  for (size_t loops : loopsPerFace) {
+    // Corners are numbered through the face's loops, from `first`.
+    std::vector<std::vector<Corner>> faceLoops;
+    for (size_t l = 0; l < loops; ++l, ++loop) {
+      const size_t n = size_t(toIndex(nvertices[loop])); // checked above
+      std::vector<Corner> corners;
+      for (size_t k = first; k < first + n; ++k) {
+        corners.push_back({data.positions[3 * k],
+            data.positions[3 * k + 1],
+            data.positions[3 * k + 2]});
+      }
+      faceLoops.push_back(std::move(corners));
+      first += n;
+    }
+    size_t faceSize = 0;
+    for (auto &l : faceLoops)
+      faceSize += l.size();
+    const size_t faceFirst = first - faceSize;
+    for (auto [a, b, c] : triangulatePolygonWithHoles(faceLoops)) {
+      if (flip)
+        std::swap(b, c);
+      data.triangles.insert(data.triangles.end(),
+          {uint32_t(faceFirst + a),
+              uint32_t(faceFirst + b),
+              uint32_t(faceFirst + c)});
+      data.triangleFaces.push_back(face);
+    }
+    ++face;
+  }
+  if (data.triangles.empty())
+    return fail("no polygon has three vertices");
+  return data;
+}
+
+std::optional<GeometryData> buildParticles(const std::string &handle,
+    const Node &particles,
+    const ReportFunction &report)
+{
+  const std::vector<double> points = numbersOf(particles, "P");
+  if (points.empty() || points.size() % 3) {
+    report(NSIErrWarning, "particles '" + handle + "': no 'P'; not rendered");
+    return std::nullopt;
+  }
+  const size_t count = points.size() / 3;
+  std::vector<double> widths = numbersOf(particles, "width");
+  if (widths.size() != count && widths.size() != 1) {
+    if (!widths.empty())
+      report(NSIErrWarning,
+          "particles '" + handle
+              + "': 'width' count does not match 'P'; using 1");
+    widths = {1.0};
+  }
+  GeometryData data;
+  data.spheres = true;
+  for (double p : points)
+    data.positions.push_back(float(p));
+  for (size_t i = 0; i < count; ++i)
+    data.radii.push_back(
+        float(std::abs(widths[widths.size() == 1 ? 0 : i]) / 2));
+  // Normals orient particles that are lights (spots, rings).
+  const std::vector<double> normals = numbersOf(particles, "N");
+  if (normals.size() == points.size()) {
+    for (double n : normals)
+      data.normals.push_back(float(n));
+  }
+  return data;
+}
+
+} // namespace prism::nsi

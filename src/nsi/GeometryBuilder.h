@@ -1,0 +1,26 @@
+// NSI `mesh` and `particles` nodes to triangles and spheres. Bad data (index
+// out of range, counts that disagree) is reported and the geometry dropped
+// or the face skipped; it never reads past an array.
+#pragma once
+
+#include "Graph.h"
+#include "ResolvedScene.h"
+
+#include <functional>
+#include <optional>
+
+namespace prism::nsi {
+
+using ReportFunction = std::function<void(int level, const std::string &)>;
+
+// Polygons (nvertices, P, P.indices, N, N.indices), ear-clipped, so
+// concave ones are right too.
+std::optional<GeometryData> buildMesh(
+    const std::string &handle, const Node &mesh, const ReportFunction &report);
+
+// P and width (one per particle, or one for all; default 1).
+std::optional<GeometryData> buildParticles(const std::string &handle,
+    const Node &particles,
+    const ReportFunction &report);
+
+} // namespace prism::nsi

@@ -1,0 +1,241 @@
+#include "Graph.h"
+
+#include <algorithm>
+#include <set>
+
+namespace prism::nsi {
+
+namespace {
+const std::string kAll = NSI_ALL_NODES;
+
+bool matches(const std::string &pattern, const std::string &name)
+{
+  return pattern == kAll || pattern == name;
+}
+
+bool isBuiltIn(const std::string &handle)
+{
+  return handle == NSI_SCENE_ROOT || handle == NSI_SCENE_GLOBAL;
+}
+} // namespace
+
+const Value *Attribute::still() const
+{
+  if (value)
+    return &*value;
+  return samples.empty() ? nullptr : &samples.begin()->second;
+}
+
+const Value *Node::attribute(const std::string &name) const
+{
+  auto it = attributes.find(name);
+  return it == attributes.end() ? nullptr : it->second.still();
+}
+
+std::vector<const Input *> Node::inputsOf(const std::string &toAttr) const
+{
+  std::vector<const Input *> out;
+  for (auto &input : inputs) {
+    if (input.toAttr == toAttr)
+      out.push_back(&input);
+  }
+  return out;
+}
+
+Graph::Graph(Report report) : m_report(std::move(report))
+{
+  m_nodes[NSI_SCENE_ROOT].type = "root";
+  m_nodes[NSI_SCENE_GLOBAL].type = "global";
+}
+
+const Node *Graph::find(const std::string &handle) const
+{
+  auto it = m_nodes.find(handle);
+  return it == m_nodes.end() ? nullptr : &it->second;
+}
+
+Node *Graph::lookup(const std::string &handle, const char *call)
+{
+  auto it = m_nodes.find(handle);
+  if (it != m_nodes.end())
+    return &it->second;
+  m_report(NSIErrError,
+      std::string(call) + ": unknown handle '" + handle + "'; ignored");
+  return nullptr;
+}
+
+void Graph::create(const std::string &handle, const std::string &type)
+{
+  if (handle.empty() || handle == kAll) {
+    m_report(NSIErrError, "NSICreate: '" + handle + "' is not a usable handle");
+    return;
+  }
+  auto it = m_nodes.find(handle);
+  if (it != m_nodes.end()) {
+    // Clients share nodes by creating them again: same type is a no-op.
+    if (it->second.type != type) {
+      m_report(NSIErrError,
+          "NSICreate: '" + handle + "' already exists as a '" + it->second.type
+              + "', not a '" + type + "'");
+    }
+    return;
+  }
+  m_nodes[handle].type = type;
+}
+
+void Graph::removeNode(const std::string &handle)
+{
+  Node &node = m_nodes.at(handle);
+  for (auto &input : node.inputs) {
+    auto source = m_nodes.find(input.from);
+    if (source == m_nodes.end())
+      continue;
+    std::erase_if(source->second.outputs, [&](const Output &o) {
+      return o.to == handle && o.toAttr == input.toAttr
+             && o.fromAttr == input.fromAttr;
+    });
+  }
+  for (auto &output : node.outputs) {
+    auto target = m_nodes.find(output.to);
+    if (target == m_nodes.end())
+      continue;
+    std::erase_if(target->second.inputs, [&](const Input &i) {
+      return i.from == handle && i.toAttr == output.toAttr
+             && i.fromAttr == output.fromAttr;
+    });
+  }
+  m_nodes.erase(handle);
+}
+
+void Graph::remove(const std::string &handle, bool recursive)
+{
+  if (isBuiltIn(handle)) {
+    m_report(NSIErrError, "NSIDelete: '" + handle + "' cannot be deleted");
+    return;
+  }
+  Node *node = lookup(handle, "NSIDelete");
+  if (!node)
+    return;
+  std::vector<std::string> sources;
+  for (auto &input : node->inputs) {
+    if (input.strength <= 0)
+      sources.push_back(input.from);
+  }
+  removeNode(handle);
+  if (!recursive)
+    return;
+  // A source goes too once nothing else uses it (strong links protect it).
+  for (auto &source : sources) {
+    const Node *s = find(source);
+    if (s && s->outputs.empty() && !isBuiltIn(source))
+      remove(source, true);
+  }
+}
+
+void Graph::setAttribute(const std::string &handle,
+    const std::string &name,
+    const Value &value,
+    std::optional<double> time)
+{
+  Node *node =
+      lookup(handle, time ? "NSISetAttributeAtTime" : "NSISetAttribute");
+  if (!node)
+    return;
+  Attribute &attribute = node->attributes[name];
+  if (time) {
+    attribute.samples[*time] = value;
+  } else {
+    attribute.value = value;
+    attribute.samples.clear();
+  }
+}
+
+void Graph::deleteAttribute(const std::string &handle, const std::string &name)
+{
+  if (Node *node = lookup(handle, "NSIDeleteAttribute"))
+    node->attributes.erase(name);
+}
+
+bool Graph::reaches(const std::string &start, const std::string &target) const
+{
+  std::set<std::string> seen;
+  std::vector<std::string> todo{start};
+  while (!todo.empty()) {
+    const std::string at = todo.back();
+    todo.pop_back();
+    if (at == target)
+      return true;
+    if (!seen.insert(at).second)
+      continue;
+    if (const Node *node = find(at)) {
+      for (auto &output : node->outputs)
+        todo.push_back(output.to);
+    }
+  }
+  return false;
+}
+
+void Graph::connect(const std::string &from,
+    const std::string &fromAttr,
+    const std::string &to,
+    const std::string &toAttr,
+    int priority,
+    int strength,
+    int index)
+{
+  Node *source = lookup(from, "NSIConnect");
+  Node *target = lookup(to, "NSIConnect");
+  if (!source || !target)
+    return;
+  if (reaches(to, from)) {
+    m_report(NSIErrError,
+        "NSIConnect: '" + from + "' -> '" + to + "." + toAttr
+            + "' would close a cycle; ignored");
+    return;
+  }
+  for (auto &input : target->inputs) {
+    if (input.from == from && input.fromAttr == fromAttr
+        && input.toAttr == toAttr) {
+      input.priority = priority; // connecting again updates, never duplicates
+      input.strength = strength;
+      input.index = index;
+      return;
+    }
+  }
+  target->inputs.push_back({from, fromAttr, toAttr, priority, strength, index});
+  source->outputs.push_back({fromAttr, to, toAttr});
+}
+
+void Graph::disconnect(const std::string &from,
+    const std::string &fromAttr,
+    const std::string &to,
+    const std::string &toAttr)
+{
+  if (from != kAll && !lookup(from, "NSIDisconnect"))
+    return;
+  if (to != kAll && !lookup(to, "NSIDisconnect"))
+    return;
+  for (auto &entry : m_nodes) {
+    // Not a structured binding: clang before 16 cannot capture those in a
+    // lambda.
+    const std::string &handle = entry.first;
+    Node &node = entry.second;
+    if (!matches(to, handle))
+      continue;
+    std::erase_if(node.inputs, [&](const Input &input) {
+      if (!matches(from, input.from) || !matches(fromAttr, input.fromAttr)
+          || !matches(toAttr, input.toAttr))
+        return false;
+      auto source = m_nodes.find(input.from);
+      if (source != m_nodes.end()) {
+        std::erase_if(source->second.outputs, [&](const Output &o) {
+          return o.to == handle && o.toAttr == input.toAttr
+                 && o.fromAttr == input.fromAttr;
+        });
+      }
+      return true;
+    });
+  }
+}
+
+} // namespace prism::nsi

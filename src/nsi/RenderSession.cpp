@@ -1,0 +1,257 @@
+#include "RenderSession.h"
+
+#include "AnariWorldBuilder.h"
+#include "ImageIO.h"
+#include "OutputChannels.h"
+
+#include <algorithm>
+#include <map>
+
+#include <cmath>
+
+namespace prism::nsi {
+
+namespace {
+
+void onAnariStatus(const void *userData,
+    ANARIDevice,
+    ANARIObject,
+    ANARIDataType,
+    ANARIStatusSeverity severity,
+    ANARIStatusCode,
+    const char *message)
+{
+  // Only problems reach the NSI handler; ANARI's chatter stays out.
+  if (severity > ANARI_SEVERITY_WARNING || !message)
+    return;
+  const auto *report = static_cast<const ReportFunction *>(userData);
+  (*report)(severity == ANARI_SEVERITY_WARNING ? NSIErrWarning : NSIErrError,
+      std::string("ANARI: ") + message);
+}
+
+std::array<float, 3> cameraPoint(
+    const Matrix &m, std::array<double, 3> p, bool vector)
+{
+  auto q = vector ? transformVector(m, p) : transformPoint(m, p);
+  return {float(q[0]), float(q[1]), float(q[2])};
+}
+
+} // namespace
+
+RenderSession::RenderSession(ReportFunction report, Stopped stopped)
+    : m_report(std::move(report)), m_stopped(std::move(stopped))
+{}
+
+RenderSession::~RenderSession()
+{
+  stop();
+}
+
+void RenderSession::release()
+{
+  if (m_device) {
+    if (m_world)
+      anariRelease(m_device, m_world);
+    if (m_renderer)
+      anariRelease(m_device, m_renderer);
+    anariRelease(m_device, m_device);
+  }
+  if (m_library)
+    anariUnloadLibrary(m_library);
+  m_world = nullptr;
+  m_renderer = nullptr;
+  m_device = nullptr;
+  m_library = nullptr;
+}
+
+bool RenderSession::start(
+    const std::string &library, const ResolvedScene &scene)
+{
+  stop();
+  m_library = anariLoadLibrary(library.c_str(), onAnariStatus, &m_report);
+  if (!m_library) {
+    m_report(NSIErrError, "cannot load the ANARI library '" + library + "'");
+    return false;
+  }
+  m_device = anariNewDevice(m_library, "default");
+  if (!m_device) {
+    m_report(
+        NSIErrError, "ANARI library '" + library + "' has no default device");
+    release();
+    return false;
+  }
+  AnariWorld world = buildAnariWorld(m_device, scene, m_report);
+  m_world = world.world;
+  m_renderer = anariNewRenderer(m_device, "default");
+  anariSetParameter(m_device,
+      m_renderer,
+      "background",
+      ANARI_FLOAT32_VEC4,
+      world.background.data());
+  anariSetParameter(m_device,
+      m_renderer,
+      "ambientColor",
+      ANARI_FLOAT32_VEC3,
+      world.ambientColor.data());
+  anariSetParameter(m_device,
+      m_renderer,
+      "ambientRadiance",
+      ANARI_FLOAT32,
+      &world.ambientRadiance);
+  anariCommitParameters(m_device, m_renderer);
+  m_cameras = scene.cameras;
+  m_hasMotion = scene.hasMotion;
+  if (m_cameras.empty())
+    m_report(NSIErrWarning,
+        "no camera with a screen hangs under .root; nothing is rendered");
+  m_stopRequested = false;
+  m_running = true;
+  m_thread = std::thread([this] { renderAll(); });
+  return true;
+}
+
+void RenderSession::wait()
+{
+  std::lock_guard lock(m_joinMutex);
+  if (m_thread.joinable())
+    m_thread.join();
+}
+
+void RenderSession::stop()
+{
+  m_stopRequested = true;
+  std::lock_guard lock(m_joinMutex);
+  if (m_thread.joinable())
+    m_thread.join();
+  release();
+}
+
+void RenderSession::renderAll()
+{
+  bool completed = true;
+  for (const CameraItem &item : m_cameras) {
+    const Framing framing =
+        frameCamera(item.orthographic, item.fov, item.screen);
+    ANARICamera camera = anariNewCamera(
+        m_device, item.orthographic ? "orthographic" : "perspective");
+    const auto position = cameraPoint(item.worldFromCamera, {0, 0, 0}, false);
+    const auto direction = cameraPoint(item.worldFromCamera, {0, 0, -1}, true);
+    const auto up = cameraPoint(item.worldFromCamera, {0, 1, 0}, true);
+    anariSetParameter(
+        m_device, camera, "position", ANARI_FLOAT32_VEC3, position.data());
+    anariSetParameter(
+        m_device, camera, "direction", ANARI_FLOAT32_VEC3, direction.data());
+    anariSetParameter(m_device, camera, "up", ANARI_FLOAT32_VEC3, up.data());
+    anariSetParameter(
+        m_device, camera, "aspect", ANARI_FLOAT32, &framing.aspect);
+    if (item.orthographic)
+      anariSetParameter(
+          m_device, camera, "height", ANARI_FLOAT32, &framing.height);
+    else
+      anariSetParameter(m_device, camera, "fovy", ANARI_FLOAT32, &framing.fovy);
+    const float near = float(item.near), far = float(item.far);
+    anariSetParameter(m_device, camera, "near", ANARI_FLOAT32, &near);
+    if (std::isfinite(far))
+      anariSetParameter(m_device, camera, "far", ANARI_FLOAT32, &far);
+    if (item.apertureRadius > 0) {
+      const float aperture = float(item.apertureRadius);
+      const float focus = float(item.focusDistance);
+      anariSetParameter(
+          m_device, camera, "apertureRadius", ANARI_FLOAT32, &aperture);
+      anariSetParameter(
+          m_device, camera, "focusDistance", ANARI_FLOAT32, &focus);
+    }
+    if (m_hasMotion) {
+      const float shutter[2] = {0.f, 1.f}; // the motion samples' time range
+      anariSetParameter(
+          m_device, camera, "shutter", ANARI_FLOAT32_BOX1, shutter);
+    }
+    anariSetParameter(m_device,
+        camera,
+        "imageRegion",
+        ANARI_FLOAT32_BOX2,
+        framing.imageRegion.data());
+    anariCommitParameters(m_device, camera);
+
+    ANARIFrame frame = anariNewFrame(m_device);
+    const uint32_t size[2] = {framing.frameWidth, framing.frameHeight};
+    anariSetParameter(m_device, frame, "size", ANARI_UINT32_VEC2, size);
+    // The channels the layers ask for (unknown variables: black, warned).
+    std::vector<const FrameChannel *> channels{channelForVariable("Ci")};
+    anariSetParameter(m_device,
+        frame,
+        channels[0]->name,
+        ANARI_DATA_TYPE,
+        &channels[0]->type);
+    for (const OutputItem &output : item.outputs) {
+      const FrameChannel *channel = channelForVariable(output.variableName);
+      if (!channel) {
+        m_report(NSIErrWarning,
+            "output layer '" + output.layerHandle + "': variable '"
+                + output.variableName + "' has no ANARI channel; black");
+      } else if (std::find(channels.begin(), channels.end(), channel)
+                 == channels.end()) {
+        anariSetParameter(
+            m_device, frame, channel->name, ANARI_DATA_TYPE, &channel->type);
+        channels.push_back(channel);
+      }
+    }
+    const bool accumulate = true;
+    anariSetParameter(m_device, frame, "accumulation", ANARI_BOOL, &accumulate);
+    anariSetParameter(m_device, frame, "renderer", ANARI_RENDERER, &m_renderer);
+    anariSetParameter(m_device, frame, "camera", ANARI_CAMERA, &camera);
+    anariSetParameter(m_device, frame, "world", ANARI_WORLD, &m_world);
+    anariCommitParameters(m_device, frame);
+    anariRelease(m_device, camera);
+
+    int samples = 0;
+    for (; samples < item.oversampling; ++samples) {
+      if (m_stopRequested) {
+        completed = false;
+        break;
+      }
+      anariRenderFrame(m_device, frame);
+      anariFrameReady(m_device, frame, ANARI_WAIT);
+    }
+    if (samples == 0) { // stopped before the first frame: nothing to write
+      anariRelease(m_device, frame);
+      break;
+    }
+
+    std::map<const FrameChannel *, image::Image> pictures;
+    for (const FrameChannel *channel : channels)
+      pictures[channel] = readFrameChannel(m_device, frame, *channel);
+    anariRelease(m_device, frame);
+
+    for (const OutputItem &output : item.outputs) {
+      if (output.driverName == "idisplay" || output.driverName.empty())
+        continue;
+      if (output.fileName.empty()) {
+        m_report(NSIErrWarning,
+            "output driver for layer '" + output.layerHandle
+                + "' has no imagefilename");
+        continue;
+      }
+      const FrameChannel *channel = channelForVariable(output.variableName);
+      image::Image written =
+          channel ? pictures.at(channel)
+                  : image::Image(framing.frameWidth, framing.frameHeight);
+      if (!output.withAlpha) {
+        for (auto &p : written.pixels)
+          p.a = 1.f;
+      }
+      image::WriteOptions options;
+      options.exrPixelType = output.halfFloat ? image::ExrPixelType::Half
+                                              : image::ExrPixelType::Float;
+      auto status = image::write(output.fileName, written, options);
+      if (!status.ok())
+        m_report(NSIErrError,
+            "cannot write '" + output.fileName + "': " + status.error);
+    }
+  }
+  m_running = false;
+  if (m_stopped && !m_silent)
+    m_stopped(completed ? NSIRenderCompleted : NSIRenderAborted);
+}
+
+} // namespace prism::nsi

@@ -1,0 +1,138 @@
+#include "Value.h"
+
+#include <cstdio>
+#include <cstring>
+
+namespace prism::nsi {
+
+size_t Value::valuesPerItem() const
+{
+  return (flags & NSIParamIsArray) ? size_t(arraylength) : 1;
+}
+
+size_t Value::componentsOf(int type)
+{
+  switch (type) {
+  case NSITypeColor:
+  case NSITypePoint:
+  case NSITypeVector:
+  case NSITypeNormal:
+    return 3;
+  case NSITypeHPoint:
+    return 4;
+  case NSITypeMatrix:
+  case NSITypeDoubleMatrix:
+    return 16;
+  default:
+    return 1;
+  }
+}
+
+std::vector<double> Value::numbers() const
+{
+  std::vector<double> out;
+  const size_t n = count * valuesPerItem() * componentsOf(type);
+  out.reserve(n);
+  for (size_t i = 0; i < n; ++i) {
+    switch (type) {
+    case NSITypeFloat:
+    case NSITypeColor:
+    case NSITypePoint:
+    case NSITypeVector:
+    case NSITypeNormal:
+    case NSITypeMatrix:
+    case NSITypeHPoint: {
+      float f;
+      std::memcpy(&f, bytes.data() + 4 * i, 4);
+      out.push_back(f);
+      break;
+    }
+    case NSITypeInteger: {
+      int32_t v;
+      std::memcpy(&v, bytes.data() + 4 * i, 4);
+      out.push_back(v);
+      break;
+    }
+    case NSITypeDouble:
+    case NSITypeDoubleMatrix: {
+      double d;
+      std::memcpy(&d, bytes.data() + 8 * i, 8);
+      out.push_back(d);
+      break;
+    }
+    case NSITypeInt64: {
+      int64_t v;
+      std::memcpy(&v, bytes.data() + 8 * i, 8);
+      out.push_back(double(v));
+      break;
+    }
+    default:
+      return {};
+    }
+  }
+  return out;
+}
+
+double Value::number(double fallback) const
+{
+  const auto all = numbers();
+  return all.empty() ? fallback : all.front();
+}
+
+std::string Value::string(const std::string &fallback) const
+{
+  return strings.empty() ? fallback : strings.front();
+}
+
+std::string shortNumber(double number)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", number);
+  return text;
+}
+
+bool valueFromParam(const NSIParam_t &param, Value &value, std::string &error)
+{
+  if (!param.name) {
+    error = "parameter without a name";
+    return false;
+  }
+  const size_t size = NSITypeSizeOf(unsigned(param.type));
+  if (size == 0) {
+    error = "parameter '" + std::string(param.name) + "' has unknown type "
+            + std::to_string(param.type);
+    return false;
+  }
+  if ((param.flags & NSIParamIsArray) && param.arraylength < 0) {
+    error = "parameter '" + std::string(param.name)
+            + "' has a negative arraylength";
+    return false;
+  }
+  value = {};
+  value.type = param.type;
+  value.arraylength = param.arraylength;
+  value.count = param.count;
+  value.flags = param.flags;
+  const size_t items = param.count * value.valuesPerItem();
+  // Counts beyond what memory could hold are nonsense, not data to copy.
+  if (param.count > (size_t(1) << 40) || items > (size_t(1) << 40)) {
+    error = "parameter '" + std::string(param.name) + "' has an absurd count";
+    return false;
+  }
+  if (items > 0 && !param.data) {
+    error = "parameter '" + std::string(param.name) + "' has no data";
+    return false;
+  }
+  if (param.type == NSITypeString) {
+    const auto *texts = static_cast<const char *const *>(param.data);
+    for (size_t i = 0; i < items; ++i)
+      value.strings.emplace_back(texts[i] ? texts[i] : "");
+  } else {
+    value.bytes.resize(items * size);
+    if (items)
+      std::memcpy(value.bytes.data(), param.data, items * size);
+  }
+  return true;
+}
+
+} // namespace prism::nsi

@@ -1,0 +1,1 @@
+SetAttribute "x" "s" "string" 1 "unterminated
