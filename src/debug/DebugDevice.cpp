@@ -162,9 +162,7 @@ ObjectRecord *DebugDevice::live(
     return nullptr;
   case HandleState::kReleased:
     f.error(std::string(what) + " handle is "
-                + describe(*m_objects.find(handle))
-                + ", used after its release",
-        ANARI_STATUS_INVALID_OPERATION);
+            + describe(*m_objects.find(handle)) + ", used after its release");
     return nullptr;
   case HandleState::kLive:
     break;

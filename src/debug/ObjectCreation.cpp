@@ -312,9 +312,10 @@ std::vector<ANARIObject> DebugDevice::translateHandles(Findings &f,
     Findings element(f.function());
     if (!translate(element, handle, elementType, "element", out[i])
         && reported++ < 4) {
-      const std::string &text = element.list().front().text;
+      const Finding &found = element.list().front();
       f.error("element " + std::to_string(i) + ": "
-              + text.substr(text.find("): ") + 3));
+                  + found.text.substr(found.text.find("): ") + 3),
+          found.code);
     }
   }
   copied.assign(source, source + count);
