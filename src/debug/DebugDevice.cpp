@@ -1,4 +1,5 @@
 #include "DebugDevice.h"
+#include "trace/TraceFormat.h"
 
 #include "anari/frontend/type_utility.h"
 
@@ -14,11 +15,13 @@ DebugDevice::DebugDevice(ANARILibrary library,
 {
   m_statusCallback = m_defaultStatusCB;
   m_statusUserPtr = m_defaultStatusCBUserPtr;
-  wrap(wrappedSpec, subtype);
+  if (wrap(wrappedSpec, subtype))
+    openTrace();
 }
 
 DebugDevice::~DebugDevice()
 {
+  trace("Release device");
   reportLeaks();
   dropWrapped(); // runs the deleters of every array still alive
 }
@@ -239,6 +242,14 @@ void DebugDevice::setDeviceParameter(
     report(f);
     return;
   }
+  if (tracing()) {
+    std::lock_guard lock(m_mutex);
+    const std::string value = traceValue(type, mem);
+    if (!value.empty()) {
+      trace("Set device " + trace::quote(name) + " " + trace::typeName(type)
+            + " " + value);
+    }
+  }
   m_wrapped->setParameter((ANARIObject)m_wrapped, name, type, mem);
 }
 
@@ -264,6 +275,7 @@ void DebugDevice::commitDevice()
     m_pendingWrappedSpec.clear();
   }
   report(f);
+  trace("Commit device");
   m_wrapped->commitParameters((ANARIObject)m_wrapped);
 }
 

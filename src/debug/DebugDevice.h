@@ -9,6 +9,7 @@
 #include "ObjectTable.h"
 #include "Rules.h"
 #include "WrappedLibrary.h"
+#include "trace/TraceWriter.h"
 
 #include "anari/backend/DeviceImpl.h"
 #include "introspection/Introspection.h"
@@ -262,6 +263,25 @@ class DebugDevice : public anari::DeviceImpl
   void commitDevice();
   void reportLeaks();
 
+  // The trace (TraceCalls.cpp), when ANARI_DEBUG_TRACE names a file: each
+  // forwarded call as a line, objects named by creation number. Under the
+  // lock, so lines come in the order calls were checked.
+  void openTrace();
+  bool tracing() const
+  {
+    return m_trace != nullptr;
+  }
+  void trace(const std::string &line);
+  std::string traceName(ANARIObject handle);
+  // The operand for a parameter value ("" if it cannot be traced).
+  std::string traceValue(ANARIDataType type, const void *mem);
+  // An array's contents as an operand: names of an object array's
+  // elements, or the bytes in the side file (elements `stride` apart).
+  std::string traceContents(ANARIDataType elementType,
+      const void *memory,
+      uint64_t count,
+      uint64_t stride);
+
   std::recursive_mutex m_mutex; // NOTE: guards everything below
   ObjectTable m_objects;
   std::atomic<uint64_t> m_calls{0};
@@ -277,6 +297,7 @@ class DebugDevice : public anari::DeviceImpl
   std::unique_ptr<introspection::Catalog> m_catalog;
   std::unique_ptr<Rules> m_rules;
   int m_publicReferences{1};
+  std::unique_ptr<trace::TraceWriter> m_trace;
 };
 
 } // namespace prism::debug

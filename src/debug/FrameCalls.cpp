@@ -1,5 +1,6 @@
 // Frames, properties and introspection: checked, then forwarded.
 #include "DebugDevice.h"
+#include "trace/TraceFormat.h"
 
 #include "anari/frontend/type_utility.h"
 
@@ -21,6 +22,10 @@ int DebugDevice::getProperty(ANARIObject object,
       target = checked(f, object, ANARI_OBJECT, name, [&](ObjectRecord &) {
         if (!name)
           f.error("property name is NULL");
+        else if (tracing() && trace::isTraceable(type))
+          trace("Property " + traceName(object) + " " + trace::quote(name) + " "
+                + trace::typeName(type) + " " + std::to_string(size)
+                + (mask == ANARI_WAIT ? " WAIT" : " NO_WAIT"));
         return name != nullptr;
       });
     }
@@ -90,6 +95,7 @@ const void *DebugDevice::frameBufferMap(ANARIFrame frame,
     *pixelType = ANARI_UNKNOWN;
   return guarded("anariMapFrame", (const void *)nullptr, [&]() -> const void * {
     Findings f("anariMapFrame");
+    std::string traceTarget;
     auto target = checked(f, frame, ANARI_FRAME, channel, [&](ObjectRecord &r) {
       if (!channel) {
         f.error("channel name is NULL");
@@ -100,14 +106,26 @@ const void *DebugDevice::frameBufferMap(ANARIFrame frame,
             ANARI_STATUS_INVALID_OPERATION);
         return false;
       }
+      traceTarget = traceName(r.handle);
       if (!r.mappedChannels.insert(channel).second)
         f.warning(
             "the channel is already mapped", ANARI_STATUS_INVALID_OPERATION);
       return true;
     });
-    return target ? m_wrapped->frameBufferMap(
-               (ANARIFrame)target, channel, width, height, pixelType)
-                  : nullptr;
+    if (!target)
+      return nullptr;
+    const void *pixels = m_wrapped->frameBufferMap(
+        (ANARIFrame)target, channel, width, height, pixelType);
+    if (pixels && tracing() && width && height && pixelType) {
+      // The pixels' hash, so a replay can tell it renders the same image.
+      const uint64_t bytes =
+          uint64_t(*width) * *height * anari::sizeOf(*pixelType);
+      trace("Map " + traceTarget + " " + trace::quote(channel) + " "
+            + std::to_string(*width) + " " + std::to_string(*height) + " "
+            + trace::typeName(*pixelType) + " "
+            + trace::hashName(trace::hashBytes(pixels, bytes)));
+    }
+    return pixels;
   });
 }
 
@@ -116,8 +134,10 @@ void DebugDevice::frameBufferUnmap(ANARIFrame frame, const char *channel)
   guarded("anariUnmapFrame", [&] {
     Findings f("anariUnmapFrame");
     auto target = checked(f, frame, ANARI_FRAME, channel, [&](ObjectRecord &r) {
-      if (channel && r.mappedChannels.erase(channel))
+      if (channel && r.mappedChannels.erase(channel)) {
+        trace("Unmap " + traceName(r.handle) + " " + trace::quote(channel));
         return true;
+      }
       f.error("the channel is not mapped", ANARI_STATUS_INVALID_OPERATION);
       return false;
     });
@@ -133,6 +153,7 @@ void DebugDevice::renderFrame(ANARIFrame frame)
     auto target = checked(f, frame, ANARI_FRAME, nullptr, [&](ObjectRecord &r) {
       m_rules->checkFrame(f, r, m_objects);
       r.rendered = true;
+      trace("Render " + traceName(r.handle));
       return true;
     });
     if (target)
@@ -148,6 +169,8 @@ int DebugDevice::frameReady(ANARIFrame frame, ANARIWaitMask mask)
       if (!r.rendered)
         f.warning(
             "the frame was never rendered", ANARI_STATUS_INVALID_OPERATION);
+      trace("Ready " + traceName(r.handle)
+            + (mask == ANARI_WAIT ? " WAIT" : " NO_WAIT"));
       return true;
     });
     return target ? m_wrapped->frameReady((ANARIFrame)target, mask) : 0;
@@ -158,8 +181,10 @@ void DebugDevice::discardFrame(ANARIFrame frame)
 {
   guarded("anariDiscardFrame", [&] {
     Findings f("anariDiscardFrame");
-    auto target = checked(
-        f, frame, ANARI_FRAME, nullptr, [](ObjectRecord &) { return true; });
+    auto target = checked(f, frame, ANARI_FRAME, nullptr, [&](ObjectRecord &r) {
+      trace("Discard " + traceName(r.handle));
+      return true;
+    });
     if (target)
       m_wrapped->discardFrame((ANARIFrame)target);
   });

@@ -2,6 +2,7 @@
 // arrays) elements checked; every new object gets a layer handle.
 #include "ArrayContents.h"
 #include "DebugDevice.h"
+#include "trace/TraceFormat.h"
 
 #include "anari/frontend/type_utility.h"
 
@@ -65,6 +66,10 @@ ANARIObject DebugDevice::newSubtyped(const char *function,
       handle = created(function, type, subtype, wrapped, f);
       if (handle)
         m_objects.find(handle)->knownSubtype = known;
+      if (handle && tracing()) {
+        trace("New " + traceName(handle) + " " + trace::typeName(type)
+              + (subtype ? " " + trace::quote(subtype) : std::string()));
+      }
     }
     report(f);
     return handle;
@@ -178,6 +183,11 @@ ANARIObject DebugDevice::newObject(const char *objectType, const char *subtype)
     ANARIObject handle =
         wrapped ? created("anariNewObject", ANARI_OBJECT, subtype, wrapped, f)
                 : nullptr;
+    if (handle && tracing()) {
+      trace("NewObject " + traceName(handle) + " "
+            + trace::quote(objectType ? objectType : "") + " "
+            + trace::quote(subtype ? subtype : ""));
+    }
     return handle; // NULL from the device is its documented answer
   });
 }
@@ -280,6 +290,16 @@ ANARIArray DebugDevice::newArray(const char *function,
               record.itemCount(),
               0,
               record.largestIndex);
+        }
+        if (tracing()) {
+          trace("Array " + traceName(handle) + " " + trace::typeName(arrayType)
+                + " " + trace::typeName(elementType) + " ["
+                + std::to_string(items[0]) + " " + std::to_string(items[1])
+                + " " + std::to_string(items[2]) + "] "
+                + traceContents(elementType,
+                    objects ? storage->appMemory : appMemory,
+                    count,
+                    0));
         }
       }
     }

@@ -29,6 +29,8 @@ struct MappedParameter
   ANARIDataType elementType = ANARI_UNKNOWN;
   uint64_t count = 0;
   uint64_t stride = 0; // bytes between elements (as the device reported)
+  ANARIDataType arrayType = ANARI_ARRAY1D;
+  uint64_t items[3] = {0, 0, 0};
 };
 
 struct ObjectRecord

@@ -2,6 +2,7 @@
 // records, then forwarded with the wrapped device's handles.
 #include "ArrayContents.h"
 #include "DebugDevice.h"
+#include "trace/TraceFormat.h"
 
 #include "anari/frontend/type_utility.h"
 
@@ -62,6 +63,13 @@ void DebugDevice::setParameter(
       if (n == "name" && type == ANARI_STRING)
         r.name = (const char *)mem;
       r.changedSinceCommit = true;
+      if (tracing()) {
+        const std::string v = traceValue(type, mem);
+        if (!v.empty()) {
+          trace("Set " + traceName(r.handle) + " " + trace::quote(n) + " "
+                + trace::typeName(type) + " " + v);
+        }
+      }
       return true;
     });
     if (target)
@@ -90,6 +98,7 @@ void DebugDevice::unsetParameter(ANARIObject object, const char *name)
       }
       r.parameters.erase(name);
       r.changedSinceCommit = true;
+      trace("Unset " + traceName(r.handle) + " " + trace::quote(name));
       return true;
     });
     if (target)
@@ -116,6 +125,7 @@ void DebugDevice::unsetAllParameters(ANARIObject object)
           r.parameters.clear();
           r.name.clear();
           r.changedSinceCommit = true;
+          trace("UnsetAll " + traceName(r.handle));
           return true;
         });
     if (target)
@@ -175,7 +185,12 @@ void *DebugDevice::mapParameterArray(const char *function,
       uint64_t count = 1;
       for (int i = 0; i < 3; ++i)
         count *= items[i] ? items[i] : 1;
-      record->mappedParameters[name] = {memory, elementType, count, stride};
+      record->mappedParameters[name] = {memory,
+          elementType,
+          count,
+          stride,
+          arrayType,
+          {items[0], items[1], items[2]}};
       StagedParameter staged;
       staged.type = arrayType;
       staged.mappedElementType = elementType;
@@ -249,6 +264,14 @@ void DebugDevice::unmapParameterArray(ANARIObject object, const char *name)
         return false;
       }
       MappedParameter &m = it->second;
+      if (tracing()) {
+        trace("ParameterArray " + traceName(r.handle) + " " + trace::quote(name)
+              + " " + trace::typeName(m.arrayType) + " "
+              + trace::typeName(m.elementType) + " ["
+              + std::to_string(m.items[0]) + " " + std::to_string(m.items[1])
+              + " " + std::to_string(m.items[2]) + "] "
+              + traceContents(m.elementType, m.memory, m.count, m.stride));
+      }
       if (anari::isObject(m.elementType)) {
         // The application wrote layer handles; the device reads its own.
         const uint64_t step = m.stride ? m.stride : sizeof(ANARIObject);
@@ -289,6 +312,7 @@ void DebugDevice::commitParameters(ANARIObject object)
           m_rules->checkCommit(f, r, m_objects);
           r.committed = true;
           r.changedSinceCommit = false;
+          trace("Commit " + traceName(r.handle));
           return true;
         });
     if (target)
@@ -313,6 +337,7 @@ void DebugDevice::release(ANARIObject object)
           if (r.mapped)
             f.warning(
                 "the array is still mapped", ANARI_STATUS_INVALID_OPERATION);
+          trace("Release " + traceName(r.handle));
           if (--r.publicReferences == 0) {
             r.released = true;
             r.ownedHandles = {};
@@ -335,8 +360,9 @@ void DebugDevice::retain(ANARIObject object)
   guarded("anariRetain", [&] {
     Findings f("anariRetain");
     auto target =
-        checked(f, object, ANARI_OBJECT, nullptr, [](ObjectRecord &r) {
+        checked(f, object, ANARI_OBJECT, nullptr, [&](ObjectRecord &r) {
           ++r.publicReferences;
+          trace("Retain " + traceName(r.handle));
           return true;
         });
     if (target)
@@ -387,6 +413,10 @@ void DebugDevice::unmapArray(ANARIArray array)
       if (!r.mapped) {
         f.error("the array is not mapped", ANARI_STATUS_INVALID_OPERATION);
         return false;
+      }
+      if (tracing()) {
+        trace("ArrayData " + traceName(r.handle) + " "
+              + traceContents(r.elementType, r.mappedMemory, r.itemCount(), 0));
       }
       if (r.objectArray) {
         translated = translateObjectArray(f, r);
