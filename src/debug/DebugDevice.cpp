@@ -132,6 +132,8 @@ void DebugDevice::forwardFrameCompletion(
     const void *userPtr, ANARIDevice, ANARIFrame frame)
 {
   auto *self = (DebugDevice *)userPtr;
+  if (!self)
+    return; // cannot happen: the layer always sets itself as user data
   ANARIFrameCompletionCallback callback = nullptr;
   const void *callbackUserPtr = nullptr;
   ANARIObject handle = nullptr;

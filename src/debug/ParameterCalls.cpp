@@ -22,6 +22,8 @@ void DebugDevice::setParameter(
     const void *forwarded = mem;
     ANARIObject translatedValue = nullptr;
     ANARIFrameCompletionCallback trampoline = &forwardFrameCompletion;
+    bool forward = true;
+    bool withLayerAsUserData = false;
     auto target = checked(f, object, ANARI_OBJECT, name, [&](ObjectRecord &r) {
       // ANARI_VOID_POINTER values are `mem` itself (as in the SDK).
       if (!name || (!mem && type != ANARI_VOID_POINTER)) {
@@ -46,15 +48,19 @@ void DebugDevice::setParameter(
       }
       m_rules->checkParameter(f, r, name, type, mem, value);
       const std::string n = name;
+      // The wrapped device calls the layer's trampoline with the layer as
+      // user data, whatever the application sets (or never sets).
       if (r.type == ANARI_FRAME && n == "frameCompletionCallback"
           && type == ANARI_FRAME_COMPLETION_CALLBACK) {
         std::memcpy(&r.completion, mem, sizeof(r.completion));
-        if (r.completion)
+        if (r.completion) {
           forwarded = &trampoline;
-      } else if (r.type == ANARI_FRAME && n == "frameCompletionCallbackUserData"
-                 && type == ANARI_VOID_POINTER) {
-        r.completionUserPtr = mem;
-        forwarded = this;
+          withLayerAsUserData = true;
+        }
+      } else if (r.type == ANARI_FRAME
+                 && n == "frameCompletionCallbackUserData") {
+        r.completionUserPtr = type == ANARI_VOID_POINTER ? mem : nullptr;
+        forward = false;
       }
       StagedParameter staged;
       staged.type = type;
@@ -72,8 +78,13 @@ void DebugDevice::setParameter(
       }
       return true;
     });
-    if (target)
-      m_wrapped->setParameter(target, name, type, forwarded);
+    if (!target || !forward)
+      return;
+    m_wrapped->setParameter(target, name, type, forwarded);
+    if (withLayerAsUserData) {
+      m_wrapped->setParameter(
+          target, "frameCompletionCallbackUserData", ANARI_VOID_POINTER, this);
+    }
   });
 }
 
@@ -99,6 +110,11 @@ void DebugDevice::unsetParameter(ANARIObject object, const char *name)
       r.parameters.erase(name);
       r.changedSinceCommit = true;
       trace("Unset " + traceName(r.handle) + " " + trace::quote(name));
+      if (r.type == ANARI_FRAME
+          && std::strcmp(name, "frameCompletionCallbackUserData") == 0) {
+        r.completionUserPtr = nullptr;
+        return false; // the wrapped device keeps the layer as user data
+      }
       return true;
     });
     if (target)

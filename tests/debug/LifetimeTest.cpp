@@ -133,3 +133,73 @@ TEST_F(DebugLifetime, ManyThreadsOnOneDevice)
     t.join();
   EXPECT_TRUE(silent());
 }
+
+namespace {
+
+struct Completion
+{
+  const void *userData = &userData; // not NULL until a call sets it
+  ANARIFrame frame = nullptr;
+  int calls = 0;
+};
+Completion g_completion;
+
+void onFrameDone(const void *userData, ANARIDevice, ANARIFrame frame)
+{
+  g_completion.userData = userData;
+  g_completion.frame = frame;
+  g_completion.calls++;
+}
+
+} // namespace
+
+// Found by fuzzing through the layer: a completion callback set with no
+// user data (or its user data unset) reached the layer's trampoline with
+// NULL for the layer.
+TEST_F(DebugLifetime, CompletionCallbackWithoutUserData)
+{
+  ANARIWorld world = anariNewWorld(m_device);
+  ANARICamera camera = anariNewCamera(m_device, "perspective");
+  ANARIRenderer renderer = anariNewRenderer(m_device, "default");
+  for (ANARIObject o :
+      {(ANARIObject)world, (ANARIObject)camera, (ANARIObject)renderer})
+    anariCommitParameters(m_device, o);
+  ANARIFrame frame = anariNewFrame(m_device);
+  const uint32_t size[2] = {4, 4};
+  anariSetParameter(m_device, frame, "world", ANARI_WORLD, &world);
+  anariSetParameter(m_device, frame, "camera", ANARI_CAMERA, &camera);
+  anariSetParameter(m_device, frame, "renderer", ANARI_RENDERER, &renderer);
+  anariSetParameter(m_device, frame, "size", ANARI_UINT32_VEC2, size);
+  ANARIFrameCompletionCallback callback = onFrameDone;
+  anariSetParameter(m_device,
+      frame,
+      "frameCompletionCallback",
+      ANARI_FRAME_COMPLETION_CALLBACK,
+      &callback);
+  anariCommitParameters(m_device, frame);
+  g_completion = {};
+  anariRenderFrame(m_device, frame);
+  anariFrameReady(m_device, frame, ANARI_WAIT);
+  EXPECT_EQ(g_completion.calls, 1);
+  EXPECT_EQ(g_completion.userData, nullptr);
+  EXPECT_EQ(g_completion.frame, frame);
+
+  int mine = 0;
+  anariSetParameter(m_device,
+      frame,
+      "frameCompletionCallbackUserData",
+      ANARI_VOID_POINTER,
+      &mine);
+  anariUnsetParameter(m_device, frame, "frameCompletionCallbackUserData");
+  anariCommitParameters(m_device, frame);
+  anariRenderFrame(m_device, frame);
+  anariFrameReady(m_device, frame, ANARI_WAIT);
+  EXPECT_EQ(g_completion.calls, 2);
+  EXPECT_EQ(g_completion.userData, nullptr);
+  for (ANARIObject o : {(ANARIObject)frame,
+           (ANARIObject)renderer,
+           (ANARIObject)camera,
+           (ANARIObject)world})
+    anariRelease(m_device, o);
+  EXPECT_TRUE(silent());
+}
