@@ -62,6 +62,14 @@ for name in api loader; do
       | grep --line-buffered -v -E '^#[0-9]+.*(NEW|REDUCE) '
     status=${PIPESTATUS[0]}
   fi
+  # The API inputs once more through the debug layer wrapped around prism.
+  if [ "$status" = 0 ] && [ "$name" = api ] \
+      && [ -e "$build/lib/libanari_library_debug.so" ]; then
+    echo "== fuzz_api's corpus through the debug layer"
+    ANARI_DEBUG_LAYER=1 "$fuzzer" "${options[@]}" -runs=0 "$scratch" 2>&1 \
+      | grep --line-buffered -v -E '^#[0-9]+.*(NEW|REDUCE) '
+    status=${PIPESTATUS[0]}
+  fi
   set -e
   echo "== fuzz_$name: exit $status after $(($(date +%s) - start))s," \
     "corpus now $(ls "$scratch" | wc -l) inputs"
