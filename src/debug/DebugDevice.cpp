@@ -244,15 +244,29 @@ void DebugDevice::setDeviceParameter(
     report(f);
     return;
   }
-  if (tracing()) {
+  ANARIObject translated = nullptr;
+  bool good = true;
+  {
     std::lock_guard lock(m_mutex);
-    const std::string value = traceValue(type, mem);
+    if (anari::isObject(type)) {
+      // An object value is checked and translated as on any object.
+      ANARIObject handle = nullptr;
+      std::memcpy(&handle, mem, sizeof(handle));
+      good = translate(f, handle, type, "value", translated);
+    }
+    const std::string value = good && tracing() ? traceValue(type, mem) : "";
     if (!value.empty()) {
       trace("Set device " + trace::quote(name) + " " + trace::typeName(type)
             + " " + value);
     }
   }
-  m_wrapped->setParameter((ANARIObject)m_wrapped, name, type, mem);
+  report(f);
+  if (!good)
+    return;
+  m_wrapped->setParameter((ANARIObject)m_wrapped,
+      name,
+      type,
+      anari::isObject(type) ? (const void *)&translated : mem);
 }
 
 void DebugDevice::commitDevice()
