@@ -137,3 +137,15 @@ TEST_F(DebugHandles, WrappedDeviceMessagesNameLayerHandles)
   EXPECT_TRUE(sawWrapped);
   anariRelease(m_device, camera);
 }
+
+// Object values set on the device itself are checked like any other.
+TEST_F(DebugHandles, StaleObjectValueOfADeviceParameter)
+{
+  ANARIWorld world = anariNewWorld(m_device);
+  anariRelease(m_device, world);
+  anariSetParameter(m_device, m_device, "someWorld", ANARI_WORLD, &world);
+  EXPECT_TRUE(onlyLayerReported(ANARI_SEVERITY_ERROR,
+      ANARI_STATUS_INVALID_ARGUMENT,
+      "anariSetParameter(device 'someWorld'): value handle is world #1, used "
+      "after its release"));
+}
