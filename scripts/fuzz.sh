@@ -46,29 +46,46 @@ for name in api loader; do
   start=$(date +%s)
   # Fuzzing (a budget of 0 skips it), then every input of the grown corpus
   # once more with leak checks. LeakSanitizer stops every thread for each
-  # check; mid-run, with TBB's workers coming and going, its tracer itself
-  # crashes now and then, so leaks are looked for in the replay only.
-  # libFuzzer exits non-zero on a crash, leak, timeout or OOM; its
+  # check, and its tracer itself crashes now and then ("Tracer caught
+  # signal 11" in ScanRangeForPointers: seen mid-run with TBB's workers
+  # coming and going, and in the check at exit after a long run), so the
+  # fuzzing runs with no leak check at all (not even at exit) and leaks are
+  # looked for in the replay, which runs once more if only the tracer
+  # failed. libFuzzer exits non-zero on a crash, leak, timeout or OOM; its
   # per-input progress lines are left out of the log (pulses stay).
   status=0
   set +e
   if [ "$budget" -gt 0 ]; then
-    "$fuzzer" "${options[@]}" -max_total_time="$budget" -detect_leaks=0 \
-      "$scratch" 2>&1 | grep --line-buffered -v -E '^#[0-9]+.*(NEW|REDUCE) '
-    status=${PIPESTATUS[0]}
-  fi
-  if [ "$status" = 0 ]; then
-    "$fuzzer" "${options[@]}" -runs=0 "$scratch" 2>&1 \
+    ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" "$fuzzer" "${options[@]}" \
+      -max_total_time="$budget" -detect_leaks=0 "$scratch" 2>&1 \
       | grep --line-buffered -v -E '^#[0-9]+.*(NEW|REDUCE) '
     status=${PIPESTATUS[0]}
   fi
+  # Every input once more with leak checks, and once more again if only
+  # LeakSanitizer's tracer failed; the arguments prefix the fuzzer (env
+  # and an environment).
+  replay() {
+    local log="$build/fuzz-work/$name-replay.log"
+    for attempt in 1 2; do
+      [ "$status" = 0 ] || return
+      "$@" "$fuzzer" "${options[@]}" -runs=0 "$scratch" 2>&1 \
+        | grep --line-buffered -v -E '^#[0-9]+.*(NEW|REDUCE) ' \
+        | tee "$log"
+      status=${PIPESTATUS[0]}
+      if [ "$status" != 0 ] && [ "$attempt" = 1 ] \
+        && grep -q "LeakSanitizer has encountered a fatal error" "$log"; then
+        echo "== fuzz_$name: LeakSanitizer's tracer crashed; replaying again"
+        status=0
+        continue
+      fi
+      return
+    done
+  }
+  replay env
   # The API inputs once more through the debug layer wrapped around prism.
-  if [ "$status" = 0 ] && [ "$name" = api ] \
-      && [ -e "$build/lib/libanari_library_debug.so" ]; then
+  if [ "$name" = api ] && [ -e "$build/lib/libanari_library_debug.so" ]; then
     echo "== fuzz_api's corpus through the debug layer"
-    ANARI_DEBUG_LAYER=1 "$fuzzer" "${options[@]}" -runs=0 "$scratch" 2>&1 \
-      | grep --line-buffered -v -E '^#[0-9]+.*(NEW|REDUCE) '
-    status=${PIPESTATUS[0]}
+    replay env ANARI_DEBUG_LAYER=1
   fi
   set -e
   echo "== fuzz_$name: exit $status after $(($(date +%s) - start))s," \

@@ -757,6 +757,13 @@ void Device::flushCommits()
   flushCommitsLocked();
 }
 
+void Device::flushCommitsAndRefresh(Object &object)
+{
+  std::lock_guard lock(m_flushMutex);
+  flushCommitsLocked();
+  object.refresh(++m_refreshGeneration);
+}
+
 void Device::flushCommitsLocked()
 {
   waitForFrames();
@@ -910,11 +917,8 @@ try {
   Object *object = checked(handle, "anariGetProperty");
   if (!object)
     return 0;
-  if (mask & ANARI_WAIT) {
-    std::lock_guard lock(m_flushMutex);
-    flushCommitsLocked();
-    object->refresh(++m_refreshGeneration);
-  }
+  if (mask & ANARI_WAIT)
+    flushCommitsAndRefresh(*object);
   return object->getProperty(name, type, mem, size, mask) ? 1 : 0;
 } catch (...) {
   reportException("anariGetProperty");

@@ -150,6 +150,9 @@ class Device : public anari::DeviceImpl, public DeviceState
   // Applies every pending commit; waits for frames in flight first so no
   // frame ever sees a half-applied change.
   void flushCommits();
+  // flushCommits(), then rebuilds what `object` derives from arrays or
+  // children changed since their commit, as a frame start does.
+  void flushCommitsAndRefresh(Object &object);
   void waitForFrames();
 
  protected:

@@ -719,6 +719,21 @@ int run(int argc, char **argv)
         "the device reported errors while rendering (see above); "
         "no image written");
 
+  // A data-parallel device (KHR_DATA_PARALLEL_MPI) defines the image on
+  // rank 0 of the frame's communicator only: the other processes of an
+  // `mpirun` write nothing (prism_mpi tells a frame's rank as mpiRank).
+  int32_t mpiRank = 0;
+  if (has("ANARI_KHR_DATA_PARALLEL_MPI")
+      && anariGetProperty(device,
+          frame,
+          "mpiRank",
+          ANARI_INT32,
+          &mpiRank,
+          sizeof(mpiRank),
+          ANARI_NO_WAIT)
+      && mpiRank > 0)
+    return 0;
+
   std::vector<OutputImage> images;
   std::vector<std::string> warnings;
   const std::string readError = readChannels(

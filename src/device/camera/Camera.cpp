@@ -1,7 +1,6 @@
 #include "Camera.h"
 
 #include "../array/Array.h"
-#include "../array/MotionParameters.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,7 +31,7 @@ float2 concentricDisk(float2 u)
 } // namespace
 
 Camera::Camera(DeviceState &device, const std::string &subtype)
-    : Object(device, ANARI_CAMERA, subtype)
+    : MovingObject(device, ANARI_CAMERA, subtype)
 {}
 
 void Camera::commitParameters()
@@ -117,7 +116,7 @@ void Camera::commitParameters()
   }
 
   readShutter();
-  readMotion();
+  m_motion = readMotion(kMatrixKeys | kDecomposedKeys);
 }
 
 void Camera::readShutter()
@@ -162,25 +161,6 @@ void Camera::readShutter()
       std::isnan(duration)
           ? 0.f
           : std::clamp(duration, 0.f, m_shutter.y - m_shutter.x);
-}
-
-void Camera::readMotion()
-{
-  MotionParameters keys;
-  auto array = [&](const char *name) {
-    return (const Array *)readObject(name, {ANARI_ARRAY1D});
-  };
-  keys.transform = array("motion.transform");
-  keys.scale = array("motion.scale");
-  keys.rotation = array("motion.rotation");
-  keys.translation = array("motion.translation");
-  keys.time = read<float2>("time", ANARI_FLOAT32_BOX1, {0.f, 1.f});
-  m_motion = readMotionTransform(keys, [&](const std::string &message) {
-    report(ANARI_SEVERITY_WARNING,
-        ANARI_STATUS_INVALID_ARGUMENT,
-        "%s",
-        message.c_str());
-  });
 }
 
 float Camera::rayTime(float2 screen, float sample) const

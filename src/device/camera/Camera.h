@@ -3,9 +3,9 @@
 // per-eye images, then imageRegion maps those onto the sensor (spec 5.2).
 #pragma once
 
+#include "../array/MovingObject.h"
 #include "../math/MotionTransform.h"
 #include "../math/Vec.h"
-#include "../object/Object.h"
 
 #include <limits>
 
@@ -24,7 +24,7 @@ struct Ray
   float time{0.5f};
 };
 
-class Camera : public Object
+class Camera : public MovingObject
 {
  public:
   Camera(DeviceState &device, const std::string &subtype);
@@ -119,7 +119,6 @@ class Camera : public Object
 
  private:
   void readShutter();
-  void readMotion();
 };
 
 } // namespace prism

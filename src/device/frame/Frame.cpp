@@ -20,8 +20,6 @@
 namespace prism {
 namespace {
 
-constexpr uint32_t kTileSize = 32;
-
 // Mapped types each channel accepts (spec 5.1, table 10).
 const std::map<std::string, std::vector<ANARIDataType>> &channelFormats()
 {
@@ -206,7 +204,7 @@ void Frame::render()
   // The denoiser is guided by depth, normal and albedo, mapped or not.
   m_denoise = m_renderer->denoise();
   const FrameBuffers::Needs needs{
-      m_denoise || m_channels.count("channel.depth") > 0,
+      m_denoise || m_keepDepth || m_channels.count("channel.depth") > 0,
       m_denoise || m_channels.count("channel.normal") > 0,
       m_denoise || m_channels.count("channel.albedo") > 0,
       m_channels.count("channel.primitiveId") > 0,
@@ -239,6 +237,10 @@ void Frame::render()
     if (m_cancel)
       return;
     const uint32_t tx = index % tilesX, ty = index / tilesX;
+    if (ty % m_tileRowParts != m_tileRowPart) {
+      m_tilesDone.fetch_add(1, std::memory_order_release);
+      return; // another process renders this row of tiles
+    }
     Tile tile{tx * kTileSize,
         ty * kTileSize,
         std::min((tx + 1) * kTileSize, m_width),
@@ -433,6 +435,31 @@ const void *Frame::map(const char *channel,
 }
 
 void Frame::unmap(const char *) {}
+
+void Frame::shareTileRows(uint32_t part, uint32_t parts)
+{
+  waitUntilDone();
+  m_tileRowParts = parts > 0 ? parts : 1;
+  m_tileRowPart = part < m_tileRowParts ? part : 0;
+}
+
+ANARIDataType Frame::channelType(const std::string &channel) const
+{
+  auto it = m_channels.find(channel);
+  return it == m_channels.end() ? ANARI_UNKNOWN : it->second.type;
+}
+
+void Frame::keepDepth(bool keep)
+{
+  waitUntilDone();
+  m_keepDepth = keep;
+}
+
+const FrameBuffers &Frame::linearPixels()
+{
+  waitUntilDone();
+  return m_accumulation ? m_accumulated : m_buffers;
+}
 
 bool Frame::getProperty(const std::string &name,
     ANARIDataType type,

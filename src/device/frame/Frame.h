@@ -41,6 +41,37 @@ class Frame : public Object
       ANARIDataType &pixelType);
   void unmap(const char *channel);
 
+  // Square tiles a render is split into, in pixels.
+  static constexpr uint32_t kTileSize = 32;
+  // The committed size and renderer (the data-parallel device compares them
+  // across processes before a collective render).
+  uint32_t width() const
+  {
+    return m_width;
+  }
+  uint32_t height() const
+  {
+    return m_height;
+  }
+  const Renderer *renderer() const
+  {
+    return m_renderer;
+  }
+  const World *world() const
+  {
+    return m_world;
+  }
+  // What a data-parallel device asks of the next renders: only the tile
+  // rows whose index modulo `parts` is `part`, and the depth buffer even
+  // when channel.depth is not enabled (compositing sorts by it).
+  void shareTileRows(uint32_t part, uint32_t parts);
+  void keepDepth(bool keep);
+  // The committed pixel type of `channel`; ANARI_UNKNOWN when not enabled.
+  ANARIDataType channelType(const std::string &channel) const;
+  // The linear color and depth the channels were converted from (the
+  // average so far with accumulation); waits for the render in flight.
+  const FrameBuffers &linearPixels();
+
   bool getProperty(const std::string &name,
       ANARIDataType type,
       void *mem,
@@ -90,6 +121,9 @@ class Frame : public Object
   const void *m_completionUserPtr{nullptr};
 
   FrameBuffers m_buffers;
+  uint32_t m_tileRowPart{0};
+  uint32_t m_tileRowParts{1};
+  bool m_keepDepth{false};
   bool m_accumulation{false};
   uint32_t m_sampleIndex{0}; // of the render in flight
   uint32_t m_samplesDone{0}; // accumulated into m_accumulated

@@ -34,6 +34,18 @@ void TaskPool::wait()
   m_idle.wait(lock, [&] { return m_queue.empty() && !m_busy; });
 }
 
+void TaskPool::setThreads(int threads)
+{
+  if (isWorkerThread())
+    return; // the arena is in use by the caller itself
+  // NOTE: the lock keeps the pool thread from starting a task (and so from
+  // entering the arena) while the arena is rebuilt.
+  std::unique_lock lock(m_mutex);
+  m_idle.wait(lock, [&] { return m_queue.empty() && !m_busy; });
+  m_arena.terminate();
+  m_arena.initialize(threads > 0 ? threads : tbb::task_arena::automatic);
+}
+
 void TaskPool::loop()
 {
   for (;;) {

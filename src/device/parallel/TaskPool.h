@@ -27,6 +27,9 @@ class TaskPool
   void run(std::function<void()> task);
   // Waits until every queued task has finished.
   void wait();
+  // Waits until the pool is idle, then runs later tasks on `threads`
+  // threads (0: every hardware thread).
+  void setThreads(int threads);
   // Whether the caller is the pool's background thread.
   bool isWorkerThread() const
   {

@@ -16,8 +16,8 @@ namespace prism {
 
 inline uint32_t reverseBits(uint32_t bits)
 {
-  bits = (bits << 16) | (bits >> 16);
-  bits = ((bits & 0x00ff00ffu) << 8) | ((bits & 0xff00ff00u) >> 8);
+  // Bytes swap in one instruction; then the bits within each byte.
+  bits = __builtin_bswap32(bits);
   bits = ((bits & 0x0f0f0f0fu) << 4) | ((bits & 0xf0f0f0f0u) >> 4);
   bits = ((bits & 0x33333333u) << 2) | ((bits & 0xccccccccu) >> 2);
   return ((bits & 0x55555555u) << 1) | ((bits & 0xaaaaaaaau) >> 1);

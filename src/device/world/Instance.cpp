@@ -2,7 +2,6 @@
 
 #include "../array/Array.h"
 #include "../array/ElementConversion.h"
-#include "../array/MotionParameters.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,7 +24,7 @@ mat3x4 affinePart(const mat4 &m)
 } // namespace
 
 Instance::Instance(DeviceState &device, const std::string &subtype)
-    : Object(device, ANARI_INSTANCE, subtype)
+    : MovingObject(device, ANARI_INSTANCE, subtype)
 {}
 
 void Instance::commitParameters()
@@ -79,7 +78,11 @@ void Instance::commitParameters()
   }
 
   m_motion = MotionTransform();
-  if (subtype() != "transform" && readMotion())
+  if (subtype() == "motionTransform")
+    m_motion = readMotion(kMatrixKeys);
+  else if (subtype() != "transform")
+    m_motion = readMotion(kDecomposedKeys);
+  if (m_motion.isSet())
     m_worldFromObject.assign(1, m_motion.at(0.5f));
   if (m_worldFromObject.empty())
     m_worldFromObject.push_back(single);
@@ -92,29 +95,6 @@ void Instance::commitParameters()
         m_worldFromObject.size());
     m_ids.clear();
   }
-}
-
-bool Instance::readMotion()
-{
-  MotionParameters keys;
-  auto array = [&](const char *name) {
-    return (const Array *)readObject(name, {ANARI_ARRAY1D});
-  };
-  if (subtype() == "motionTransform") {
-    keys.transform = array("motion.transform");
-  } else {
-    keys.scale = array("motion.scale");
-    keys.rotation = array("motion.rotation");
-    keys.translation = array("motion.translation");
-  }
-  keys.time = read<float2>("time", ANARI_FLOAT32_BOX1, {0.f, 1.f});
-  m_motion = readMotionTransform(keys, [&](const std::string &message) {
-    report(ANARI_SEVERITY_WARNING,
-        ANARI_STATUS_INVALID_ARGUMENT,
-        "%s",
-        message.c_str());
-  });
-  return m_motion.isSet();
 }
 
 void Instance::applyAttributes(AttributeValues &attributes) const

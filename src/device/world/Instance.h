@@ -4,13 +4,14 @@
 // motionScaleRotationTranslation subtypes).
 #pragma once
 
+#include "../array/MovingObject.h"
 #include "../geometry/Attributes.h"
 #include "../math/MotionTransform.h"
 #include "Group.h"
 
 namespace prism {
 
-class Instance : public Object
+class Instance : public MovingObject
 {
  public:
   Instance(DeviceState &device, const std::string &subtype);
@@ -56,9 +57,6 @@ class Instance : public Object
   void commitParameters() override;
 
  private:
-  // Reads the motion.* keys; true if they place the instance.
-  bool readMotion();
-
   Group *m_group{nullptr};
   std::vector<mat3x4> m_worldFromObject;
   MotionTransform m_motion;

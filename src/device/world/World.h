@@ -46,6 +46,10 @@ class World : public Object
   {
     return m_placements[instanceId];
   }
+  uint32_t placementCount() const
+  {
+    return uint32_t(m_placements.size());
+  }
   // The closest hit at `time` (in the shutter's [0, 1]); instanceId names
   // the placement (see placement()).
   bool intersect(const float3 &origin,

@@ -30,6 +30,20 @@ bool isNet(uint32_t seed, int k)
   return true;
 }
 
+TEST(SampleSequence, ReverseBitsMirrorsEveryBit)
+{
+  uint32_t value = 0x12345679u;
+  for (int n = 0; n < 4096; n++) {
+    value = value * 1664525u + 1013904223u;
+    uint32_t mirrored = 0;
+    for (int b = 0; b < 32; b++)
+      mirrored |= ((value >> b) & 1u) << (31 - b);
+    ASSERT_EQ(reverseBits(value), mirrored) << std::hex << value;
+  }
+  EXPECT_EQ(reverseBits(1u), 0x80000000u);
+  EXPECT_EQ(reverseBits(0xffu), 0xff000000u);
+}
+
 TEST(SampleSequence, EveryPowerOfTwoPrefixIsStratified)
 {
   for (uint32_t pixel = 0; pixel < 32; pixel++) {

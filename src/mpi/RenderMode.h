@@ -1,0 +1,34 @@
+// The device parameter `mode`: how the processes of a communicator share a
+// frame.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace prism::mpi {
+
+enum class RenderMode : uint32_t {
+  // Each process renders its own part of the world; depth-sorted
+  // compositing of their pixels (visibility exact, shading local).
+  Composite,
+  // Every process holds the whole world; each renders a share of the tiles.
+  Replicated,
+};
+
+// nullopt for names that are not a mode this device implements.
+inline std::optional<RenderMode> parseRenderMode(const std::string &name)
+{
+  if (name == "composite")
+    return RenderMode::Composite;
+  if (name == "replicated")
+    return RenderMode::Replicated;
+  return std::nullopt;
+}
+
+inline const char *toString(RenderMode mode)
+{
+  return mode == RenderMode::Composite ? "composite" : "replicated";
+}
+
+} // namespace prism::mpi

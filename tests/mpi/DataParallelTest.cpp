@@ -1,0 +1,603 @@
+// The prism_mpi device under mpirun: `data_parallel_test SCENARIO`, run by
+// ctest with 1, 2 and 4 processes. Each scenario compares rank 0's image with
+// the plain prism device rendering the whole scene in one process.
+#include "BoxGrid.h"
+#include "StatusRecorder.h"
+
+#include <mpi.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+using namespace prism::scenes;
+
+namespace {
+
+int g_worldRank = 0;
+int g_failures = 0;
+
+void check(bool ok, const std::string &what)
+{
+  if (!ok) {
+    std::fprintf(stderr, "[rank %d] FAILED: %s\n", g_worldRank, what.c_str());
+    g_failures++;
+  }
+}
+
+// Errors a device reported, kept for the scenarios that expect some.
+class Status
+{
+ public:
+  // The messages of `worst` severity or worse (errors by default).
+  std::vector<std::string> take(
+      ANARIStatusSeverity worst = ANARI_SEVERITY_ERROR)
+  {
+    std::vector<std::string> messages;
+    for (const StatusMessage &m : m_recorder.take()) {
+      if (m.severity <= worst)
+        messages.push_back(m.text);
+    }
+    return messages;
+  }
+  StatusRecorder m_recorder;
+};
+
+// Whether exactly one error arrived (besides, when `unrenderedMaps`, the
+// errors of mapping a frame that was not rendered) and it contains every
+// fragment.
+bool oneErrorMentioning(Status &status,
+    const std::vector<std::string> &fragments,
+    bool unrenderedMaps = false)
+{
+  std::vector<std::string> errors = status.take();
+  if (unrenderedMaps) {
+    std::erase_if(errors, [](const std::string &e) {
+      return e.find("anariMapFrame") != std::string::npos
+             && e.find("never rendered") != std::string::npos;
+    });
+  }
+  bool all = errors.size() == 1;
+  for (const std::string &fragment : fragments)
+    all = all && errors[0].find(fragment) != std::string::npos;
+  if (!all) {
+    for (const std::string &e : errors)
+      std::fprintf(stderr, "[rank %d] error: %s\n", g_worldRank, e.c_str());
+  }
+  return all;
+}
+
+std::pair<int, int> worldRankAndSize()
+{
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  return {rank, ranks};
+}
+
+struct Device
+{
+  ANARILibrary library{nullptr};
+  ANARIDevice device{nullptr};
+  Device(const char *name, Status &status)
+  {
+    library =
+        anariLoadLibrary(name, StatusRecorder::callback, &status.m_recorder);
+    device = library ? anariNewDevice(library, "default") : nullptr;
+    check(device != nullptr, std::string(name) + " loads");
+  }
+  ~Device()
+  {
+    if (device)
+      anariRelease(device, device);
+    if (library)
+      anariUnloadLibrary(library);
+  }
+};
+
+constexpr uint32_t kSize = 64;
+const float kEyeA[3] = {3.2f, 2.6f, 4.6f};
+const float kEyeB[3] = {-4.3f, 1.7f, 2.9f};
+
+// Renders `boxes` once with `library`'s device (communicator: the frame's
+// and world's mpiCommunicator when given) and returns the image and bounds.
+struct Render
+{
+  Image image;
+  float bounds[6]{};
+  bool boundsFound{false};
+  uint64_t bytesSent{0}; // the frame's mpiBytesSent (prism_mpi only)
+};
+
+Render renderBoxes(ANARIDevice device,
+    const std::vector<int> &boxes,
+    const float eye[3],
+    const char *rendererSubtype,
+    MPI_Comm *communicator,
+    uint32_t width = kSize,
+    uint32_t height = kSize)
+{
+  Render result;
+  ANARIWorld world = newBoxesWorld(device, boxes);
+  if (communicator) {
+    anariSetParameter(
+        device, world, "mpiCommunicator", ANARI_VOID_POINTER, communicator);
+    anariCommitParameters(device, world);
+  }
+  ANARICamera camera = newCamera(device, eye, float(width) / float(height));
+  ANARIRenderer renderer = newRenderer(device, rendererSubtype);
+  ANARIFrame frame = newFrame(device, world, camera, renderer, width, height);
+  if (communicator) {
+    anariSetParameter(
+        device, frame, "mpiCommunicator", ANARI_VOID_POINTER, communicator);
+    anariCommitParameters(device, frame);
+  }
+  anariRenderFrame(device, frame);
+  anariFrameReady(device, frame, ANARI_WAIT);
+  result.image = readFrame(device, frame);
+  result.boundsFound = anariGetProperty(device,
+      world,
+      "bounds",
+      ANARI_FLOAT32_BOX3,
+      result.bounds,
+      sizeof(result.bounds),
+      ANARI_WAIT);
+  anariGetProperty(device,
+      frame,
+      "mpiBytesSent",
+      ANARI_UINT64,
+      &result.bytesSent,
+      sizeof(result.bytesSent),
+      ANARI_WAIT);
+  anariRelease(device, frame);
+  anariRelease(device, renderer);
+  anariRelease(device, camera);
+  anariRelease(device, world);
+  return result;
+}
+
+size_t countHits(const Image &image)
+{
+  size_t hits = 0;
+  for (float d : image.depth)
+    hits += std::isfinite(d) ? 1 : 0;
+  return hits;
+}
+
+// Rank 0's composited image against one process rendering every box, and
+// rank 0's own boxes alone (which must differ when others hold boxes).
+void checkComposite(const Render &composited,
+    const std::vector<int> &owners,
+    const float eye[3],
+    const std::string &label)
+{
+  Status status;
+  Device prism("prism", status);
+  const Render whole =
+      renderBoxes(prism.device, boxesOf(owners, -1), eye, "raycast", nullptr);
+  const Render mine =
+      renderBoxes(prism.device, boxesOf(owners, 0), eye, "raycast", nullptr);
+  const Image &got = composited.image;
+  const Image &want = whole.image;
+  check(want.depth.size() == size_t(kSize) * kSize, label + ": reference");
+  check(got.width == kSize && got.height == kSize
+            && got.depth.size() == want.depth.size()
+            && got.color.size() == want.color.size(),
+      label + ": rank 0 maps color and depth of the frame's size");
+  if (g_failures)
+    return;
+  // Enough of the grid is in view that a wrong composite cannot pass.
+  const size_t hits = countHits(want);
+  check(hits > want.depth.size() / 4 && hits < want.depth.size(),
+      label + ": the view shows boxes and background (" + std::to_string(hits)
+          + " of " + std::to_string(want.depth.size()) + " pixels hit)");
+  check(got.normal.size() == want.normal.size()
+            && got.albedo.size() == want.albedo.size()
+            && want.normal.size() == 3 * want.depth.size(),
+      label + ": rank 0 maps normal and albedo of the frame's size");
+  if (g_failures)
+    return;
+  size_t depthMismatches = 0, colorMismatches = 0, vectorMismatches = 0,
+         ownDiffers = 0;
+  for (size_t i = 0; i < want.depth.size(); i++) {
+    // Bitwise: equal infinities, and no tolerance for finite depths.
+    depthMismatches +=
+        std::memcmp(&got.depth[i], &want.depth[i], sizeof(float)) != 0;
+    colorMismatches +=
+        std::memcmp(&got.color[4 * i], &want.color[4 * i], 4 * sizeof(float))
+        != 0;
+    vectorMismatches +=
+        std::memcmp(&got.normal[3 * i], &want.normal[3 * i], 3 * sizeof(float))
+            != 0
+        || std::memcmp(
+               &got.albedo[3 * i], &want.albedo[3 * i], 3 * sizeof(float))
+               != 0;
+    ownDiffers +=
+        std::memcmp(&mine.image.depth[i], &want.depth[i], sizeof(float)) != 0;
+  }
+  check(depthMismatches == 0,
+      label + ": depth equals the single-process depth ("
+          + std::to_string(depthMismatches) + " pixels differ)");
+  check(colorMismatches == 0,
+      label + ": color equals the single-process raycast color ("
+          + std::to_string(colorMismatches) + " pixels differ)");
+  check(vectorMismatches == 0,
+      label + ": normal and albedo are the nearest process's, as in the"
+              " single-process render ("
+          + std::to_string(vectorMismatches) + " pixels differ)");
+  int ranks = 1;
+  for (int owner : owners)
+    ranks = std::max(ranks, owner + 1);
+  if (ranks > 1) {
+    check(ownDiffers > 0,
+        label + ": rank 0's own boxes alone give another image, so the other"
+                " ranks' fragments were composited");
+  }
+  check(
+      composited.boundsFound && whole.boundsFound
+          && std::memcmp(composited.bounds, whole.bounds, sizeof(whole.bounds))
+                 == 0,
+      label + ": world bounds are the union over every rank");
+}
+
+// A frame with channel.color alone still composites by depth (the device
+// keeps the depth buffer without the channel): rank 0's color equals the
+// single-process color.
+void compositeColorOnly(ANARIDevice device,
+    const std::vector<int> &owners,
+    int rank,
+    MPI_Comm communicator,
+    const std::string &label)
+{
+  ANARIWorld world = newBoxesWorld(device, boxesOf(owners, rank));
+  ANARICamera camera = newCamera(device, kEyeB, 1.f);
+  ANARIRenderer renderer = newRenderer(device, "raycast");
+  ANARIFrame frame = newFrame(device, world, camera, renderer, kSize, kSize);
+  for (const char *channel :
+      {"channel.depth", "channel.normal", "channel.albedo"})
+    anariUnsetParameter(device, frame, channel);
+  anariSetParameter(
+      device, frame, "mpiCommunicator", ANARI_VOID_POINTER, &communicator);
+  anariCommitParameters(device, frame);
+  anariRenderFrame(device, frame);
+  anariFrameReady(device, frame, ANARI_WAIT);
+  uint32_t width = 0, height = 0;
+  ANARIDataType type = ANARI_UNKNOWN;
+  const float *color = (const float *)anariMapFrame(
+      device, frame, "channel.color", &width, &height, &type);
+  if (rank == 0) {
+    Status status;
+    Device prism("prism", status);
+    const Render whole = renderBoxes(
+        prism.device, boxesOf(owners, -1), kEyeB, "raycast", nullptr);
+    const std::vector<float> &want = whole.image.color;
+    check(color && type == ANARI_FLOAT32_VEC4 && width == kSize
+              && height == kSize && want.size() == size_t(kSize) * kSize * 4
+              && std::memcmp(color, want.data(), want.size() * sizeof(float))
+                     == 0,
+        label + ": a color-only frame composites to the single-process color");
+  }
+  anariUnmapFrame(device, frame, "channel.color");
+  anariRelease(device, frame);
+  anariRelease(device, renderer);
+  anariRelease(device, camera);
+  anariRelease(device, world);
+}
+
+// Every process renders its share of the boxes on `communicator`; the
+// communicator's rank 0 checks the result, for two views in turn.
+// The boxes are dealt to the first `holders` ranks (all when 0); the others'
+// worlds are empty.
+void compositeOn(MPI_Comm communicator,
+    uint32_t seed,
+    const std::string &label,
+    int holders = 0)
+{
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(communicator, &rank);
+  MPI_Comm_size(communicator, &ranks);
+  const std::vector<int> owners =
+      boxOwners(holders > 0 ? holders : ranks, seed);
+  Status status;
+  {
+    Device mpi("prism_mpi", status);
+    if (!mpi.device)
+      return;
+    const char *mode = "composite";
+    anariSetParameter(mpi.device, mpi.device, "mode", ANARI_STRING, mode);
+    anariCommitParameters(mpi.device, mpi.device);
+    for (const float *eye : {kEyeA, kEyeB}) {
+      MPI_Comm comm = communicator;
+      const Render composited =
+          renderBoxes(mpi.device, boxesOf(owners, rank), eye, "raycast", &comm);
+      // Rank 0 sends every other band its fragments (RGBA and depth, 20
+      // bytes) and its normal and albedo (12 bytes each), and gathers.
+      const uint64_t band0 = uint64_t(kSize / ranks) * kSize;
+      const uint64_t expected =
+          (uint64_t(kSize) * kSize - band0) * (20 + 12 + 12);
+      if (rank == 0) {
+        check(composited.bytesSent == expected,
+            label + ": rank 0 sent " + std::to_string(composited.bytesSent)
+                + " bytes, expected " + std::to_string(expected));
+      }
+      if (rank == 0)
+        checkComposite(composited,
+            owners,
+            eye,
+            label + (eye == kEyeA ? " view A" : " view B"));
+    }
+    compositeColorOnly(mpi.device, owners, rank, communicator, label);
+  }
+  for (const std::string &e : status.take())
+    check(false, label + ": unexpected error: " + e);
+}
+
+void scenarioComposite()
+{
+  compositeOn(MPI_COMM_WORLD, 7, "composite");
+  const int ranks = worldRankAndSize().second;
+  if (ranks > 1)
+    compositeOn(MPI_COMM_WORLD, 8, "composite, last rank empty", ranks - 1);
+}
+
+// Two groups of processes render different scenes at once, each on its own
+// communicator.
+void scenarioSubcommunicator()
+{
+  const auto [rank, ranks] = worldRankAndSize();
+  MPI_Comm group;
+  MPI_Comm_split(MPI_COMM_WORLD, rank % 2, rank, &group);
+  compositeOn(group,
+      11 + uint32_t(rank % 2),
+      "subcommunicator group " + std::to_string(rank % 2));
+  MPI_Comm_free(&group);
+}
+
+// Disagreements are errors on every process, naming the ranks, and the
+// processes stay in step for the next, agreeing, render.
+void scenarioMismatch()
+{
+  const auto [rank, ranks] = worldRankAndSize();
+  const int odd = ranks - 1;
+  const std::vector<int> owners = boxOwners(ranks, 3);
+  Status status;
+  Device mpi("prism_mpi", status);
+  if (!mpi.device)
+    return;
+  MPI_Comm comm = MPI_COMM_WORLD;
+
+  const Render sizes = renderBoxes(mpi.device,
+      boxesOf(owners, rank),
+      kEyeA,
+      "raycast",
+      &comm,
+      kSize,
+      rank == odd ? kSize / 2 : kSize);
+  const std::string odder = "on rank " + std::to_string(odd);
+  check(oneErrorMentioning(status,
+            {"disagree", "size", "64x32 " + odder, "64x64 on rank"},
+            true),
+      "a size mismatch is reported naming the ranks");
+
+  renderBoxes(mpi.device,
+      boxesOf(owners, rank),
+      kEyeA,
+      rank == odd ? "ao" : "raycast",
+      &comm);
+  check(oneErrorMentioning(
+            status, {"disagree", "renderer", "'ao' " + odder}, true),
+      "a renderer mismatch is reported naming the ranks");
+
+  // Replicated rendering needs the same world everywhere: rank 0 holding
+  // every box and the others their share differ in the fingerprint.
+  anariSetParameter(mpi.device, mpi.device, "mode", ANARI_STRING, "replicated");
+  renderBoxes(mpi.device,
+      boxesOf(owners, rank == 0 ? -1 : rank),
+      kEyeA,
+      "raycast",
+      &comm);
+  check(oneErrorMentioning(status,
+            {"disagree",
+                "world (bounds, primitives, lights, volumes)",
+                "768 primitives, 0 lights, 0 volumes on rank 0"},
+            true),
+      "replicated worlds that differ are reported");
+  anariSetParameter(mpi.device, mpi.device, "mode", ANARI_STRING, "composite");
+
+  const Render agreed =
+      renderBoxes(mpi.device, boxesOf(owners, rank), kEyeA, "raycast", &comm);
+  check(status.take().empty(), "an agreeing render reports nothing");
+  if (rank == 0)
+    checkComposite(agreed, owners, kEyeA, "after mismatches");
+}
+
+// A process that does not come to anariRenderFrame is reported, naming it,
+// once the device's mpiTimeout passes; the processes then render together.
+void scenarioAbsent()
+{
+  const auto [rank, ranks] = worldRankAndSize();
+  const int absent = ranks - 1;
+  const std::vector<int> owners = boxOwners(ranks, 9);
+  Status status;
+  Device mpi("prism_mpi", status);
+  if (!mpi.device)
+    return;
+  const float timeout = 1.f;
+  anariSetParameter(
+      mpi.device, mpi.device, "mpiTimeout", ANARI_FLOAT32, &timeout);
+  ANARIDevice d = mpi.device;
+  ANARIWorld world = newBoxesWorld(d, boxesOf(owners, rank));
+  ANARICamera camera = newCamera(d, kEyeA, 1.f);
+  ANARIRenderer renderer = newRenderer(d, "raycast");
+  ANARIFrame frame = newFrame(d, world, camera, renderer, kSize, kSize);
+  // Everyone starts the clock together, so only the sleep below makes the
+  // last rank late, however loaded the machine.
+  MPI_Barrier(MPI_COMM_WORLD);
+  if (rank != absent) {
+    const double start = MPI_Wtime();
+    anariRenderFrame(d, frame);
+    const double waited = MPI_Wtime() - start;
+    check(oneErrorMentioning(status,
+              {"rank " + std::to_string(absent),
+                  "did not call anariRenderFrame within 1 s"}),
+        "the absent rank is reported");
+    check(waited >= 0.9 && waited < 10.0,
+        "the others waited about the timeout (" + std::to_string(waited)
+            + " s)");
+  } else {
+    // Comes to its first anariRenderFrame only after the others gave up.
+    std::this_thread::sleep_for(std::chrono::milliseconds(2500));
+  }
+  const float patient = 30.f;
+  anariSetParameter(
+      mpi.device, mpi.device, "mpiTimeout", ANARI_FLOAT32, &patient);
+  Render together;
+  anariRenderFrame(d, frame);
+  anariFrameReady(d, frame, ANARI_WAIT);
+  together.image = readFrame(d, frame);
+  together.boundsFound = anariGetProperty(d,
+      world,
+      "bounds",
+      ANARI_FLOAT32_BOX3,
+      together.bounds,
+      sizeof(together.bounds),
+      ANARI_WAIT);
+  for (const std::string &e : status.take())
+    check(false, "rendering together reports nothing, got: " + e);
+  if (rank == 0)
+    checkComposite(together, owners, kEyeA, "after an absent rank");
+  anariRelease(d, frame);
+  anariRelease(d, renderer);
+  anariRelease(d, camera);
+  anariRelease(d, world);
+}
+
+// Bad parameters are reported, and the extension is advertised.
+void scenarioParameters()
+{
+  Status status;
+  Device mpi("prism_mpi", status);
+  if (!mpi.device)
+    return;
+  const char **extensions = anariGetDeviceExtensions(mpi.library, "default");
+  bool advertised = false;
+  for (const char **e = extensions; e && *e; e++)
+    advertised = advertised || std::string(*e) == "ANARI_KHR_DATA_PARALLEL_MPI";
+  check(advertised, "the library lists ANARI_KHR_DATA_PARALLEL_MPI");
+  const char **property = nullptr;
+  anariGetProperty(mpi.device,
+      mpi.device,
+      "extension",
+      ANARI_STRING_LIST,
+      &property,
+      sizeof(property),
+      ANARI_WAIT);
+  advertised = false;
+  for (const char **e = property; e && *e; e++)
+    advertised = advertised || std::string(*e) == "ANARI_KHR_DATA_PARALLEL_MPI";
+  check(advertised, "the device's extension property lists it");
+
+  anariSetParameter(mpi.device, mpi.device, "mode", ANARI_STRING, "sideways");
+  check(oneErrorMentioning(status, {"mode", "'sideways'", "stays 'composite'"}),
+      "an unknown mode is reported");
+  const int notAString = 1;
+  anariSetParameter(mpi.device, mpi.device, "mode", ANARI_INT32, &notAString);
+  check(oneErrorMentioning(status, {"mode", "INT32"}),
+      "a mode that is no string is reported");
+
+  const float negative = -1.f;
+  anariSetParameter(
+      mpi.device, mpi.device, "mpiTimeout", ANARI_FLOAT32, &negative);
+  check(oneErrorMentioning(status, {"mpiTimeout", "0 or more"}),
+      "a negative mpiTimeout is reported");
+  anariSetParameter(mpi.device, mpi.device, "mpiTimeout", ANARI_STRING, "5");
+  check(oneErrorMentioning(status, {"mpiTimeout", "STRING"}),
+      "an mpiTimeout that is no number is reported");
+
+  ANARIFrame frame = anariNewFrame(mpi.device);
+  anariSetParameter(
+      mpi.device, frame, "mpiCommunicator", ANARI_VOID_POINTER, nullptr);
+  check(oneErrorMentioning(status, {"mpiCommunicator", "NULL"}),
+      "a NULL mpiCommunicator is reported");
+  MPI_Comm comm = MPI_COMM_WORLD;
+  anariSetParameter(mpi.device, frame, "mpiCommunicator", ANARI_INT32, &comm);
+  check(oneErrorMentioning(status, {"mpiCommunicator", "INT32"}),
+      "an mpiCommunicator of another type is reported");
+  anariRelease(mpi.device, frame);
+
+  const int32_t negativeThreads = -2;
+  anariSetParameter(
+      mpi.device, mpi.device, "numThreads", ANARI_INT32, &negativeThreads);
+  check(oneErrorMentioning(status, {"numThreads", "-2"}),
+      "a negative numThreads is reported");
+  // One thread per process from here on (the image must not change).
+  const int32_t oneThread = 1;
+  anariSetParameter(
+      mpi.device, mpi.device, "numThreads", ANARI_INT32, &oneThread);
+
+  // The device still renders correctly after all that.
+  const std::vector<int> owners = boxOwners(1, 5);
+  const Render render =
+      renderBoxes(mpi.device, boxesOf(owners, 0), kEyeB, "raycast", &comm);
+  checkComposite(render, owners, kEyeB, "after bad parameters");
+  check(status.take().empty(), "rendering reports nothing");
+
+  // A denoising renderer: rank 0's assembled image is not denoised, which
+  // is said once per frame.
+  ANARIWorld world = newBoxesWorld(mpi.device, boxesOf(owners, 0));
+  ANARICamera camera = newCamera(mpi.device, kEyeA, 1.f);
+  ANARIRenderer renderer = newRenderer(mpi.device, "raycast");
+  const bool denoise = true;
+  anariSetParameter(mpi.device, renderer, "denoise", ANARI_BOOL, &denoise);
+  anariCommitParameters(mpi.device, renderer);
+  ANARIFrame denoised =
+      newFrame(mpi.device, world, camera, renderer, kSize, kSize);
+  for (int i = 0; i < 2; i++) {
+    anariRenderFrame(mpi.device, denoised);
+    anariFrameReady(mpi.device, denoised, ANARI_WAIT);
+  }
+  const std::vector<std::string> warnings = status.take(ANARI_SEVERITY_WARNING);
+  check(
+      warnings.size() == 1
+          && warnings[0].find("'denoise' is not applied") != std::string::npos,
+      "a denoising renderer is warned about once");
+  anariRelease(mpi.device, denoised);
+  anariRelease(mpi.device, renderer);
+  anariRelease(mpi.device, camera);
+  anariRelease(mpi.device, world);
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+  // The application initialises MPI here; the device must leave it be.
+  int provided = 0;
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_SERIALIZED, &provided);
+  MPI_Comm_rank(MPI_COMM_WORLD, &g_worldRank);
+  const std::string scenario = argc > 1 ? argv[1] : "";
+  if (scenario == "composite")
+    scenarioComposite();
+  else if (scenario == "subcommunicator")
+    scenarioSubcommunicator();
+  else if (scenario == "mismatch")
+    scenarioMismatch();
+  else if (scenario == "absent")
+    scenarioAbsent();
+  else if (scenario == "parameters")
+    scenarioParameters();
+  else
+    check(false, "unknown scenario '" + scenario + "'");
+  int failures = g_failures, total = 0;
+  MPI_Allreduce(&failures, &total, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+  MPI_Finalize();
+  if (g_worldRank == 0)
+    std::printf("%s: %d failure(s) over all ranks\n", scenario.c_str(), total);
+  return total == 0 ? 0 : 1;
+}
