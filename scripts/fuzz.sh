@@ -61,21 +61,32 @@ for name in api loader nsi; do
       | grep --line-buffered -v -E '^#[0-9]+.*(NEW|REDUCE) '
     status=${PIPESTATUS[0]}
   fi
-  for attempt in 1 2; do
-    [ "$status" = 0 ] || break
-    replayLog="$build/fuzz-work/$name-replay.log"
-    "$fuzzer" "${options[@]}" -runs=0 "$scratch" 2>&1 \
-      | grep --line-buffered -v -E '^#[0-9]+.*(NEW|REDUCE) ' \
-      | tee "$replayLog"
-    status=${PIPESTATUS[0]}
-    if [ "$status" != 0 ] && [ "$attempt" = 1 ] \
-      && grep -q "LeakSanitizer has encountered a fatal error" "$replayLog"; then
-      echo "== fuzz_$name: LeakSanitizer's tracer crashed; replaying again"
-      status=0
-      continue
-    fi
-    break
-  done
+  # Every input once more with leak checks, and once more again if only
+  # LeakSanitizer's tracer failed; the arguments prefix the fuzzer (env
+  # and an environment).
+  replay() {
+    local log="$build/fuzz-work/$name-replay.log"
+    for attempt in 1 2; do
+      [ "$status" = 0 ] || return
+      "$@" "$fuzzer" "${options[@]}" -runs=0 "$scratch" 2>&1 \
+        | grep --line-buffered -v -E '^#[0-9]+.*(NEW|REDUCE) ' \
+        | tee "$log"
+      status=${PIPESTATUS[0]}
+      if [ "$status" != 0 ] && [ "$attempt" = 1 ] \
+        && grep -q "LeakSanitizer has encountered a fatal error" "$log"; then
+        echo "== fuzz_$name: LeakSanitizer's tracer crashed; replaying again"
+        status=0
+        continue
+      fi
+      return
+    done
+  }
+  replay env
+  # The API inputs once more through the debug layer wrapped around prism.
+  if [ "$name" = api ] && [ -e "$build/lib/libanari_library_debug.so" ]; then
+    echo "== fuzz_api's corpus through the debug layer"
+    replay env ANARI_DEBUG_LAYER=1
+  fi
   set -e
   echo "== fuzz_$name: exit $status after $(($(date +%s) - start))s," \
     "corpus now $(ls "$scratch" | wc -l) inputs"

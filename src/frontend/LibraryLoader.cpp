@@ -41,32 +41,19 @@ std::string withTrailingSlash(std::string dir)
   return dir;
 }
 
-} // namespace
-
-anari::LibraryImpl *loadLibrary(const char *name, StatusSink sink)
+// Whether ANARI_DEBUG_LAYER asks for every library to be wrapped in the
+// debug layer ("debug" library), so an application needs no change.
+bool debugLayerRequested()
 {
-  if (!name || !*name) {
-    reportLoadError(sink, "anariLoadLibrary: library name is NULL or empty");
-    return nullptr;
-  }
-  std::string spec = name;
-  if (spec == "environment") {
-    const char *fromEnv = std::getenv("ANARI_LIBRARY");
-    if (!fromEnv || !*fromEnv) {
-      reportLoadError(sink,
-          "anariLoadLibrary: library 'environment' requested but "
-          "ANARI_LIBRARY is not set");
-      return nullptr;
-    }
-    spec = fromEnv;
-  }
+  const char *value = std::getenv("ANARI_DEBUG_LAYER");
+  return value && *value && std::string(value) != "0";
+}
 
-  std::string libName = spec;
-  std::string prefix;
-  if (auto comma = spec.find(','); comma != std::string::npos) {
-    libName = spec.substr(0, comma);
-    prefix = withTrailingSlash(spec.substr(comma + 1));
-  }
+// Opens libanari_library_<libName>.so and runs its entry point; NULL (and
+// a report) on failure.
+anari::LibraryImpl *openLibrary(
+    const std::string &libName, const std::string &prefix, StatusSink sink)
+{
   const std::string fileName = "libanari_library_" + libName + ".so";
 
   // First the loader's own search (or the given folder), then ours.
@@ -108,6 +95,58 @@ anari::LibraryImpl *loadLibrary(const char *name, StatusSink sink)
             + "' failed to initialise (its entry point returned NULL)");
     anari::freeLibrary(dlHandle);
     return nullptr;
+  }
+  return library;
+}
+
+} // namespace
+
+anari::LibraryImpl *loadLibrary(const char *name, StatusSink sink)
+{
+  if (!name || !*name) {
+    reportLoadError(sink, "anariLoadLibrary: library name is NULL or empty");
+    return nullptr;
+  }
+  std::string spec = name;
+  if (spec == "environment") {
+    const char *fromEnv = std::getenv("ANARI_LIBRARY");
+    if (!fromEnv || !*fromEnv) {
+      reportLoadError(sink,
+          "anariLoadLibrary: library 'environment' requested but "
+          "ANARI_LIBRARY is not set");
+      return nullptr;
+    }
+    spec = fromEnv;
+  }
+
+  std::string libName = spec;
+  std::string prefix;
+  if (auto comma = spec.find(','); comma != std::string::npos) {
+    libName = spec.substr(0, comma);
+    prefix = withTrailingSlash(spec.substr(comma + 1));
+  }
+
+  anari::LibraryImpl *library = nullptr;
+  if (debugLayerRequested() && libName != "debug") {
+    // The debug layer in place of the library, told which one to wrap.
+    library = openLibrary("debug", "", sink);
+    if (!library)
+      return nullptr;
+    using Hook = void (*)(ANARILibrary, const char *);
+    auto hook = (Hook)anari::getSymbolAddress(
+        library->libraryHandle(), "prism_debug_set_wrapped_library");
+    if (hook) {
+      hook((ANARILibrary)library, spec.c_str());
+    } else {
+      reportLoadError(sink,
+          "anariLoadLibrary: ANARI_DEBUG_LAYER is set but library 'debug' "
+          "cannot be told to wrap '"
+              + libName + "'; it wraps its default");
+    }
+  } else {
+    library = openLibrary(libName, prefix, sink);
+    if (!library)
+      return nullptr;
   }
   HandleRegistry::instance().addLibrary(library, sink);
   return library;

@@ -6,7 +6,8 @@
 
 namespace prism::frontend {
 
-// Loads `name` ("helide", "helide,/opt/lib/" or "environment"); reports the
+// Loads `name` ("helide", "helide,/opt/lib/" or "environment"), or the debug
+// layer wrapping it when ANARI_DEBUG_LAYER is set (not "0"); reports the
 // reason through `sink` and returns NULL on failure.
 anari::LibraryImpl *loadLibrary(const char *name, StatusSink sink);
 

@@ -12,6 +12,7 @@ struct StatusMessage
   ANARIStatusSeverity severity;
   ANARIStatusCode code;
   std::string text;
+  ANARIObject source = nullptr; // the object the message is about
 };
 
 class StatusRecorder
@@ -19,7 +20,7 @@ class StatusRecorder
  public:
   static void callback(const void *userPtr,
       ANARIDevice,
-      ANARIObject,
+      ANARIObject source,
       ANARIDataType,
       ANARIStatusSeverity severity,
       ANARIStatusCode code,
@@ -27,7 +28,8 @@ class StatusRecorder
   {
     auto *self = (StatusRecorder *)userPtr;
     std::lock_guard lock(self->m_mutex);
-    self->m_messages.push_back({severity, code, message ? message : ""});
+    self->m_messages.push_back(
+        {severity, code, message ? message : "", source});
   }
 
   std::vector<StatusMessage> take()

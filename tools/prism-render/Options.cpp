@@ -294,6 +294,15 @@ std::vector<OptionSpec> optionSpecs()
             o.library = v;
             return {};
           }},
+      {nullptr,
+          "--trace",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            if (v.empty())
+              return "--trace: expected a file name";
+            o.traceFile = v;
+            return {};
+          }},
       {"-d",
           "--device",
           true,
@@ -591,6 +600,8 @@ Rendering
   --env-rotate DEGREES   turns the environment about the scene's up axis
   -l, --library NAME     ANARI library to load (default prism): loads
                          libanari_library_NAME.so
+      --trace FILE       record every ANARI call through the debug layer
+                         into FILE (+ FILE.bin); anari-replay FILE replays it
   -d, --device SUBTYPE   device subtype (default "default")
   -t, --threads N        limit the device to N threads (TBB-based devices
                          and devices with a numThreads parameter)

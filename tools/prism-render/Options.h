@@ -51,6 +51,8 @@ struct Options
   bool denoise{false};
 
   std::string library{"prism"};
+  // Records the run through the debug layer into this trace (empty: no trace).
+  std::string traceFile;
   std::string deviceSubtype{"default"};
   uint32_t benchFrames{0};
   uint32_t threads{0}; // 0: the device's choice

@@ -34,6 +34,7 @@
 #include <condition_variable>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <ctime>
 #include <filesystem>
@@ -337,6 +338,11 @@ int run(int argc, char **argv)
 
   Session session;
   session.status.verbose = options.verbose;
+  if (!options.traceFile.empty()) {
+    // libanari then loads the debug layer around the library, recording.
+    setenv("ANARI_DEBUG_LAYER", "1", 1);
+    setenv("ANARI_DEBUG_TRACE", options.traceFile.c_str(), 1);
+  }
   session.library = anariLoadLibrary(
       options.library.c_str(), statusCallback, &session.status);
   if (!session.library)

@@ -211,6 +211,10 @@ std::unique_ptr<ResolvedObject> Catalog::Impl::resolve(
       }
     }
     finish(p);
+    for (const ParameterEntry *v : p.variants) {
+      if (v->required && v->extension == entry.extension)
+        p.definition.requiredByObject = true;
+    }
     for (ANARIDataType type : p.types)
       object->parameterList.push_back({p.definition.name, type});
   }

@@ -25,6 +25,10 @@ struct ParameterDefinition
   size_t typeCount = 0;
   // Whether the object is invalid without it (JSON tag "required").
   bool required = false;
+  // Whether the object's own definition requires it; an extension's variant
+  // may require it only when that extension is in use (the deformation
+  // extension's motion.vertex.position on every triangle geometry).
+  bool requiredByObject = false;
   // Extension that added the parameter (its first definition), nullptr: core.
   const char *extension = nullptr;
   const char *description = nullptr;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -40,8 +41,28 @@ struct Counters
 {
   std::atomic<uint64_t> programs{0}, calls{0}, messages{0}, errors{0},
       framesCompleted{0}, framesMapped{0};
+  // Messages of the debug layer ("anariSetParameter(...): ..."), when the
+  // run goes through it (ANARI_DEBUG_LAYER).
+  std::atomic<uint64_t> layerMessages{0};
 };
 Counters g_counters;
+
+// Whether libanari wraps prism in the debug layer for this run.
+const bool g_throughDebugLayer = [] {
+  const char *value = std::getenv("ANARI_DEBUG_LAYER");
+  return value && *value && std::string(value) != "0";
+}();
+
+// The debug layer names the call first: "anariXxx(".
+bool fromDebugLayer(const char *message)
+{
+  if (std::strncmp(message, "anari", 5) != 0)
+    return false;
+  const char *c = message + 5;
+  while (std::isalnum((unsigned char)*c))
+    ++c;
+  return c > message + 5 && *c == '(';
+}
 
 // Status messages: every one must be well formed.
 void checkStatus(const void *userPtr,
@@ -68,6 +89,8 @@ void checkStatus(const void *userPtr,
   if (!anari::isValidDataType(sourceType))
     violated("status message has an invalid source type:", message);
   g_counters.messages++;
+  if (fromDebugLayer(message))
+    g_counters.layerMessages++;
   if (severity <= ANARI_SEVERITY_ERROR)
     g_counters.errors++;
   static const bool verbose = std::getenv("PRISM_FUZZ_API_VERBOSE") != nullptr;
@@ -517,6 +540,7 @@ struct DeviceSlot
 {
   ANARIDevice handle = nullptr;
   bool released = false;
+  bool silenced = false; // its status callback was set to NULL
 };
 
 class Interpreter
@@ -944,8 +968,23 @@ class Interpreter
     }
     if (twist == Twist::NullHandle && !anari::isObject(type))
       mem = nullptr;
+    // Through the debug layer, a handle no live object of this device has
+    // must be reported by the layer at this very call (on a released
+    // device, libanari refuses the call before any layer sees it; a device
+    // without a status callback reports nothing).
+    ANARIObject value = nullptr;
+    if (anari::isObject(type))
+      std::memcpy(&value, buffer, sizeof(value));
+    const bool corrupt =
+        value && !m_devices[device].released && !m_devices[device].silenced
+        && (twist == Twist::StaleHandle || twist == Twist::ForeignHandle
+            || twist == Twist::BogusHandle);
+    const uint64_t layerMessages = g_counters.layerMessages;
     call();
     anariSetParameter(dev, e.handle, name.c_str(), type, mem);
+    if (g_throughDebugLayer && corrupt
+        && g_counters.layerMessages == layerMessages)
+      violated("the debug layer let a corrupted handle through:", name.c_str());
   }
 
   // Keeps frames tiny and sample counts small (one absurd size excepted).
@@ -1711,17 +1750,20 @@ class Interpreter
 
   void setDeviceParameter(Payload &p)
   {
-    ANARIDevice dev = m_devices[deviceOperand(p.operand())].handle;
+    DeviceSlot &slot = m_devices[deviceOperand(p.operand())];
+    ANARIDevice dev = slot.handle;
     call();
     switch (p.operand() % 5) {
     case 0: {
       const ANARIStatusCallback f = checkStatus;
       anariSetParameter(dev, dev, "statusCallback", ANARI_STATUS_CALLBACK, &f);
+      slot.silenced = false;
       break;
     }
     case 1: {
       const ANARIStatusCallback f = nullptr;
       anariSetParameter(dev, dev, "statusCallback", ANARI_STATUS_CALLBACK, &f);
+      slot.silenced = true;
       break;
     }
     case 2:

@@ -1,0 +1,323 @@
+#include "DebugDevice.h"
+#include "trace/TraceFormat.h"
+
+#include "anari/frontend/type_utility.h"
+
+#include <cstdio>
+#include <cstring>
+
+namespace prism::debug {
+
+DebugDevice::DebugDevice(ANARILibrary library,
+    const std::string &wrappedSpec,
+    const std::string &subtype)
+    : anari::DeviceImpl(library), m_subtype(subtype)
+{
+  m_statusCallback = m_defaultStatusCB;
+  m_statusUserPtr = m_defaultStatusCBUserPtr;
+  if (wrap(wrappedSpec, subtype))
+    openTrace();
+}
+
+DebugDevice::~DebugDevice()
+{
+  trace("Release device");
+  reportLeaks();
+  dropWrapped(); // runs the deleters of every array still alive
+}
+
+bool DebugDevice::wrap(
+    const std::string &wrappedSpec, const std::string &subtype)
+{
+  std::string error;
+  auto library = WrappedLibrary::load(wrappedSpec, &forwardStatus, this, error);
+  if (!library) {
+    m_failure =
+        "cannot load the wrapped library '" + wrappedSpec + "': " + error;
+    return false;
+  }
+  auto *device =
+      (anari::DeviceImpl *)library->library().newDevice(subtype.c_str());
+  if (!device) {
+    m_failure = "the wrapped library '" + wrappedSpec
+                + "' created no device of subtype '" + subtype + "'";
+    return false;
+  }
+  dropWrapped();
+  m_wrappedLibrary = std::move(library);
+  m_wrapped = device;
+  m_wrappedSpec = wrappedSpec;
+  m_failure.clear();
+  // The definitions the wrapped device implements are those checked.
+  const char **extensions =
+      m_wrappedLibrary->library().getDeviceExtensions(subtype.c_str());
+  const char **renderers = m_wrapped->getObjectSubtypes(ANARI_RENDERER);
+  m_catalog = std::make_unique<introspection::Catalog>(extensions, renderers);
+  m_rules = std::make_unique<Rules>(*m_catalog, *m_wrapped);
+  return true;
+}
+
+void DebugDevice::dropWrapped()
+{
+  if (m_wrapped)
+    m_wrapped->release((ANARIObject)m_wrapped);
+  m_wrapped = nullptr;
+  m_rules.reset();
+  m_catalog.reset();
+  m_wrappedLibrary.reset();
+}
+
+// Status /////////////////////////////////////////////////////////////////////
+
+void DebugDevice::report(Findings &findings)
+{
+  if (!m_statusCallback)
+    return;
+  for (const Finding &f : findings.list()) {
+    m_statusCallback(m_statusUserPtr,
+        this_device(),
+        f.source ? f.source : (ANARIObject)this_device(),
+        f.source ? f.sourceType : ANARI_DEVICE,
+        f.severity,
+        f.code,
+        f.text.c_str());
+  }
+  findings.list().clear();
+}
+
+void DebugDevice::report(
+    ANARIStatusSeverity severity, ANARIStatusCode code, const std::string &text)
+{
+  if (m_statusCallback) {
+    m_statusCallback(m_statusUserPtr,
+        this_device(),
+        (ANARIObject)this_device(),
+        ANARI_DEVICE,
+        severity,
+        code,
+        text.c_str());
+  }
+}
+
+void DebugDevice::forwardStatus(const void *userPtr,
+    ANARIDevice device,
+    ANARIObject source,
+    ANARIDataType sourceType,
+    ANARIStatusSeverity severity,
+    ANARIStatusCode code,
+    const char *message)
+{
+  auto *self = (DebugDevice *)userPtr;
+  ANARIObject translated = nullptr;
+  if (source
+      && (source == (ANARIObject)device
+          || source == (ANARIObject)self->m_wrapped)) {
+    translated = (ANARIObject)self->this_device();
+  } else if (source) {
+    std::lock_guard lock(self->m_mutex);
+    translated = self->m_objects.fromWrapped(source);
+  }
+  if (self->m_statusCallback) {
+    self->m_statusCallback(self->m_statusUserPtr,
+        self->this_device(),
+        translated,
+        sourceType,
+        severity,
+        code,
+        message);
+  }
+}
+
+void DebugDevice::forwardFrameCompletion(
+    const void *userPtr, ANARIDevice, ANARIFrame frame)
+{
+  auto *self = (DebugDevice *)userPtr;
+  if (!self)
+    return; // cannot happen: the layer always sets itself as user data
+  ANARIFrameCompletionCallback callback = nullptr;
+  const void *callbackUserPtr = nullptr;
+  ANARIObject handle = nullptr;
+  {
+    std::lock_guard lock(self->m_mutex);
+    handle = self->m_objects.fromWrapped((ANARIObject)frame);
+    if (ObjectRecord *record = self->m_objects.find(handle)) {
+      callback = record->completion;
+      callbackUserPtr = record->completionUserPtr;
+    }
+  }
+  if (callback)
+    callback(callbackUserPtr, self->this_device(), (ANARIFrame)handle);
+}
+
+// Handles ////////////////////////////////////////////////////////////////////
+
+ObjectRecord *DebugDevice::live(
+    Findings &f, ANARIObject handle, ANARIDataType expected, const char *what)
+{
+  char address[32];
+  std::snprintf(address, sizeof(address), "%p", (void *)handle);
+  switch (m_objects.state(handle)) {
+  case HandleState::kNull:
+    f.error(std::string(what) + " handle is NULL");
+    return nullptr;
+  case HandleState::kForeign:
+    f.error(std::string(what) + " handle " + address
+        + " is not an object of this device (another device's, corrupt, or "
+          "never created)");
+    return nullptr;
+  case HandleState::kReleased:
+    f.error(std::string(what) + " handle is "
+            + describe(*m_objects.find(handle)) + ", used after its release");
+    return nullptr;
+  case HandleState::kLive:
+    break;
+  }
+  ObjectRecord *record = m_objects.find(handle);
+  if (!handleTypeFits(expected, record->type)) {
+    f.error(std::string(what) + " is " + describe(*record) + ", not "
+            + typeName(expected));
+    return nullptr;
+  }
+  return record;
+}
+
+bool DebugDevice::translate(Findings &f,
+    ANARIObject handle,
+    ANARIDataType expected,
+    const char *what,
+    ANARIObject &wrapped)
+{
+  wrapped = nullptr;
+  if (!handle)
+    return true;
+  ObjectRecord *record = live(f, handle, expected, what);
+  if (!record)
+    return false;
+  wrapped = record->wrapped;
+  return true;
+}
+
+ANARIObject DebugDevice::created(const char *function,
+    ANARIDataType type,
+    const char *subtype,
+    ANARIObject wrapped,
+    Findings &f)
+{
+  if (!wrapped) {
+    f.warning("the wrapped device created no object", ANARI_STATUS_NO_ERROR);
+    return nullptr;
+  }
+  ObjectRecord &record = m_objects.add(wrapped, type);
+  record.hasSubtype = subtype != nullptr;
+  record.subtype = subtype ? subtype : "";
+  record.createdAtCall = m_calls.load();
+  record.createdBy = function;
+  return record.handle;
+}
+
+// The device object //////////////////////////////////////////////////////////
+
+void DebugDevice::setDeviceParameter(
+    const char *name, ANARIDataType type, const void *mem)
+{
+  Findings f("anariSetParameter");
+  f.about(nullptr, name ? name : "");
+  if (!name || (!mem && type != ANARI_VOID_POINTER)) {
+    f.error(name ? "value pointer is NULL" : "parameter name is NULL");
+    report(f);
+    return;
+  }
+  const std::string n = name;
+  if (n == "statusCallback" && type == ANARI_STATUS_CALLBACK) {
+    std::memcpy(&m_statusCallback, mem, sizeof(m_statusCallback));
+    return; // the wrapped device keeps reporting to the layer
+  }
+  if (n == "statusCallbackUserData" && type == ANARI_VOID_POINTER) {
+    m_statusUserPtr = mem; // a VOID_POINTER value is `mem` itself
+    return;
+  }
+  if (n == "wrappedLibrary") {
+    if (type != ANARI_STRING)
+      f.error("type must be ANARI_STRING");
+    else
+      m_pendingWrappedSpec = (const char *)mem;
+    report(f);
+    return;
+  }
+  ANARIObject translated = nullptr;
+  bool good = true;
+  {
+    std::lock_guard lock(m_mutex);
+    if (anari::isObject(type)) {
+      // An object value is checked and translated as on any object.
+      ANARIObject handle = nullptr;
+      std::memcpy(&handle, mem, sizeof(handle));
+      good = translate(f, handle, type, "value", translated);
+    }
+    const std::string value = good && tracing() ? traceValue(type, mem) : "";
+    if (!value.empty()) {
+      trace("Set device " + trace::quote(name) + " " + trace::typeName(type)
+            + " " + value);
+    }
+  }
+  report(f);
+  if (!good)
+    return;
+  m_wrapped->setParameter((ANARIObject)m_wrapped,
+      name,
+      type,
+      anari::isObject(type) ? (const void *)&translated : mem);
+}
+
+void DebugDevice::commitDevice()
+{
+  Findings f("anariCommitParameters");
+  f.about(nullptr);
+  if (!m_pendingWrappedSpec.empty() && m_pendingWrappedSpec != m_wrappedSpec) {
+    std::unique_lock lock(m_mutex);
+    if (m_objects.size() > 0) {
+      f.error(
+          "'wrappedLibrary' can change only before the first object is "
+          "created; keeping '"
+              + m_wrappedSpec + "'",
+          ANARI_STATUS_INVALID_OPERATION);
+    } else {
+      const std::string previous = m_wrappedSpec;
+      if (!wrap(m_pendingWrappedSpec, m_subtype)) {
+        f.error(m_failure + "; keeping '" + previous + "'",
+            ANARI_STATUS_INVALID_OPERATION);
+      }
+    }
+    m_pendingWrappedSpec.clear();
+  }
+  report(f);
+  trace("Commit device");
+  m_wrapped->commitParameters((ANARIObject)m_wrapped);
+}
+
+void DebugDevice::reportLeaks()
+{
+  Findings f("anariRelease");
+  f.about(nullptr);
+  std::vector<ObjectRecord *> leaked;
+  for (ObjectRecord *record : m_objects.all()) {
+    if (!record->released)
+      leaked.push_back(record);
+  }
+  if (leaked.empty())
+    return;
+  f.add(ANARI_SEVERITY_WARNING,
+      ANARI_STATUS_NO_ERROR,
+      "device released with " + std::to_string(leaked.size())
+          + " object(s) the application did not release");
+  for (ObjectRecord *record : leaked) {
+    f.add(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_NO_ERROR,
+        "leaked " + describe(*record) + ", created by " + record->createdBy
+            + " (API call " + std::to_string(record->createdAtCall) + "), "
+            + std::to_string(record->publicReferences) + " reference(s)");
+  }
+  report(f);
+}
+
+} // namespace prism::debug

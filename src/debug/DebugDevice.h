@@ -1,0 +1,303 @@
+// The debug layer's device: checks every call, reports what is wrong at the
+// call that did it, and forwards the call to the wrapped device with the
+// wrapped device's handles. Calls whose handles are bad are not forwarded
+// (the wrapped device never sees them); other findings are forwarded, so the
+// wrapped device behaves as it would without the layer.
+#pragma once
+
+#include "Findings.h"
+#include "ObjectTable.h"
+#include "Rules.h"
+#include "WrappedLibrary.h"
+#include "trace/TraceWriter.h"
+
+#include "anari/backend/DeviceImpl.h"
+#include "introspection/Introspection.h"
+
+#include <atomic>
+#include <exception>
+#include <memory>
+#include <mutex>
+#include <string>
+
+namespace prism::debug {
+
+class DebugDevice : public anari::DeviceImpl
+{
+ public:
+  // Wraps a new device of `subtype` from the library `wrappedSpec` names.
+  DebugDevice(ANARILibrary library,
+      const std::string &wrappedSpec,
+      const std::string &subtype);
+  ~DebugDevice() override;
+
+  // Why there is no wrapped device (empty if there is one).
+  const std::string &failure() const
+  {
+    return m_failure;
+  }
+
+  ANARIArray1D newArray1D(const void *appMemory,
+      ANARIMemoryDeleter deleter,
+      const void *userData,
+      ANARIDataType elementType,
+      uint64_t numItems1) override;
+  ANARIArray2D newArray2D(const void *appMemory,
+      ANARIMemoryDeleter deleter,
+      const void *userData,
+      ANARIDataType elementType,
+      uint64_t numItems1,
+      uint64_t numItems2) override;
+  ANARIArray3D newArray3D(const void *appMemory,
+      ANARIMemoryDeleter deleter,
+      const void *userData,
+      ANARIDataType elementType,
+      uint64_t numItems1,
+      uint64_t numItems2,
+      uint64_t numItems3) override;
+  ANARIGeometry newGeometry(const char *subtype) override;
+  ANARIMaterial newMaterial(const char *subtype) override;
+  ANARISampler newSampler(const char *subtype) override;
+  ANARISurface newSurface() override;
+  ANARISpatialField newSpatialField(const char *subtype) override;
+  ANARIVolume newVolume(const char *subtype) override;
+  ANARILight newLight(const char *subtype) override;
+  ANARIGroup newGroup() override;
+  ANARIInstance newInstance(const char *subtype) override;
+  ANARIWorld newWorld() override;
+  ANARICamera newCamera(const char *subtype) override;
+  ANARIRenderer newRenderer(const char *subtype) override;
+  ANARIFrame newFrame() override;
+
+  void setParameter(ANARIObject object,
+      const char *name,
+      ANARIDataType type,
+      const void *mem) override;
+  void unsetParameter(ANARIObject object, const char *name) override;
+  void unsetAllParameters(ANARIObject object) override;
+  void *mapParameterArray1D(ANARIObject object,
+      const char *name,
+      ANARIDataType elementType,
+      uint64_t numElements1,
+      uint64_t *elementStride) override;
+  void *mapParameterArray2D(ANARIObject object,
+      const char *name,
+      ANARIDataType elementType,
+      uint64_t numElements1,
+      uint64_t numElements2,
+      uint64_t *elementStride) override;
+  void *mapParameterArray3D(ANARIObject object,
+      const char *name,
+      ANARIDataType elementType,
+      uint64_t numElements1,
+      uint64_t numElements2,
+      uint64_t numElements3,
+      uint64_t *elementStride) override;
+  void unmapParameterArray(ANARIObject object, const char *name) override;
+  void commitParameters(ANARIObject object) override;
+  void release(ANARIObject object) override;
+  void retain(ANARIObject object) override;
+  void *mapArray(ANARIArray array) override;
+  void unmapArray(ANARIArray array) override;
+  int getProperty(ANARIObject object,
+      const char *name,
+      ANARIDataType type,
+      void *mem,
+      uint64_t size,
+      ANARIWaitMask mask) override;
+
+  const char **getObjectSubtypes(ANARIDataType objectType) override;
+  const void *getObjectInfo(ANARIDataType objectType,
+      const char *objectSubtype,
+      const char *infoName,
+      ANARIDataType infoType) override;
+  const void *getParameterInfo(ANARIDataType objectType,
+      const char *objectSubtype,
+      const char *parameterName,
+      ANARIDataType parameterType,
+      const char *infoName,
+      ANARIDataType infoType) override;
+
+  const void *frameBufferMap(ANARIFrame frame,
+      const char *channel,
+      uint32_t *width,
+      uint32_t *height,
+      ANARIDataType *pixelType) override;
+  void frameBufferUnmap(ANARIFrame frame, const char *channel) override;
+  void renderFrame(ANARIFrame frame) override;
+  int frameReady(ANARIFrame frame, ANARIWaitMask mask) override;
+  void discardFrame(ANARIFrame frame) override;
+
+  ANARIObject newObject(const char *objectType, const char *subtype) override;
+
+ private:
+  // The wrapped device's status messages, with the layer's handles.
+  static void forwardStatus(const void *userPtr,
+      ANARIDevice device,
+      ANARIObject source,
+      ANARIDataType sourceType,
+      ANARIStatusSeverity severity,
+      ANARIStatusCode code,
+      const char *message);
+  // The wrapped device's frame completion, with the layer's handles.
+  static void forwardFrameCompletion(
+      const void *userPtr, ANARIDevice device, ANARIFrame frame);
+
+  // Runs `body` as the API call `function`, counted; whatever it throws is
+  // reported and `neutral` returned: nothing crosses the C boundary.
+  template <typename R, typename F>
+  R guarded(const char *function, R neutral, F &&body)
+  {
+    ++m_calls;
+    try {
+      return body();
+    } catch (const std::exception &e) {
+      report(ANARI_SEVERITY_ERROR,
+          ANARI_STATUS_UNKNOWN_ERROR,
+          std::string(function) + ": internal failure: " + e.what());
+    } catch (...) {
+      report(ANARI_SEVERITY_ERROR,
+          ANARI_STATUS_UNKNOWN_ERROR,
+          std::string(function) + ": internal failure");
+    }
+    return neutral;
+  }
+  template <typename F>
+  void guarded(const char *function, F &&body)
+  {
+    guarded(function, 0, [&] {
+      body();
+      return 0;
+    });
+  }
+
+  bool wrap(const std::string &wrappedSpec, const std::string &subtype);
+  void dropWrapped();
+  // Sends findings to the application (never under m_mutex's lock).
+  void report(Findings &findings);
+  void report(ANARIStatusSeverity severity,
+      ANARIStatusCode code,
+      const std::string &text);
+  bool isDevice(ANARIObject object) const
+  {
+    return object == (ANARIObject)this_device();
+  }
+  // The record of a live handle; reports null, foreign, released and (if
+  // `expected` is not ANARI_OBJECT) mistyped handles. Under the lock.
+  ObjectRecord *live(Findings &f,
+      ANARIObject handle,
+      ANARIDataType expected = ANARI_OBJECT,
+      const char *what = "object");
+  // The common shape of a call on one object: under the lock, finds the
+  // live record of `handle`, names it (and `parameter`) in `f` and runs
+  // `check(record)`; then reports. Returns the wrapped handle to forward
+  // the call to, or NULL if the handle is bad or `check` returned false.
+  template <typename Check>
+  ANARIObject checked(Findings &f,
+      ANARIObject handle,
+      ANARIDataType expected,
+      const char *parameter,
+      Check &&check)
+  {
+    ANARIObject target = nullptr;
+    {
+      std::lock_guard lock(m_mutex);
+      const char *what = expected == ANARI_OBJECT  ? "object"
+                         : expected == ANARI_ARRAY ? "array"
+                                                   : "frame";
+      if (ObjectRecord *record = live(f, handle, expected, what)) {
+        f.about(record, parameter);
+        if (check(*record))
+          target = record->wrapped;
+      }
+    }
+    report(f);
+    return target;
+  }
+  // The wrapped handle an object value stands for; reports bad handles.
+  // Under the lock.
+  bool translate(Findings &f,
+      ANARIObject handle,
+      ANARIDataType expected,
+      const char *what,
+      ANARIObject &wrapped);
+  // A new object of the wrapped device, under a new layer handle.
+  ANARIObject created(const char *function,
+      ANARIDataType type,
+      const char *subtype,
+      ANARIObject wrapped,
+      Findings &findings);
+  template <typename NewObject>
+  ANARIObject newSubtyped(const char *function,
+      ANARIDataType type,
+      const char *subtype,
+      NewObject &&make);
+  ANARIArray newArray(const char *function,
+      ANARIDataType arrayType,
+      const void *appMemory,
+      ANARIMemoryDeleter deleter,
+      const void *userData,
+      ANARIDataType elementType,
+      const uint64_t items[3]);
+  // The wrapped handles for `count` layer handles at `source` (NULL: all
+  // NULL), checked; `copied` holds the handles of the last translation
+  // (slots unchanged since keep their object, released or not) and
+  // receives these. Under the lock.
+  std::vector<ANARIObject> translateHandles(Findings &f,
+      const ANARIObject *source,
+      uint64_t count,
+      ANARIDataType elementType,
+      std::vector<ANARIObject> &copied);
+  // The same for an object array's current contents.
+  std::vector<ANARIObject> translateObjectArray(
+      Findings &f, ObjectRecord &array);
+  void *mapParameterArray(const char *function,
+      ANARIObject object,
+      const char *name,
+      ANARIDataType arrayType,
+      ANARIDataType elementType,
+      const uint64_t items[3],
+      uint64_t *elementStride);
+  void setDeviceParameter(
+      const char *name, ANARIDataType type, const void *mem);
+  void commitDevice();
+  void reportLeaks();
+
+  // The trace (TraceCalls.cpp), when ANARI_DEBUG_TRACE names a file: each
+  // forwarded call as a line, objects named by creation number. Under the
+  // lock, so lines come in the order calls were checked.
+  void openTrace();
+  bool tracing() const
+  {
+    return m_trace != nullptr;
+  }
+  void trace(const std::string &line);
+  std::string traceName(ANARIObject handle);
+  // The operand for a parameter value ("" if it cannot be traced).
+  std::string traceValue(ANARIDataType type, const void *mem);
+  // An array's contents as an operand: names of an object array's
+  // elements, or the bytes in the side file (elements `stride` apart).
+  std::string traceContents(ANARIDataType elementType,
+      const void *memory,
+      uint64_t count,
+      uint64_t stride);
+
+  std::recursive_mutex m_mutex; // NOTE: guards everything below
+  ObjectTable m_objects;
+  std::atomic<uint64_t> m_calls{0};
+
+  ANARIStatusCallback m_statusCallback{nullptr};
+  const void *m_statusUserPtr{nullptr};
+  std::string m_subtype;
+  std::string m_wrappedSpec;
+  std::string m_pendingWrappedSpec;
+  std::string m_failure;
+  std::shared_ptr<WrappedLibrary> m_wrappedLibrary;
+  anari::DeviceImpl *m_wrapped{nullptr};
+  std::unique_ptr<introspection::Catalog> m_catalog;
+  std::unique_ptr<Rules> m_rules;
+  int m_publicReferences{1};
+  std::unique_ptr<trace::TraceWriter> m_trace;
+};
+
+} // namespace prism::debug

@@ -1,0 +1,461 @@
+// Parameters, commits, references and array mapping: checked against the
+// records, then forwarded with the wrapped device's handles.
+#include "ArrayContents.h"
+#include "DebugDevice.h"
+#include "trace/TraceFormat.h"
+
+#include "anari/frontend/type_utility.h"
+
+#include <cstring>
+
+namespace prism::debug {
+
+void DebugDevice::setParameter(
+    ANARIObject object, const char *name, ANARIDataType type, const void *mem)
+{
+  guarded("anariSetParameter", [&] {
+    if (isDevice(object)) {
+      setDeviceParameter(name, type, mem);
+      return;
+    }
+    Findings f("anariSetParameter");
+    const void *forwarded = mem;
+    ANARIObject translatedValue = nullptr;
+    ANARIFrameCompletionCallback trampoline = &forwardFrameCompletion;
+    bool forward = true;
+    bool withLayerAsUserData = false;
+    auto target = checked(f, object, ANARI_OBJECT, name, [&](ObjectRecord &r) {
+      // ANARI_VOID_POINTER values are `mem` itself (as in the SDK).
+      if (!name || (!mem && type != ANARI_VOID_POINTER)) {
+        f.error(name ? "value pointer is NULL" : "parameter name is NULL");
+        return false;
+      }
+      if (r.mappedParameters.count(name)) {
+        f.error(
+            "the parameter is mapped (anariMapParameterArray); unmap it "
+            "before setting it",
+            ANARI_STATUS_INVALID_OPERATION);
+        return false;
+      }
+      const ObjectRecord *value = nullptr;
+      if (anari::isObject(type)) {
+        ANARIObject handle = nullptr;
+        std::memcpy(&handle, mem, sizeof(handle));
+        if (!translate(f, handle, type, "value", translatedValue))
+          return false;
+        value = handle ? m_objects.find(handle) : nullptr;
+        forwarded = &translatedValue;
+      }
+      m_rules->checkParameter(f, r, name, type, mem, value);
+      const std::string n = name;
+      // The wrapped device calls the layer's trampoline with the layer as
+      // user data, whatever the application sets (or never sets).
+      if (r.type == ANARI_FRAME && n == "frameCompletionCallback"
+          && type == ANARI_FRAME_COMPLETION_CALLBACK) {
+        std::memcpy(&r.completion, mem, sizeof(r.completion));
+        if (r.completion) {
+          forwarded = &trampoline;
+          withLayerAsUserData = true;
+        }
+      } else if (r.type == ANARI_FRAME
+                 && n == "frameCompletionCallbackUserData") {
+        r.completionUserPtr = type == ANARI_VOID_POINTER ? mem : nullptr;
+        forward = false;
+      }
+      StagedParameter staged;
+      staged.type = type;
+      staged.object = value ? value->handle : nullptr;
+      r.parameters[n] = staged;
+      if (n == "name" && type == ANARI_STRING)
+        r.name = (const char *)mem;
+      r.changedSinceCommit = true;
+      if (tracing()) {
+        const std::string v = traceValue(type, mem);
+        if (!v.empty()) {
+          trace("Set " + traceName(r.handle) + " " + trace::quote(n) + " "
+                + trace::typeName(type) + " " + v);
+        }
+      }
+      return true;
+    });
+    if (!target || !forward)
+      return;
+    m_wrapped->setParameter(target, name, type, forwarded);
+    if (withLayerAsUserData) {
+      m_wrapped->setParameter(
+          target, "frameCompletionCallbackUserData", ANARI_VOID_POINTER, this);
+    }
+  });
+}
+
+void DebugDevice::unsetParameter(ANARIObject object, const char *name)
+{
+  guarded("anariUnsetParameter", [&] {
+    if (isDevice(object)) {
+      if (name)
+        m_wrapped->unsetParameter((ANARIObject)m_wrapped, name);
+      return;
+    }
+    Findings f("anariUnsetParameter");
+    auto target = checked(f, object, ANARI_OBJECT, name, [&](ObjectRecord &r) {
+      if (!name) {
+        f.error("parameter name is NULL");
+        return false;
+      }
+      if (r.mappedParameters.count(name)) {
+        f.error("the parameter is mapped; unmap it first",
+            ANARI_STATUS_INVALID_OPERATION);
+        return false;
+      }
+      r.parameters.erase(name);
+      r.changedSinceCommit = true;
+      trace("Unset " + traceName(r.handle) + " " + trace::quote(name));
+      if (r.type == ANARI_FRAME
+          && std::strcmp(name, "frameCompletionCallbackUserData") == 0) {
+        r.completionUserPtr = nullptr;
+        return false; // the wrapped device keeps the layer as user data
+      }
+      return true;
+    });
+    if (target)
+      m_wrapped->unsetParameter(target, name);
+  });
+}
+
+void DebugDevice::unsetAllParameters(ANARIObject object)
+{
+  guarded("anariUnsetAllParameters", [&] {
+    if (isDevice(object)) {
+      m_wrapped->unsetAllParameters((ANARIObject)m_wrapped);
+      return;
+    }
+    Findings f("anariUnsetAllParameters");
+    auto target =
+        checked(f, object, ANARI_OBJECT, nullptr, [&](ObjectRecord &r) {
+          if (!r.mappedParameters.empty()) {
+            f.error("parameter '" + r.mappedParameters.begin()->first
+                        + "' is mapped; unmap it first",
+                ANARI_STATUS_INVALID_OPERATION);
+            return false;
+          }
+          r.parameters.clear();
+          r.name.clear();
+          r.changedSinceCommit = true;
+          trace("UnsetAll " + traceName(r.handle));
+          return true;
+        });
+    if (target)
+      m_wrapped->unsetAllParameters(target);
+  });
+}
+
+void *DebugDevice::mapParameterArray(const char *function,
+    ANARIObject object,
+    const char *name,
+    ANARIDataType arrayType,
+    ANARIDataType elementType,
+    const uint64_t items[3],
+    uint64_t *elementStride)
+{
+  return guarded(function, (void *)nullptr, [&]() -> void * {
+    Findings f(function);
+    auto target = checked(f, object, ANARI_OBJECT, name, [&](ObjectRecord &r) {
+      if (!name) {
+        f.error("parameter name is NULL");
+      } else if (r.mappedParameters.count(name)) {
+        f.error(
+            "the parameter is already mapped", ANARI_STATUS_INVALID_OPERATION);
+      } else if (!anari::isValidDataType(elementType)
+                 || anari::sizeOf(elementType) == 0) {
+        f.error("element type " + std::to_string(int(elementType))
+                + " is not a data type an array can hold");
+      } else if (!items[0] || (arrayType != ANARI_ARRAY1D && !items[1])
+                 || (arrayType == ANARI_ARRAY3D && !items[2])) {
+        f.error("the array has no elements");
+      } else {
+        m_rules->checkMappedParameter(f, r, name, arrayType, elementType);
+        return true;
+      }
+      return false;
+    });
+    if (!target)
+      return nullptr;
+    uint64_t stride = 0;
+    void *memory = nullptr;
+    if (arrayType == ANARI_ARRAY1D) {
+      memory = m_wrapped->mapParameterArray1D(
+          target, name, elementType, items[0], &stride);
+    } else if (arrayType == ANARI_ARRAY2D) {
+      memory = m_wrapped->mapParameterArray2D(
+          target, name, elementType, items[0], items[1], &stride);
+    } else {
+      memory = m_wrapped->mapParameterArray3D(
+          target, name, elementType, items[0], items[1], items[2], &stride);
+    }
+    if (elementStride)
+      *elementStride = stride;
+    if (!memory)
+      return nullptr;
+    std::lock_guard lock(m_mutex);
+    if (ObjectRecord *record = m_objects.find(object)) {
+      uint64_t count = 1;
+      for (int i = 0; i < 3; ++i)
+        count *= items[i] ? items[i] : 1;
+      record->mappedParameters[name] = {memory,
+          elementType,
+          count,
+          stride,
+          arrayType,
+          {items[0], items[1], items[2]}};
+      StagedParameter staged;
+      staged.type = arrayType;
+      staged.mappedElementType = elementType;
+      staged.mappedCount = count;
+      record->parameters[name] = staged;
+      record->changedSinceCommit = true;
+    }
+    return memory;
+  });
+}
+
+void *DebugDevice::mapParameterArray1D(ANARIObject object,
+    const char *name,
+    ANARIDataType elementType,
+    uint64_t numElements1,
+    uint64_t *elementStride)
+{
+  const uint64_t items[3] = {numElements1, 0, 0};
+  return mapParameterArray("anariMapParameterArray1D",
+      object,
+      name,
+      ANARI_ARRAY1D,
+      elementType,
+      items,
+      elementStride);
+}
+
+void *DebugDevice::mapParameterArray2D(ANARIObject object,
+    const char *name,
+    ANARIDataType elementType,
+    uint64_t numElements1,
+    uint64_t numElements2,
+    uint64_t *elementStride)
+{
+  const uint64_t items[3] = {numElements1, numElements2, 0};
+  return mapParameterArray("anariMapParameterArray2D",
+      object,
+      name,
+      ANARI_ARRAY2D,
+      elementType,
+      items,
+      elementStride);
+}
+
+void *DebugDevice::mapParameterArray3D(ANARIObject object,
+    const char *name,
+    ANARIDataType elementType,
+    uint64_t numElements1,
+    uint64_t numElements2,
+    uint64_t numElements3,
+    uint64_t *elementStride)
+{
+  const uint64_t items[3] = {numElements1, numElements2, numElements3};
+  return mapParameterArray("anariMapParameterArray3D",
+      object,
+      name,
+      ANARI_ARRAY3D,
+      elementType,
+      items,
+      elementStride);
+}
+
+void DebugDevice::unmapParameterArray(ANARIObject object, const char *name)
+{
+  guarded("anariUnmapParameterArray", [&] {
+    Findings f("anariUnmapParameterArray");
+    auto target = checked(f, object, ANARI_OBJECT, name, [&](ObjectRecord &r) {
+      auto it = name ? r.mappedParameters.find(name) : r.mappedParameters.end();
+      if (it == r.mappedParameters.end()) {
+        f.error("the parameter is not mapped", ANARI_STATUS_INVALID_OPERATION);
+        return false;
+      }
+      MappedParameter &m = it->second;
+      if (tracing()) {
+        trace("ParameterArray " + traceName(r.handle) + " " + trace::quote(name)
+              + " " + trace::typeName(m.arrayType) + " "
+              + trace::typeName(m.elementType) + " ["
+              + std::to_string(m.items[0]) + " " + std::to_string(m.items[1])
+              + " " + std::to_string(m.items[2]) + "] "
+              + traceContents(m.elementType, m.memory, m.count, m.stride));
+      }
+      if (anari::isObject(m.elementType)) {
+        // The application wrote layer handles; the device reads its own.
+        const uint64_t step = m.stride ? m.stride : sizeof(ANARIObject);
+        for (uint64_t i = 0; i < m.count; ++i) {
+          auto *slot = (ANARIObject *)((char *)m.memory + i * step);
+          ANARIObject wrapped = nullptr;
+          translate(f, *slot, m.elementType, "element", wrapped);
+          *slot = wrapped;
+        }
+      }
+      r.mappedParameters.erase(it);
+      return true;
+    });
+    if (target)
+      m_wrapped->unmapParameterArray(target, name);
+  });
+}
+
+void DebugDevice::commitParameters(ANARIObject object)
+{
+  guarded("anariCommitParameters", [&] {
+    if (isDevice(object)) {
+      commitDevice();
+      return;
+    }
+    Findings f("anariCommitParameters");
+    auto target =
+        checked(f, object, ANARI_OBJECT, nullptr, [&](ObjectRecord &r) {
+          if (r.mapped) {
+            f.error("the array is mapped; unmap it before committing",
+                ANARI_STATUS_INVALID_OPERATION);
+          }
+          if (!r.mappedParameters.empty()) {
+            f.error("parameter '" + r.mappedParameters.begin()->first
+                        + "' is still mapped",
+                ANARI_STATUS_INVALID_OPERATION);
+          }
+          m_rules->checkCommit(f, r, m_objects);
+          r.committed = true;
+          r.changedSinceCommit = false;
+          trace("Commit " + traceName(r.handle));
+          return true;
+        });
+    if (target)
+      m_wrapped->commitParameters(target);
+  });
+}
+
+void DebugDevice::release(ANARIObject object)
+{
+  if (!object)
+    return; // releasing NULL is allowed (spec 3.5)
+  if (isDevice(object)) {
+    ++m_calls;
+    if (--m_publicReferences == 0)
+      delete this;
+    return;
+  }
+  guarded("anariRelease", [&] {
+    Findings f("anariRelease");
+    auto target =
+        checked(f, object, ANARI_OBJECT, nullptr, [&](ObjectRecord &r) {
+          if (r.mapped)
+            f.warning(
+                "the array is still mapped", ANARI_STATUS_INVALID_OPERATION);
+          trace("Release " + traceName(r.handle));
+          if (--r.publicReferences == 0) {
+            r.released = true;
+            r.ownedHandles = {};
+            r.copiedHandles = {};
+          }
+          return true;
+        });
+    if (target)
+      m_wrapped->release(target);
+  });
+}
+
+void DebugDevice::retain(ANARIObject object)
+{
+  if (isDevice(object)) {
+    ++m_calls;
+    ++m_publicReferences;
+    return;
+  }
+  guarded("anariRetain", [&] {
+    Findings f("anariRetain");
+    auto target =
+        checked(f, object, ANARI_OBJECT, nullptr, [&](ObjectRecord &r) {
+          ++r.publicReferences;
+          trace("Retain " + traceName(r.handle));
+          return true;
+        });
+    if (target)
+      m_wrapped->retain(target);
+  });
+}
+
+void *DebugDevice::mapArray(ANARIArray array)
+{
+  return guarded("anariMapArray", (void *)nullptr, [&]() -> void * {
+    Findings f("anariMapArray");
+    void *memory = nullptr;
+    auto target = checked(f, array, ANARI_ARRAY, nullptr, [&](ObjectRecord &r) {
+      if (r.mapped) {
+        f.error("the array is already mapped", ANARI_STATUS_INVALID_OPERATION);
+        memory = r.mappedMemory;
+        return false;
+      }
+      if (r.objectArray) {
+        // The application maps its own handles, not the wrapped ones.
+        memory =
+            r.appMemory ? (void *)r.appMemory : (void *)r.ownedHandles.data();
+        r.mapped = true;
+        r.mappedMemory = memory;
+        return false;
+      }
+      return true;
+    });
+    if (!target)
+      return memory;
+    memory = m_wrapped->mapArray((ANARIArray)target);
+    std::lock_guard lock(m_mutex);
+    if (ObjectRecord *record = m_objects.find(array)) {
+      record->mapped = memory != nullptr;
+      record->mappedMemory = memory;
+    }
+    return memory;
+  });
+}
+
+void DebugDevice::unmapArray(ANARIArray array)
+{
+  guarded("anariUnmapArray", [&] {
+    Findings f("anariUnmapArray");
+    bool objectArray = false;
+    std::vector<ANARIObject> translated;
+    auto target = checked(f, array, ANARI_ARRAY, nullptr, [&](ObjectRecord &r) {
+      if (!r.mapped) {
+        f.error("the array is not mapped", ANARI_STATUS_INVALID_OPERATION);
+        return false;
+      }
+      if (tracing()) {
+        trace("ArrayData " + traceName(r.handle) + " "
+              + traceContents(r.elementType, r.mappedMemory, r.itemCount(), 0));
+      }
+      if (r.objectArray) {
+        translated = translateObjectArray(f, r);
+        objectArray = true;
+      } else {
+        // The application may have changed the data: read the indices anew.
+        r.hasLargestIndex = largestComponent(
+            r.mappedMemory, r.elementType, r.itemCount(), 0, r.largestIndex);
+      }
+      r.mapped = false;
+      return true;
+    });
+    if (target && objectArray) {
+      // The wrapped device's copy is written as an application would.
+      if (void *memory = m_wrapped->mapArray((ANARIArray)target)) {
+        std::memcpy(
+            memory, translated.data(), translated.size() * sizeof(ANARIObject));
+      }
+      m_wrapped->unmapArray((ANARIArray)target);
+    } else if (target) {
+      m_wrapped->unmapArray((ANARIArray)target);
+    }
+  });
+}
+
+} // namespace prism::debug

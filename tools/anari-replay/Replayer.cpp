@@ -1,0 +1,498 @@
+#include "Replayer.h"
+
+#include "ImageIO.h"
+
+#include "anari/frontend/type_utility.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
+namespace prism::replay {
+namespace {
+
+void printStatus(const void *,
+    ANARIDevice,
+    ANARIObject,
+    ANARIDataType,
+    ANARIStatusSeverity severity,
+    ANARIStatusCode,
+    const char *message)
+{
+  if (severity <= ANARI_SEVERITY_WARNING)
+    std::fprintf(stderr, "anari-replay: device: %s\n", message);
+}
+
+bool isWord(const trace::Token &t, const char *text = nullptr)
+{
+  return t.kind == trace::Token::kWord && (!text || t.text == text);
+}
+
+} // namespace
+
+Replayer::Replayer(Options options) : m_options(std::move(options)) {}
+
+Replayer::~Replayer()
+{
+  if (m_device)
+    anariRelease(m_device, m_device);
+  if (m_library)
+    anariUnloadLibrary(m_library);
+}
+
+bool Replayer::fail(const std::string &message)
+{
+  m_error = message;
+  return false;
+}
+
+bool Replayer::run()
+{
+  std::ifstream text(m_options.tracePath);
+  if (!text)
+    return fail("cannot read " + m_options.tracePath);
+  std::ifstream data(m_options.tracePath + ".bin", std::ios::binary);
+  if (data) {
+    m_data.assign(
+        std::istreambuf_iterator<char>(data), std::istreambuf_iterator<char>());
+  }
+  std::string line;
+  Tokens tokens;
+  for (int number = 1; std::getline(text, line); ++number) {
+    std::string error;
+    if (!trace::tokenize(line, tokens, error))
+      return fail("line " + std::to_string(number) + ": " + error);
+    if (tokens.empty())
+      continue;
+    if (!call(tokens)) {
+      m_error = "line " + std::to_string(number) + ": " + m_error;
+      return false;
+    }
+    ++m_summary.calls;
+  }
+  return true;
+}
+
+bool Replayer::call(const Tokens &t)
+{
+  if (!isWord(t[0]))
+    return fail("a line starts with a keyword");
+  const std::string &keyword = t[0].text;
+  if (keyword == "Device")
+    return startDevice(t);
+  if (!m_device)
+    return fail("'" + keyword + "' before 'Device'");
+  if (keyword == "New" || keyword == "NewObject")
+    return newObject(t);
+  if (keyword == "Array")
+    return newArray(t);
+  if (keyword == "ArrayData")
+    return arrayData(t);
+  if (keyword == "Set")
+    return setParameter(t);
+  if (keyword == "ParameterArray")
+    return parameterArray(t);
+  if (keyword == "Map")
+    return mapFrame(t);
+  if (keyword == "Property")
+    return property(t);
+
+  ANARIObject o = nullptr;
+  if (t.size() < 2 || !object(t[1], o))
+    return fail(m_error.empty() ? keyword + ": an object expected" : m_error);
+  if (keyword == "Release" && o == (ANARIObject)m_device) {
+    anariRelease(m_device, m_device);
+    m_device = nullptr;
+    return true;
+  }
+  if (keyword == "Commit") {
+    anariCommitParameters(m_device, o);
+  } else if (keyword == "Release") {
+    anariRelease(m_device, o);
+  } else if (keyword == "Retain") {
+    anariRetain(m_device, o);
+  } else if (keyword == "UnsetAll") {
+    anariUnsetAllParameters(m_device, o);
+  } else if (keyword == "Unset" && t.size() == 3) {
+    anariUnsetParameter(m_device, o, t[2].text.c_str());
+  } else if (keyword == "Render") {
+    anariRenderFrame(m_device, (ANARIFrame)o);
+  } else if (keyword == "Ready" && t.size() == 3) {
+    anariFrameReady(m_device,
+        (ANARIFrame)o,
+        t[2].text == "WAIT" ? ANARI_WAIT : ANARI_NO_WAIT);
+  } else if (keyword == "Discard") {
+    anariDiscardFrame(m_device, (ANARIFrame)o);
+  } else if (keyword == "Unmap" && t.size() == 3) {
+    anariUnmapFrame(m_device, (ANARIFrame)o, t[2].text.c_str());
+  } else {
+    return fail("unknown call '" + keyword + "'");
+  }
+  return true;
+}
+
+bool Replayer::startDevice(const Tokens &t)
+{
+  if (m_device)
+    return fail("a second 'Device'");
+  if (t.size() < 2 || t[1].kind != trace::Token::kString)
+    return fail("Device: a subtype expected");
+  std::string library = m_options.library;
+  if (library.empty())
+    library = t.size() > 2 ? t[2].text : "prism";
+  m_library = anariLoadLibrary(library.c_str(), printStatus, nullptr);
+  if (!m_library)
+    return fail("cannot load library '" + library + "'");
+  m_device = anariNewDevice(m_library, t[1].text.c_str());
+  if (!m_device)
+    return fail("library '" + library + "' made no device");
+  m_objects["device"] = (ANARIObject)m_device;
+  m_objects["null"] = nullptr;
+  return true;
+}
+
+bool Replayer::object(const trace::Token &token, ANARIObject &out)
+{
+  auto it = m_objects.find(token.text);
+  if (!isWord(token) || it == m_objects.end())
+    return fail("unknown object '" + token.text + "'");
+  out = it->second;
+  return true;
+}
+
+bool Replayer::type(const trace::Token &token, ANARIDataType &out)
+{
+  if (isWord(token) && trace::typeFromName(token.text, out))
+    return true;
+  return fail("unknown data type '" + token.text + "'");
+}
+
+bool Replayer::number(const trace::Token &token, uint64_t &out)
+{
+  char *end = nullptr;
+  out = std::strtoull(token.text.c_str(), &end, 10);
+  if (isWord(token) && !token.text.empty() && end && !*end)
+    return true;
+  return fail("a number expected, not '" + token.text + "'");
+}
+
+bool Replayer::dimensions(const Tokens &t, size_t at, uint64_t items[3])
+{
+  if (t.size() < at + 5 || t[at].kind != trace::Token::kOpen
+      || t[at + 4].kind != trace::Token::kClose)
+    return fail("[n1 n2 n3] expected");
+  for (int i = 0; i < 3; ++i) {
+    if (!number(t[at + 1 + i], items[i]))
+      return false;
+  }
+  return true;
+}
+
+bool Replayer::contents(const Tokens &t,
+    size_t at,
+    ANARIDataType elementType,
+    std::vector<unsigned char> &bytes,
+    bool &none)
+{
+  none = false;
+  bytes.clear();
+  if (at >= t.size())
+    return fail("array contents expected");
+  if (isWord(t[at], "-")) {
+    none = true;
+    return true;
+  }
+  if (t[at].kind == trace::Token::kOpen) {
+    for (size_t i = at + 1; i < t.size() && t[i].kind != trace::Token::kClose;
+         ++i) {
+      ANARIObject handle = nullptr;
+      if (!object(t[i], handle))
+        return false;
+      auto *p = (const unsigned char *)&handle;
+      bytes.insert(bytes.end(), p, p + sizeof(handle));
+    }
+    return true;
+  }
+  uint64_t offset = 0, size = 0;
+  if (!isWord(t[at]) || t[at].text[0] != '@'
+      || std::sscanf(t[at].text.c_str(),
+             "@%llu:%llu",
+             (unsigned long long *)&offset,
+             (unsigned long long *)&size)
+             != 2)
+    return fail("'@offset:size' expected, not '" + t[at].text + "'");
+  if (offset > m_data.size() || size > m_data.size() - offset)
+    return fail(t[at].text + " lies past the end of the side file");
+  (void)elementType;
+  bytes.assign(m_data.begin() + offset, m_data.begin() + offset + size);
+  return true;
+}
+
+bool Replayer::newObject(const Tokens &t)
+{
+  if (t.size() < 3 || !isWord(t[1]))
+    return fail("New: a name and a type expected");
+  const char *subtype = t.size() > 3 ? t[3].text.c_str() : nullptr;
+  ANARIObject o = nullptr;
+  if (t[0].text == "NewObject") {
+    o = anariNewObject(m_device, t[2].text.c_str(), subtype ? subtype : "");
+    m_objects[t[1].text] = o;
+    return true;
+  }
+  ANARIDataType objectType;
+  if (!type(t[2], objectType))
+    return false;
+  switch (int(objectType)) {
+  case ANARI_GEOMETRY:
+    o = anariNewGeometry(m_device, subtype);
+    break;
+  case ANARI_MATERIAL:
+    o = anariNewMaterial(m_device, subtype);
+    break;
+  case ANARI_SAMPLER:
+    o = anariNewSampler(m_device, subtype);
+    break;
+  case ANARI_SURFACE:
+    o = anariNewSurface(m_device);
+    break;
+  case ANARI_SPATIAL_FIELD:
+    o = anariNewSpatialField(m_device, subtype);
+    break;
+  case ANARI_VOLUME:
+    o = anariNewVolume(m_device, subtype);
+    break;
+  case ANARI_LIGHT:
+    o = anariNewLight(m_device, subtype);
+    break;
+  case ANARI_GROUP:
+    o = anariNewGroup(m_device);
+    break;
+  case ANARI_INSTANCE:
+    o = anariNewInstance(m_device, subtype);
+    break;
+  case ANARI_WORLD:
+    o = anariNewWorld(m_device);
+    break;
+  case ANARI_CAMERA:
+    o = anariNewCamera(m_device, subtype);
+    break;
+  case ANARI_RENDERER:
+    o = anariNewRenderer(m_device, subtype);
+    break;
+  case ANARI_FRAME:
+    o = anariNewFrame(m_device);
+    break;
+  default:
+    return fail("New: no object of type " + t[2].text);
+  }
+  m_objects[t[1].text] = o;
+  return true;
+}
+
+bool Replayer::newArray(const Tokens &t)
+{
+  ANARIDataType arrayType, elementType;
+  uint64_t items[3];
+  if (t.size() < 9 || !isWord(t[1]))
+    return fail("Array: name, type, element type, [n1 n2 n3], data expected");
+  std::vector<unsigned char> bytes;
+  bool none = false;
+  if (!type(t[2], arrayType) || !type(t[3], elementType)
+      || !dimensions(t, 4, items) || !contents(t, 9, elementType, bytes, none))
+    return false;
+  const void *memory = nullptr;
+  if (!none) {
+    m_arrayMemory.push_back(std::move(bytes));
+    memory = m_arrayMemory.back().data();
+  }
+  ANARIObject o = nullptr;
+  if (arrayType == ANARI_ARRAY1D) {
+    o = anariNewArray1D(
+        m_device, memory, nullptr, nullptr, elementType, items[0]);
+  } else if (arrayType == ANARI_ARRAY2D) {
+    o = anariNewArray2D(
+        m_device, memory, nullptr, nullptr, elementType, items[0], items[1]);
+  } else {
+    o = anariNewArray3D(m_device,
+        memory,
+        nullptr,
+        nullptr,
+        elementType,
+        items[0],
+        items[1],
+        items[2]);
+  }
+  m_objects[t[1].text] = o;
+  return true;
+}
+
+bool Replayer::arrayData(const Tokens &t)
+{
+  ANARIObject array = nullptr;
+  std::vector<unsigned char> bytes;
+  bool none = false;
+  if (t.size() < 3 || !object(t[1], array)
+      || !contents(t, 2, ANARI_UNKNOWN, bytes, none))
+    return false;
+  void *memory = anariMapArray(m_device, (ANARIArray)array);
+  if (memory && !none)
+    std::memcpy(memory, bytes.data(), bytes.size());
+  anariUnmapArray(m_device, (ANARIArray)array);
+  return true;
+}
+
+bool Replayer::setParameter(const Tokens &t)
+{
+  ANARIObject o = nullptr;
+  ANARIDataType valueType;
+  if (t.size() < 5 || !object(t[1], o) || t[2].kind != trace::Token::kString
+      || !type(t[3], valueType))
+    return fail(
+        m_error.empty() ? "Set: object, name, type, value expected" : m_error);
+  const char *name = t[2].text.c_str();
+  if (valueType == ANARI_STRING) {
+    anariSetParameter(m_device, o, name, valueType, t[4].text.c_str());
+    return true;
+  }
+  if (anari::isObject(valueType)) {
+    ANARIObject value = nullptr;
+    if (!object(t[4], value))
+      return false;
+    anariSetParameter(m_device, o, name, valueType, &value);
+    return true;
+  }
+  if (valueType == ANARI_DATA_TYPE) {
+    ANARIDataType value;
+    if (!type(t[4], value))
+      return false;
+    anariSetParameter(m_device, o, name, valueType, &value);
+    return true;
+  }
+  std::vector<std::string> components;
+  if (t[4].kind != trace::Token::kOpen)
+    return fail("Set: a value list expected");
+  for (size_t i = 5; i < t.size() && t[i].kind != trace::Token::kClose; ++i)
+    components.push_back(t[i].text);
+  std::vector<unsigned char> bytes;
+  if (!trace::decodeValue(valueType, components, bytes))
+    return fail("Set: the value does not fit " + t[3].text);
+  anariSetParameter(m_device, o, name, valueType, bytes.data());
+  return true;
+}
+
+bool Replayer::parameterArray(const Tokens &t)
+{
+  ANARIObject o = nullptr;
+  ANARIDataType arrayType, elementType;
+  uint64_t items[3];
+  std::vector<unsigned char> bytes;
+  bool none = false;
+  if (t.size() < 10 || !object(t[1], o) || !type(t[3], arrayType)
+      || !type(t[4], elementType) || !dimensions(t, 5, items)
+      || !contents(t, 10, elementType, bytes, none))
+    return false;
+  const char *name = t[2].text.c_str();
+  uint64_t stride = 0;
+  void *memory = nullptr;
+  if (arrayType == ANARI_ARRAY1D) {
+    memory = anariMapParameterArray1D(
+        m_device, o, name, elementType, items[0], &stride);
+  } else if (arrayType == ANARI_ARRAY2D) {
+    memory = anariMapParameterArray2D(
+        m_device, o, name, elementType, items[0], items[1], &stride);
+  } else {
+    memory = anariMapParameterArray3D(
+        m_device, o, name, elementType, items[0], items[1], items[2], &stride);
+  }
+  if (!memory)
+    return true; // the device refused, as it did (or not) when recorded
+  const size_t size = anari::sizeOf(elementType);
+  const size_t step = stride ? stride : size;
+  for (size_t i = 0; size && (i + 1) * size <= bytes.size(); ++i)
+    std::memcpy((char *)memory + i * step, bytes.data() + i * size, size);
+  anariUnmapParameterArray(m_device, o, name);
+  return true;
+}
+
+bool Replayer::mapFrame(const Tokens &t)
+{
+  ANARIObject frame = nullptr;
+  uint64_t width = 0, height = 0;
+  ANARIDataType recordedType;
+  if (t.size() < 7 || !object(t[1], frame) || !number(t[3], width)
+      || !number(t[4], height) || !type(t[5], recordedType))
+    return fail(
+        m_error.empty() ? "Map: frame, channel, size, type, hash" : m_error);
+  uint32_t w = 0, h = 0;
+  ANARIDataType pixelType = ANARI_UNKNOWN;
+  const void *pixels = anariMapFrame(
+      m_device, (ANARIFrame)frame, t[2].text.c_str(), &w, &h, &pixelType);
+  bool same = pixels && w == width && h == height && pixelType == recordedType;
+  if (same) {
+    const uint64_t bytes = uint64_t(w) * h * anari::sizeOf(pixelType);
+    same = trace::hashName(trace::hashBytes(pixels, bytes)) == t[6].text;
+  }
+  if (same) {
+    ++m_summary.framesSame;
+  } else {
+    ++m_summary.framesDifferent;
+    std::fprintf(stderr,
+        "anari-replay: %s '%s' differs from the recorded image\n",
+        t[1].text.c_str(),
+        t[2].text.c_str());
+  }
+  if (pixels && !m_options.frameDirectory.empty())
+    writeFrame(t[1].text, t[2].text, pixels, w, h, pixelType);
+  // The trace unmaps it on its own line.
+  return true;
+}
+
+void Replayer::writeFrame(const std::string &frame,
+    const std::string &channel,
+    const void *pixels,
+    uint32_t width,
+    uint32_t height,
+    ANARIDataType type)
+{
+  char prefix[32];
+  std::snprintf(prefix, sizeof(prefix), "%04d-", ++m_framesWritten);
+  const std::string base =
+      m_options.frameDirectory + "/" + prefix + frame + "-" + channel;
+  // The channel's bytes as the device gave them, and colors as an image.
+  const uint64_t bytes = uint64_t(width) * height * anari::sizeOf(type);
+  if (FILE *raw = std::fopen((base + ".raw").c_str(), "wb")) {
+    std::fwrite(pixels, 1, bytes, raw);
+    std::fclose(raw);
+  }
+  if (type == ANARI_FLOAT32_VEC4) {
+    image::Image out(width, height);
+    std::memcpy(out.pixels.data(), pixels, bytes);
+    auto written = image::write(base + ".exr", out);
+    if (!written.ok())
+      std::fprintf(stderr, "anari-replay: %s\n", written.error.c_str());
+  }
+}
+
+bool Replayer::property(const Tokens &t)
+{
+  ANARIObject o = nullptr;
+  ANARIDataType valueType;
+  uint64_t size = 0;
+  if (t.size() < 6 || !object(t[1], o) || !type(t[3], valueType)
+      || !number(t[4], size))
+    return fail(
+        m_error.empty() ? "Property: object, name, type, size" : m_error);
+  std::vector<unsigned char> memory(size_t(size) + 1);
+  anariGetProperty(m_device,
+      o,
+      t[2].text.c_str(),
+      valueType,
+      memory.data(),
+      size,
+      t[5].text == "WAIT" ? ANARI_WAIT : ANARI_NO_WAIT);
+  return true;
+}
+
+} // namespace prism::replay
