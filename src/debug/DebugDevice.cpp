@@ -71,8 +71,15 @@ void DebugDevice::dropWrapped()
 
 void DebugDevice::report(Findings &findings)
 {
-  if (!m_statusCallback)
+  if (tracing()) {
+    // After the call's line: a replay checks the same reports come out.
+    for (const Finding &f : findings.list())
+      trace(trace::reportLine(f.severity, f.code, f.text));
+  }
+  if (!m_statusCallback) {
+    findings.list().clear();
     return;
+  }
   for (const Finding &f : findings.list()) {
     m_statusCallback(m_statusUserPtr,
         this_device(),

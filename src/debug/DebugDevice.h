@@ -192,6 +192,8 @@ class DebugDevice : public anari::DeviceImpl
   // live record of `handle`, names it (and `parameter`) in `f` and runs
   // `check(record)`; then reports. Returns the wrapped handle to forward
   // the call to, or NULL if the handle is bad or `check` returned false.
+  // When tracing, a call refused (NULL returned) is recorded as `Refused`
+  // and the line `f.refused` returns, before its reports.
   template <typename Check>
   ANARIObject checked(Findings &f,
       ANARIObject handle,
@@ -209,6 +211,11 @@ class DebugDevice : public anari::DeviceImpl
         f.about(record, parameter);
         if (check(*record))
           target = record->wrapped;
+      }
+      if (!target && tracing() && f.refused) {
+        const std::string line = f.refused();
+        if (!line.empty())
+          trace("Refused " + line);
       }
     }
     report(f);
@@ -272,6 +279,10 @@ class DebugDevice : public anari::DeviceImpl
     return m_trace != nullptr;
   }
   void trace(const std::string &line);
+  // The line of a call the layer refused: `call`, the handle's name (it may
+  // be released, `foreign` or `null`) and `operands`. Under the lock.
+  std::string refusedLine(
+      const char *call, ANARIObject handle, const std::string &operands = {});
   std::string traceName(ANARIObject handle);
   // The operand for a parameter value ("" if it cannot be traced).
   std::string traceValue(ANARIDataType type, const void *mem);

@@ -5,6 +5,7 @@
 
 #include "ObjectRecord.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,10 @@ class Findings
   {
     return m_list.empty();
   }
+
+  // The trace's line for the call if the layer refuses it ("" for none;
+  // DebugDevice::checked). Runs under the layer's lock.
+  std::function<std::string()> refused;
 
  private:
   const char *m_function;

@@ -24,6 +24,20 @@ void DebugDevice::setParameter(
     ANARIFrameCompletionCallback trampoline = &forwardFrameCompletion;
     bool forward = true;
     bool withLayerAsUserData = false;
+    bool traced = false;
+    f.refused = [&] {
+      const std::string v = name && !traced ? traceValue(type, mem) : "";
+      // Appended, not concatenated: GCC 12 raises a false -Wrestrict.
+      return v.empty() ? v
+                       : refusedLine("Set",
+                           object,
+                           std::string(" ")
+                               .append(trace::quote(name))
+                               .append(" ")
+                               .append(trace::typeName(type))
+                               .append(" ")
+                               .append(v));
+    };
     auto target = checked(f, object, ANARI_OBJECT, name, [&](ObjectRecord &r) {
       // ANARI_VOID_POINTER values are `mem` itself (as in the SDK).
       if (!name || (!mem && type != ANARI_VOID_POINTER)) {
@@ -76,6 +90,7 @@ void DebugDevice::setParameter(
                 + trace::typeName(type) + " " + v);
         }
       }
+      traced = true;
       return true;
     });
     if (!target || !forward)
@@ -97,6 +112,12 @@ void DebugDevice::unsetParameter(ANARIObject object, const char *name)
       return;
     }
     Findings f("anariUnsetParameter");
+    bool traced = false;
+    f.refused = [&] {
+      return name && !traced ? refusedLine(
+                 "Unset", object, std::string(" ").append(trace::quote(name)))
+                             : std::string();
+    };
     auto target = checked(f, object, ANARI_OBJECT, name, [&](ObjectRecord &r) {
       if (!name) {
         f.error("parameter name is NULL");
@@ -110,6 +131,7 @@ void DebugDevice::unsetParameter(ANARIObject object, const char *name)
       r.parameters.erase(name);
       r.changedSinceCommit = true;
       trace("Unset " + traceName(r.handle) + " " + trace::quote(name));
+      traced = true;
       if (r.type == ANARI_FRAME
           && std::strcmp(name, "frameCompletionCallbackUserData") == 0) {
         r.completionUserPtr = nullptr;
@@ -130,6 +152,9 @@ void DebugDevice::unsetAllParameters(ANARIObject object)
       return;
     }
     Findings f("anariUnsetAllParameters");
+    f.refused = [&] {
+      return refusedLine("UnsetAll", object);
+    };
     auto target =
         checked(f, object, ANARI_OBJECT, nullptr, [&](ObjectRecord &r) {
           if (!r.mappedParameters.empty()) {
@@ -314,6 +339,9 @@ void DebugDevice::commitParameters(ANARIObject object)
       return;
     }
     Findings f("anariCommitParameters");
+    f.refused = [&] {
+      return refusedLine("Commit", object);
+    };
     auto target =
         checked(f, object, ANARI_OBJECT, nullptr, [&](ObjectRecord &r) {
           if (r.mapped) {
@@ -348,6 +376,9 @@ void DebugDevice::release(ANARIObject object)
   }
   guarded("anariRelease", [&] {
     Findings f("anariRelease");
+    f.refused = [&] {
+      return refusedLine("Release", object);
+    };
     auto target =
         checked(f, object, ANARI_OBJECT, nullptr, [&](ObjectRecord &r) {
           if (r.mapped)
@@ -375,6 +406,9 @@ void DebugDevice::retain(ANARIObject object)
   }
   guarded("anariRetain", [&] {
     Findings f("anariRetain");
+    f.refused = [&] {
+      return refusedLine("Retain", object);
+    };
     auto target =
         checked(f, object, ANARI_OBJECT, nullptr, [&](ObjectRecord &r) {
           ++r.publicReferences;
@@ -423,6 +457,9 @@ void DebugDevice::unmapArray(ANARIArray array)
 {
   guarded("anariUnmapArray", [&] {
     Findings f("anariUnmapArray");
+    f.refused = [&] {
+      return refusedLine("UnmapArray", array);
+    };
     bool objectArray = false;
     std::vector<ANARIObject> translated;
     auto target = checked(f, array, ANARI_ARRAY, nullptr, [&](ObjectRecord &r) {

@@ -39,6 +39,15 @@ void DebugDevice::trace(const std::string &line)
     m_trace->line(line);
 }
 
+std::string DebugDevice::refusedLine(
+    const char *call, ANARIObject handle, const std::string &operands)
+{
+  return std::string(call)
+      .append(" ")
+      .append(traceName(handle))
+      .append(operands);
+}
+
 std::string DebugDevice::traceName(ANARIObject handle)
 {
   if (!handle)
@@ -47,8 +56,9 @@ std::string DebugDevice::traceName(ANARIObject handle)
     return "device";
   const ObjectRecord *record = m_objects.find(handle);
   // Appended, not concatenated: GCC 12 raises a false -Wrestrict.
+  // A handle the layer never made (another device's, corrupt): `foreign`.
   return record ? std::string("o").append(std::to_string(record->serial))
-                : "null";
+                : "foreign";
 }
 
 std::string DebugDevice::traceValue(ANARIDataType type, const void *mem)

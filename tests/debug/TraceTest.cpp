@@ -11,6 +11,8 @@
 #include <limits>
 #include <sstream>
 
+#include <sys/wait.h>
+
 using namespace prism;
 
 TEST(TraceFormat, ValuesReadBackToTheSameBits)
@@ -149,6 +151,17 @@ void renderTriangle(ANARIDevice d)
     anariRelease(d, o);
 }
 
+// A device of the layer writing its trace to `path` (NULL on failure).
+ANARIDevice newTracedDevice(ANARILibrary library, const std::string &path)
+{
+  std::remove(path.c_str());
+  if (setenv("ANARI_DEBUG_TRACE", path.c_str(), 1) != 0)
+    return nullptr;
+  ANARIDevice device = anariNewDevice(library, "default");
+  unsetenv("ANARI_DEBUG_TRACE");
+  return device;
+}
+
 std::string readFile(const std::string &path)
 {
   std::ifstream in(path);
@@ -162,10 +175,7 @@ std::string readFile(const std::string &path)
 TEST_F(DebugLayerTest, TraceOfEveryKindOfCallReplays)
 {
   const std::string path = "debug-layer-test.trace";
-  std::remove(path.c_str());
-  ASSERT_EQ(setenv("ANARI_DEBUG_TRACE", path.c_str(), 1), 0);
-  ANARIDevice device = anariNewDevice(m_library, "default");
-  unsetenv("ANARI_DEBUG_TRACE");
+  ANARIDevice device = newTracedDevice(m_library, path);
   ASSERT_NE(device, nullptr);
   renderTriangle(device);
   anariRelease(device, device);
@@ -190,5 +200,126 @@ TEST_F(DebugLayerTest, TraceOfEveryKindOfCallReplays)
                 .find("1 frame(s) the same bit for bit, 0 "
                       "different"),
       std::string::npos);
+#endif
+}
+
+namespace {
+
+// A program that misuses the API: every call below but the creations,
+// releases and the first unmap is reported by the layer.
+void misuse(ANARIDevice d)
+{
+  ANARIGeometry released = anariNewGeometry(d, "sphere");
+  anariRelease(d, released);
+  const float radius = 0.5f;
+  anariSetParameter(d, released, "radius", ANARI_FLOAT32, &radius);
+  ANARISurface surface = anariNewSurface(d);
+  auto foreign = (ANARIGeometry)uintptr_t(0x5eed1234);
+  anariSetParameter(d, surface, "geometry", ANARI_GEOMETRY, &foreign);
+  anariCommitParameters(d, (ANARIObject)foreign);
+  ANARIMaterial material = anariNewMaterial(d, "matte");
+  const int32_t notAColor = 3;
+  anariSetParameter(d, material, "color", ANARI_INT32, &notAColor);
+  anariCommitParameters(d, material);
+  anariCommitParameters(d, surface); // no geometry
+  ANARIArray1D array =
+      anariNewArray1D(d, nullptr, nullptr, nullptr, ANARI_FLOAT32, 4);
+  std::memset(anariMapArray(d, array), 0, 4 * sizeof(float));
+  anariUnmapArray(d, array);
+  anariUnmapArray(d, array);
+  for (ANARIObject o :
+      {(ANARIObject)array, (ANARIObject)material, (ANARIObject)surface})
+    anariRelease(d, o);
+}
+
+#ifdef PRISM_ANARI_REPLAY
+// anari-replay --check-reports's exit status on `path`, its output in
+// `output`.
+int replayReports(const std::string &path, std::string &output)
+{
+  const std::string command = std::string(PRISM_ANARI_REPLAY) + " " + path
+                              + " --check-reports > replay-reports.out 2>&1";
+  const int status = std::system(command.c_str());
+  output = readFile("replay-reports.out");
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+#endif
+
+} // namespace
+
+TEST_F(DebugLayerTest, TraceOfMisuseReplaysToTheSameReports)
+{
+  const std::string path = "debug-layer-misuse.trace";
+  ANARIDevice device = newTracedDevice(m_library, path);
+  ASSERT_NE(device, nullptr);
+  misuse(device);
+  anariRelease(device, device);
+  size_t reported = 0;
+  for (auto &m : takeProblems(m_status))
+    reported += fromLayer(m) ? 1 : 0;
+  EXPECT_EQ(reported, 7u);
+
+  const std::string text = readFile(path);
+  size_t recorded = 0;
+  for (size_t at = text.find("\nReport "); at != std::string::npos;
+       at = text.find("\nReport ", at + 1))
+    ++recorded;
+  EXPECT_EQ(recorded, reported) << text;
+  for (const char *line : {"Refused Set o1 \"radius\" FLOAT32",
+           "Report ERROR INVALID_ARGUMENT \"anariSetParameter(): object "
+           "handle is geometry sphere #1, used after its release",
+           "Refused Set o2 \"geometry\" GEOMETRY foreign",
+           "Refused Commit foreign\nReport ERROR INVALID_ARGUMENT "
+           "\"anariCommitParameters(): object handle 0x? is not",
+           "Set o3 \"color\" INT32",
+           "Commit o2\nReport ERROR INVALID_OPERATION",
+           "ArrayData o4 @",
+           "Refused UnmapArray o4\nReport ERROR INVALID_OPERATION"})
+    EXPECT_NE(text.find(line), std::string::npos) << line << "\n" << text;
+  EXPECT_EQ(text.find("0x5eed"), std::string::npos) << text;
+
+#ifdef PRISM_ANARI_REPLAY
+  std::string output;
+  EXPECT_EQ(replayReports(path, output), 0) << output;
+  EXPECT_NE(output.find("7 report(s) recorded, 7 replayed: the same"),
+      std::string::npos)
+      << output;
+
+  // Without the misuse of a released object, the reports differ.
+  const std::string altered = "debug-layer-misuse-altered.trace";
+  {
+    std::ofstream out(altered);
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) {
+      if (line.rfind("Refused Set o1 ", 0) != 0)
+        out << line << "\n";
+    }
+    std::ofstream(altered + ".bin", std::ios::binary)
+        << std::ifstream(path + ".bin", std::ios::binary).rdbuf();
+  }
+  EXPECT_EQ(replayReports(altered, output), 3) << output;
+  EXPECT_NE(output.find("report 1: recorded Report ERROR"), std::string::npos)
+      << output;
+
+  // Nor may a report be dropped from the trace.
+  {
+    std::ofstream out(altered);
+    std::istringstream in(text);
+    bool dropped = false;
+    for (std::string line; std::getline(in, line);) {
+      if (!dropped && line.rfind("Report ", 0) == 0
+          && line.find("UnmapArray") != std::string::npos)
+        dropped = true;
+      else
+        out << line << "\n";
+    }
+  }
+  EXPECT_EQ(replayReports(altered, output), 3) << output;
+
+  // Without --check-reports, the refused calls are left out: the wrapped
+  // device alone never sees them.
+  const std::string command =
+      std::string(PRISM_ANARI_REPLAY) + " " + path + " > replay.out 2>&1";
+  EXPECT_EQ(std::system(command.c_str()), 0) << readFile("replay.out");
 #endif
 }

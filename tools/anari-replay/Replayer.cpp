@@ -4,6 +4,8 @@
 
 #include "anari/frontend/type_utility.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -25,12 +27,62 @@ void printStatus(const void *,
     std::fprintf(stderr, "anari-replay: device: %s\n", message);
 }
 
+// The layer's own messages name the call: "anariSetParameter(...): ...";
+// the wrapped device's are left aside.
+bool fromLayer(const char *text)
+{
+  if (std::strncmp(text, "anari", 5) != 0)
+    return false;
+  size_t i = 5;
+  while (std::isalnum((unsigned char)text[i]))
+    ++i;
+  return i > 5 && text[i] == '(';
+}
+
 bool isWord(const trace::Token &t, const char *text = nullptr)
 {
   return t.kind == trace::Token::kWord && (!text || t.text == text);
 }
 
 } // namespace
+
+void Replayer::collectStatus(const void *userPtr,
+    ANARIDevice device,
+    ANARIObject source,
+    ANARIDataType sourceType,
+    ANARIStatusSeverity severity,
+    ANARIStatusCode code,
+    const char *message)
+{
+  auto *self = (Replayer *)userPtr;
+  if (message && fromLayer(message)) {
+    std::lock_guard lock(self->m_reportsMutex);
+    self->m_replayedReports.push_back(
+        trace::reportLine(severity, code, message));
+  } else {
+    printStatus(userPtr, device, source, sourceType, severity, code, message);
+  }
+}
+
+void Replayer::compareReports()
+{
+  std::lock_guard lock(m_reportsMutex);
+  m_summary.reportsRecorded = m_recordedReports.size();
+  m_summary.reportsReplayed = m_replayedReports.size();
+  const size_t n = std::max(m_recordedReports.size(), m_replayedReports.size());
+  for (size_t i = 0; i < n; ++i) {
+    const char *recorded =
+        i < m_recordedReports.size() ? m_recordedReports[i].c_str() : "none";
+    const char *replayed =
+        i < m_replayedReports.size() ? m_replayedReports[i].c_str() : "none";
+    if (std::strcmp(recorded, replayed) != 0) {
+      m_summary.reportsDifference = "report " + std::to_string(i + 1)
+                                    + ": recorded " + recorded + "\n  replayed "
+                                    + replayed;
+      return;
+    }
+  }
+}
 
 Replayer::Replayer(Options options) : m_options(std::move(options)) {}
 
@@ -70,8 +122,13 @@ bool Replayer::run()
       m_error = "line " + std::to_string(number) + ": " + m_error;
       return false;
     }
-    ++m_summary.calls;
+    // Reports are not calls, nor refused calls left out.
+    if (tokens[0].text != "Report"
+        && (tokens[0].text != "Refused" || m_options.checkReports))
+      ++m_summary.calls;
   }
+  if (m_options.checkReports)
+    compareReports();
   return true;
 }
 
@@ -80,6 +137,23 @@ bool Replayer::call(const Tokens &t)
   if (!isWord(t[0]))
     return fail("a line starts with a keyword");
   const std::string &keyword = t[0].text;
+  if (keyword == "Report") {
+    // Kept as the layer would write it again, to compare.
+    if (t.size() != 4 || !isWord(t[1]) || !isWord(t[2])
+        || t[3].kind != trace::Token::kString)
+      return fail("Report: severity, code, message expected");
+    if (m_options.checkReports) {
+      m_recordedReports.push_back("Report " + t[1].text + " " + t[2].text + " "
+                                  + trace::quote(t[3].text));
+    }
+    return true;
+  }
+  if (keyword == "Refused") {
+    // A call the layer did not forward: only the layer can take it again.
+    if (t.size() < 2)
+      return fail("Refused: a call expected");
+    return !m_options.checkReports || call(Tokens(t.begin() + 1, t.end()));
+  }
   if (keyword == "Device")
     return startDevice(t);
   if (!m_device)
@@ -125,6 +199,8 @@ bool Replayer::call(const Tokens &t)
         t[2].text == "WAIT" ? ANARI_WAIT : ANARI_NO_WAIT);
   } else if (keyword == "Discard") {
     anariDiscardFrame(m_device, (ANARIFrame)o);
+  } else if (keyword == "UnmapArray") {
+    anariUnmapArray(m_device, (ANARIArray)o);
   } else if (keyword == "Unmap" && t.size() == 3) {
     anariUnmapFrame(m_device, (ANARIFrame)o, t[2].text.c_str());
   } else {
@@ -142,7 +218,14 @@ bool Replayer::startDevice(const Tokens &t)
   std::string library = m_options.library;
   if (library.empty())
     library = t.size() > 2 ? t[2].text : "prism";
-  m_library = anariLoadLibrary(library.c_str(), printStatus, nullptr);
+  if (m_options.checkReports) {
+    // The layer around the library, reporting as when it was recorded.
+    setenv("ANARI_DEBUG_WRAPPED_LIBRARY", library.c_str(), 1);
+    library = "debug";
+    m_library = anariLoadLibrary(library.c_str(), collectStatus, this);
+  } else {
+    m_library = anariLoadLibrary(library.c_str(), printStatus, nullptr);
+  }
   if (!m_library)
     return fail("cannot load library '" + library + "'");
   m_device = anariNewDevice(m_library, t[1].text.c_str());
@@ -150,6 +233,11 @@ bool Replayer::startDevice(const Tokens &t)
     return fail("library '" + library + "' made no device");
   m_objects["device"] = (ANARIObject)m_device;
   m_objects["null"] = nullptr;
+  // A handle the layer never made; NULL for a library without the layer
+  // (which the layer would have given NULL too, as an object array's
+  // element).
+  m_objects["foreign"] =
+      m_options.checkReports ? (ANARIObject)uintptr_t(0xf0f0f0f0) : nullptr;
   return true;
 }
 

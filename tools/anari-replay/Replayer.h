@@ -7,6 +7,7 @@
 #include <anari/anari.h>
 
 #include <list>
+#include <mutex>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -18,6 +19,9 @@ struct Options
   std::string tracePath;
   std::string library;        // empty: the library the trace recorded
   std::string frameDirectory; // empty: frames are not written
+  // Replays through the debug layer wrapped around the library, with the
+  // calls it refused, and compares its reports with the recorded ones.
+  bool checkReports = false;
 };
 
 struct Summary
@@ -25,6 +29,11 @@ struct Summary
   uint64_t calls = 0;
   int framesSame = 0;
   int framesDifferent = 0;
+  // With checkReports: the layer's reports, recorded and replayed, and the
+  // first difference ("" if the same, in the same order).
+  uint64_t reportsRecorded = 0;
+  uint64_t reportsReplayed = 0;
+  std::string reportsDifference;
 };
 
 class Replayer
@@ -75,6 +84,14 @@ class Replayer
       std::vector<unsigned char> &bytes,
       bool &none);
   bool fail(const std::string &message);
+  static void collectStatus(const void *userPtr,
+      ANARIDevice device,
+      ANARIObject source,
+      ANARIDataType sourceType,
+      ANARIStatusSeverity severity,
+      ANARIStatusCode code,
+      const char *message);
+  void compareReports();
 
   Options m_options;
   std::string m_error;
@@ -87,6 +104,9 @@ class Replayer
   // read it until the array is gone).
   std::list<std::vector<unsigned char>> m_arrayMemory;
   int m_framesWritten = 0;
+  std::vector<std::string> m_recordedReports;
+  std::mutex m_reportsMutex; // NOTE: status may come from any thread
+  std::vector<std::string> m_replayedReports;
 };
 
 } // namespace prism::replay

@@ -10,11 +10,15 @@ namespace {
 
 const char *kUsage =
     "usage: anari-replay TRACE [--library NAME] [--write-frames DIR]\n"
+    "                    [--check-reports]\n"
     "Replays TRACE (and TRACE.bin) through libanari on NAME (default: the\n"
     "library the trace was recorded on). Every frame the trace mapped is\n"
     "compared with the recorded one; exit status 0 if all are the same bit\n"
     "for bit, 2 if any differs, 1 on an error. --write-frames writes each\n"
-    "mapped channel to DIR (.raw bytes; FLOAT32_VEC4 also as .exr).\n";
+    "mapped channel to DIR (.raw bytes; FLOAT32_VEC4 also as .exr).\n"
+    "--check-reports replays through the debug layer wrapped around NAME,\n"
+    "with the calls the layer refused, and exits 3 unless the layer makes\n"
+    "the same reports as recorded, in the same order.\n";
 
 } // namespace
 
@@ -26,6 +30,8 @@ int main(int argc, char **argv)
     if ((arg == "--library" || arg == "--write-frames") && i + 1 < argc) {
       (arg == "--library" ? options.library : options.frameDirectory) =
           argv[++i];
+    } else if (arg == "--check-reports") {
+      options.checkReports = true;
     } else if (arg == "--help" || arg == "-h") {
       std::fputs(kUsage, stdout);
       return 0;
@@ -56,5 +62,13 @@ int main(int argc, char **argv)
       (unsigned long long)s.calls,
       s.framesSame,
       s.framesDifferent);
-  return s.framesDifferent ? 2 : 0;
+  if (options.checkReports) {
+    std::printf("%llu report(s) recorded, %llu replayed: %s\n",
+        (unsigned long long)s.reportsRecorded,
+        (unsigned long long)s.reportsReplayed,
+        s.reportsDifference.empty() ? "the same" : s.reportsDifference.c_str());
+  }
+  if (s.framesDifferent)
+    return 2;
+  return s.reportsDifference.empty() ? 0 : 3;
 }

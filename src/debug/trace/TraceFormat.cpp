@@ -2,6 +2,7 @@
 
 #include "anari/frontend/type_utility.h"
 
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -177,6 +178,42 @@ std::string hashName(uint64_t hash)
   char buffer[20];
   std::snprintf(buffer, sizeof(buffer), "h%016llx", (unsigned long long)hash);
   return buffer;
+}
+
+std::string reportLine(
+    ANARIStatusSeverity severity, ANARIStatusCode code, const std::string &text)
+{
+  const char *severities[] = {"FATAL_ERROR",
+      "ERROR",
+      "WARNING",
+      "PERFORMANCE_WARNING",
+      "INFO",
+      "DEBUG"};
+  const char *codes[] = {"NO_ERROR",
+      "UNKNOWN_ERROR",
+      "INVALID_ARGUMENT",
+      "INVALID_OPERATION",
+      "OUT_OF_MEMORY",
+      "UNSUPPORTED_DEVICE",
+      "VERSION_MISMATCH"};
+  std::string out = "Report ";
+  out += severity >= 1 && severity <= 6 ? severities[severity - 1]
+                                        : std::to_string(int(severity));
+  out += " ";
+  out += unsigned(code) < 7 ? codes[code] : std::to_string(int(code));
+  std::string stable;
+  for (size_t i = 0; i < text.size(); ++i) {
+    if (text.compare(i, 2, "0x") == 0 && i + 2 < text.size()
+        && std::isxdigit((unsigned char)text[i + 2])) {
+      stable += "0x?";
+      i += 2;
+      while (i + 1 < text.size() && std::isxdigit((unsigned char)text[i + 1]))
+        ++i;
+    } else {
+      stable += text[i];
+    }
+  }
+  return out + " " + quote(stable);
 }
 
 bool tokenize(

@@ -36,6 +36,13 @@ bool decodeValue(ANARIDataType type,
 uint64_t hashBytes(const void *data, size_t size);
 std::string hashName(uint64_t hash); // "h" + 16 hex digits
 
+// The line recording one report of the layer: `Report ERROR
+// INVALID_ARGUMENT "text"`, with every address in the text ("0x5f2a...")
+// written "0x?" so traces of the same run are the same.
+std::string reportLine(ANARIStatusSeverity severity,
+    ANARIStatusCode code,
+    const std::string &text);
+
 // One lexical token: a word, a string (unquoted text), '[' or ']'.
 struct Token
 {
