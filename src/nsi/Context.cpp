@@ -1,5 +1,6 @@
 #include "Context.h"
 
+#include "LuaScript.h"
 #include "PathExpansion.h"
 #include "SceneResolver.h"
 #include "StreamReader.h"
@@ -178,7 +179,11 @@ void Context::evaluate(const ParameterList &params)
       return;
     }
     includeStream(expandPath(fileName));
-  } else if (type == "lua" || type == "dynamiclibrary") {
+  } else if (type == "lua") {
+    const std::string fileName = params.string("filename", "");
+    runLua(
+        m_id, reporter(), params, fileName.empty() ? "" : expandPath(fileName));
+  } else if (type == "dynamiclibrary") {
     report(NSIErrError, "NSIEvaluate: type '" + type + "' is not supported");
   } else {
     report(NSIErrError, "NSIEvaluate: unknown type '" + type + "'");

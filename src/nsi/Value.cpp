@@ -28,25 +28,35 @@ size_t Value::componentsOf(int type)
   }
 }
 
+bool Value::storesFloats(int type)
+{
+  switch (type) {
+  case NSITypeFloat:
+  case NSITypeColor:
+  case NSITypePoint:
+  case NSITypeVector:
+  case NSITypeNormal:
+  case NSITypeMatrix:
+  case NSITypeHPoint:
+    return true;
+  default:
+    return false;
+  }
+}
+
 std::vector<double> Value::numbers() const
 {
   std::vector<double> out;
   const size_t n = count * valuesPerItem() * componentsOf(type);
   out.reserve(n);
   for (size_t i = 0; i < n; ++i) {
-    switch (type) {
-    case NSITypeFloat:
-    case NSITypeColor:
-    case NSITypePoint:
-    case NSITypeVector:
-    case NSITypeNormal:
-    case NSITypeMatrix:
-    case NSITypeHPoint: {
+    if (storesFloats(type)) {
       float f;
       std::memcpy(&f, bytes.data() + 4 * i, 4);
       out.push_back(f);
-      break;
+      continue;
     }
+    switch (type) {
     case NSITypeInteger: {
       int32_t v;
       std::memcpy(&v, bytes.data() + 4 * i, 4);

@@ -24,6 +24,8 @@ struct Value
   size_t valuesPerItem() const;
   // Scalars in one value of `type` (3 for a color, 16 for a matrix...).
   static size_t componentsOf(int type);
+  // True for the types whose values are 32-bit floats (float, color...).
+  static bool storesFloats(int type);
   // Every number widened to double, in order (empty for strings/pointers).
   std::vector<double> numbers() const;
   // The first number, or `fallback` when there is none.

@@ -165,10 +165,10 @@ TEST_F(ApiError, EvaluateAndRenderControl)
       .addString("filename", path("absent.nsi").c_str());
   NSIEvaluate(m_ctx, missing.size(), missing.data());
   EXPECT_TRUE(reportedOnce(m_messages, {"cannot read", "absent.nsi"}));
-  NSI::ArgumentList lua;
-  lua.addString("type", "lua").addString("script", "x = 1");
-  NSIEvaluate(m_ctx, lua.size(), lua.data());
-  EXPECT_TRUE(reportedOnce(m_messages, {"'lua' is not supported"}));
+  NSI::ArgumentList library;
+  library.addString("type", "dynamiclibrary").addString("filename", "x.so");
+  NSIEvaluate(m_ctx, library.size(), library.data());
+  EXPECT_TRUE(reportedOnce(m_messages, {"'dynamiclibrary' is not supported"}));
   NSI::ArgumentList odd;
   odd.addString("action", "dance");
   NSIRenderControl(m_ctx, odd.size(), odd.data());

@@ -174,6 +174,96 @@ void renderControl(
   NSIRenderControl(ctx, args.size(), args.data());
 }
 
+// A glowing square seen by a camera, built with the C API...
+void squareScene(NSIContext_t ctx, const std::string &output)
+{
+  minimalScene(ctx, 24, 4, output);
+  NSICreate(ctx, "square", "mesh", 0, nullptr);
+  {
+    const float P[12] = {-1, -1, -4, 1, -1, -4, 1, 1, -4, -1, 1, -4};
+    NSI::ArgumentList args;
+    args.addInteger("nvertices", 4);
+    args.add("P", NSITypePoint, P, 4);
+    NSISetAttribute(ctx, "square", args.size(), args.data());
+  }
+  NSIConnect(ctx, "square", "", NSI_SCENE_ROOT, "objects", 0, nullptr);
+  NSICreate(ctx, "glow", "shader", 0, nullptr);
+  {
+    NSI::ArgumentList args;
+    args.addString("shaderfilename", "emitter").addFloat("power", 1);
+    NSISetAttribute(ctx, "glow", args.size(), args.data());
+  }
+  NSICreate(ctx, "attr", "attributes", 0, nullptr);
+  NSIConnect(ctx, "glow", "", "attr", "surfaceshader", 0, nullptr);
+  NSIConnect(ctx, "attr", "", "square", "geometryattributes", 0, nullptr);
+}
+
+// ... and with Lua, the output named by a script parameter.
+const char *kSquareLua = R"(
+local out = nsi.scriptparameters.output.data
+nsi.Create("cam", "perspectivecamera")
+nsi.Connect("cam", "", ".root", "objects")
+nsi.Create("scr", "screen")
+nsi.SetAttribute("scr", {
+  {name="resolution", data={24, 24}, type=nsi.TypeInteger, arraylength=2},
+  {name="oversampling", data=4}})
+nsi.Connect("scr", "", "cam", "screens")
+nsi.Create("layer", "outputlayer")
+nsi.Connect("layer", "", "scr", "outputlayers")
+nsi.Create("driver", "outputdriver")
+nsi.SetAttribute("driver", {name="drivername", data="png"},
+  {name="imagefilename", data=out})
+nsi.Connect("driver", "", "layer", "outputdrivers")
+nsi.Create("square", "mesh")
+nsi.SetAttribute("square", {name="nvertices", data=4},
+  {name="P", type=nsi.TypePoint, data={-1,-1,-4, 1,-1,-4, 1,1,-4, -1,1,-4}})
+nsi.Connect("square", "", ".root", "objects")
+nsi.Create("glow", "shader")
+nsi.SetAttribute("glow", {name="shaderfilename", data="emitter"},
+  {name="power", data=1.0})
+nsi.Create("attr", "attributes")
+nsi.Connect("glow", "", "attr", "surfaceshader")
+nsi.Connect("attr", "", "square", "geometryattributes")
+)";
+
+TEST_F(Render, LuaSceneMatchesTheCApi)
+{
+  NSIContext_t ctx = beginRender();
+  squareScene(ctx, path("c.png"));
+  renderControl(ctx, "start");
+  renderControl(ctx, "wait");
+  NSIEnd(ctx);
+  ASSERT_EQ(m_messages.problems(), "");
+
+  ctx = beginRender();
+  NSI::ArgumentList args;
+  args.addString("type", "lua")
+      .addString("script", kSquareLua)
+      .addString("output", path("lua.png").c_str());
+  NSIEvaluate(ctx, args.size(), args.data());
+  if (m_messages.problems().find("not available") != std::string::npos) {
+    NSIEnd(ctx);
+    GTEST_SKIP() << "libnsi was built without Lua";
+  }
+  renderControl(ctx, "start");
+  renderControl(ctx, "wait");
+  NSIEnd(ctx);
+  ASSERT_EQ(m_messages.problems(), "");
+
+  const Image c = readImage(path("c.png"));
+  const Image lua = readImage(path("lua.png"));
+  ASSERT_EQ(c.width, 24u);
+  ASSERT_EQ(c.height, 24u);
+  ASSERT_EQ(lua.width, c.width);
+  ASSERT_EQ(lua.height, c.height);
+  // The square fills the middle; the corners see the black background.
+  EXPECT_GT(value(c, 12, 12), 0.05f);
+  EXPECT_EQ(value(c, 0, 0), 0.f);
+  for (uint32_t y = 0; y < c.height; ++y)
+    for (uint32_t x = 0; x < c.width; ++x)
+      EXPECT_EQ(value(lua, x, y), value(c, x, y)) << x << "," << y;
+}
+
 TEST_F(Render, StoppedCallbackReportsCompletion)
 {
   StopRecord record;
