@@ -9,6 +9,7 @@
 #include "../shading/Sampling.h"
 #include "SampleSequence.h"
 #include "VolumeTracing.h"
+#include "wavefront/BounceDecisions.h"
 #include "wavefront/RayTransport.h"
 
 #include <algorithm>
@@ -18,33 +19,19 @@
 namespace prism {
 namespace {
 
-// Random streams per bounce: direction, lobe, light choice, light point
-// and roulette; see-through surfaces draw from kOpacityStreams on.
-constexpr uint32_t kStreamsPerBounce = 5;
+// Random streams: kStreamsPerBounce per bounce (BounceDecisions);
+// see-through surfaces draw from kOpacityStreams on.
 constexpr uint32_t kOpacityStreams = 0x10000u;
 // Collisions in volumes draw from kVolumeStreams on.
 constexpr uint32_t kVolumeStreams = 0x20000u;
 // See-through surfaces a path passes at one bounce before it gives up.
 constexpr uint16_t kMaxLayers = 64;
 
-// Decision `stream` of the path: a 2D pair of the pixel's low-discrepancy
-// sequences, its own for each stream (docs/sampling.md).
-uint32_t streamSeed(const PathState &path, uint32_t stream)
-{
-  return mixBits(path.seed + (stream + 1u) * 0x9e3779b9u);
-}
-float2 random2(const PathState &path, uint32_t stream)
-{
-  return sobolSample2D(path.sampleIndex, streamSeed(path, stream));
-}
-// One coordinate of random2(path, stream), for one-dimensional decisions.
+// One coordinate of decision `stream` of the path (streamSeed), for the
+// decisions only some rays make (see-through surfaces).
 float randomX(const PathState &path, uint32_t stream)
 {
   return sobolSampleX(path.sampleIndex, streamSeed(path, stream));
-}
-float randomY(const PathState &path, uint32_t stream)
-{
-  return sobolSampleY(path.sampleIndex, streamSeed(path, stream));
 }
 
 // False when the ray (unit `direction`) surely passes the light's bounds
@@ -119,7 +106,13 @@ void PathTracer::renderTile(const RenderContext &context,
     next.clear();
     shadows.clear();
     contributions.clear();
-    shadeBounce(context, paths, rays, next, shadows, contributions);
+    shadeBounce(context,
+        paths,
+        rays,
+        next,
+        shadows,
+        contributions,
+        workspace->decisions);
     if (!shadows.empty()) {
       traced += shadows.size();
       transport.traceOcclusion(shadows);
@@ -224,8 +217,10 @@ void PathTracer::shadeBounce(const RenderContext &context,
     const rt::RayQueue &rays,
     rt::RayQueue &next,
     rt::RayQueue &shadows,
-    std::vector<float3> &contributions) const
+    std::vector<float3> &contributions,
+    BounceDecisions &decisions) const
 {
+  decisions.draw(paths, rays);
   for (size_t r = 0; r < rays.size(); r++) {
     if (rays.untraceable(r))
       continue; // a degenerate camera or bounce ray ends its path
@@ -241,9 +236,9 @@ void PathTracer::shadeBounce(const RenderContext &context,
     // sample then weighs fully: no BSDF sample follows to share it with).
     const bool last = b.path.bounce + 1 >= m_maxPathLength;
     const Scattering scattering = scatteringAt(b);
-    nextEvent(context, b, scattering, last, shadows, contributions);
+    nextEvent(context, b, scattering, decisions, last, shadows, contributions);
     if (!last)
-      scatter(b, scattering, next);
+      scatter(b, scattering, decisions, next);
   }
 }
 
@@ -254,6 +249,7 @@ PathTracer::Bounce PathTracer::resolveHit(const RenderContext &context,
 {
   Bounce b{path,
       rays.tag(r),
+      r,
       Ray{rays.origin(r), rays.direction(r)},
       rays.tMin(r),
       rays.hit(r),
@@ -409,6 +405,7 @@ PathTracer::Scattering PathTracer::scatteringAt(const Bounce &b) const
 void PathTracer::nextEvent(const RenderContext &context,
     const Bounce &b,
     const Scattering &scattering,
+    const BounceDecisions &decisions,
     bool last,
     rt::RayQueue &shadows,
     std::vector<float3> &contributions) const
@@ -420,12 +417,11 @@ void PathTracer::nextEvent(const RenderContext &context,
   if (selector.empty() || !bsdf.hasNonDeltaLobes())
     return;
   const PathState &path = b.path;
-  const uint32_t stream = uint32_t(path.bounce) * kStreamsPerBounce;
   float pickProbability = 0.f;
   const PlacedLight &light = *context.world->lights()[selector.pick(
-      randomX(path, stream + 2), pickProbability)];
+      decisions.lightPick(b.rayIndex), pickProbability)];
   const LightSample ls =
-      light.sample(b.surface.position, random2(path, stream + 3));
+      light.sample(b.surface.position, decisions.lightPoint(b.rayIndex));
   if (!(ls.pdf > 0.f) || !(maxComponent(ls.radiance) > 0.f))
     return;
   const float3 wi = scattering.frame.toLocal(ls.direction);
@@ -452,16 +448,17 @@ void PathTracer::nextEvent(const RenderContext &context,
       path.throughput * f * ls.radiance * (std::abs(wi.z) * weight / pdf));
 }
 
-void PathTracer::scatter(
-    Bounce &b, const Scattering &scattering, rt::RayQueue &next) const
+void PathTracer::scatter(Bounce &b,
+    const Scattering &scattering,
+    const BounceDecisions &decisions,
+    rt::RayQueue &next) const
 {
   // Continue the path by sampling the BSDF.
   PathState &path = b.path;
-  const uint32_t stream = uint32_t(path.bounce) * kStreamsPerBounce;
   const Bsdf &bsdf = scattering.bsdf;
-  const float2 direction = random2(path, stream);
-  const float lobe = randomX(path, stream + 1);
-  const BsdfSample bs = bsdf.sample(scattering.wo, direction, lobe);
+  const BsdfSample bs = bsdf.sample(scattering.wo,
+      decisions.direction(b.rayIndex),
+      decisions.lobe(b.rayIndex));
   // A black BSDF (e.g. an unlit surface) ends the path.
   if (!bs.valid() || !(maxComponent(bs.weight) > 0.f))
     return;
@@ -481,7 +478,7 @@ void PathTracer::scatter(
       path.media.leave();
   }
   path.bounce++;
-  if (!survivesRoulette(path, stream))
+  if (!survivesRoulette(path, decisions.roulette(b.rayIndex)))
     return;
   const float3 ng = b.surface.geometricNormal;
   const float3 side = dot(wi, ng) > 0.f ? ng : ng * -1.f;
@@ -493,14 +490,14 @@ void PathTracer::scatter(
       b.tag);
 }
 
-bool PathTracer::survivesRoulette(PathState &path, uint32_t stream) const
+bool PathTracer::survivesRoulette(PathState &path, float u) const
 {
   // After three bounces a path goes on with probability (at most 0.95) of
   // its throughput and is weighted up when it does: long paths unbiased.
   if (path.bounce <= 3)
     return true;
   const float survive = std::min(0.95f, maxComponent(path.throughput));
-  if (randomY(path, stream + 4) >= survive)
+  if (u >= survive)
     return false;
   path.throughput = path.throughput / survive;
   return true;

@@ -15,6 +15,7 @@
 #include "../shading/Sampling.h"
 #include "Renderer.h"
 #include "SurfaceHit.h"
+#include "wavefront/BounceDecisions.h"
 #include "wavefront/PathState.h"
 #include "wavefront/RayTransport.h"
 #include "wavefront/WorkspacePool.h"
@@ -61,13 +62,15 @@ class PathTracer : public Renderer
       const rt::RayQueue &rays,
       rt::RayQueue &next,
       rt::RayQueue &shadows,
-      std::vector<float3> &contributions) const;
+      std::vector<float3> &contributions,
+      BounceDecisions &decisions) const;
 
   // One ray of a bounce as the stages see it.
   struct Bounce
   {
     PathState &path;
-    uint32_t tag; // the path's index, carried by its rays
+    uint32_t tag;    // the path's index, carried by its rays
+    size_t rayIndex; // in the bounce's queue (and its BounceDecisions)
     Ray ray;
     float tMin{0.f};
     rt::Hit hit;
@@ -106,12 +109,16 @@ class PathTracer : public Renderer
   void nextEvent(const RenderContext &context,
       const Bounce &b,
       const Scattering &scattering,
+      const BounceDecisions &decisions,
       bool last,
       rt::RayQueue &shadows,
       std::vector<float3> &contributions) const;
-  void scatter(
-      Bounce &b, const Scattering &scattering, rt::RayQueue &next) const;
-  bool survivesRoulette(PathState &path, uint32_t stream) const;
+  void scatter(Bounce &b,
+      const Scattering &scattering,
+      const BounceDecisions &decisions,
+      rt::RayQueue &next) const;
+  // `u`: the bounce's roulette decision.
+  bool survivesRoulette(PathState &path, float u) const;
   // Radiance arriving along a ray from lights it reaches within (tMin,
   // hitDistance), weighted against light sampling.
   float3 lightsAlong(const RenderContext &context,
@@ -127,6 +134,7 @@ class PathTracer : public Renderer
     std::vector<PathState> paths;
     rt::RayQueue rays, next, shadows;
     std::vector<float3> contributions;
+    BounceDecisions decisions;
   };
   mutable WorkspacePool<TileWorkspace> m_workspaces;
   mutable std::atomic<uint64_t> m_raysTraced{0};

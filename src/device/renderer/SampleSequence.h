@@ -10,6 +10,7 @@
 
 #include "SampleHash.h"
 
+#include <cstddef>
 #include <cstdint>
 
 namespace prism {
@@ -42,46 +43,27 @@ inline uint32_t nestedUniformScramble(uint32_t x, uint32_t seed)
   return reverseBits(laineKarras(reverseBits(x), seed));
 }
 
-namespace detail {
-
-// Sobol's second dimension (direction numbers of x + 1: v_0 = 1/2,
-// v_j = v_(j-1) ^ (v_(j-1) >> 1)), bit-reversed, as XOR tables per byte of
-// the index: four lookups instead of a loop over 32 bits.
-struct SobolTables
-{
-  uint32_t byte[4][256];
-  constexpr SobolTables() : byte{}
-  {
-    uint32_t direction[32]{};
-    uint32_t v = 0x80000000u;
-    for (int j = 0; j < 32; j++, v ^= v >> 1) {
-      uint32_t reversed = 0;
-      for (int b = 0; b < 32; b++)
-        reversed |= ((v >> b) & 1u) << (31 - b);
-      direction[j] = reversed;
-    }
-    for (int b = 0; b < 4; b++)
-      for (uint32_t value = 0; value < 256; value++)
-        for (int k = 0; k < 8; k++)
-          if (value & (1u << k))
-            byte[b][value] ^= direction[8 * b + k];
-  }
-};
-inline constexpr SobolTables kSobolTables{};
-
-} // namespace detail
-
 // The first two dimensions of Sobol's sequence (a (0,2)-sequence in base
 // 2), as 32-bit fixed-point fractions.
 inline uint32_t sobolDimension0(uint32_t index)
 {
   return reverseBits(index);
 }
+// Sobol's second dimension, bit-reversed. Its direction numbers (v_0 = 1/2,
+// v_j = v_(j-1) ^ (v_(j-1) >> 1)) are the rows of Pascal's triangle mod 2:
+// reversed, v_j has bit k set exactly when k's bits are a subset of j's
+// (Lucas). So output bit k is the XOR of the index bits j that contain k:
+// a superset sum over the five bits of a bit's position, one shift per
+// position bit, with no table and nothing a vector unit cannot do.
 inline uint32_t sobolDimension1Reversed(uint32_t index)
 {
-  const auto &t = detail::kSobolTables.byte;
-  return t[0][index & 0xffu] ^ t[1][(index >> 8) & 0xffu]
-         ^ t[2][(index >> 16) & 0xffu] ^ t[3][index >> 24];
+  uint32_t bits = index;
+  bits ^= (bits >> 1) & 0x55555555u;
+  bits ^= (bits >> 2) & 0x33333333u;
+  bits ^= (bits >> 4) & 0x0f0f0f0fu;
+  bits ^= (bits >> 8) & 0x00ff00ffu;
+  bits ^= (bits >> 16) & 0x0000ffffu;
+  return bits;
 }
 inline uint32_t sobolDimension1(uint32_t index)
 {
@@ -103,6 +85,15 @@ inline float2 sobolSample2D(uint32_t index, uint32_t seed)
   return {
       float(x >> 8) * (1.f / 16777216.f), float(y >> 8) * (1.f / 16777216.f)};
 }
+
+// sobolSample2D(index[i], seed[i]) for i < count, into x[i] and y[i]: the
+// same numbers, computed many at a time in vector registers (a wavefront
+// draws each decision of all its paths at once).
+void sobolSamples2D(const uint32_t *index,
+    const uint32_t *seed,
+    size_t count,
+    float *x,
+    float *y);
 
 // One coordinate of sobolSample2D(index, seed), for one-dimensional
 // decisions: half the work.

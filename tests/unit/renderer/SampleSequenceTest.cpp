@@ -44,6 +44,42 @@ TEST(SampleSequence, ReverseBitsMirrorsEveryBit)
   EXPECT_EQ(reverseBits(0xffu), 0xff000000u);
 }
 
+TEST(SampleSequence, SecondDimensionFollowsItsDirectionNumbers)
+{
+  // Sobol's definition: XOR of the direction numbers v_j (v_0 = 1/2,
+  // v_j = v_(j-1) ^ (v_(j-1) >> 1)) of the index's set bits j.
+  uint32_t direction[32];
+  uint32_t v = 0x80000000u;
+  for (int j = 0; j < 32; j++, v ^= v >> 1)
+    direction[j] = v;
+  uint32_t index = 0x2545f491u;
+  for (int n = 0; n < 4096; n++) {
+    index = n < 256 ? uint32_t(n) : index * 1664525u + 1013904223u;
+    uint32_t expected = 0;
+    for (int j = 0; j < 32; j++)
+      if (index & (1u << j))
+        expected ^= direction[j];
+    ASSERT_EQ(sobolDimension1(index), expected) << std::hex << index;
+  }
+}
+
+TEST(SampleSequence, BatchesEqualSingleSamples)
+{
+  constexpr size_t kCount = 37; // not a multiple of any vector width
+  uint32_t index[kCount], seed[kCount];
+  float x[kCount], y[kCount];
+  for (size_t i = 0; i < kCount; i++) {
+    index[i] = uint32_t(i * i * 7919u);
+    seed[i] = mixBits(uint32_t(i) + 12345u);
+  }
+  sobolSamples2D(index, seed, kCount, x, y);
+  for (size_t i = 0; i < kCount; i++) {
+    const float2 single = sobolSample2D(index[i], seed[i]);
+    EXPECT_EQ(x[i], single.x) << i;
+    EXPECT_EQ(y[i], single.y) << i;
+  }
+}
+
 TEST(SampleSequence, EveryPowerOfTwoPrefixIsStratified)
 {
   for (uint32_t pixel = 0; pixel < 32; pixel++) {
