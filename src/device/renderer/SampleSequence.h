@@ -10,7 +10,6 @@
 
 #include "SampleHash.h"
 
-#include <cstddef>
 #include <cstdint>
 
 namespace prism {
@@ -85,15 +84,6 @@ inline float2 sobolSample2D(uint32_t index, uint32_t seed)
   return {
       float(x >> 8) * (1.f / 16777216.f), float(y >> 8) * (1.f / 16777216.f)};
 }
-
-// sobolSample2D(index[i], seed[i]) for i < count, into x[i] and y[i]: the
-// same numbers, computed many at a time in vector registers (a wavefront
-// draws each decision of all its paths at once).
-void sobolSamples2D(const uint32_t *index,
-    const uint32_t *seed,
-    size_t count,
-    float *x,
-    float *y);
 
 // One coordinate of sobolSample2D(index, seed), for one-dimensional
 // decisions: half the work.

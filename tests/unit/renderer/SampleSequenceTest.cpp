@@ -63,23 +63,6 @@ TEST(SampleSequence, SecondDimensionFollowsItsDirectionNumbers)
   }
 }
 
-TEST(SampleSequence, BatchesEqualSingleSamples)
-{
-  constexpr size_t kCount = 37; // not a multiple of any vector width
-  uint32_t index[kCount], seed[kCount];
-  float x[kCount], y[kCount];
-  for (size_t i = 0; i < kCount; i++) {
-    index[i] = uint32_t(i * i * 7919u);
-    seed[i] = mixBits(uint32_t(i) + 12345u);
-  }
-  sobolSamples2D(index, seed, kCount, x, y);
-  for (size_t i = 0; i < kCount; i++) {
-    const float2 single = sobolSample2D(index[i], seed[i]);
-    EXPECT_EQ(x[i], single.x) << i;
-    EXPECT_EQ(y[i], single.y) << i;
-  }
-}
-
 TEST(SampleSequence, EveryPowerOfTwoPrefixIsStratified)
 {
   for (uint32_t pixel = 0; pixel < 32; pixel++) {

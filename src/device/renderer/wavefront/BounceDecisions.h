@@ -1,8 +1,9 @@
 // The random numbers of one bounce's decisions for every ray of a
-// wavefront, drawn before any ray is shaded: stage by stage in arrays, so
-// the sequences are computed many rays at a time (sobolSamples2D) instead
-// of one decision of one ray at a time between shading steps. Each is
-// exactly the number the path would draw alone (docs/sampling.md).
+// wavefront, drawn before any ray is shaded, decision by decision into
+// arrays: the sequences are computed many rays at a time in vector
+// registers instead of one number at a time between shading steps. Each
+// is exactly the number the path would draw alone: sobolSample2D of its
+// sample index and streamSeed (docs/sampling.md).
 #pragma once
 
 #include "../../math/Vec.h"
@@ -59,7 +60,8 @@ class BounceDecisions
   static constexpr int kDecisions = 5;
   static_assert(kDecisions == int(kStreamsPerBounce));
 
-  std::vector<uint32_t> m_index, m_seed;
+  // Per ray: its path's sample index, seed and first stream of the bounce.
+  std::vector<uint32_t> m_index, m_seed, m_stream;
   std::vector<float> m_x[kDecisions], m_y[kDecisions];
 };
 
