@@ -75,8 +75,8 @@ class PathTracer : public Renderer
     float tMin{0.f};
     rt::Hit hit;
     bool found{false}; // a live surface was hit
-    SurfaceHit surface;
-    MaterialShading shading;
+    SurfaceHit &surface;
+    MaterialShading &shading;
   };
   // Where the BSDF sits: its frame (normal maps applied), the BSDF, the
   // direction towards the viewer and how far new rays start off.
@@ -96,7 +96,9 @@ class PathTracer : public Renderer
   Bounce resolveHit(const RenderContext &context,
       PathState &path,
       const rt::RayQueue &rays,
-      size_t r) const;
+      size_t r,
+      SurfaceHit &surface,
+      MaterialShading &shading) const;
   // Delta tracking through the volumes before the hit: true when the path
   // ended in one (having added its emission).
   bool collidesInVolume(const RenderContext &context, Bounce &b) const;
