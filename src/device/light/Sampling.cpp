@@ -1,5 +1,7 @@
 #include "Sampling.h"
 
+#include "math/Trig.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -45,8 +47,8 @@ float3 sampleCap(float2 u, float capHeight)
   const float h = u.x * capHeight;
   const float cosTheta = 1.f - h;
   const float sinTheta = std::sqrt(max(0.f, h * (2.f - h)));
-  const float phi = 2.f * kPi * u.y;
-  return {std::cos(phi) * sinTheta, std::sin(phi) * sinTheta, cosTheta};
+  const float2 cs = cosSinTurn(u.y);
+  return {cs.x * sinTheta, cs.y * sinTheta, cosTheta};
 }
 
 double sphericalTriangleArea(

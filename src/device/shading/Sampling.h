@@ -4,6 +4,7 @@
 // unit solid angle.
 #pragma once
 
+#include "math/Trig.h"
 #include "math/Vec.h"
 
 #include <cmath>
@@ -20,15 +21,13 @@ inline float2 sampleConcentricDisk(float2 u)
   const float b = 2.f * u.y - 1.f;
   if (a == 0.f && b == 0.f)
     return {0.f, 0.f};
-  float radius, angle;
   if (std::abs(a) > std::abs(b)) {
-    radius = a;
-    angle = kQuarterPi * (b / a);
-  } else {
-    radius = b;
-    angle = 2.f * kQuarterPi - kQuarterPi * (a / b);
+    const float2 cs = cosSinQuarter(kQuarterPi * (b / a));
+    return {a * cs.x, a * cs.y};
   }
-  return {radius * std::cos(angle), radius * std::sin(angle)};
+  // The angle is pi/2 - theta: cosine and sine swap.
+  const float2 cs = cosSinQuarter(kQuarterPi * (a / b));
+  return {b * cs.y, b * cs.x};
 }
 
 // Malley's method: project the disk up to the hemisphere; pdf cos(theta)/pi.
@@ -47,8 +46,8 @@ inline float3 sampleUniformHemisphere(float2 u)
 {
   const float z = u.x;
   const float r = std::sqrt(max(0.f, 1.f - z * z));
-  const float phi = 2.f * std::numbers::pi_v<float> * u.y;
-  return {r * std::cos(phi), r * std::sin(phi), z};
+  const float2 cs = cosSinTurn(u.y);
+  return {r * cs.x, r * cs.y, z};
 }
 inline float uniformHemispherePdf()
 {
@@ -59,8 +58,8 @@ inline float3 sampleUniformSphere(float2 u)
 {
   const float z = 1.f - 2.f * u.x;
   const float r = std::sqrt(max(0.f, 1.f - z * z));
-  const float phi = 2.f * std::numbers::pi_v<float> * u.y;
-  return {r * std::cos(phi), r * std::sin(phi), z};
+  const float2 cs = cosSinTurn(u.y);
+  return {r * cs.x, r * cs.y, z};
 }
 inline float uniformSpherePdf()
 {
@@ -74,8 +73,8 @@ inline float3 sampleUniformCone(float2 u, float cosThetaMax)
   const float oneMinusCos = u.x * (1.f - cosThetaMax);
   const float z = 1.f - oneMinusCos;
   const float r = std::sqrt(max(0.f, oneMinusCos * (2.f - oneMinusCos)));
-  const float phi = 2.f * std::numbers::pi_v<float> * u.y;
-  return {r * std::cos(phi), r * std::sin(phi), z};
+  const float2 cs = cosSinTurn(u.y);
+  return {r * cs.x, r * cs.y, z};
 }
 inline float uniformConePdf(float cosThetaMax)
 {
@@ -99,11 +98,11 @@ inline float3 sampleGgxVisibleNormal(
   const float3 t2 = cross(v, t1);
   // A disk point, squeezed onto the part of the disk that v can see.
   const float r = std::sqrt(u.x);
-  const float phi = 2.f * std::numbers::pi_v<float> * u.y;
-  const float p1 = r * std::cos(phi);
+  const float2 cs = cosSinTurn(u.y);
+  const float p1 = r * cs.x;
   const float s = 0.5f * (1.f + v.z);
   const float p2 =
-      (1.f - s) * std::sqrt(max(0.f, 1.f - p1 * p1)) + s * r * std::sin(phi);
+      (1.f - s) * std::sqrt(max(0.f, 1.f - p1 * p1)) + s * r * cs.y;
   const float p3 = std::sqrt(max(0.f, 1.f - p1 * p1 - p2 * p2));
   const float3 n = t1 * p1 + t2 * p2 + v * p3;
   return normalize(float3{alphaX * n.x, alphaY * n.y, max(0.f, n.z)});
