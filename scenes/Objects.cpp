@@ -1,5 +1,7 @@
 #include "Objects.h"
 
+#include "Partition.h"
+
 #include <cstdint>
 #include <cstring>
 
@@ -62,9 +64,19 @@ void setObjectArray(ANARIDevice device,
     ANARIDataType elementType,
     const std::vector<ANARIObject> &objects)
 {
+  // A data-parallel process keeps its share of surfaces and volumes.
+  std::vector<ANARIObject> kept;
+  const Partition share = partition();
+  const bool split =
+      elementType == ANARI_SURFACE || elementType == ANARI_VOLUME;
+  for (size_t i = 0; i < objects.size(); i++)
+    if (!split || share.keeps(i))
+      kept.push_back(objects[i]);
+  if (split && kept.empty() && !objects.empty())
+    return; // none of them is this process's
   // Object arrays hold references of their own; the handles are copied.
   ANARIArray1D array = newArray1D(
-      device, elementType, objects.data(), objects.size(), sizeof(ANARIObject));
+      device, elementType, kept.data(), kept.size(), sizeof(ANARIObject));
   anariSetParameter(device, object, name, ANARI_ARRAY1D, &array);
   anariRelease(device, array);
 }

@@ -56,7 +56,8 @@ void setArray(ANARIDevice device,
   anariRelease(device, array);
 }
 
-// An ARRAY1D of object handles of `elementType` (e.g. ANARI_SURFACE).
+// An ARRAY1D of object handles of `elementType` (e.g. ANARI_SURFACE); of
+// surfaces and volumes only this process's share (Partition.h).
 void setObjectArray(ANARIDevice device,
     ANARIObject object,
     const char *name,

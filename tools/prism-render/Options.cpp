@@ -285,6 +285,13 @@ std::vector<OptionSpec> optionSpecs()
             o.denoise = true;
             return {};
           }},
+      {nullptr,
+          "--mpi-partition",
+          false,
+          [](Options &o, const std::string &) -> std::string {
+            o.mpiPartition = true;
+            return {};
+          }},
       {"-l",
           "--library",
           true,
@@ -602,6 +609,11 @@ Rendering
                          libanari_library_NAME.so
       --trace FILE       record every ANARI call through the debug layer
                          into FILE (+ FILE.bin); anari-replay FILE replays it
+      --mpi-partition    with a data-parallel library (prism_mpi, under
+                         mpirun): each process keeps only its share of the
+                         scene's surfaces and volumes (round robin), so the
+                         processes render one scene split between them;
+                         lights are kept by every process
   -d, --device SUBTYPE   device subtype (default "default")
   -t, --threads N        limit the device to N threads (TBB-based devices
                          and devices with a numThreads parameter)

@@ -49,6 +49,9 @@ struct Options
 
   std::string depthPath, normalPath, albedoPath, idsPrefix;
   bool denoise{false};
+  // With a data-parallel device: build only this process's share of the
+  // scene's surfaces and volumes (scenes/Partition.h).
+  bool mpiPartition{false};
 
   std::string library{"prism"};
   // Records the run through the debug layer into this trace (empty: no trace).

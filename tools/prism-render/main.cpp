@@ -12,6 +12,7 @@
 #include "ObjLoader.h"
 #include "Objects.h"
 #include "Options.h"
+#include "ProcessShare.h"
 #include "Progress.h"
 #include "RawVolumeLoader.h"
 #include "RendererParameters.h"
@@ -400,6 +401,21 @@ int run(int argc, char **argv)
   // The scene. Device errors from here on (a file the loader passed but
   // the device refused, such as a NanoVDB tree it found corrupt) fail the
   // run: the image would be missing what the file holds.
+  if (options.mpiPartition) {
+    const std::optional<scenes::Partition> share =
+        has("ANARI_KHR_DATA_PARALLEL_MPI") ? processShare(device)
+                                           : std::nullopt;
+    if (share) {
+      scenes::setPartition(*share);
+      if (!options.quiet)
+        console::message("process " + std::to_string(share->part) + " of "
+                         + std::to_string(share->parts)
+                         + " builds its share of the scene");
+    } else
+      console::warning(
+          "--mpi-partition needs a data-parallel device (prism_mpi); the "
+          "whole scene is built");
+  }
   const int errorsBeforeLoad = session.status.errors.load();
   LoadResult loaded;
   const auto loadStart = std::chrono::steady_clock::now();
