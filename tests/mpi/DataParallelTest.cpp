@@ -409,6 +409,12 @@ size_t differingPixels(
 // communicator's rank 0 checks that the image is the single-process path
 // traced image of every box, shadows across processes included, and every
 // other process that it ended with the same pixels (the lockstep held).
+void checkPathTraced(const Render &traced,
+    const std::vector<int> &owners,
+    MPI_Comm communicator,
+    const std::string &label,
+    Lighting lighting);
+
 void pathTraceOn(MPI_Comm communicator, uint32_t seed, const std::string &label)
 {
   int rank = 0, ranks = 1;
@@ -434,6 +440,21 @@ void pathTraceOn(MPI_Comm communicator, uint32_t seed, const std::string &label)
   }
   for (const std::string &e : status.take())
     check(false, label + ": unexpected error: " + e);
+  checkPathTraced(traced, owners, communicator, label, kSunlit);
+}
+
+// Collective over `communicator`: `traced`, this process's render of its
+// share of `owners`' boxes, against the single-process render of all.
+void checkPathTraced(const Render &traced,
+    const std::vector<int> &owners,
+    MPI_Comm communicator,
+    const std::string &label,
+    Lighting lighting)
+{
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(communicator, &rank);
+  MPI_Comm_size(communicator, &ranks);
+  Status status;
   // What rank 0 holds, on every process.
   std::vector<float> color0 = traced.image.color;
   color0.resize(size_t(kTracedSize) * kTracedSize * 4);
@@ -454,7 +475,7 @@ void pathTraceOn(MPI_Comm communicator, uint32_t seed, const std::string &label)
       nullptr,
       kTracedSize,
       kTracedSize,
-      kSunlit);
+      lighting);
   const Image &got = traced.image, &want = whole.image;
   check(got.color.size() == want.color.size()
             && got.depth.size() == want.depth.size()
@@ -618,6 +639,37 @@ void scenarioMismatch()
             {"disagree", "size", "64x32 " + odder, "64x64 on rank"},
             true),
       "a size mismatch is reported naming the ranks");
+
+  // The same in pathtracer mode (the default) with the path tracer: a
+  // process that disagrees never enters the collectives of the bounces.
+  const Lighting oneSample{true, 1};
+  renderBoxes(mpi.device,
+      boxesOf(owners, rank),
+      kEyeA,
+      "pathtracer",
+      &comm,
+      kTracedSize,
+      rank == odd ? kTracedSize / 2 : kTracedSize,
+      oneSample);
+  check(oneErrorMentioning(status,
+            {"disagree", "size", "96x48 " + odder, "96x96 on rank"},
+            true),
+      "a size mismatch in pathtracer mode is reported naming the ranks");
+  const Render traced = renderBoxes(mpi.device,
+      boxesOf(owners, rank),
+      kEyeA,
+      "pathtracer",
+      &comm,
+      kTracedSize,
+      kTracedSize,
+      oneSample);
+  check(
+      status.take().empty(), "an agreeing path traced render reports nothing");
+  checkPathTraced(traced,
+      owners,
+      MPI_COMM_WORLD,
+      "path traced after a mismatch",
+      oneSample);
 
   renderBoxes(mpi.device,
       boxesOf(owners, rank),
