@@ -139,6 +139,22 @@ inline ANARIWorld newBoxesWorld(ANARIDevice device,
   return world;
 }
 
+// A directional light from above for `world`, so boxes shadow the ones
+// below them; commits the world.
+inline void addSunlight(ANARIDevice device, ANARIWorld world)
+{
+  ANARILight light = anariNewLight(device, "directional");
+  const float direction[3] = {-0.3f, -1.f, -0.5f};
+  anariSetParameter(device, light, "direction", ANARI_FLOAT32_VEC3, direction);
+  anariCommitParameters(device, light);
+  ANARIArray1D lights =
+      anariNewArray1D(device, &light, nullptr, nullptr, ANARI_LIGHT, 1);
+  anariSetParameter(device, world, "light", ANARI_ARRAY1D, &lights);
+  anariCommitParameters(device, world);
+  anariRelease(device, lights);
+  anariRelease(device, light);
+}
+
 // A camera looking at the grid's center from `eye`.
 inline ANARICamera newCamera(
     ANARIDevice device, const float eye[3], float aspect)

@@ -371,6 +371,17 @@ void DataParallelDevice::fingerprintWorld(
   d.worldVolumes = uint32_t(world.volumes().size());
 }
 
+uint32_t DataParallelDevice::declaredLights(const World &world)
+{
+  size_t emitters = 0;
+  for (uint32_t p = 0; p < world.placementCount(); p++) {
+    const Group &group = *world.placement(p).group;
+    for (uint32_t s = 0; s < group.surfaceCount(); s++)
+      emitters += world.emitterLight(p, s) >= 0 ? 1 : 0;
+  }
+  return uint32_t(world.lights().size() - emitters);
+}
+
 FrameDescriptor DataParallelDevice::describe(
     Frame *frame, const FrameState &state) const
 {
@@ -387,6 +398,9 @@ FrameDescriptor DataParallelDevice::describe(
     d.channelTypes[c] = frame->channelType(kChannelNames[c]);
   if (m_mode == RenderMode::Replicated && frame->world())
     fingerprintWorld(*frame->world(), d);
+  if (m_mode == RenderMode::PathTracer && frame->world()
+      && dynamic_cast<const PathTracer *>(frame->renderer()))
+    d.declaredLights = declaredLights(*frame->world());
   if (const Renderer *renderer = frame->renderer()) {
     const std::string &subtype = renderer->subtype();
     std::memcpy(d.renderer,

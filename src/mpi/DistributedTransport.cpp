@@ -189,6 +189,7 @@ void DistributedTransport::shareBounce(std::vector<PathState> &paths,
       3,
       MPI_UINT32_T,
       m_communicator);
+  m_bytesSent += sizeof(counts) * (ranks - 1);
   std::vector<int> sizes(ranks), offsets(ranks);
   size_t total = 0;
   for (int rank = 0; rank < m_ranks; rank++) {

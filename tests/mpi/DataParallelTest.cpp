@@ -125,20 +125,6 @@ struct Lighting
   int samples{1};
 };
 
-void addSunlight(ANARIDevice device, ANARIWorld world)
-{
-  ANARILight light = anariNewLight(device, "directional");
-  const float direction[3] = {-0.3f, -1.f, -0.5f};
-  anariSetParameter(device, light, "direction", ANARI_FLOAT32_VEC3, direction);
-  anariCommitParameters(device, light);
-  ANARIArray1D lights =
-      anariNewArray1D(device, &light, nullptr, nullptr, ANARI_LIGHT, 1);
-  anariSetParameter(device, world, "light", ANARI_ARRAY1D, &lights);
-  anariCommitParameters(device, world);
-  anariRelease(device, lights);
-  anariRelease(device, light);
-}
-
 Render renderBoxes(ANARIDevice device,
     const std::vector<int> &boxes,
     const float eye[3],
@@ -655,6 +641,22 @@ void scenarioMismatch()
             {"disagree", "size", "96x48 " + odder, "96x96 on rank"},
             true),
       "a size mismatch in pathtracer mode is reported naming the ranks");
+  // Any process may shade any path, so all must hold the same lights.
+  renderBoxes(mpi.device,
+      boxesOf(owners, rank),
+      kEyeA,
+      "pathtracer",
+      &comm,
+      kTracedSize,
+      kTracedSize,
+      Lighting{rank != odd, 1});
+  check(oneErrorMentioning(status,
+            {"disagree",
+                "lights (pathtracer mode needs the same on every process)",
+                "0 " + odder,
+                "1 on rank"},
+            true),
+      "lights that differ in pathtracer mode are reported");
   const Render traced = renderBoxes(mpi.device,
       boxesOf(owners, rank),
       kEyeA,
