@@ -362,6 +362,56 @@ void compositeOn(MPI_Comm communicator,
 constexpr uint32_t kTracedSize = 96;
 constexpr Lighting kSunlit{true, 4};
 
+// Path traces `boxes` from kEyeA, kTracedSize pixels wide and `height` high.
+Render traceBoxes(ANARIDevice device,
+    const std::vector<int> &boxes,
+    MPI_Comm *communicator,
+    Lighting lighting,
+    uint32_t height = kTracedSize)
+{
+  return renderBoxes(device,
+      boxes,
+      kEyeA,
+      "pathtracer",
+      communicator,
+      kTracedSize,
+      height,
+      lighting);
+}
+
+// The prism device's single-process path traced image of every box.
+Render traceWhole(const std::vector<int> &owners, Lighting lighting)
+{
+  Status status;
+  Device prism("prism", status);
+  return traceBoxes(prism.device, boxesOf(owners, -1), nullptr, lighting);
+}
+
+// This process's share of `owners`' boxes path traced by prism_mpi on
+// `communicator` (in `mode`, or the default), errors reported as failures.
+Render traceShare(MPI_Comm communicator,
+    const std::vector<int> &owners,
+    const char *mode,
+    const std::string &label)
+{
+  int rank = 0;
+  MPI_Comm_rank(communicator, &rank);
+  Status status;
+  Render traced;
+  {
+    Device mpi("prism_mpi", status);
+    if (!mpi.device)
+      return traced;
+    if (mode)
+      anariSetParameter(mpi.device, mpi.device, "mode", ANARI_STRING, mode);
+    MPI_Comm comm = communicator;
+    traced = traceBoxes(mpi.device, boxesOf(owners, rank), &comm, kSunlit);
+  }
+  for (const std::string &e : status.take())
+    check(false, label + ": unexpected error: " + e);
+  return traced;
+}
+
 // Peak signal to noise ratio of b's RGB against a's (peak 1); infinite
 // when they are equal.
 double psnr(const std::vector<float> &a, const std::vector<float> &b)
@@ -403,29 +453,10 @@ void checkPathTraced(const Render &traced,
 
 void pathTraceOn(MPI_Comm communicator, uint32_t seed, const std::string &label)
 {
-  int rank = 0, ranks = 1;
-  MPI_Comm_rank(communicator, &rank);
+  int ranks = 1;
   MPI_Comm_size(communicator, &ranks);
   const std::vector<int> owners = boxOwners(ranks, seed);
-  Status status;
-  Render traced;
-  {
-    Device mpi("prism_mpi", status);
-    if (!mpi.device)
-      return;
-    // The default mode.
-    MPI_Comm comm = communicator;
-    traced = renderBoxes(mpi.device,
-        boxesOf(owners, rank),
-        kEyeA,
-        "pathtracer",
-        &comm,
-        kTracedSize,
-        kTracedSize,
-        kSunlit);
-  }
-  for (const std::string &e : status.take())
-    check(false, label + ": unexpected error: " + e);
+  const Render traced = traceShare(communicator, owners, nullptr, label);
   checkPathTraced(traced, owners, communicator, label, kSunlit);
 }
 
@@ -440,7 +471,6 @@ void checkPathTraced(const Render &traced,
   int rank = 0, ranks = 1;
   MPI_Comm_rank(communicator, &rank);
   MPI_Comm_size(communicator, &ranks);
-  Status status;
   // What rank 0 holds, on every process.
   std::vector<float> color0 = traced.image.color;
   color0.resize(size_t(kTracedSize) * kTracedSize * 4);
@@ -453,15 +483,7 @@ void checkPathTraced(const Render &traced,
     check(traced.bytesSent == 0, label + ": one process sends nothing");
   if (rank != 0)
     return;
-  Device prism("prism", status);
-  const Render whole = renderBoxes(prism.device,
-      boxesOf(owners, -1),
-      kEyeA,
-      "pathtracer",
-      nullptr,
-      kTracedSize,
-      kTracedSize,
-      lighting);
+  const Render whole = traceWhole(owners, lighting);
   const Image &got = traced.image, &want = whole.image;
   check(got.color.size() == want.color.size()
             && got.depth.size() == want.depth.size()
@@ -499,37 +521,11 @@ void compositeShadows(uint32_t seed)
 {
   const auto [rank, ranks] = worldRankAndSize();
   const std::vector<int> owners = boxOwners(ranks, seed);
-  Status status;
-  Render composited;
-  {
-    Device mpi("prism_mpi", status);
-    if (!mpi.device)
-      return;
-    anariSetParameter(
-        mpi.device, mpi.device, "mode", ANARI_STRING, "composite");
-    MPI_Comm comm = MPI_COMM_WORLD;
-    composited = renderBoxes(mpi.device,
-        boxesOf(owners, rank),
-        kEyeA,
-        "pathtracer",
-        &comm,
-        kTracedSize,
-        kTracedSize,
-        kSunlit);
-  }
-  for (const std::string &e : status.take())
-    check(false, "composite shadows: unexpected error: " + e);
+  const Render composited =
+      traceShare(MPI_COMM_WORLD, owners, "composite", "composite shadows");
   if (rank != 0)
     return;
-  Device prism("prism", status);
-  const Render whole = renderBoxes(prism.device,
-      boxesOf(owners, -1),
-      kEyeA,
-      "pathtracer",
-      nullptr,
-      kTracedSize,
-      kTracedSize,
-      kSunlit);
+  const Render whole = traceWhole(owners, kSunlit);
   const Image &got = composited.image, &want = whole.image;
   check(got.depth.size() == want.depth.size()
             && got.color.size() == want.color.size() && !want.depth.empty(),
@@ -568,15 +564,26 @@ void scenarioPathTracer()
   compositeShadows(7);
 }
 
-void scenarioPathTracerSubcommunicator()
+// Runs `scenario(communicator, half)` on the even and the odd ranks of
+// MPI_COMM_WORLD at once, each half on a communicator of its own.
+template <typename Scenario>
+void onHalves(Scenario scenario)
 {
-  const auto [rank, ranks] = worldRankAndSize();
+  const int rank = worldRankAndSize().first;
   MPI_Comm group;
   MPI_Comm_split(MPI_COMM_WORLD, rank % 2, rank, &group);
-  pathTraceOn(group,
-      21 + uint32_t(rank % 2),
-      "pathtracer subcommunicator group " + std::to_string(rank % 2));
+  scenario(group, uint32_t(rank % 2));
   MPI_Comm_free(&group);
+}
+
+// Two groups of processes path trace different interleavings at once.
+void scenarioPathTracerSubcommunicator()
+{
+  onHalves([](MPI_Comm group, uint32_t half) {
+    pathTraceOn(group,
+        21 + half,
+        "pathtracer subcommunicator group " + std::to_string(half));
+  });
 }
 
 void scenarioComposite()
@@ -591,13 +598,10 @@ void scenarioComposite()
 // communicator.
 void scenarioSubcommunicator()
 {
-  const auto [rank, ranks] = worldRankAndSize();
-  MPI_Comm group;
-  MPI_Comm_split(MPI_COMM_WORLD, rank % 2, rank, &group);
-  compositeOn(group,
-      11 + uint32_t(rank % 2),
-      "subcommunicator group " + std::to_string(rank % 2));
-  MPI_Comm_free(&group);
+  onHalves([](MPI_Comm group, uint32_t half) {
+    compositeOn(
+        group, 11 + half, "subcommunicator group " + std::to_string(half));
+  });
 }
 
 // Disagreements are errors on every process, naming the ranks, and the
@@ -629,27 +633,18 @@ void scenarioMismatch()
   // The same in pathtracer mode (the default) with the path tracer: a
   // process that disagrees never enters the collectives of the bounces.
   const Lighting oneSample{true, 1};
-  renderBoxes(mpi.device,
+  traceBoxes(mpi.device,
       boxesOf(owners, rank),
-      kEyeA,
-      "pathtracer",
       &comm,
-      kTracedSize,
-      rank == odd ? kTracedSize / 2 : kTracedSize,
-      oneSample);
+      oneSample,
+      rank == odd ? kTracedSize / 2 : kTracedSize);
   check(oneErrorMentioning(status,
             {"disagree", "size", "96x48 " + odder, "96x96 on rank"},
             true),
       "a size mismatch in pathtracer mode is reported naming the ranks");
   // Any process may shade any path, so all must hold the same lights.
-  renderBoxes(mpi.device,
-      boxesOf(owners, rank),
-      kEyeA,
-      "pathtracer",
-      &comm,
-      kTracedSize,
-      kTracedSize,
-      Lighting{rank != odd, 1});
+  traceBoxes(
+      mpi.device, boxesOf(owners, rank), &comm, Lighting{rank != odd, 1});
   check(oneErrorMentioning(status,
             {"disagree",
                 "lights (pathtracer mode needs the same on every process)",
@@ -657,14 +652,8 @@ void scenarioMismatch()
                 "1 on rank"},
             true),
       "lights that differ in pathtracer mode are reported");
-  const Render traced = renderBoxes(mpi.device,
-      boxesOf(owners, rank),
-      kEyeA,
-      "pathtracer",
-      &comm,
-      kTracedSize,
-      kTracedSize,
-      oneSample);
+  const Render traced =
+      traceBoxes(mpi.device, boxesOf(owners, rank), &comm, oneSample);
   check(
       status.take().empty(), "an agreeing path traced render reports nothing");
   checkPathTraced(traced,
