@@ -1,9 +1,11 @@
 // prism-bench-mpi: frame times of the prism_mpi device under mpirun, for
 // strong scaling (one box grid split over the processes) and weak scaling
-// (each process adds a grid of its own), in composite or replicated mode.
-// Prints one line on rank 0; never part of the test suite.
+// (each process adds a grid of its own), in pathtracer, composite or
+// replicated mode. The path tracer's boxes are lit by a directional light,
+// the same on every process. Prints one line on rank 0; never part of the
+// test suite.
 //
-//   mpirun -np N prism-bench-mpi [--mode composite|replicated]
+//   mpirun -np N prism-bench-mpi [--mode pathtracer|composite|replicated]
 //       [--scaling strong|weak] [--renderer raycast|pathtracer]
 //       [--size PIXELS] [--side BOXES] [--frames N] [--threads N]
 #include "BoxGrid.h"
@@ -84,14 +86,14 @@ int main(int argc, char **argv)
   const int32_t threads = o.threads;
   anariSetParameter(device, device, "numThreads", ANARI_INT32, &threads);
 
-  // Strong: one grid, split over the processes (composite) or whole on
-  // every one (replicated). Weak (composite only, where each process's data
-  // is its own): a whole grid per process, side by side along x.
+  // Strong: one grid, split over the processes (composite, pathtracer) or
+  // whole on every one (replicated). Weak (where each process's data is its
+  // own, not replicated): a whole grid per process, side by side along x.
   const bool weak = o.scaling == "weak";
   const bool replicated = o.mode == "replicated";
   if (weak && replicated) {
     if (rank == 0)
-      std::fprintf(stderr, "weak scaling applies to composite mode only\n");
+      std::fprintf(stderr, "weak scaling does not apply to replicated mode\n");
     MPI_Finalize();
     return 2;
   }
@@ -102,6 +104,8 @@ int main(int argc, char **argv)
   const float offset =
       weak ? float(rank * o.side) - float((grids - 1) * o.side) / 2.f : 0.f;
   ANARIWorld world = newBoxesWorld(device, boxes, o.side, offset);
+  if (o.renderer == "pathtracer")
+    addSunlight(device, world);
   MPI_Comm comm = MPI_COMM_WORLD;
   anariSetParameter(
       device, world, "mpiCommunicator", ANARI_VOID_POINTER, &comm);

@@ -51,6 +51,20 @@ inline std::vector<int> boxesOf(const std::vector<int> &owners, int process)
   return boxes;
 }
 
+// Sets `world`'s array parameter `name` to the one `object` and commits.
+inline void setWorldObjects(ANARIDevice device,
+    ANARIWorld world,
+    const char *name,
+    ANARIDataType type,
+    ANARIObject object)
+{
+  ANARIArray1D array =
+      anariNewArray1D(device, &object, nullptr, nullptr, type, 1);
+  anariSetParameter(device, world, name, ANARI_ARRAY1D, &array);
+  anariCommitParameters(device, world);
+  anariRelease(device, array);
+}
+
 // One triangle geometry holding `boxes` of a side^3 grid (unit spacing,
 // centered on x = `offsetX`, y = z = 0), each with its own color (a
 // primitive attribute), in a surface with a matte material reading it.
@@ -128,15 +142,23 @@ inline ANARIWorld newBoxesWorld(ANARIDevice device,
   anariSetParameter(device, surface, "geometry", ANARI_GEOMETRY, &geometry);
   anariSetParameter(device, surface, "material", ANARI_MATERIAL, &material);
   anariCommitParameters(device, surface);
-  ANARIArray1D surfaces =
-      anariNewArray1D(device, &surface, nullptr, nullptr, ANARI_SURFACE, 1);
-  anariSetParameter(device, world, "surface", ANARI_ARRAY1D, &surfaces);
-  anariCommitParameters(device, world);
-  anariRelease(device, surfaces);
+  setWorldObjects(device, world, "surface", ANARI_SURFACE, surface);
   anariRelease(device, surface);
   anariRelease(device, material);
   anariRelease(device, geometry);
   return world;
+}
+
+// A directional light from above for `world`, so boxes shadow the ones
+// below them; commits the world.
+inline void addSunlight(ANARIDevice device, ANARIWorld world)
+{
+  ANARILight light = anariNewLight(device, "directional");
+  const float direction[3] = {-0.3f, -1.f, -0.5f};
+  anariSetParameter(device, light, "direction", ANARI_FLOAT32_VEC3, direction);
+  anariCommitParameters(device, light);
+  setWorldObjects(device, world, "light", ANARI_LIGHT, light);
+  anariRelease(device, light);
 }
 
 // A camera looking at the grid's center from `eye`.

@@ -1,12 +1,14 @@
 #include "DataParallelDevice.h"
 
 #include "DepthCompositor.h"
+#include "DistributedTransport.h"
 #include "PoliteWait.h"
 #include "TileRowGather.h"
 
 #include "frame/Frame.h"
 #include "frame/PixelFormat.h"
 #include "geometry/Geometry.h"
+#include "renderer/PathTracer.h"
 #include "renderer/Renderer.h"
 #include "world/Group.h"
 #include "world/Surface.h"
@@ -62,7 +64,7 @@ void DataParallelDevice::setMode(ANARIDataType type, const void *mem)
                         : std::nullopt;
   if (!mode) {
     std::string message =
-        "device: parameter 'mode' must be the STRING"
+        "device: parameter 'mode' must be the STRING 'pathtracer',"
         " 'composite' or 'replicated' (got ";
     if (type == ANARI_STRING && mem)
       message.append("'").append((const char *)mem).append("'");
@@ -369,6 +371,17 @@ void DataParallelDevice::fingerprintWorld(
   d.worldVolumes = uint32_t(world.volumes().size());
 }
 
+uint32_t DataParallelDevice::declaredLights(const World &world)
+{
+  size_t emitters = 0;
+  for (uint32_t p = 0; p < world.placementCount(); p++) {
+    const Group &group = *world.placement(p).group;
+    for (uint32_t s = 0; s < group.surfaceCount(); s++)
+      emitters += world.emitterLight(p, s) >= 0 ? 1 : 0;
+  }
+  return uint32_t(world.lights().size() - emitters);
+}
+
 FrameDescriptor DataParallelDevice::describe(
     Frame *frame, const FrameState &state) const
 {
@@ -385,6 +398,9 @@ FrameDescriptor DataParallelDevice::describe(
     d.channelTypes[c] = frame->channelType(kChannelNames[c]);
   if (m_mode == RenderMode::Replicated && frame->world())
     fingerprintWorld(*frame->world(), d);
+  if (m_mode == RenderMode::PathTracer && frame->world()
+      && dynamic_cast<const PathTracer *>(frame->renderer()))
+    d.declaredLights = declaredLights(*frame->world());
   if (const Renderer *renderer = frame->renderer()) {
     const std::string &subtype = renderer->subtype();
     std::memcpy(d.renderer,
@@ -448,10 +464,13 @@ try {
         "anariRenderFrame: the renderer's 'denoise' is not applied to the"
         " image rank 0 assembles from several processes");
   }
-  if (m_mode == RenderMode::Composite)
-    renderComposited(handle, *frame, *state, communicator);
-  else
+  if (m_mode == RenderMode::Replicated)
     renderReplicated(handle, *frame, *state, communicator);
+  else if (m_mode == RenderMode::PathTracer
+           && tracesPathsAcross(handle, *frame))
+    renderPathTraced(handle, *frame, *state, communicator);
+  else
+    renderComposited(handle, *frame, *state, communicator);
 } catch (const std::exception &e) {
   reportStatus(handle,
       ANARI_FRAME,
@@ -471,6 +490,7 @@ void DataParallelDevice::renderComposited(
 {
   frame.shareTileRows(0, 1);
   frame.keepDepth(true);
+  frame.renderInLockstep(false);
   Device::renderFrame(handle);
   const FrameBuffers &local = frame.linearPixels();
   politeBarrier(communicator);
@@ -525,6 +545,7 @@ void DataParallelDevice::renderReplicated(
   uint64_t bytesSent = 0;
   frame.shareTileRows(uint32_t(rank), uint32_t(ranks));
   frame.keepDepth(false);
+  frame.renderInLockstep(false);
   Device::renderFrame(handle);
   frame.ready(ANARI_WAIT);
   politeBarrier(communicator);
@@ -558,6 +579,74 @@ void DataParallelDevice::renderReplicated(
   }
   std::lock_guard lock(m_stateMutex);
   state.assembled = std::move(assembled);
+  state.bytesSent = bytesSent;
+}
+
+std::unique_ptr<RayTransport> DataParallelDevice::transportFor(
+    const World &world)
+{
+  std::lock_guard lock(m_stateMutex);
+  if (m_pathTracing) {
+    return std::make_unique<DistributedTransport>(
+        world, m_pathTracing->communicator, *m_pathTracing->bytesSent);
+  }
+  return Device::transportFor(world);
+}
+
+bool DataParallelDevice::tracesPathsAcross(
+    ANARIFrame handle, const Frame &frame)
+{
+  // Only the path tracer shades through its transport; other renderers
+  // see their own process's world and are composited. Every process runs
+  // the same renderer subtype (the meeting checked), so all decide alike.
+  if (!dynamic_cast<const PathTracer *>(frame.renderer()))
+    return false;
+  // The frame renders on the device's render thread while the calling
+  // thread waits: MPI must allow calls from any one thread at a time. The
+  // level is the same on every process of an mpirun, so all decide alike.
+  int level = MPI_THREAD_SINGLE;
+  MPI_Query_thread(&level);
+  if (level >= MPI_THREAD_SERIALIZED)
+    return true;
+  if (!m_threadLevelWarned) {
+    m_threadLevelWarned = true;
+    reportStatus(handle,
+        ANARI_FRAME,
+        ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_OPERATION,
+        "anariRenderFrame: 'pathtracer' mode needs MPI initialised with"
+        " MPI_THREAD_SERIALIZED or more; the frame is composited instead");
+  }
+  return false;
+}
+
+void DataParallelDevice::renderPathTraced(
+    ANARIFrame handle, Frame &frame, FrameState &state, MPI_Comm communicator)
+{
+  // Every process renders every pixel: the paths, replicated, advance in
+  // lockstep and end the same everywhere, so rank 0's own buffers are the
+  // image.
+  frame.shareTileRows(0, 1);
+  frame.keepDepth(false);
+  frame.renderInLockstep(true);
+  uint64_t bytesSent = 0;
+  {
+    std::lock_guard lock(m_stateMutex);
+    m_pathTracing = PathTracing{communicator, &bytesSent};
+  }
+  // Later frames trace locally, even when this render throws.
+  struct EndPathTracing
+  {
+    DataParallelDevice &device;
+    ~EndPathTracing()
+    {
+      std::lock_guard lock(device.m_stateMutex);
+      device.m_pathTracing.reset();
+    }
+  } end{*this};
+  Device::renderFrame(handle);
+  frame.ready(ANARI_WAIT);
+  std::lock_guard lock(m_stateMutex);
   state.bytesSent = bytesSent;
 }
 

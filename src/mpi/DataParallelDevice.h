@@ -14,7 +14,9 @@
 #include <mpi.h>
 
 #include <map>
+#include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,6 +55,7 @@ class DataParallelDevice : public prism::Device
       uint32_t *height,
       ANARIDataType *pixelType) override;
   void renderFrame(ANARIFrame frame) override;
+  std::unique_ptr<RayTransport> transportFor(const World &world) override;
 
  private:
   // The `mpiCommunicator` parameter of a frame or world: the MPI_Comm read
@@ -89,11 +92,21 @@ class DataParallelDevice : public prism::Device
   FrameDescriptor describe(Frame *frame, const FrameState &state) const;
   // Replicated mode: what must be the same in every process's world.
   static void fingerprintWorld(const World &world, FrameDescriptor &d);
+  // The lights `world` declares, not counting its emissive surfaces.
+  static uint32_t declaredLights(const World &world);
   void renderComposited(ANARIFrame handle,
       Frame &frame,
       FrameState &state,
       MPI_Comm communicator);
   void renderReplicated(ANARIFrame handle,
+      Frame &frame,
+      FrameState &state,
+      MPI_Comm communicator);
+  // Whether `pathtracer` mode can trace this frame's paths across the
+  // processes (the path tracer, and MPI callable from the render thread);
+  // other renderers are composited.
+  bool tracesPathsAcross(ANARIFrame handle, const Frame &frame);
+  void renderPathTraced(ANARIFrame handle,
       Frame &frame,
       FrameState &state,
       MPI_Comm communicator);
@@ -109,7 +122,16 @@ class DataParallelDevice : public prism::Device
 
   MpiSession m_session;
   Rendezvous m_rendezvous; // before m_session ends MPI
-  RenderMode m_mode{RenderMode::Composite};
+  RenderMode m_mode{RenderMode::PathTracer};
+  // During a `pathtracer` render: its communicator and byte count, for the
+  // transport the frame asks for (guarded by m_stateMutex).
+  struct PathTracing
+  {
+    MPI_Comm communicator;
+    uint64_t *bytesSent;
+  };
+  std::optional<PathTracing> m_pathTracing;
+  bool m_threadLevelWarned{false};
   double m_timeoutSeconds{0.0}; // <= 0: wait for every process forever
   uint64_t m_framesCreated{0};
   std::mutex m_stateMutex; // guards the maps below

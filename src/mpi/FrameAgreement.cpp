@@ -129,6 +129,12 @@ std::string describeDisagreement(const std::vector<FrameDescriptor> &all)
         return std::string(text);
       },
       [](const std::string &v) { return v; });
+  listDifferences(
+      message,
+      "lights (pathtracer mode needs the same on every process)",
+      all,
+      [](const FrameDescriptor &d) { return d.declaredLights; },
+      number);
   return message;
 }
 

@@ -40,6 +40,10 @@ struct FrameDescriptor
   uint64_t worldPrimitives{0};
   uint32_t worldLights{0};
   uint32_t worldVolumes{0};
+  // How many lights the world declares (emissive surfaces aside), set only
+  // when paths are traced across the processes (pathtracer mode): any
+  // process may shade a path, so all must sample the same lights.
+  uint32_t declaredLights{0};
 };
 
 // Empty when every descriptor (one per rank, in rank order) is the same,

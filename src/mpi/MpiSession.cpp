@@ -16,8 +16,9 @@ MpiSession::MpiSession()
     return;
   }
   if (!initialized) {
-    // Every MPI call of the device happens on the thread calling the ANARI
-    // API, one at a time.
+    // The device's MPI calls come one at a time: from the thread calling
+    // the ANARI API, or (pathtracer mode) its render thread while that
+    // thread waits.
     int provided = 0;
     if (MPI_Init_thread(nullptr, nullptr, MPI_THREAD_SERIALIZED, &provided)
         != MPI_SUCCESS) {

@@ -9,6 +9,9 @@
 namespace prism::mpi {
 
 enum class RenderMode : uint32_t {
+  // True data-parallel path tracing: every ray meets every process's part
+  // of the world; the process owning a hit shades it (the default).
+  PathTracer,
   // Each process renders its own part of the world; depth-sorted
   // compositing of their pixels (visibility exact, shading local).
   Composite,
@@ -19,6 +22,8 @@ enum class RenderMode : uint32_t {
 // nullopt for names that are not a mode this device implements.
 inline std::optional<RenderMode> parseRenderMode(const std::string &name)
 {
+  if (name == "pathtracer")
+    return RenderMode::PathTracer;
   if (name == "composite")
     return RenderMode::Composite;
   if (name == "replicated")
@@ -28,7 +33,15 @@ inline std::optional<RenderMode> parseRenderMode(const std::string &name)
 
 inline const char *toString(RenderMode mode)
 {
-  return mode == RenderMode::Composite ? "composite" : "replicated";
+  switch (mode) {
+  case RenderMode::PathTracer:
+    return "pathtracer";
+  case RenderMode::Composite:
+    return "composite";
+  case RenderMode::Replicated:
+    break;
+  }
+  return "replicated";
 }
 
 } // namespace prism::mpi

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -115,16 +116,28 @@ struct Render
   uint64_t bytesSent{0}; // the frame's mpiBytesSent (prism_mpi only)
 };
 
+// How renderBoxes lights and accumulates: unlit single samples by
+// default; `lit` adds a directional light from above, the same on every
+// process, so upper boxes shadow lower ones (often another process's).
+struct Lighting
+{
+  bool lit{false};
+  int samples{1};
+};
+
 Render renderBoxes(ANARIDevice device,
     const std::vector<int> &boxes,
     const float eye[3],
     const char *rendererSubtype,
     MPI_Comm *communicator,
     uint32_t width = kSize,
-    uint32_t height = kSize)
+    uint32_t height = kSize,
+    Lighting lighting = {})
 {
   Render result;
   ANARIWorld world = newBoxesWorld(device, boxes);
+  if (lighting.lit)
+    addSunlight(device, world);
   if (communicator) {
     anariSetParameter(
         device, world, "mpiCommunicator", ANARI_VOID_POINTER, communicator);
@@ -138,8 +151,15 @@ Render renderBoxes(ANARIDevice device,
         device, frame, "mpiCommunicator", ANARI_VOID_POINTER, communicator);
     anariCommitParameters(device, frame);
   }
-  anariRenderFrame(device, frame);
-  anariFrameReady(device, frame, ANARI_WAIT);
+  if (lighting.samples > 1) {
+    const bool accumulate = true;
+    anariSetParameter(device, frame, "accumulation", ANARI_BOOL, &accumulate);
+    anariCommitParameters(device, frame);
+  }
+  for (int sample = 0; sample < lighting.samples; sample++) {
+    anariRenderFrame(device, frame);
+    anariFrameReady(device, frame, ANARI_WAIT);
+  }
   result.image = readFrame(device, frame);
   result.boundsFound = anariGetProperty(device,
       world,
@@ -338,6 +358,234 @@ void compositeOn(MPI_Comm communicator,
     check(false, label + ": unexpected error: " + e);
 }
 
+// Path traced boxes: small, lit, a few accumulated samples.
+constexpr uint32_t kTracedSize = 96;
+constexpr Lighting kSunlit{true, 4};
+
+// Path traces `boxes` from kEyeA, kTracedSize pixels wide and `height` high.
+Render traceBoxes(ANARIDevice device,
+    const std::vector<int> &boxes,
+    MPI_Comm *communicator,
+    Lighting lighting,
+    uint32_t height = kTracedSize)
+{
+  return renderBoxes(device,
+      boxes,
+      kEyeA,
+      "pathtracer",
+      communicator,
+      kTracedSize,
+      height,
+      lighting);
+}
+
+// The prism device's single-process path traced image of every box.
+Render traceWhole(const std::vector<int> &owners, Lighting lighting)
+{
+  Status status;
+  Device prism("prism", status);
+  return traceBoxes(prism.device, boxesOf(owners, -1), nullptr, lighting);
+}
+
+// This process's share of `owners`' boxes path traced by prism_mpi on
+// `communicator` (in `mode`, or the default), errors reported as failures.
+Render traceShare(MPI_Comm communicator,
+    const std::vector<int> &owners,
+    const char *mode,
+    const std::string &label)
+{
+  int rank = 0;
+  MPI_Comm_rank(communicator, &rank);
+  Status status;
+  Render traced;
+  {
+    Device mpi("prism_mpi", status);
+    if (!mpi.device)
+      return traced;
+    if (mode)
+      anariSetParameter(mpi.device, mpi.device, "mode", ANARI_STRING, mode);
+    MPI_Comm comm = communicator;
+    traced = traceBoxes(mpi.device, boxesOf(owners, rank), &comm, kSunlit);
+  }
+  for (const std::string &e : status.take())
+    check(false, label + ": unexpected error: " + e);
+  return traced;
+}
+
+// Peak signal to noise ratio of b's RGB against a's (peak 1); infinite
+// when they are equal.
+double psnr(const std::vector<float> &a, const std::vector<float> &b)
+{
+  double squared = 0.0;
+  size_t count = 0;
+  for (size_t i = 0; i < a.size() && i < b.size(); i++) {
+    if (i % 4 == 3)
+      continue; // alpha
+    const double d = double(a[i]) - double(b[i]);
+    squared += d * d;
+    count++;
+  }
+  if (squared == 0.0)
+    return std::numeric_limits<double>::infinity();
+  return 10.0 * std::log10(double(count) / squared);
+}
+
+size_t differingPixels(
+    const std::vector<float> &a, const std::vector<float> &b, size_t components)
+{
+  size_t differing = 0;
+  for (size_t i = 0; i + components <= a.size() && i < b.size();
+       i += components)
+    differing +=
+        std::memcmp(&a[i], &b[i], components * sizeof(float)) != 0 ? 1 : 0;
+  return differing;
+}
+
+// Every process traces its share of the lit boxes on `communicator`; the
+// communicator's rank 0 checks that the image is the single-process path
+// traced image of every box, shadows across processes included, and every
+// other process that it ended with the same pixels (the lockstep held).
+void checkPathTraced(const Render &traced,
+    const std::vector<int> &owners,
+    MPI_Comm communicator,
+    const std::string &label,
+    Lighting lighting);
+
+void pathTraceOn(MPI_Comm communicator, uint32_t seed, const std::string &label)
+{
+  int ranks = 1;
+  MPI_Comm_size(communicator, &ranks);
+  const std::vector<int> owners = boxOwners(ranks, seed);
+  const Render traced = traceShare(communicator, owners, nullptr, label);
+  checkPathTraced(traced, owners, communicator, label, kSunlit);
+}
+
+// Collective over `communicator`: `traced`, this process's render of its
+// share of `owners`' boxes, against the single-process render of all.
+void checkPathTraced(const Render &traced,
+    const std::vector<int> &owners,
+    MPI_Comm communicator,
+    const std::string &label,
+    Lighting lighting)
+{
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(communicator, &rank);
+  MPI_Comm_size(communicator, &ranks);
+  // What rank 0 holds, on every process.
+  std::vector<float> color0 = traced.image.color;
+  color0.resize(size_t(kTracedSize) * kTracedSize * 4);
+  MPI_Bcast(color0.data(), int(color0.size()), MPI_FLOAT, 0, communicator);
+  check(traced.image.color == color0,
+      label + ": this process ends with rank 0's pixels");
+  if (ranks > 1)
+    check(traced.bytesSent > 0, label + ": mpiBytesSent counts the exchanges");
+  else
+    check(traced.bytesSent == 0, label + ": one process sends nothing");
+  if (rank != 0)
+    return;
+  const Render whole = traceWhole(owners, lighting);
+  const Image &got = traced.image, &want = whole.image;
+  check(got.color.size() == want.color.size()
+            && got.depth.size() == want.depth.size()
+            && want.depth.size() == size_t(kTracedSize) * kTracedSize,
+      label + ": rank 0 maps color and depth of the frame's size");
+  if (g_failures)
+    return;
+  const size_t hits = countHits(want);
+  check(hits > want.depth.size() / 4 && hits < want.depth.size(),
+      label + ": the view shows boxes and background");
+  const double quality = psnr(want.color, got.color);
+  const size_t colorDiffers = differingPixels(want.color, got.color, 4);
+  std::printf(
+      "%s: %zu of %zu pixels differ from the single-process image,"
+      " PSNR %.2f dB\n",
+      label.c_str(),
+      colorDiffers,
+      want.depth.size(),
+      quality);
+  check(quality >= 40.0,
+      label + ": color within 40 dB of the single-process image (got "
+          + std::to_string(quality) + " dB)");
+  check(differingPixels(want.depth, got.depth, 1) == 0,
+      label + ": depth equals the single-process depth");
+  check(differingPixels(want.albedo, got.albedo, 3) == 0
+            && differingPixels(want.normal, got.normal, 3) == 0,
+      label + ": albedo and normal equal the single-process ones");
+}
+
+// Composite mode path traces each process's boxes alone: visibility is the
+// whole scene's (depth identical), but a box lit through a gap of its own
+// world is shadowed by another process's box in the whole scene, so the
+// color differs where shadows cross processes; pathtracer mode has them.
+void compositeShadows(uint32_t seed)
+{
+  const auto [rank, ranks] = worldRankAndSize();
+  const std::vector<int> owners = boxOwners(ranks, seed);
+  const Render composited =
+      traceShare(MPI_COMM_WORLD, owners, "composite", "composite shadows");
+  if (rank != 0)
+    return;
+  const Render whole = traceWhole(owners, kSunlit);
+  const Image &got = composited.image, &want = whole.image;
+  check(got.depth.size() == want.depth.size()
+            && got.color.size() == want.color.size() && !want.depth.empty(),
+      "composite shadows: rank 0 maps color and depth");
+  if (g_failures)
+    return;
+  check(differingPixels(want.depth, got.depth, 1) == 0,
+      "composite shadows: depth equals the single-process depth");
+  // Pixels lit in composite mode that the whole scene keeps in shadow.
+  size_t brighter = 0;
+  for (size_t i = 0; i < want.depth.size(); i++) {
+    const float gain = got.color[4 * i] + got.color[4 * i + 1]
+                       + got.color[4 * i + 2] - want.color[4 * i]
+                       - want.color[4 * i + 1] - want.color[4 * i + 2];
+    brighter += gain > 0.3f ? 1 : 0;
+  }
+  const double quality = psnr(want.color, got.color);
+  std::printf(
+      "composite shadows: %zu pixels lit that the whole scene"
+      " shadows, PSNR %.2f dB\n",
+      brighter,
+      quality);
+  if (ranks > 1) {
+    check(brighter > want.depth.size() / 100,
+        "composite shadows: shadows across processes are missing ("
+            + std::to_string(brighter) + " pixels brighter)");
+  } else {
+    check(differingPixels(want.color, got.color, 4) == 0,
+        "composite shadows: one process composites the whole image");
+  }
+}
+
+void scenarioPathTracer()
+{
+  pathTraceOn(MPI_COMM_WORLD, 7, "pathtracer");
+  compositeShadows(7);
+}
+
+// Runs `scenario(communicator, half)` on the even and the odd ranks of
+// MPI_COMM_WORLD at once, each half on a communicator of its own.
+template <typename Scenario>
+void onHalves(Scenario scenario)
+{
+  const int rank = worldRankAndSize().first;
+  MPI_Comm group;
+  MPI_Comm_split(MPI_COMM_WORLD, rank % 2, rank, &group);
+  scenario(group, uint32_t(rank % 2));
+  MPI_Comm_free(&group);
+}
+
+// Two groups of processes path trace different interleavings at once.
+void scenarioPathTracerSubcommunicator()
+{
+  onHalves([](MPI_Comm group, uint32_t half) {
+    pathTraceOn(group,
+        21 + half,
+        "pathtracer subcommunicator group " + std::to_string(half));
+  });
+}
+
 void scenarioComposite()
 {
   compositeOn(MPI_COMM_WORLD, 7, "composite");
@@ -350,13 +598,10 @@ void scenarioComposite()
 // communicator.
 void scenarioSubcommunicator()
 {
-  const auto [rank, ranks] = worldRankAndSize();
-  MPI_Comm group;
-  MPI_Comm_split(MPI_COMM_WORLD, rank % 2, rank, &group);
-  compositeOn(group,
-      11 + uint32_t(rank % 2),
-      "subcommunicator group " + std::to_string(rank % 2));
-  MPI_Comm_free(&group);
+  onHalves([](MPI_Comm group, uint32_t half) {
+    compositeOn(
+        group, 11 + half, "subcommunicator group " + std::to_string(half));
+  });
 }
 
 // Disagreements are errors on every process, naming the ranks, and the
@@ -384,6 +629,38 @@ void scenarioMismatch()
             {"disagree", "size", "64x32 " + odder, "64x64 on rank"},
             true),
       "a size mismatch is reported naming the ranks");
+
+  // The same in pathtracer mode (the default) with the path tracer: a
+  // process that disagrees never enters the collectives of the bounces.
+  const Lighting oneSample{true, 1};
+  traceBoxes(mpi.device,
+      boxesOf(owners, rank),
+      &comm,
+      oneSample,
+      rank == odd ? kTracedSize / 2 : kTracedSize);
+  check(oneErrorMentioning(status,
+            {"disagree", "size", "96x48 " + odder, "96x96 on rank"},
+            true),
+      "a size mismatch in pathtracer mode is reported naming the ranks");
+  // Any process may shade any path, so all must hold the same lights.
+  traceBoxes(
+      mpi.device, boxesOf(owners, rank), &comm, Lighting{rank != odd, 1});
+  check(oneErrorMentioning(status,
+            {"disagree",
+                "lights (pathtracer mode needs the same on every process)",
+                "0 " + odder,
+                "1 on rank"},
+            true),
+      "lights that differ in pathtracer mode are reported");
+  const Render traced =
+      traceBoxes(mpi.device, boxesOf(owners, rank), &comm, oneSample);
+  check(
+      status.take().empty(), "an agreeing path traced render reports nothing");
+  checkPathTraced(traced,
+      owners,
+      MPI_COMM_WORLD,
+      "path traced after a mismatch",
+      oneSample);
 
   renderBoxes(mpi.device,
       boxesOf(owners, rank),
@@ -504,7 +781,8 @@ void scenarioParameters()
   check(advertised, "the device's extension property lists it");
 
   anariSetParameter(mpi.device, mpi.device, "mode", ANARI_STRING, "sideways");
-  check(oneErrorMentioning(status, {"mode", "'sideways'", "stays 'composite'"}),
+  check(
+      oneErrorMentioning(status, {"mode", "'sideways'", "stays 'pathtracer'"}),
       "an unknown mode is reported");
   const int notAString = 1;
   anariSetParameter(mpi.device, mpi.device, "mode", ANARI_INT32, &notAString);
@@ -584,6 +862,10 @@ int main(int argc, char **argv)
   const std::string scenario = argc > 1 ? argv[1] : "";
   if (scenario == "composite")
     scenarioComposite();
+  else if (scenario == "pathtracer")
+    scenarioPathTracer();
+  else if (scenario == "pathtracer-subcommunicator")
+    scenarioPathTracerSubcommunicator();
   else if (scenario == "subcommunicator")
     scenarioSubcommunicator();
   else if (scenario == "mismatch")

@@ -26,14 +26,7 @@ Image render(const char *libraryName)
     return {};
   ANARIDevice device = anariNewDevice(library, "default");
   ANARIWorld world = newBoxesWorld(device, boxesOf(boxOwners(1, 1), -1));
-  ANARILight light = anariNewLight(device, "directional");
-  const float direction[3] = {-0.3f, -1.f, -0.5f};
-  anariSetParameter(device, light, "direction", ANARI_FLOAT32_VEC3, direction);
-  anariCommitParameters(device, light);
-  ANARIArray1D lights =
-      anariNewArray1D(device, &light, nullptr, nullptr, ANARI_LIGHT, 1);
-  anariSetParameter(device, world, "light", ANARI_ARRAY1D, &lights);
-  anariCommitParameters(device, world);
+  addSunlight(device, world);
   const float eye[3] = {3.2f, 2.6f, 4.6f};
   ANARICamera camera = newCamera(device, eye, float(kWidth) / float(kHeight));
   ANARIRenderer renderer = newRenderer(device, "pathtracer");
@@ -49,8 +42,6 @@ Image render(const char *libraryName)
   anariRelease(device, frame);
   anariRelease(device, renderer);
   anariRelease(device, camera);
-  anariRelease(device, lights);
-  anariRelease(device, light);
   anariRelease(device, world);
   anariRelease(device, device);
   anariUnloadLibrary(library);

@@ -233,8 +233,12 @@ void Frame::render()
   m_renderer->beginFrame(context);
   // Each tile is rendered, folded into the accumulation and converted to
   // the channels' types while it is still in cache.
-  tbb::parallel_for(uint32_t(0), m_tilesTotal, [&](uint32_t index) {
-    if (m_cancel)
+  // A process stopping on its own would leave the others waiting in a
+  // collective: in lockstep every tile is rendered.
+  const std::atomic<bool> never{false};
+  const std::atomic<bool> &cancel = m_lockstep ? never : m_cancel;
+  auto renderTileAt = [&](uint32_t index) {
+    if (cancel)
       return;
     const uint32_t tx = index % tilesX, ty = index / tilesX;
     if (ty % m_tileRowParts != m_tileRowPart) {
@@ -245,12 +249,18 @@ void Frame::render()
         ty * kTileSize,
         std::min((tx + 1) * kTileSize, m_width),
         std::min((ty + 1) * kTileSize, m_height)};
-    m_renderer->renderTile(context, tile, m_buffers, m_cancel);
+    m_renderer->renderTile(context, tile, m_buffers, cancel);
     if (m_accumulation)
       accumulate(tile);
     resolve(tile);
     m_tilesDone.fetch_add(1, std::memory_order_release);
-  });
+  };
+  if (m_lockstep) {
+    for (uint32_t index = 0; index < m_tilesTotal; index++)
+      renderTileAt(index);
+  } else {
+    tbb::parallel_for(uint32_t(0), m_tilesTotal, renderTileAt);
+  }
   // Every tile's pixels happen before this (the increments form one
   // release sequence), in the C++ memory model itself rather than through
   // TBB's join, which ThreadSanitizer cannot see.
@@ -453,6 +463,12 @@ void Frame::keepDepth(bool keep)
 {
   waitUntilDone();
   m_keepDepth = keep;
+}
+
+void Frame::renderInLockstep(bool lockstep)
+{
+  waitUntilDone();
+  m_lockstep = lockstep;
 }
 
 const FrameBuffers &Frame::linearPixels()

@@ -113,6 +113,7 @@ void PathTracer::renderTile(const RenderContext &context,
         shadows,
         contributions,
         workspace->decisions);
+    transport.shareBounce(paths, rays, next, shadows, contributions);
     if (!shadows.empty()) {
       traced += shadows.size();
       transport.traceOcclusion(shadows);
@@ -228,6 +229,8 @@ void PathTracer::shadeBounce(const RenderContext &context,
   for (size_t r = 0; r < rays.size(); r++) {
     if (rays.untraceable(r))
       continue; // a degenerate camera or bounce ray ends its path
+    if (!context.transport->shades(rays, r))
+      continue; // another process owns the hit
     Bounce b =
         resolveHit(context, paths[rays.tag(r)], rays, r, surface, shading);
     if (collidesInVolume(context, b))

@@ -94,6 +94,12 @@ class RayQueue
   {
     m_transmittance[i] = m_transmittance[i] * factor;
   }
+  // Replaces ray i's transmittance (with what every process's part of the
+  // world lets through).
+  void setTransmittance(size_t i, const float3 &transmittance)
+  {
+    m_transmittance[i] = transmittance;
+  }
 
   // A hint for the tracer: the rays start close together and point alike
   // (a tile's camera rays), so tracing them as packets pays.

@@ -4,7 +4,11 @@
 // finds the closest hit (or any blocker) among all ranks' geometry.
 #pragma once
 
+#include "../../math/Vec.h"
 #include "../../rt/RayQueue.h"
+#include "PathState.h"
+
+#include <vector>
 
 namespace prism {
 
@@ -17,6 +21,22 @@ class RayTransport
   // Sets every ray's transmittance: what reaches its end (0 where an opaque
   // surface blocks it).
   virtual void traceOcclusion(rt::RayQueue &queue) const = 0;
+
+  // Data-parallel path tracing: after traceClosest(queue), whether this
+  // process shades ray r (across processes, the one owning the hit).
+  virtual bool shades(const rt::RayQueue &queue, size_t r) const
+  {
+    return true;
+  }
+  // After a bounce was shaded: makes every process hold the same path
+  // states and the same next and shadow queues (with their contributions),
+  // ordered by tag. Nothing to do in one process.
+  virtual void shareBounce(std::vector<PathState> &paths,
+      const rt::RayQueue &rays,
+      rt::RayQueue &next,
+      rt::RayQueue &shadows,
+      std::vector<float3> &contributions) const
+  {}
 };
 
 } // namespace prism

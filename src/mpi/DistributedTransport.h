@@ -1,0 +1,48 @@
+// The ray transport of data-parallel path tracing (`pathtracer` mode). Every
+// process runs the same wavefronts in lockstep: it traces each queue against
+// its own part of the world, then one reduction over the communicator gives
+// every ray its closest hit over all processes and the process owning it
+// (the same result as cycling the queue through every process), and shadow
+// rays multiply what each process's geometry lets through. The owner alone
+// shades a hit (rank 0 a miss); after shading, the processes exchange the
+// paths they shaded and the rays those queued, so all hold the same state
+// again.
+#pragma once
+
+#include "renderer/wavefront/LocalTransport.h"
+
+#include <mpi.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace prism::mpi {
+
+class DistributedTransport final : public RayTransport
+{
+ public:
+  // `bytesSent` grows by the payload this process hands to each exchange.
+  DistributedTransport(
+      const World &world, MPI_Comm communicator, uint64_t &bytesSent);
+
+  void traceClosest(rt::RayQueue &queue) const override;
+  void traceOcclusion(rt::RayQueue &queue) const override;
+  bool shades(const rt::RayQueue &queue, size_t r) const override;
+  void shareBounce(std::vector<PathState> &paths,
+      const rt::RayQueue &rays,
+      rt::RayQueue &next,
+      rt::RayQueue &shadows,
+      std::vector<float3> &contributions) const override;
+
+ private:
+  LocalTransport m_local;
+  MPI_Comm m_communicator;
+  int m_rank{0};
+  int m_ranks{1};
+  // One thread drives a lockstep render, so the transport's const calls
+  // may keep what the last closest trace found.
+  uint64_t &m_bytesSent;
+  mutable std::vector<int> m_owner; // of each ray of the last closest trace
+};
+
+} // namespace prism::mpi
