@@ -75,7 +75,7 @@ Context::Context(NSIContext_t id, const ParameterList &params)
 Context::~Context()
 {
   if (m_render)
-    m_render->stop(); // the render thread reports through this context
+    m_render->close(); // the render thread reports through this context
 }
 
 void Context::report(int level, const std::string &message) const
@@ -230,16 +230,7 @@ void Context::renderControl(const ParameterList &params)
   } else if (action == "wait") {
     finishRender(false);
   } else if (action == "synchronize") {
-    // Without incremental updates yet, a synchronize renders the scene anew:
-    // a render under way is restarted (and says so), and the new one ends
-    // "synchronized".
-    const bool wasRunning = m_render && m_render->running();
-    if (m_render)
-      m_render->silenceStopped();
-    finishRender(true);
-    if (wasRunning && m_stopped)
-      m_stopped(NSIRenderRestarted);
-    startRender(params, true);
+    synchronize(params);
   } else if (action == "stop") {
     finishRender(true);
   } else if (action == "suspend" || action == "resume") {
@@ -262,18 +253,9 @@ void Context::finishRender(bool stop)
   mutex.lock();
 }
 
-void Context::startRender(const ParameterList &params, bool synchronizing)
+RenderSession::Stopped Context::stoppedCallback(
+    const ParameterList &params, bool synchronizing)
 {
-  if (m_render && m_render->running()) {
-    report(NSIErrError,
-        "NSIRenderControl: 'start' while a render is running; ignored");
-    return;
-  }
-  if (params.number("interactive", 0) != 0
-      || params.number("progressive", 0) != 0)
-    report(NSIErrWarning,
-        "NSIRenderControl: interactive and progressive renders are not "
-        "supported; rendering once");
   // The callback stays with the context until another is given.
   auto callback =
       reinterpret_cast<NSIRenderStopped_t>(params.pointer("stoppedcallback"));
@@ -284,12 +266,47 @@ void Context::startRender(const ParameterList &params, bool synchronizing)
       callback(callbackData, id, status);
     };
   }
-  RenderSession::Stopped stopped = m_stopped;
-  if (synchronizing && stopped) {
-    stopped = [report = m_stopped](int status) {
-      report(status == NSIRenderCompleted ? NSIRenderSynchronized : status);
-    };
+  if (!synchronizing || !m_stopped)
+    return m_stopped;
+  return [report = m_stopped](int status) {
+    report(status == NSIRenderCompleted ? NSIRenderSynchronized : status);
+  };
+}
+
+void Context::synchronize(const ParameterList &params)
+{
+  // A render under way is restarted (and says so); the new one ends
+  // "synchronized". The ANARI objects of the last render are kept, and only
+  // those the edits touch are updated.
+  const bool wasRunning = m_render && m_render->running();
+  if (m_render)
+    m_render->silenceStopped();
+  finishRender(true);
+  if (wasRunning && m_stopped)
+    m_stopped(NSIRenderRestarted);
+  if (!m_render || !m_render->hasDevice())
+    return startRender(params, true);
+  if (m_render->running()) { // another thread started one meanwhile
+    report(NSIErrError,
+        "NSIRenderControl: 'synchronize' while a render is starting; "
+        "ignored");
+    return;
   }
+  const ResolvedScene scene = resolveScene(m_graph, reporter(), expandPath);
+  m_render->synchronize(scene, stoppedCallback(params, true));
+  report(NSIErrInfo,
+      "NSIRenderControl: synchronize updated the ANARI objects: "
+          + m_render->counts().summary());
+}
+
+void Context::startRender(const ParameterList &params, bool synchronizing)
+{
+  if (m_render && m_render->running()) {
+    report(NSIErrError,
+        "NSIRenderControl: 'start' while a render is running; ignored");
+    return;
+  }
+  const RenderSession::Stopped stopped = stoppedCallback(params, synchronizing);
   const ResolvedScene scene = resolveScene(m_graph, reporter(), expandPath);
   m_render = std::make_shared<RenderSession>(reporter(), stopped);
   if (!m_render->start(m_anariLibrary, scene))

@@ -56,6 +56,11 @@ class Context
   // `synchronizing`: the render's completion is reported as
   // NSIRenderSynchronized.
   void startRender(const ParameterList &params, bool synchronizing = false);
+  void synchronize(const ParameterList &params);
+  // The stopped callback for a render (the one given in `params`, else the
+  // last one); when `synchronizing`, completion reads NSIRenderSynchronized.
+  RenderSession::Stopped stoppedCallback(
+      const ParameterList &params, bool synchronizing);
   // Waits for (or stops) the render without holding the context lock, so
   // other threads and the stopped callback can use the context meanwhile.
   void finishRender(bool stop);
