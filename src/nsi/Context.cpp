@@ -75,7 +75,8 @@ Context::Context(NSIContext_t id, const ParameterList &params)
 Context::~Context()
 {
   if (m_render)
-    m_render->close(); // the render thread reports through this context
+    m_render->close();   // the render thread reports through this context
+  m_procedurals.reset(); // unloaded while the context still reports
 }
 
 void Context::report(int level, const std::string &message) const
@@ -184,7 +185,14 @@ void Context::evaluate(const ParameterList &params)
     runLua(
         m_id, reporter(), params, fileName.empty() ? "" : expandPath(fileName));
   } else if (type == "dynamiclibrary") {
-    report(NSIErrError, "NSIEvaluate: type '" + type + "' is not supported");
+    const std::string fileName = params.string("filename", "");
+    if (fileName.empty()) {
+      report(NSIErrError, "NSIEvaluate: 'dynamiclibrary' without a 'filename'");
+      return;
+    }
+    if (!m_procedurals)
+      m_procedurals = std::make_unique<DynamicProcedurals>(m_id, reporter());
+    m_procedurals->execute(expandPath(fileName), params);
   } else {
     report(NSIErrError, "NSIEvaluate: unknown type '" + type + "'");
   }

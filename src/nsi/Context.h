@@ -3,6 +3,7 @@
 // points lock it, so one context may be used from several threads.
 #pragma once
 
+#include "DynamicProcedurals.h"
 #include "Graph.h"
 #include "ParameterList.h"
 #include "RenderSession.h"
@@ -72,6 +73,8 @@ class Context
   std::string m_anariLibrary{"prism"};
   Graph m_graph;
   std::unique_ptr<StreamWriter> m_writer; // set for `type apistream`
+  // Loaded at the first dynamiclibrary Evaluate; unloaded at NSIEnd.
+  std::unique_ptr<DynamicProcedurals> m_procedurals;
   // Shared so a thread waiting without the lock keeps it alive.
   std::shared_ptr<RenderSession> m_render;
   RenderSession::Stopped m_stopped;    // the last stoppedcallback given

@@ -919,6 +919,26 @@ TEST_F(Render, InteractiveEditsTouchOnlyTheirObjects)
   EXPECT_GT(deleted.at(25, 8).r, 0.5f);
 }
 
+TEST_F(Render, ProceduralMeshRenders)
+{
+  // The test procedural's square, made at the start of the scene, is the
+  // white square: seen in the middle, lit by the environment.
+  NSIContext_t ctx = beginRender();
+  const Image image = renderWhite(ctx,
+      std::string(R"(Evaluate "type" "string" 1 "dynamiclibrary"
+  "filename" "string" 1 ")")
+          + PRISM_TEST_PROCEDURAL_SQUARE + R"(" "handle" "string" 1 "shape"
+)",
+      "",
+      R"("resolution" "int[2]" 1 [ 16 16 ] "oversampling" "int" 1 4)",
+      path("procedural.exr"));
+  NSIEnd(ctx);
+  EXPECT_EQ(m_messages.problems(), "");
+  ASSERT_EQ(image.width, 16u);
+  EXPECT_GT(value(image, 8, 8), 0.8f);
+  EXPECT_EQ(value(image, 0, 0), 0.f);
+}
+
 TEST_F(Render, SharedTransformsCannotExplode)
 {
   // 40 levels, each transform hung twice under the next: 2^40 paths from
