@@ -239,6 +239,30 @@ void setTransform(
   }
 }
 
+// Sets the world's object array `name` to `handles` unless `current`
+// already holds them (or `force`); true when set.
+template <typename Handle>
+bool setObjectList(ANARIDevice device,
+    ANARIWorld world,
+    const char *name,
+    ANARIDataType type,
+    const std::vector<Handle> &handles,
+    std::vector<Handle> &current,
+    bool force)
+{
+  if (!force && handles == current)
+    return false;
+  if (handles.empty())
+    anariUnsetParameter(device, world, name);
+  else
+    setArray(device,
+        world,
+        name,
+        newArray(device, type, handles.data(), handles.size()));
+  current = handles;
+  return true;
+}
+
 } // namespace
 
 std::string AnariUpdateCounts::summary() const
@@ -489,29 +513,20 @@ AnariWorld AnariWorldBuilder::update(const ResolvedScene &scene)
     ++m_counts.created[Category::World];
     worldChanged = true;
   }
-  if (worldChanged || instances != m_worldInstances) {
-    if (instances.empty())
-      anariUnsetParameter(m_device, m_world, "instance");
-    else
-      setArray(m_device,
-          m_world,
-          "instance",
-          newArray(
-              m_device, ANARI_INSTANCE, instances.data(), instances.size()));
-    m_worldInstances = instances;
-    worldChanged = true;
-  }
-  if (worldChanged || lights != m_worldLights) {
-    if (lights.empty())
-      anariUnsetParameter(m_device, m_world, "light");
-    else
-      setArray(m_device,
-          m_world,
-          "light",
-          newArray(m_device, ANARI_LIGHT, lights.data(), lights.size()));
-    m_worldLights = lights;
-    worldChanged = true;
-  }
+  worldChanged |= setObjectList(m_device,
+      m_world,
+      "instance",
+      ANARI_INSTANCE,
+      instances,
+      m_worldInstances,
+      worldChanged);
+  worldChanged |= setObjectList(m_device,
+      m_world,
+      "light",
+      ANARI_LIGHT,
+      lights,
+      m_worldLights,
+      worldChanged);
   if (worldChanged)
     commit(Category::World, m_world);
 

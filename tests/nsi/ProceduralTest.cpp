@@ -35,14 +35,7 @@ TEST_F(Procedural, ExecutesThroughTheContextItIsGiven)
 {
   // A stream-writing context that runs dynamic libraries writes their calls.
   const std::string file = path("out.nsi");
-  NSI::ArgumentList begin;
-  begin.addString("type", "apistream")
-      .addString("streamfilename", file.c_str())
-      .addString("executeprocedurals", "dynamiclibrary");
-  begin.addPointer("errorhandler",
-      reinterpret_cast<const void *>(&MessageRecorder::handler));
-  begin.addPointer("errorhandlerdata", &m_messages);
-  NSIContext_t ctx = NSIBegin(begin.size(), begin.data());
+  NSIContext_t ctx = beginStream(file, "dynamiclibrary");
   ASSERT_NE(ctx, NSI_BAD_CONTEXT);
   evaluate(ctx, PRISM_TEST_PROCEDURAL_SQUARE, "a", 0);
   evaluate(ctx, PRISM_TEST_PROCEDURAL_SQUARE, "b", 3);

@@ -155,24 +155,19 @@ class Arg:
             self.count = count
 
 
-class IntegerArg(Arg):
+def _typed_arg(name, nsi_type, convert=None):
+    # An Arg class for one type: IntegerArg(2), FloatArg(0.5) ...
     def __init__(self, v):
-        Arg.__init__(self, int(v), type=Type.Integer)
+        Arg.__init__(self, convert(v) if convert else v, type=nsi_type)
+    return type(name, (Arg,), {"__init__": __init__})
 
 
-class FloatArg(Arg):
-    def __init__(self, v):
-        Arg.__init__(self, v, type=Type.Float)
-
-
-class DoubleArg(Arg):
-    def __init__(self, v):
-        Arg.__init__(self, v, type=Type.Double)
-
-
-class StringArg(Arg):
-    def __init__(self, v):
-        Arg.__init__(self, v, type=Type.String)
+IntegerArg = _typed_arg("IntegerArg", Type.Integer, int)
+FloatArg = _typed_arg("FloatArg", Type.Float)
+DoubleArg = _typed_arg("DoubleArg", Type.Double)
+StringArg = _typed_arg("StringArg", Type.String)
+MatrixArg = _typed_arg("MatrixArg", Type.Matrix)
+DoubleMatrixArg = _typed_arg("DoubleMatrixArg", Type.DoubleMatrix)
 
 
 class ColorArg(Arg):
@@ -201,16 +196,6 @@ class VectorArg(_TripleArg):
 
 class NormalArg(_TripleArg):
     _type = Type.Normal
-
-
-class MatrixArg(Arg):
-    def __init__(self, v):
-        Arg.__init__(self, v, type=Type.Matrix)
-
-
-class DoubleMatrixArg(Arg):
-    def __init__(self, v):
-        Arg.__init__(self, v, type=Type.DoubleMatrix)
 
 
 def _type_of(value):
@@ -324,7 +309,9 @@ class Context:
         _lib.NSIConnect(self._handle, _text(from_handle), _text(from_attr),
                         _text(to_handle), _text(to_attr), p.size, p.array)
 
-    def Disconnect(self, from_handle, from_attr, to_handle, to_attr):
+    def Disconnect(self, from_handle, from_attr, to_handle, to_attr,
+                   **arglist):
+        # NSIDisconnect takes no parameters: `arglist` is accepted, unused.
         _lib.NSIDisconnect(self._handle, _text(from_handle), _text(from_attr),
                            _text(to_handle), _text(to_attr))
 
