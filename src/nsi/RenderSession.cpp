@@ -102,7 +102,16 @@ void RenderSession::apply(const ResolvedScene &scene)
   const bool first = !m_world.world;
   if (first || world.background != m_world.background
       || world.ambientColor != m_world.ambientColor
-      || world.ambientRadiance != m_world.ambientRadiance) {
+      || world.ambientRadiance != m_world.ambientRadiance
+      || scene.options != m_options) {
+    if (scene.options.maxPathLength > 0)
+      anariSetParameter(m_device,
+          m_renderer,
+          "maxPathLength",
+          ANARI_INT32,
+          &scene.options.maxPathLength);
+    else
+      anariUnsetParameter(m_device, m_renderer, "maxPathLength");
     anariSetParameter(m_device,
         m_renderer,
         "background",
@@ -121,6 +130,7 @@ void RenderSession::apply(const ResolvedScene &scene)
     anariCommitParameters(m_device, m_renderer);
   }
   m_world = world;
+  m_options = scene.options;
   m_cameras = scene.cameras;
   m_hasMotion = scene.hasMotion;
   if (m_cameras.empty())

@@ -72,6 +72,7 @@ class RenderSession
   ANARIDevice m_device{nullptr};
   std::unique_ptr<AnariWorldBuilder> m_builder;
   AnariWorld m_world;
+  GlobalOptions m_options; // as the renderer has them
   ANARIRenderer m_renderer{nullptr};
   std::vector<CameraItem> m_cameras;
   bool m_hasMotion{false};

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "CameraFraming.h"
+#include "GlobalOptions.h"
 #include "Matrix.h"
 #include "ShaderTable.h"
 
@@ -85,6 +86,7 @@ struct ResolvedScene
   std::vector<SurfaceItem> surfaces;
   std::vector<LightItem> lights;
   std::vector<CameraItem> cameras;
+  GlobalOptions options;
 };
 
 } // namespace prism::nsi

@@ -687,7 +687,9 @@ ResolvedScene resolveScene(const Graph &graph,
     const ReportFunction &report,
     const std::function<std::string(const std::string &)> &expandPath)
 {
-  return Resolver(graph, report, expandPath).run();
+  ResolvedScene scene = Resolver(graph, report, expandPath).run();
+  scene.options = readGlobalOptions(graph, report);
+  return scene;
 }
 
 } // namespace prism::nsi

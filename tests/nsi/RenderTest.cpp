@@ -939,6 +939,36 @@ TEST_F(Render, ProceduralMeshRenders)
   EXPECT_EQ(value(image, 0, 0), 0.f);
 }
 
+TEST_F(Render, GlobalRayDepthBoundsBounces)
+{
+  // The white square under the hidden environment, whose light reaches it
+  // by a bounce off the square (the path tracer meets the environment when
+  // a ray escapes): lit at depth 1 and by default, black at depth 0.
+  auto render = [&](const char *depth, const char *name) {
+    NSIContext_t ctx = beginRender();
+    std::string geometry = whiteSquare(NSI_SCENE_ROOT);
+    if (depth)
+      geometry +=
+          std::string(
+              R"(SetAttribute ".global" "maximumraydepth.diffuse" "int" 1 )")
+          + depth + "\n";
+    Image image = renderWhite(ctx,
+        geometry,
+        "",
+        R"("resolution" "int[2]" 1 [ 16 16 ] "oversampling" "int" 1 4)",
+        path(name));
+    NSIEnd(ctx);
+    return image;
+  };
+  const Image none = render("0", "none.exr");
+  const Image one = render("1", "one.exr");
+  const Image unset = render(nullptr, "unset.exr");
+  EXPECT_EQ(m_messages.problems(), "");
+  EXPECT_EQ(value(none, 8, 8), 0.f);
+  EXPECT_GT(value(one, 8, 8), 0.8f);
+  EXPECT_GT(value(unset, 8, 8), 0.8f);
+}
+
 TEST_F(Render, SharedTransformsCannotExplode)
 {
   // 40 levels, each transform hung twice under the next: 2^40 paths from
