@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
+#include <utility>
 
 namespace prism::nsi {
 
@@ -99,6 +100,8 @@ void Context::create(const std::string &handle,
 {
   if (m_writer)
     return m_writer->statement("Create", {handle, type}, params);
+  if (m_created && !m_graph.find(handle))
+    m_created->push_back(handle);
   m_graph.create(handle, type);
 }
 
@@ -151,7 +154,7 @@ void Context::connect(const std::string &from,
         "it");
   m_graph.connect(from,
       fromAttr,
-      to,
+      localRoot(to),
       toAttr,
       connectionInt(params, "priority"),
       connectionInt(params, "strength"),
@@ -165,7 +168,7 @@ void Context::disconnect(const std::string &from,
 {
   if (m_writer)
     return m_writer->statement("Disconnect", {from, fromAttr, to, toAttr}, {});
-  m_graph.disconnect(from, fromAttr, to, toAttr);
+  m_graph.disconnect(from, fromAttr, localRoot(to), toAttr);
 }
 
 void Context::evaluate(const ParameterList &params)
@@ -226,6 +229,59 @@ void Context::includeStream(const std::string &fileName)
   } guard{m_openStreams, key};
   m_openStreams.insert(key);
   StreamReader(m_id, reporter(), fileName).read(text);
+}
+
+const std::string &Context::localRoot(const std::string &handle) const
+{
+  return handle == NSI_SCENE_ROOT && !m_localRoot.empty() ? m_localRoot
+                                                          : handle;
+}
+
+void Context::removeNodes(const std::vector<std::string> &handles)
+{
+  for (auto &handle : handles) {
+    if (m_graph.find(handle)) // the client may have deleted it
+      m_graph.remove(handle, false);
+  }
+}
+
+void Context::runProceduralNodes()
+{
+  for (auto it = m_proceduralRuns.begin(); it != m_proceduralRuns.end();) {
+    const Node *node = m_graph.find(it->first);
+    if (node && node->type == "procedural") {
+      ++it;
+      continue;
+    }
+    removeNodes(it->second.created);
+    it = m_proceduralRuns.erase(it);
+  }
+  std::vector<std::pair<std::string, ParameterList>> due;
+  for (auto &[handle, node] : m_graph.nodes()) {
+    if (node.type != "procedural")
+      continue;
+    ParameterList params;
+    for (auto &[name, attribute] : node.attributes) {
+      if (attribute.value)
+        params.values.push_back({name, *attribute.value});
+    }
+    auto found = m_proceduralRuns.find(handle);
+    if (found == m_proceduralRuns.end()
+        || found->second.attributes != params.values)
+      due.emplace_back(handle, std::move(params));
+  }
+  for (auto &[handle, params] : due) {
+    ProceduralRun &run = m_proceduralRuns[handle];
+    removeNodes(run.created);
+    run = {params.values, {}};
+    // One level deep: what a procedural's procedural nodes make runs at
+    // the next start or synchronize.
+    const std::string outerRoot = std::exchange(m_localRoot, handle);
+    auto *outerCreated = std::exchange(m_created, &run.created);
+    evaluate(params);
+    m_localRoot = outerRoot;
+    m_created = outerCreated;
+  }
 }
 
 void Context::renderControl(const ParameterList &params)
@@ -300,6 +356,7 @@ void Context::synchronize(const ParameterList &params)
         "ignored");
     return;
   }
+  runProceduralNodes();
   const ResolvedScene scene = resolveScene(m_graph, reporter(), expandPath);
   m_render->synchronize(scene, stoppedCallback(params, true));
   report(NSIErrInfo,
@@ -315,6 +372,7 @@ void Context::startRender(const ParameterList &params, bool synchronizing)
     return;
   }
   const RenderSession::Stopped stopped = stoppedCallback(params, synchronizing);
+  runProceduralNodes();
   const ResolvedScene scene = resolveScene(m_graph, reporter(), expandPath);
   m_render = std::make_shared<RenderSession>(reporter(), stopped);
   if (!m_render->start(m_anariLibrary, scene))

@@ -9,6 +9,7 @@
 #include "RenderSession.h"
 #include "StreamWriter.h"
 
+#include <map>
 #include <memory>
 #include <mutex>
 #include <set>
@@ -54,6 +55,12 @@ class Context
 
  private:
   void includeStream(const std::string &fileName);
+  // Runs the procedural nodes whose attributes changed since they last ran
+  // (first deleting what that run made), and forgets the deleted ones'.
+  void runProceduralNodes();
+  void removeNodes(const std::vector<std::string> &handles);
+  // `handle`, or the running procedural node for .root.
+  const std::string &localRoot(const std::string &handle) const;
   // `synchronizing`: the render's completion is reported as
   // NSIRenderSynchronized.
   void startRender(const ParameterList &params, bool synchronizing = false);
@@ -79,6 +86,17 @@ class Context
   std::shared_ptr<RenderSession> m_render;
   RenderSession::Stopped m_stopped;    // the last stoppedcallback given
   std::set<std::string> m_openStreams; // includes being read, against cycles
+  // Per procedural node: the attributes it last ran with, the nodes it made.
+  struct ProceduralRun
+  {
+    std::vector<NamedValue> attributes;
+    std::vector<std::string> created;
+  };
+  std::map<std::string, ProceduralRun> m_proceduralRuns;
+  // While a procedural node runs: its handle stands for .root, and the
+  // nodes created are recorded.
+  std::string m_localRoot;
+  std::vector<std::string> *m_created{nullptr};
   // Evaluate types a stream-writing context runs rather than records.
   std::set<std::string> m_executedTypes;
 };

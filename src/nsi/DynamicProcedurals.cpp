@@ -81,6 +81,12 @@ NSIProcedural_t *DynamicProcedurals::load(const std::string &fileName)
   if (auto found = m_libraries.find(fileName); found != m_libraries.end())
     return found->second.procedural;
   const std::string what = "NSIEvaluate: procedural '" + fileName + "': ";
+#ifdef PRISM_NSI_NO_DYNAMIC_LIBRARIES
+  // The fuzzing build: its inputs must not name libraries to load.
+  m_report(
+      NSIErrError, what + "dynamic libraries are not loaded in this build");
+  return nullptr;
+#endif
   dlerror();
   void *handle = dlopen(fileName.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!handle) {

@@ -969,6 +969,54 @@ TEST_F(Render, GlobalRayDepthBoundsBounces)
   EXPECT_GT(value(unset, 8, 8), 0.8f);
 }
 
+TEST_F(Render, ProceduralNodeIsALocalRoot)
+{
+  // A procedural node running the test procedural: its square hangs under
+  // the node, moved 1.5 right by the node's matrix and shaded by the
+  // attributes on it. Editing the node remakes the square; a synchronize
+  // with no edit does not run it again.
+  NSIContext_t ctx = beginRender();
+  const std::string output = path("procedural-node.exr");
+  const Image before = renderWhite(ctx,
+      std::string(
+          R"(Create "shape" "procedural" Connect "shape" "" ".root" "objects"
+SetAttribute "shape" "type" "string" 1 "dynamiclibrary"
+  "filename" "string" 1 ")")
+          + PRISM_TEST_PROCEDURAL_SQUARE + R"("
+  "transformationmatrix" "doublematrix" 1 [ 1 0 0 0  0 1 0 0  0 0 1 0  1.5 0 0 1 ]
+)",
+      "",
+      R"("resolution" "int[2]" 1 [ 16 16 ] "oversampling" "int" 1 4)",
+      output);
+  auto executions = [&] {
+    size_t n = 0;
+    for (auto &m : m_messages.take()) {
+      n += m.text == "square procedural: executed";
+      EXPECT_LT(m.level, NSIErrWarning) << m.text;
+    }
+    return n;
+  };
+  EXPECT_EQ(executions(), 1u);
+  NSI::ArgumentList left;
+  left.addFloat("x", -3);
+  NSISetAttribute(ctx, "shape", left.size(), left.data());
+  renderControl(ctx, "synchronize");
+  renderControl(ctx, "wait");
+  EXPECT_EQ(executions(), 1u);
+  const Image after = readImage(output);
+  renderControl(ctx, "synchronize");
+  renderControl(ctx, "wait");
+  EXPECT_EQ(executions(), 0u);
+  NSIEnd(ctx);
+  // 0.335 units per pixel: x from 0.5 to 2.5 is columns 9-15, x from -2.5
+  // to -0.5 columns 1-6.
+  ASSERT_EQ(after.width, 16u);
+  EXPECT_GT(value(before, 12, 8), 0.8f);
+  EXPECT_EQ(value(before, 4, 8), 0.f);
+  EXPECT_EQ(value(after, 12, 8), 0.f);
+  EXPECT_GT(value(after, 4, 8), 0.8f);
+}
+
 TEST_F(Render, SharedTransformsCannotExplode)
 {
   // 40 levels, each transform hung twice under the next: 2^40 paths from
