@@ -1017,6 +1017,51 @@ SetAttribute "shape" "type" "string" 1 "dynamiclibrary"
   EXPECT_GT(value(after, 4, 8), 0.8f);
 }
 
+TEST_F(Render, Example3LiveEditsTouchTheirObjects)
+{
+  // The facts file's Example 3 after Example 1: the lamp's power and the
+  // floor's colour edited, then the lamp deleted, each synchronized.
+  const std::string example1 = writeFile("example1.nsi", kExample1);
+  const std::string example3 = writeFile("example3.nsi", R"(
+RenderControl "action" "string" 1 "start" "interactive" "int" 1 1
+SetAttribute "glow" "power" "float" 1 250
+SetAttribute "grey" "i_color" "color" 1 [ 0.8 0.2 0.2 ]
+RenderControl "action" "string" 1 "synchronize"
+Delete "lamp_xf" "recursive" "int" 1 1
+RenderControl "action" "string" 1 "synchronize"
+RenderControl "action" "string" 1 "stop"
+)");
+  ::setenv("PRISM_NSI_OUT", m_dir.c_str(), 1);
+  NSIContext_t ctx = beginRender();
+  include(ctx, example1);
+  EXPECT_EQ(m_messages.problems(), "");
+  include(ctx, example3);
+  NSIEnd(ctx);
+  ::unsetenv("PRISM_NSI_OUT");
+  std::vector<std::string> counts;
+  for (auto &m : m_messages.take()) {
+    const std::string prefix =
+        "NSIRenderControl: synchronize updated the ANARI objects: ";
+    if (m.level == NSIErrInfo && m.text.rfind(prefix, 0) == 0)
+      counts.push_back(m.text.substr(prefix.size()));
+    else
+      EXPECT_LT(m.level, NSIErrWarning) << m.text;
+  }
+  ASSERT_EQ(counts.size(), 2u);
+  // The light and the material set in place; nothing else.
+  EXPECT_EQ(counts[0],
+      "created geometry 0 material 0 surface 0 group 0 instance 0 light 0 "
+      "world 0; committed geometry 0 material 1 surface 0 group 0 instance 0 "
+      "light 1 world 0; released geometry 0 material 0 surface 0 group 0 "
+      "instance 0 light 0 world 0");
+  // The lamp (a quad light, no geometry) released, the world told.
+  EXPECT_EQ(counts[1],
+      "created geometry 0 material 0 surface 0 group 0 instance 0 light 0 "
+      "world 0; committed geometry 0 material 0 surface 0 group 0 instance 0 "
+      "light 0 world 1; released geometry 0 material 0 surface 0 group 0 "
+      "instance 0 light 1 world 0");
+}
+
 TEST_F(Render, SharedTransformsCannotExplode)
 {
   // 40 levels, each transform hung twice under the next: 2^40 paths from
