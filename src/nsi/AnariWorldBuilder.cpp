@@ -5,7 +5,7 @@
 #include <anari/frontend/type_utility.h>
 
 #include <cstring>
-#include <map>
+#include <type_traits>
 
 namespace prism::nsi {
 
@@ -47,10 +47,14 @@ void setVec3(ANARIDevice device,
   anariSetParameter(device, object, name, ANARI_FLOAT32_VEC3, v.data());
 }
 
-ANARIGeometry newGeometry(ANARIDevice device, const GeometryData &data)
+const char *geometrySubtype(const GeometryData &data)
 {
-  ANARIGeometry geometry = anariNewGeometry(
-      device, data.spheres ? "sphere" : (data.curves ? "curve" : "triangle"));
+  return data.spheres ? "sphere" : (data.curves ? "curve" : "triangle");
+}
+
+void setGeometryParameters(
+    ANARIDevice device, ANARIGeometry geometry, const GeometryData &data)
+{
   const size_t vertices = data.positions.size() / 3;
   setArray(device,
       geometry,
@@ -69,213 +73,425 @@ ANARIGeometry newGeometry(ANARIDevice device, const GeometryData &data)
         geometry,
         "vertex.radius",
         newArray(device, ANARI_FLOAT32, data.radii.data(), data.radii.size()));
-  } else {
+    return;
+  }
+  setArray(device,
+      geometry,
+      "primitive.index",
+      newArray(device,
+          ANARI_UINT32_VEC3,
+          data.triangles.data(),
+          data.triangles.size() / 3));
+  if (!data.normals.empty())
     setArray(device,
         geometry,
-        "primitive.index",
-        newArray(device,
-            ANARI_UINT32_VEC3,
-            data.triangles.data(),
-            data.triangles.size() / 3));
-    if (!data.normals.empty())
-      setArray(device,
-          geometry,
-          "vertex.normal",
-          newArray(device, ANARI_FLOAT32_VEC3, data.normals.data(), vertices));
-  }
-  anariCommitParameters(device, geometry);
-  return geometry;
+        "vertex.normal",
+        newArray(device, ANARI_FLOAT32_VEC3, data.normals.data(), vertices));
+  else // an edit may have removed them
+    anariUnsetParameter(device, geometry, "vertex.normal");
 }
 
-ANARIMaterial newMaterial(ANARIDevice device, const ShaderDescription &shader)
+const char *materialSubtype(const ShaderDescription &shader)
 {
-  using Kind = ShaderDescription::Kind;
   const bool emits = shader.emissive[0] > 0 || shader.emissive[1] > 0
                      || shader.emissive[2] > 0;
-  if (shader.kind == Kind::Matte && !emits) {
-    ANARIMaterial matte = anariNewMaterial(device, "matte");
-    setVec3(device, matte, "color", shader.color);
-    anariCommitParameters(device, matte);
-    return matte;
+  return shader.kind == ShaderDescription::Kind::Matte && !emits
+             ? "matte"
+             : "physicallyBased";
+}
+
+void setMaterialParameters(
+    ANARIDevice device, ANARIMaterial material, const ShaderDescription &shader)
+{
+  if (std::strcmp(materialSubtype(shader), "matte") == 0) {
+    setVec3(device, material, "color", shader.color);
+    return;
   }
   // physicallyBased's own defaults (metallic 1, roughness 1) are not the
   // shaders': every parameter is set.
-  ANARIMaterial pbr = anariNewMaterial(device, "physicallyBased");
-  setVec3(device, pbr, "baseColor", shader.color);
-  setFloat(device, pbr, "metallic", shader.metallic);
-  setFloat(device, pbr, "roughness", shader.roughness);
-  setFloat(device, pbr, "specular", shader.specular);
-  setFloat(device, pbr, "clearcoat", shader.clearcoat);
-  setFloat(device, pbr, "transmission", shader.transmission);
-  setFloat(device, pbr, "ior", shader.ior);
-  setFloat(device, pbr, "opacity", shader.opacity);
-  setVec3(device, pbr, "emissive", shader.emissive);
-  anariCommitParameters(device, pbr);
-  return pbr;
+  setVec3(device, material, "baseColor", shader.color);
+  setFloat(device, material, "metallic", shader.metallic);
+  setFloat(device, material, "roughness", shader.roughness);
+  setFloat(device, material, "specular", shader.specular);
+  setFloat(device, material, "clearcoat", shader.clearcoat);
+  setFloat(device, material, "transmission", shader.transmission);
+  setFloat(device, material, "ior", shader.ior);
+  setFloat(device, material, "opacity", shader.opacity);
+  setVec3(device, material, "emissive", shader.emissive);
 }
 
-void setBrightness(
-    ANARIDevice device, ANARILight light, const ShaderDescription &shader)
-{
-  if (shader.hasPower)
-    setFloat(device, light, "power", shader.power);
-  else
-    setFloat(device,
-        light,
-        shader.normalizeArea ? "intensity" : "radiance",
-        shader.intensity);
-}
-
-ANARILight newLight(
-    ANARIDevice device, const LightItem &item, const ReportFunction &report)
+const char *lightSubtype(LightItem::Kind kind)
 {
   using Kind = LightItem::Kind;
-  ANARILight light = nullptr;
-  switch (item.kind) {
+  switch (kind) {
   case Kind::Quad:
-    light = anariNewLight(device, "quad");
+    return "quad";
+  case Kind::Point:
+    return "point";
+  case Kind::Spot:
+    return "spot";
+  case Kind::Ring:
+    return "ring";
+  case Kind::Directional:
+    return "directional";
+  case Kind::Hdri:
+    return "hdri";
+  case Kind::Ambient:
+    break;
+  }
+  return nullptr;
+}
+
+// Every parameter but an hdri's radiance image.
+void setLightParameters(
+    ANARIDevice device, ANARILight light, const LightItem &item)
+{
+  using Kind = LightItem::Kind;
+  const Kind kind = item.kind;
+  const ShaderDescription &shader = item.shader;
+  if (kind != Kind::Directional && kind != Kind::Hdri)
     setVec3(device, light, "position", item.position);
+  if (kind != Kind::Quad && kind != Kind::Point)
+    setVec3(device, light, "direction", item.direction);
+  if (kind == Kind::Quad) {
     setVec3(device, light, "edge1", item.edge1);
     setVec3(device, light, "edge2", item.edge2);
-    setBrightness(device, light, item.shader);
-    break;
-  case Kind::Point:
-    light = anariNewLight(device, "point");
-    setVec3(device, light, "position", item.position);
+  }
+  if (kind == Kind::Point || kind == Kind::Ring)
     setFloat(device, light, "radius", item.radius);
-    setBrightness(device, light, item.shader);
-    break;
-  case Kind::Spot:
-    light = anariNewLight(device, "spot");
-    setVec3(device, light, "position", item.position);
-    setVec3(device, light, "direction", item.direction);
+  if (kind == Kind::Spot) {
     setFloat(device, light, "openingAngle", item.openingAngle);
     setFloat(device, light, "falloffAngle", item.falloffAngle);
     // A spot has no area: power, else intensity.
     setFloat(device,
         light,
-        item.shader.hasPower ? "power" : "intensity",
-        item.shader.hasPower ? item.shader.power : item.shader.intensity);
-    break;
-  case Kind::Ring:
-    light = anariNewLight(device, "ring");
-    setVec3(device, light, "position", item.position);
-    setVec3(device, light, "direction", item.direction);
-    setFloat(device, light, "radius", item.radius);
-    setBrightness(device, light, item.shader);
-    break;
-  case Kind::Directional:
-    light = anariNewLight(device, "directional");
-    setVec3(device, light, "direction", item.direction);
+        shader.hasPower ? "power" : "intensity",
+        shader.hasPower ? shader.power : shader.intensity);
+  } else if (kind == Kind::Directional) {
     setFloat(device, light, "angularDiameter", item.angularDiameter);
-    setFloat(device, light, "irradiance", item.shader.intensity);
-    break;
-  case Kind::Hdri: {
-    auto image = image::read(item.shader.image);
-    if (!image.ok()) {
-      report(NSIErrWarning,
-          "environment image '" + item.shader.image + "': " + image.error
-              + "; ignored");
-      return nullptr;
-    }
-    std::vector<float> radiance;
-    radiance.reserve(image.image.pixels.size() * 3);
-    for (auto &p : image.image.pixels)
-      radiance.insert(radiance.end(), {p.r, p.g, p.b});
-    ANARIArray2D array = anariNewArray2D(device,
-        nullptr,
-        nullptr,
-        nullptr,
-        ANARI_FLOAT32_VEC3,
-        image.image.width,
-        image.image.height);
-    if (void *mapped = anariMapArray(device, array))
-      std::memcpy(mapped, radiance.data(), radiance.size() * sizeof(float));
-    anariUnmapArray(device, array);
-    light = anariNewLight(device, "hdri");
-    anariSetParameter(device, light, "radiance", ANARI_ARRAY2D, &array);
-    anariRelease(device, array);
-    setVec3(device, light, "direction", item.direction);
+    setFloat(device, light, "irradiance", shader.intensity);
+  } else if (kind == Kind::Hdri) {
     setVec3(device, light, "up", item.edge1);
-    setFloat(device, light, "scale", item.shader.intensity);
-    break;
+    setFloat(device, light, "scale", shader.intensity);
+  } else if (shader.hasPower) {
+    setFloat(device, light, "power", shader.power);
+  } else {
+    setFloat(device,
+        light,
+        shader.normalizeArea ? "intensity" : "radiance",
+        shader.intensity);
   }
-  case Kind::Ambient:
-    return nullptr;
-  }
-  setVec3(device, light, "color", item.shader.color);
+  setVec3(device, light, "color", shader.color);
   const bool visible = item.visibleToCamera;
   anariSetParameter(device, light, "visible", ANARI_BOOL, &visible);
-  anariCommitParameters(device, light);
-  return light;
+}
+
+// The environment image as an hdri's radiance; false (warned) when it
+// cannot be read.
+bool setHdriImage(ANARIDevice device,
+    ANARILight light,
+    const std::string &file,
+    const ReportFunction &report)
+{
+  auto image = image::read(file);
+  if (!image.ok()) {
+    report(NSIErrWarning,
+        "environment image '" + file + "': " + image.error + "; ignored");
+    return false;
+  }
+  std::vector<float> radiance;
+  radiance.reserve(image.image.pixels.size() * 3);
+  for (auto &p : image.image.pixels)
+    radiance.insert(radiance.end(), {p.r, p.g, p.b});
+  ANARIArray2D array = anariNewArray2D(device,
+      nullptr,
+      nullptr,
+      nullptr,
+      ANARI_FLOAT32_VEC3,
+      image.image.width,
+      image.image.height);
+  if (void *mapped = anariMapArray(device, array))
+    std::memcpy(mapped, radiance.data(), radiance.size() * sizeof(float));
+  anariUnmapArray(device, array);
+  anariSetParameter(device, light, "radiance", ANARI_ARRAY2D, &array);
+  anariRelease(device, array);
+  return true;
+}
+
+void setTransform(
+    ANARIDevice device, ANARIInstance instance, const Placement &placement)
+{
+  std::vector<float> transforms;
+  for (const Matrix &m : placement)
+    transforms.insert(transforms.end(), m.begin(), m.end());
+  if (placement.size() > 1) {
+    // Uniform over the shutter, which the camera maps to [0, 1].
+    setArray(device,
+        instance,
+        "motion.transform",
+        newArray(
+            device, ANARI_FLOAT32_MAT4, transforms.data(), placement.size()));
+    const float time[2] = {0.f, 1.f};
+    anariSetParameter(device, instance, "time", ANARI_FLOAT32_BOX1, time);
+  } else {
+    anariSetParameter(
+        device, instance, "transform", ANARI_FLOAT32_MAT4, transforms.data());
+  }
+}
+
+// Sets the world's object array `name` to `handles` unless `current`
+// already holds them (or `force`); true when set.
+template <typename Handle>
+bool setObjectList(ANARIDevice device,
+    ANARIWorld world,
+    const char *name,
+    ANARIDataType type,
+    const std::vector<Handle> &handles,
+    std::vector<Handle> &current,
+    bool force)
+{
+  if (!force && handles == current)
+    return false;
+  if (handles.empty())
+    anariUnsetParameter(device, world, name);
+  else
+    setArray(device,
+        world,
+        name,
+        newArray(device, type, handles.data(), handles.size()));
+  current = handles;
+  return true;
 }
 
 } // namespace
 
-AnariWorld buildAnariWorld(ANARIDevice device,
-    const ResolvedScene &scene,
-    const ReportFunction &report)
+std::string AnariUpdateCounts::summary() const
 {
-  AnariWorld out;
-  // Only the geometry some surface uses (a mesh split by facesets is not).
-  std::map<std::string, ANARIGeometry> geometries;
-  for (auto &item : scene.surfaces) {
-    if (!geometries.count(item.geometryHandle))
-      geometries[item.geometryHandle] =
-          newGeometry(device, scene.geometries.at(item.geometryHandle));
-  }
+  static const char *const kNames[CategoryCount] = {
+      "geometry", "material", "surface", "group", "instance", "light", "world"};
+  std::string text;
+  auto list = [&](const char *what, const auto &counts) {
+    text += text.empty() ? what : std::string("; ") + what;
+    for (int c = 0; c < CategoryCount; ++c)
+      text += std::string(" ") + kNames[c] + " " + std::to_string(counts[c]);
+  };
+  list("created", created);
+  list("committed", committed);
+  list("released", released);
+  return text;
+}
 
+AnariWorldBuilder::AnariWorldBuilder(ANARIDevice device, ReportFunction report)
+    : m_device(device), m_report(std::move(report))
+{}
+
+AnariWorldBuilder::~AnariWorldBuilder()
+{
+  for (auto &[key, entry] : m_instances)
+    anariRelease(m_device, entry.handle);
+  for (auto &[key, entry] : m_groups) {
+    anariRelease(m_device, entry.data.surface);
+    anariRelease(m_device, entry.handle);
+  }
+  for (auto &[key, entry] : m_materials)
+    anariRelease(m_device, entry.handle);
+  for (auto &[key, entry] : m_geometries)
+    anariRelease(m_device, entry.handle);
+  for (auto &[key, entry] : m_lights)
+    anariRelease(m_device, entry.handle);
+  if (m_world)
+    anariRelease(m_device, m_world);
+}
+
+void AnariWorldBuilder::commit(Category category, ANARIObject object)
+{
+  anariCommitParameters(m_device, object);
+  ++m_counts.committed[category];
+}
+
+void AnariWorldBuilder::release(Category category, ANARIObject object)
+{
+  anariRelease(m_device, object);
+  ++m_counts.released[category];
+}
+
+ANARIGeometry AnariWorldBuilder::geometry(
+    const std::string &handle, const GeometryData &data)
+{
+  auto &entry = m_geometries[handle];
+  entry.used = true;
+  if (entry.handle && entry.data == data)
+    return entry.handle;
+  if (entry.handle
+      && std::strcmp(geometrySubtype(entry.data), geometrySubtype(data)) != 0) {
+    release(Category::Geometry, entry.handle);
+    entry.handle = nullptr;
+  }
+  if (!entry.handle) {
+    entry.handle = anariNewGeometry(m_device, geometrySubtype(data));
+    ++m_counts.created[Category::Geometry];
+  }
+  entry.data = data;
+  setGeometryParameters(m_device, entry.handle, data);
+  commit(Category::Geometry, entry.handle);
+  return entry.handle;
+}
+
+ANARIMaterial AnariWorldBuilder::material(
+    const SurfaceItem &item, std::string &key)
+{
+  const char *subtype = materialSubtype(item.shader);
+  key = item.shaderHandle + '\n' + subtype;
+  // A key already used by this update for other values gets a suffix.
+  for (int n = 1;; ++n) {
+    auto found = m_materials.find(key);
+    if (found == m_materials.end() || !found->second.used
+        || found->second.data == item.shader)
+      break;
+    key = item.shaderHandle + '\n' + subtype + '\n' + std::to_string(n);
+  }
+  auto &entry = m_materials[key];
+  entry.used = true;
+  if (entry.handle && entry.data == item.shader)
+    return entry.handle;
+  if (!entry.handle) {
+    entry.handle = anariNewMaterial(m_device, subtype);
+    ++m_counts.created[Category::Material];
+  }
+  entry.data = item.shader;
+  setMaterialParameters(m_device, entry.handle, item.shader);
+  commit(Category::Material, entry.handle);
+  return entry.handle;
+}
+
+ANARIGroup AnariWorldBuilder::group(
+    const std::string &key, ANARIGeometry geometry, ANARIMaterial material)
+{
+  auto &entry = m_groups[key];
+  entry.used = true;
+  SurfaceData &data = entry.data;
+  if (!entry.handle) {
+    data.surface = anariNewSurface(m_device);
+    ++m_counts.created[Category::Surface];
+  }
+  if (data.geometry != geometry || data.material != material) {
+    data.geometry = geometry;
+    data.material = material;
+    anariSetParameter(
+        m_device, data.surface, "geometry", ANARI_GEOMETRY, &geometry);
+    anariSetParameter(
+        m_device, data.surface, "material", ANARI_MATERIAL, &material);
+    commit(Category::Surface, data.surface);
+  }
+  if (!entry.handle) {
+    entry.handle = anariNewGroup(m_device);
+    ++m_counts.created[Category::Group];
+    setArray(m_device,
+        entry.handle,
+        "surface",
+        newArray(m_device, ANARI_SURFACE, &data.surface, 1));
+    commit(Category::Group, entry.handle);
+  }
+  return entry.handle;
+}
+
+ANARIInstance AnariWorldBuilder::instance(
+    const std::string &key, ANARIGroup group, const Placement &placement)
+{
+  auto &entry = m_instances[key];
+  entry.used = true;
+  if (entry.handle && entry.data == placement)
+    return entry.handle;
+  const bool moves = placement.size() > 1;
+  if (entry.handle && moves != (entry.data.size() > 1)) {
+    release(Category::Instance, entry.handle);
+    entry.handle = nullptr;
+  }
+  if (!entry.handle) {
+    entry.handle =
+        anariNewInstance(m_device, moves ? "motionTransform" : "transform");
+    ++m_counts.created[Category::Instance];
+    anariSetParameter(m_device, entry.handle, "group", ANARI_GROUP, &group);
+  }
+  entry.data = placement;
+  setTransform(m_device, entry.handle, placement);
+  commit(Category::Instance, entry.handle);
+  return entry.handle;
+}
+
+ANARILight AnariWorldBuilder::light(size_t index, const LightItem &item)
+{
+  // Keyed by position and kind: a scene that keeps its lights keeps them.
+  const char *subtype = lightSubtype(item.kind);
+  auto &entry = m_lights[std::to_string(index) + '\n' + subtype];
+  entry.used = true;
+  if (entry.handle && entry.data == item)
+    return entry.handle;
+  // An hdri whose image changed is made anew (its image is read once).
+  if (entry.handle
+      && (item.kind == LightItem::Kind::Hdri
+          || entry.data.shader.image != item.shader.image)) {
+    release(Category::Light, entry.handle);
+    entry.handle = nullptr;
+  }
+  if (!entry.handle) {
+    ANARILight light = anariNewLight(m_device, subtype);
+    if (item.kind == LightItem::Kind::Hdri
+        && !setHdriImage(m_device, light, item.shader.image, m_report)) {
+      anariRelease(m_device, light);
+      entry.used = false;
+      return nullptr;
+    }
+    entry.handle = light;
+    ++m_counts.created[Category::Light];
+  }
+  entry.data = item;
+  setLightParameters(m_device, entry.handle, item);
+  commit(Category::Light, entry.handle);
+  return entry.handle;
+}
+
+template <typename Record>
+void AnariWorldBuilder::releaseUnused(
+    std::map<std::string, Record> &records, Category category)
+{
+  for (auto it = records.begin(); it != records.end();) {
+    if (it->second.used) {
+      it->second.used = false; // for the next update
+      ++it;
+      continue;
+    }
+    if constexpr (std::is_same_v<Record, decltype(m_groups)::mapped_type>) {
+      if (it->second.data.surface)
+        release(Category::Surface, it->second.data.surface);
+    }
+    if (it->second.handle)
+      release(category, it->second.handle);
+    it = records.erase(it);
+  }
+}
+
+AnariWorld AnariWorldBuilder::update(const ResolvedScene &scene)
+{
+  m_counts = {};
+  AnariWorld out;
   std::vector<ANARIInstance> instances;
   for (auto &item : scene.surfaces) {
-    ANARISurface surface = anariNewSurface(device);
-    ANARIGeometry geometry = geometries.at(item.geometryHandle);
-    ANARIMaterial material = newMaterial(device, item.shader);
-    anariSetParameter(device, surface, "geometry", ANARI_GEOMETRY, &geometry);
-    anariSetParameter(device, surface, "material", ANARI_MATERIAL, &material);
-    anariCommitParameters(device, surface);
-    anariRelease(device, material);
-
-    ANARIGroup group = anariNewGroup(device);
-    setArray(
-        device, group, "surface", newArray(device, ANARI_SURFACE, &surface, 1));
-    anariCommitParameters(device, group);
-    anariRelease(device, surface);
-    for (const Placement &placement : item.worldFromObject) {
-      std::vector<float> transforms;
-      for (const Matrix &m : placement)
-        transforms.insert(transforms.end(), m.begin(), m.end());
-      const bool moves = placement.size() > 1;
-      ANARIInstance instance =
-          anariNewInstance(device, moves ? "motionTransform" : "transform");
-      anariSetParameter(device, instance, "group", ANARI_GROUP, &group);
-      if (moves) {
-        // Uniform over the shutter, which the camera maps to [0, 1].
-        setArray(device,
-            instance,
-            "motion.transform",
-            newArray(device,
-                ANARI_FLOAT32_MAT4,
-                transforms.data(),
-                placement.size()));
-        const float time[2] = {0.f, 1.f};
-        anariSetParameter(device, instance, "time", ANARI_FLOAT32_BOX1, time);
-      } else {
-        anariSetParameter(device,
-            instance,
-            "transform",
-            ANARI_FLOAT32_MAT4,
-            transforms.data());
-      }
-      anariCommitParameters(device, instance);
-      instances.push_back(instance);
-    }
-    anariRelease(device, group);
+    ANARIGeometry geometry = this->geometry(
+        item.geometryHandle, scene.geometries.at(item.geometryHandle));
+    std::string materialKey;
+    ANARIMaterial material = this->material(item, materialKey);
+    const std::string groupKey = item.geometryHandle + '\n' + materialKey
+                                 + (item.visibleToCamera ? "\n1" : "\n0");
+    ANARIGroup group = this->group(groupKey, geometry, material);
+    for (size_t p = 0; p < item.worldFromObject.size(); ++p)
+      instances.push_back(this->instance(
+          groupKey + '\n' + std::to_string(p), group, item.worldFromObject[p]));
   }
-  for (auto &[handle, geometry] : geometries)
-    anariRelease(device, geometry);
 
   std::vector<ANARILight> lights;
-  for (auto &item : scene.lights) {
+  for (size_t i = 0; i < scene.lights.size(); ++i) {
+    const LightItem &item = scene.lights[i];
     if (item.kind == LightItem::Kind::Ambient) {
       out.ambientColor = item.shader.color;
       out.ambientRadiance += item.shader.intensity;
@@ -285,26 +501,41 @@ AnariWorld buildAnariWorld(ANARIDevice device,
       }
       continue;
     }
-    if (ANARILight light = newLight(device, item, report))
+    if (ANARILight light = this->light(i, item))
       lights.push_back(light);
   }
 
-  out.world = anariNewWorld(device);
-  if (!instances.empty())
-    setArray(device,
-        out.world,
-        "instance",
-        newArray(device, ANARI_INSTANCE, instances.data(), instances.size()));
-  if (!lights.empty())
-    setArray(device,
-        out.world,
-        "light",
-        newArray(device, ANARI_LIGHT, lights.data(), lights.size()));
-  anariCommitParameters(device, out.world);
-  for (auto instance : instances)
-    anariRelease(device, instance);
-  for (auto light : lights)
-    anariRelease(device, light);
+  // The world is told only when the set of its instances or lights changed;
+  // edits inside them reach it through their own commits.
+  bool worldChanged = false;
+  if (!m_world) {
+    m_world = anariNewWorld(m_device);
+    ++m_counts.created[Category::World];
+    worldChanged = true;
+  }
+  worldChanged |= setObjectList(m_device,
+      m_world,
+      "instance",
+      ANARI_INSTANCE,
+      instances,
+      m_worldInstances,
+      worldChanged);
+  worldChanged |= setObjectList(m_device,
+      m_world,
+      "light",
+      ANARI_LIGHT,
+      lights,
+      m_worldLights,
+      worldChanged);
+  if (worldChanged)
+    commit(Category::World, m_world);
+
+  releaseUnused(m_instances, Category::Instance);
+  releaseUnused(m_groups, Category::Group);
+  releaseUnused(m_materials, Category::Material);
+  releaseUnused(m_geometries, Category::Geometry);
+  releaseUnused(m_lights, Category::Light);
+  out.world = m_world;
   return out;
 }
 

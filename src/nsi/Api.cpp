@@ -53,6 +53,19 @@ bool present(
   return false;
 }
 
+// The handles and target attribute a connection needs; a null one is
+// reported and the call skipped.
+bool connectionNamed(Context &context,
+    const char *call,
+    NSIHandle_t from,
+    NSIHandle_t to,
+    const char *toAttr)
+{
+  return present(context, call, "source handle", from)
+         && present(context, call, "target handle", to)
+         && present(context, call, "target attribute", toAttr);
+}
+
 ParameterList params(
     Context &context, int n, const NSIParam_t *p, const char *call)
 {
@@ -168,9 +181,7 @@ NSI_API void NSIConnect(NSIContext_t ctx,
     const NSIParam_t *p)
 {
   withContext(ctx, "NSIConnect", [&](Context &c) {
-    if (present(c, "NSIConnect", "source handle", from)
-        && present(c, "NSIConnect", "target handle", to)
-        && present(c, "NSIConnect", "target attribute", to_attr))
+    if (connectionNamed(c, "NSIConnect", from, to, to_attr))
       c.connect(from,
           from_attr ? from_attr : "",
           to,
@@ -186,9 +197,7 @@ NSI_API void NSIDisconnect(NSIContext_t ctx,
     const char *to_attr)
 {
   withContext(ctx, "NSIDisconnect", [&](Context &c) {
-    if (present(c, "NSIDisconnect", "source handle", from)
-        && present(c, "NSIDisconnect", "target handle", to)
-        && present(c, "NSIDisconnect", "target attribute", to_attr))
+    if (connectionNamed(c, "NSIDisconnect", from, to, to_attr))
       c.disconnect(from, from_attr ? from_attr : "", to, to_attr);
   });
 }

@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
+#include <utility>
 
 namespace prism::nsi {
 
@@ -75,7 +76,8 @@ Context::Context(NSIContext_t id, const ParameterList &params)
 Context::~Context()
 {
   if (m_render)
-    m_render->stop(); // the render thread reports through this context
+    m_render->close();   // the render thread reports through this context
+  m_procedurals.reset(); // unloaded while the context still reports
 }
 
 void Context::report(int level, const std::string &message) const
@@ -98,6 +100,8 @@ void Context::create(const std::string &handle,
 {
   if (m_writer)
     return m_writer->statement("Create", {handle, type}, params);
+  if (m_created && !m_graph.find(handle))
+    m_created->push_back(handle);
   m_graph.create(handle, type);
 }
 
@@ -150,7 +154,7 @@ void Context::connect(const std::string &from,
         "it");
   m_graph.connect(from,
       fromAttr,
-      to,
+      localRoot(to),
       toAttr,
       connectionInt(params, "priority"),
       connectionInt(params, "strength"),
@@ -164,7 +168,7 @@ void Context::disconnect(const std::string &from,
 {
   if (m_writer)
     return m_writer->statement("Disconnect", {from, fromAttr, to, toAttr}, {});
-  m_graph.disconnect(from, fromAttr, to, toAttr);
+  m_graph.disconnect(from, fromAttr, localRoot(to), toAttr);
 }
 
 void Context::evaluate(const ParameterList &params)
@@ -184,7 +188,14 @@ void Context::evaluate(const ParameterList &params)
     runLua(
         m_id, reporter(), params, fileName.empty() ? "" : expandPath(fileName));
   } else if (type == "dynamiclibrary") {
-    report(NSIErrError, "NSIEvaluate: type '" + type + "' is not supported");
+    const std::string fileName = params.string("filename", "");
+    if (fileName.empty()) {
+      report(NSIErrError, "NSIEvaluate: 'dynamiclibrary' without a 'filename'");
+      return;
+    }
+    if (!m_procedurals)
+      m_procedurals = std::make_unique<DynamicProcedurals>(m_id, reporter());
+    m_procedurals->execute(expandPath(fileName), params);
   } else {
     report(NSIErrError, "NSIEvaluate: unknown type '" + type + "'");
   }
@@ -220,6 +231,59 @@ void Context::includeStream(const std::string &fileName)
   StreamReader(m_id, reporter(), fileName).read(text);
 }
 
+const std::string &Context::localRoot(const std::string &handle) const
+{
+  return handle == NSI_SCENE_ROOT && !m_localRoot.empty() ? m_localRoot
+                                                          : handle;
+}
+
+void Context::removeNodes(const std::vector<std::string> &handles)
+{
+  for (auto &handle : handles) {
+    if (m_graph.find(handle)) // the client may have deleted it
+      m_graph.remove(handle, false);
+  }
+}
+
+void Context::runProceduralNodes()
+{
+  for (auto it = m_proceduralRuns.begin(); it != m_proceduralRuns.end();) {
+    const Node *node = m_graph.find(it->first);
+    if (node && node->type == "procedural") {
+      ++it;
+      continue;
+    }
+    removeNodes(it->second.created);
+    it = m_proceduralRuns.erase(it);
+  }
+  std::vector<std::pair<std::string, ParameterList>> due;
+  for (auto &[handle, node] : m_graph.nodes()) {
+    if (node.type != "procedural")
+      continue;
+    ParameterList params;
+    for (auto &[name, attribute] : node.attributes) {
+      if (attribute.value)
+        params.values.push_back({name, *attribute.value});
+    }
+    auto found = m_proceduralRuns.find(handle);
+    if (found == m_proceduralRuns.end()
+        || found->second.attributes != params.values)
+      due.emplace_back(handle, std::move(params));
+  }
+  for (auto &[handle, params] : due) {
+    ProceduralRun &run = m_proceduralRuns[handle];
+    removeNodes(run.created);
+    run = {params.values, {}};
+    // One level deep: what a procedural's procedural nodes make runs at
+    // the next start or synchronize.
+    const std::string outerRoot = std::exchange(m_localRoot, handle);
+    auto *outerCreated = std::exchange(m_created, &run.created);
+    evaluate(params);
+    m_localRoot = outerRoot;
+    m_created = outerCreated;
+  }
+}
+
 void Context::renderControl(const ParameterList &params)
 {
   if (m_writer)
@@ -230,16 +294,7 @@ void Context::renderControl(const ParameterList &params)
   } else if (action == "wait") {
     finishRender(false);
   } else if (action == "synchronize") {
-    // Without incremental updates yet, a synchronize renders the scene anew:
-    // a render under way is restarted (and says so), and the new one ends
-    // "synchronized".
-    const bool wasRunning = m_render && m_render->running();
-    if (m_render)
-      m_render->silenceStopped();
-    finishRender(true);
-    if (wasRunning && m_stopped)
-      m_stopped(NSIRenderRestarted);
-    startRender(params, true);
+    synchronize(params);
   } else if (action == "stop") {
     finishRender(true);
   } else if (action == "suspend" || action == "resume") {
@@ -262,18 +317,9 @@ void Context::finishRender(bool stop)
   mutex.lock();
 }
 
-void Context::startRender(const ParameterList &params, bool synchronizing)
+RenderSession::Stopped Context::stoppedCallback(
+    const ParameterList &params, bool synchronizing)
 {
-  if (m_render && m_render->running()) {
-    report(NSIErrError,
-        "NSIRenderControl: 'start' while a render is running; ignored");
-    return;
-  }
-  if (params.number("interactive", 0) != 0
-      || params.number("progressive", 0) != 0)
-    report(NSIErrWarning,
-        "NSIRenderControl: interactive and progressive renders are not "
-        "supported; rendering once");
   // The callback stays with the context until another is given.
   auto callback =
       reinterpret_cast<NSIRenderStopped_t>(params.pointer("stoppedcallback"));
@@ -284,12 +330,49 @@ void Context::startRender(const ParameterList &params, bool synchronizing)
       callback(callbackData, id, status);
     };
   }
-  RenderSession::Stopped stopped = m_stopped;
-  if (synchronizing && stopped) {
-    stopped = [report = m_stopped](int status) {
-      report(status == NSIRenderCompleted ? NSIRenderSynchronized : status);
-    };
+  if (!synchronizing || !m_stopped)
+    return m_stopped;
+  return [report = m_stopped](int status) {
+    report(status == NSIRenderCompleted ? NSIRenderSynchronized : status);
+  };
+}
+
+void Context::synchronize(const ParameterList &params)
+{
+  // A render under way is restarted (and says so); the new one ends
+  // "synchronized". The ANARI objects of the last render are kept, and only
+  // those the edits touch are updated.
+  const bool wasRunning = m_render && m_render->running();
+  if (m_render)
+    m_render->silenceStopped();
+  finishRender(true);
+  if (wasRunning && m_stopped)
+    m_stopped(NSIRenderRestarted);
+  if (!m_render || !m_render->hasDevice())
+    return startRender(params, true);
+  if (m_render->running()) { // another thread started one meanwhile
+    report(NSIErrError,
+        "NSIRenderControl: 'synchronize' while a render is starting; "
+        "ignored");
+    return;
   }
+  runProceduralNodes();
+  const ResolvedScene scene = resolveScene(m_graph, reporter(), expandPath);
+  m_render->synchronize(scene, stoppedCallback(params, true));
+  report(NSIErrInfo,
+      "NSIRenderControl: synchronize updated the ANARI objects: "
+          + m_render->counts().summary());
+}
+
+void Context::startRender(const ParameterList &params, bool synchronizing)
+{
+  if (m_render && m_render->running()) {
+    report(NSIErrError,
+        "NSIRenderControl: 'start' while a render is running; ignored");
+    return;
+  }
+  const RenderSession::Stopped stopped = stoppedCallback(params, synchronizing);
+  runProceduralNodes();
   const ResolvedScene scene = resolveScene(m_graph, reporter(), expandPath);
   m_render = std::make_shared<RenderSession>(reporter(), stopped);
   if (!m_render->start(m_anariLibrary, scene))

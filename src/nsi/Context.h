@@ -3,11 +3,13 @@
 // points lock it, so one context may be used from several threads.
 #pragma once
 
+#include "DynamicProcedurals.h"
 #include "Graph.h"
 #include "ParameterList.h"
 #include "RenderSession.h"
 #include "StreamWriter.h"
 
+#include <map>
 #include <memory>
 #include <mutex>
 #include <set>
@@ -53,9 +55,20 @@ class Context
 
  private:
   void includeStream(const std::string &fileName);
+  // Runs the procedural nodes whose attributes changed since they last ran
+  // (first deleting what that run made), and forgets the deleted ones'.
+  void runProceduralNodes();
+  void removeNodes(const std::vector<std::string> &handles);
+  // `handle`, or the running procedural node for .root.
+  const std::string &localRoot(const std::string &handle) const;
   // `synchronizing`: the render's completion is reported as
   // NSIRenderSynchronized.
   void startRender(const ParameterList &params, bool synchronizing = false);
+  void synchronize(const ParameterList &params);
+  // The stopped callback for a render (the one given in `params`, else the
+  // last one); when `synchronizing`, completion reads NSIRenderSynchronized.
+  RenderSession::Stopped stoppedCallback(
+      const ParameterList &params, bool synchronizing);
   // Waits for (or stops) the render without holding the context lock, so
   // other threads and the stopped callback can use the context meanwhile.
   void finishRender(bool stop);
@@ -67,10 +80,23 @@ class Context
   std::string m_anariLibrary{"prism"};
   Graph m_graph;
   std::unique_ptr<StreamWriter> m_writer; // set for `type apistream`
+  // Loaded at the first dynamiclibrary Evaluate; unloaded at NSIEnd.
+  std::unique_ptr<DynamicProcedurals> m_procedurals;
   // Shared so a thread waiting without the lock keeps it alive.
   std::shared_ptr<RenderSession> m_render;
   RenderSession::Stopped m_stopped;    // the last stoppedcallback given
   std::set<std::string> m_openStreams; // includes being read, against cycles
+  // Per procedural node: the attributes it last ran with, the nodes it made.
+  struct ProceduralRun
+  {
+    std::vector<NamedValue> attributes;
+    std::vector<std::string> created;
+  };
+  std::map<std::string, ProceduralRun> m_proceduralRuns;
+  // While a procedural node runs: its handle stands for .root, and the
+  // nodes created are recorded.
+  std::string m_localRoot;
+  std::vector<std::string> *m_created{nullptr};
   // Evaluate types a stream-writing context runs rather than records.
   std::set<std::string> m_executedTypes;
 };

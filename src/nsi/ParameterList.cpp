@@ -60,4 +60,27 @@ void *ParameterList::pointer(const std::string &name) const
   return p;
 }
 
+ParamArray::ParamArray(const ParameterList &params)
+{
+  for (auto &param : params.values)
+    add(param.name, param.value);
+}
+
+void ParamArray::add(const std::string &name, const Value &value)
+{
+  const void *data = value.bytes.data();
+  if (value.type == NSITypeString) {
+    auto &pointers = m_strings.emplace_back();
+    for (auto &s : value.strings)
+      pointers.push_back(s.c_str());
+    data = pointers.data();
+  }
+  m_params.push_back({name.c_str(),
+      data,
+      value.type,
+      value.arraylength,
+      value.count,
+      value.flags});
+}
+
 } // namespace prism::nsi

@@ -4,6 +4,7 @@
 
 #include "Value.h"
 
+#include <deque>
 #include <functional>
 #include <string>
 #include <vector>
@@ -36,6 +37,28 @@ class ParameterList
   void *pointer(const std::string &name) const;
 
   std::vector<NamedValue> values;
+};
+
+// Values laid out again as an NSIParam_t array, to pass them on to a C
+// call; valid while this object and the values live.
+class ParamArray
+{
+ public:
+  ParamArray() = default;
+  explicit ParamArray(const ParameterList &params);
+  void add(const std::string &name, const Value &value);
+  int size() const
+  {
+    return int(m_params.size());
+  }
+  const NSIParam_t *data() const
+  {
+    return m_params.data();
+  }
+
+ private:
+  std::deque<std::vector<const char *>> m_strings; // stable addresses
+  std::vector<NSIParam_t> m_params;
 };
 
 } // namespace prism::nsi

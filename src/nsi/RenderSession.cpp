@@ -44,21 +44,20 @@ RenderSession::RenderSession(ReportFunction report, Stopped stopped)
 
 RenderSession::~RenderSession()
 {
-  stop();
+  close();
 }
 
 void RenderSession::release()
 {
+  m_builder.reset(); // its objects first, while the device lives
   if (m_device) {
-    if (m_world)
-      anariRelease(m_device, m_world);
     if (m_renderer)
       anariRelease(m_device, m_renderer);
     anariRelease(m_device, m_device);
   }
   if (m_library)
     anariUnloadLibrary(m_library);
-  m_world = nullptr;
+  m_world = {};
   m_renderer = nullptr;
   m_device = nullptr;
   m_library = nullptr;
@@ -67,7 +66,7 @@ void RenderSession::release()
 bool RenderSession::start(
     const std::string &library, const ResolvedScene &scene)
 {
-  stop();
+  close();
   m_library = anariLoadLibrary(library.c_str(), onAnariStatus, &m_report);
   if (!m_library) {
     m_report(NSIErrError, "cannot load the ANARI library '" + library + "'");
@@ -80,34 +79,70 @@ bool RenderSession::start(
     release();
     return false;
   }
-  AnariWorld world = buildAnariWorld(m_device, scene, m_report);
-  m_world = world.world;
+  m_builder = std::make_unique<AnariWorldBuilder>(m_device, m_report);
   m_renderer = anariNewRenderer(m_device, "default");
-  anariSetParameter(m_device,
-      m_renderer,
-      "background",
-      ANARI_FLOAT32_VEC4,
-      world.background.data());
-  anariSetParameter(m_device,
-      m_renderer,
-      "ambientColor",
-      ANARI_FLOAT32_VEC3,
-      world.ambientColor.data());
-  anariSetParameter(m_device,
-      m_renderer,
-      "ambientRadiance",
-      ANARI_FLOAT32,
-      &world.ambientRadiance);
-  anariCommitParameters(m_device, m_renderer);
+  apply(scene);
+  launch();
+  return true;
+}
+
+void RenderSession::synchronize(const ResolvedScene &scene, Stopped stopped)
+{
+  stop();
+  m_stopped = std::move(stopped);
+  m_silent = false;
+  apply(scene);
+  launch();
+}
+
+void RenderSession::apply(const ResolvedScene &scene)
+{
+  const AnariWorld world = m_builder->update(scene);
+  // The renderer holds the environment: set and committed when it changed.
+  const bool first = !m_world.world;
+  if (first || world.background != m_world.background
+      || world.ambientColor != m_world.ambientColor
+      || world.ambientRadiance != m_world.ambientRadiance
+      || scene.options != m_options) {
+    if (scene.options.maxPathLength > 0)
+      anariSetParameter(m_device,
+          m_renderer,
+          "maxPathLength",
+          ANARI_INT32,
+          &scene.options.maxPathLength);
+    else
+      anariUnsetParameter(m_device, m_renderer, "maxPathLength");
+    anariSetParameter(m_device,
+        m_renderer,
+        "background",
+        ANARI_FLOAT32_VEC4,
+        world.background.data());
+    anariSetParameter(m_device,
+        m_renderer,
+        "ambientColor",
+        ANARI_FLOAT32_VEC3,
+        world.ambientColor.data());
+    anariSetParameter(m_device,
+        m_renderer,
+        "ambientRadiance",
+        ANARI_FLOAT32,
+        &world.ambientRadiance);
+    anariCommitParameters(m_device, m_renderer);
+  }
+  m_world = world;
+  m_options = scene.options;
   m_cameras = scene.cameras;
   m_hasMotion = scene.hasMotion;
   if (m_cameras.empty())
     m_report(NSIErrWarning,
         "no camera with a screen hangs under .root; nothing is rendered");
+}
+
+void RenderSession::launch()
+{
   m_stopRequested = false;
   m_running = true;
   m_thread = std::thread([this] { renderAll(); });
-  return true;
 }
 
 void RenderSession::wait()
@@ -123,6 +158,12 @@ void RenderSession::stop()
   std::lock_guard lock(m_joinMutex);
   if (m_thread.joinable())
     m_thread.join();
+}
+
+void RenderSession::close()
+{
+  stop();
+  std::lock_guard lock(m_joinMutex);
   release();
 }
 
@@ -200,7 +241,7 @@ void RenderSession::renderAll()
     anariSetParameter(m_device, frame, "accumulation", ANARI_BOOL, &accumulate);
     anariSetParameter(m_device, frame, "renderer", ANARI_RENDERER, &m_renderer);
     anariSetParameter(m_device, frame, "camera", ANARI_CAMERA, &camera);
-    anariSetParameter(m_device, frame, "world", ANARI_WORLD, &m_world);
+    anariSetParameter(m_device, frame, "world", ANARI_WORLD, &m_world.world);
     anariCommitParameters(m_device, frame);
     anariRelease(m_device, camera);
 

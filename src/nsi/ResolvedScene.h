@@ -3,6 +3,7 @@
 #pragma once
 
 #include "CameraFraming.h"
+#include "GlobalOptions.h"
 #include "Matrix.h"
 #include "ShaderTable.h"
 
@@ -28,6 +29,8 @@ struct GeometryData
   std::vector<uint32_t> segmentStarts; // curves
   std::vector<uint32_t> triangles;
   std::vector<uint32_t> triangleFaces; // the polygon each triangle is of
+
+  bool operator==(const GeometryData &) const = default;
 };
 
 // One geometry with one resolved shader, placed once or more.
@@ -50,6 +53,8 @@ struct LightItem
   float angularDiameter{0};
   float openingAngle{0}, falloffAngle{0}; // spot, radians
   bool visibleToCamera{true};
+
+  bool operator==(const LightItem &) const = default;
 };
 
 struct OutputItem
@@ -81,6 +86,7 @@ struct ResolvedScene
   std::vector<SurfaceItem> surfaces;
   std::vector<LightItem> lights;
   std::vector<CameraItem> cameras;
+  GlobalOptions options;
 };
 
 } // namespace prism::nsi

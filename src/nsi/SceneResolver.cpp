@@ -221,7 +221,10 @@ class Resolver
       return;
     }
     Placement world = worldFromParent;
-    if (node->type == "transform") {
+    // A procedural node is the local root of what it made: a transform.
+    const bool transforms =
+        node->type == "transform" || node->type == "procedural";
+    if (transforms) {
       const Placement local = localMatrices(*node);
       world.resize(std::max(local.size(), worldFromParent.size()));
       for (size_t k = 0; k < world.size(); ++k)
@@ -239,7 +242,7 @@ class Resolver
     }
 
     const std::string &type = node->type;
-    if (type == "root" || type == "transform") {
+    if (type == "root" || transforms) {
       for (const Input *input : node->inputsOf("objects"))
         visit(input->from, world, attributes, depth + 1);
     } else if (type == "mesh" || type == "particles" || type == "plane"
@@ -687,7 +690,9 @@ ResolvedScene resolveScene(const Graph &graph,
     const ReportFunction &report,
     const std::function<std::string(const std::string &)> &expandPath)
 {
-  return Resolver(graph, report, expandPath).run();
+  ResolvedScene scene = Resolver(graph, report, expandPath).run();
+  scene.options = readGlobalOptions(graph, report);
+  return scene;
 }
 
 } // namespace prism::nsi

@@ -40,6 +40,8 @@ struct ShaderDescription
   bool normalizeArea{true};
   std::string image;                     // environmentLight's map
   float coneAngle{40}, penumbraAngle{0}; // spotLight, degrees
+
+  bool operator==(const ShaderDescription &) const = default;
 };
 
 // "/path/dlPrincipled.oso" -> "dlPrincipled".

@@ -1,5 +1,6 @@
 #include "StreamReader.h"
 
+#include "ParameterList.h"
 #include "StreamTokenizer.h"
 #include "Value.h"
 
@@ -303,24 +304,10 @@ void StreamReader::read(const std::string &text)
       names.clear();
       values.clear();
     }
-    std::vector<const char *> stringPointers;
-    size_t totalStrings = 0;
-    for (auto &v : values)
-      totalStrings += v.strings.size();
-    stringPointers.reserve(totalStrings);
-    std::vector<NSIParam_t> params;
-    for (size_t i = 0; i < values.size(); ++i) {
-      const Value &v = values[i];
-      const void *data = v.bytes.data();
-      if (v.type == NSITypeString) {
-        data = stringPointers.data() + stringPointers.size();
-        for (auto &s : v.strings)
-          stringPointers.push_back(s.c_str());
-      }
-      params.push_back(
-          {names[i].c_str(), data, v.type, v.arraylength, v.count, v.flags});
-    }
-    const int n = int(params.size());
+    ParamArray params;
+    for (size_t i = 0; i < values.size(); ++i)
+      params.add(names[i], values[i]);
+    const int n = params.size();
     const NSIParam_t *p = params.data();
     const std::string &k = keyword.text;
     if (k == "Create")

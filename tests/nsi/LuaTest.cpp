@@ -44,26 +44,13 @@ class Lua : public NsiTest
     run(ctx, script);
     NSIEnd(ctx);
   }
-
-  // A context writing its calls to `file` and running Lua it is given.
-  NSIContext_t beginLuaStream(const std::string &file)
-  {
-    NSI::ArgumentList args;
-    args.addString("type", "apistream")
-        .addString("streamfilename", file.c_str())
-        .addString("executeprocedurals", "lua");
-    args.addPointer("errorhandler",
-        reinterpret_cast<const void *>(&MessageRecorder::handler));
-    args.addPointer("errorhandlerdata", &m_messages);
-    return NSIBegin(args.size(), args.data());
-  }
 };
 
 // The nsi table's calls reach the context as the same C calls would: both
 // written to a stream, the texts are equal.
 TEST_F(Lua, CallsMatchTheCApi)
 {
-  NSIContext_t ctx = beginLuaStream(path("lua.nsi"));
+  NSIContext_t ctx = beginStream(path("lua.nsi"), "lua");
   run(ctx, R"(
 nsi.Create("m", "mesh")
 nsi.SetAttribute("m",

@@ -119,15 +119,16 @@ class NsiTest : public ::testing::Test
     args.addPointer("errorhandlerdata", &m_messages);
     return NSIBegin(args.size(), args.data());
   }
-  // A context writing the calls it gets to `file`; with `inlineStreams`,
-  // streams it is asked to Evaluate are read and their calls written.
-  NSIContext_t beginStream(const std::string &file, bool inlineStreams = false)
+  // A context writing the calls it gets to `file`; the Evaluate types in
+  // `executed` ("apistream", "lua" ...) are run and their calls written.
+  NSIContext_t beginStream(
+      const std::string &file, const char *executed = nullptr)
   {
     NSI::ArgumentList args;
     args.addString("type", "apistream")
         .addString("streamfilename", file.c_str());
-    if (inlineStreams)
-      args.addString("executeprocedurals", "apistream");
+    if (executed)
+      args.addString("executeprocedurals", executed);
     args.addPointer("errorhandler",
         reinterpret_cast<const void *>(&MessageRecorder::handler));
     args.addPointer("errorhandlerdata", &m_messages);

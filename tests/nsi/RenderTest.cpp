@@ -775,6 +775,293 @@ TEST_F(Render, SynchronizeShowsEdits)
   EXPECT_EQ(after.at(12, 8).g, 0.f);
 }
 
+// Three white squares side by side, each under its own transform with its
+// own shader, 10 units ahead of a camera with fov 30, on a 32 x 16 screen.
+const char *kThreeSquares = R"(
+Create "cam" "perspectivecamera" Connect "cam" "" ".root" "objects"
+SetAttribute "cam" "fov" "float" 1 30
+Create "scr" "screen" Connect "scr" "" "cam" "screens"
+SetAttribute "scr" "resolution" "int[2]" 1 [ 32 16 ] "oversampling" "int" 1 4
+Create "layer" "outputlayer" Connect "layer" "" "scr" "outputlayers"
+Create "file" "outputdriver" Connect "file" "" "layer" "outputdrivers"
+SetAttribute "file" "drivername" "string" 1 "exr"
+  "imagefilename" "string" 1 "${PRISM_NSI_OUT}/live.exr"
+Create "sky" "environment" Connect "sky" "" ".root" "objects"
+Create "light" "shader" SetAttribute "light" "shaderfilename" "string" 1 "environmentLight"
+Create "sky_attr" "attributes" Connect "light" "" "sky_attr" "surfaceshader"
+Connect "sky_attr" "" "sky" "geometryattributes"
+SetAttribute "sky_attr" "visibility.camera" "int" 1 0
+)";
+
+std::string squareAt(const std::string &name, double x)
+{
+  std::ostringstream text;
+  text << "Create \"" << name << "_xf\" \"transform\" Connect \"" << name
+       << "_xf\" \"\" \".root\" \"objects\"\n"
+       << "SetAttribute \"" << name
+       << "_xf\" \"transformationmatrix\" \"doublematrix\" 1 [ 1 0 0 0 0 1 0 "
+          "0 0 0 1 0 "
+       << x << " 0 0 1 ]\n"
+       << "Create \"" << name << "\" \"mesh\" Connect \"" << name
+       << "\" \"\" \"" << name << "_xf\" \"objects\"\n"
+       << "SetAttribute \"" << name
+       << "\" \"nvertices\" \"int\" 1 4 \"P\" \"point\" 4 [ -1 -1 -10  1 -1 "
+          "-10  1 1 -10  -1 1 -10 ]\n"
+       << "Create \"" << name << "_shader\" \"shader\" SetAttribute \"" << name
+       << "_shader\" \"shaderfilename\" \"string\" 1 \"lambert\" \"i_color\" "
+          "\"color\" 1 [ 1 1 1 ]\n"
+       << "Create \"" << name << "_attr\" \"attributes\" Connect \"" << name
+       << "_shader\" \"\" \"" << name << "_attr\" \"surfaceshader\"\n"
+       << "Connect \"" << name << "_attr\" \"\" \"" << name
+       << "\" \"geometryattributes\"\n";
+  return text.str();
+}
+
+// The message a synchronize reports about the ANARI objects it touched.
+std::string synchronizeCounts(MessageRecorder &messages)
+{
+  std::string found;
+  for (auto &m : messages.take()) {
+    const std::string prefix =
+        "NSIRenderControl: synchronize updated the ANARI objects: ";
+    if (m.level == NSIErrInfo && m.text.rfind(prefix, 0) == 0)
+      found = m.text.substr(prefix.size());
+    else if (m.level >= NSIErrWarning)
+      ADD_FAILURE() << m.text;
+  }
+  return found;
+}
+
+TEST_F(Render, InteractiveEditsTouchOnlyTheirObjects)
+{
+  ::setenv("PRISM_NSI_OUT", m_dir.c_str(), 1);
+  const std::string scene = writeFile("live.nsi",
+      kThreeSquares + squareAt("left", -3) + squareAt("middle", 0)
+          + squareAt("right", 3));
+  NSIContext_t ctx = beginRender();
+  include(ctx, scene);
+  StopRecord record;
+  NSI::ArgumentList start;
+  start.addString("action", "start").addInteger("interactive", 1);
+  start.addPointer(
+      "stoppedcallback", reinterpret_cast<const void *>(&StopRecord::callback));
+  start.addPointer("stoppedcallbackdata", &record);
+  NSIRenderControl(ctx, start.size(), start.data());
+  renderControl(ctx, "wait");
+  EXPECT_EQ(m_messages.problems(), "");
+  const Image before = readImage(path("live.exr"));
+  ASSERT_EQ(before.width, 32u);
+
+  // Move the middle square up 1.5 and turn the right one red.
+  NSI::ArgumentList up;
+  const double m[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 1.5, 0, 1};
+  up.add("transformationmatrix", NSITypeDoubleMatrix, m);
+  NSISetAttribute(ctx, "middle_xf", up.size(), up.data());
+  NSI::ArgumentList red;
+  const float color[3] = {1, 0, 0};
+  red.add("i_color", NSITypeColor, color);
+  NSISetAttribute(ctx, "right_shader", red.size(), red.data());
+  renderControl(ctx, "synchronize");
+  renderControl(ctx, "wait");
+  // One material and one instance set anew; nothing else made or changed.
+  EXPECT_EQ(synchronizeCounts(m_messages),
+      "created geometry 0 material 0 surface 0 group 0 instance 0 light 0 "
+      "world 0; committed geometry 0 material 1 surface 0 group 0 instance 1 "
+      "light 0 world 0; released geometry 0 material 0 surface 0 group 0 "
+      "instance 0 light 0 world 0");
+  const Image edited = readImage(path("live.exr"));
+
+  // Nothing edited: nothing touched, the same image.
+  renderControl(ctx, "synchronize");
+  renderControl(ctx, "wait");
+  EXPECT_EQ(synchronizeCounts(m_messages),
+      "created geometry 0 material 0 surface 0 group 0 instance 0 light 0 "
+      "world 0; committed geometry 0 material 0 surface 0 group 0 instance 0 "
+      "light 0 world 0; released geometry 0 material 0 surface 0 group 0 "
+      "instance 0 light 0 world 0");
+
+  // The left square deleted: its objects released, the world told.
+  NSI::ArgumentList recursive;
+  recursive.addInteger("recursive", 1);
+  NSIDelete(ctx, "left_xf", recursive.size(), recursive.data());
+  renderControl(ctx, "synchronize");
+  renderControl(ctx, "wait");
+  EXPECT_EQ(synchronizeCounts(m_messages),
+      "created geometry 0 material 0 surface 0 group 0 instance 0 light 0 "
+      "world 0; committed geometry 0 material 0 surface 0 group 0 instance 0 "
+      "light 0 world 1; released geometry 1 material 1 surface 1 group 1 "
+      "instance 1 light 0 world 0");
+  const Image deleted = readImage(path("live.exr"));
+  NSIEnd(ctx);
+  ::unsetenv("PRISM_NSI_OUT");
+
+  {
+    std::lock_guard lock(record.mutex);
+    ASSERT_EQ(record.calls.size(), 4u);
+    EXPECT_EQ(record.calls[0].second, NSIRenderCompleted);
+    for (size_t i = 1; i < 4; ++i)
+      EXPECT_EQ(record.calls[i].second, NSIRenderSynchronized);
+  }
+  // 0.335 units per pixel: the squares' centres are columns 7, 16 and 25;
+  // the middle one covers rows 5-10 from the top, and rows 1-6 moved up.
+  EXPECT_GT(value(before, 16, 10), 0.5f);
+  EXPECT_EQ(value(before, 16, 2), 0.f);
+  EXPECT_EQ(value(edited, 16, 10), 0.f);
+  EXPECT_GT(value(edited, 16, 2), 0.5f);
+  const auto &white = before.at(25, 8), &red_ = edited.at(25, 8);
+  EXPECT_GT(white.g, 0.5f);
+  EXPECT_GT(red_.r, 0.5f);
+  EXPECT_EQ(red_.g, 0.f);
+  // The untouched left square renders as it did, until deleted.
+  EXPECT_NEAR(before.at(7, 8).g, edited.at(7, 8).g, 0.02f);
+  EXPECT_GT(edited.at(7, 8).g, 0.5f);
+  EXPECT_EQ(value(deleted, 7, 8), 0.f);
+  EXPECT_GT(deleted.at(25, 8).r, 0.5f);
+}
+
+TEST_F(Render, ProceduralMeshRenders)
+{
+  // The test procedural's square, made at the start of the scene, is the
+  // white square: seen in the middle, lit by the environment.
+  NSIContext_t ctx = beginRender();
+  const Image image = renderWhite(ctx,
+      std::string(R"(Evaluate "type" "string" 1 "dynamiclibrary"
+  "filename" "string" 1 ")")
+          + PRISM_TEST_PROCEDURAL_SQUARE + R"(" "handle" "string" 1 "shape"
+)",
+      "",
+      R"("resolution" "int[2]" 1 [ 16 16 ] "oversampling" "int" 1 4)",
+      path("procedural.exr"));
+  NSIEnd(ctx);
+  EXPECT_EQ(m_messages.problems(), "");
+  ASSERT_EQ(image.width, 16u);
+  EXPECT_GT(value(image, 8, 8), 0.8f);
+  EXPECT_EQ(value(image, 0, 0), 0.f);
+}
+
+TEST_F(Render, GlobalRayDepthBoundsBounces)
+{
+  // The white square under the hidden environment, whose light reaches it
+  // by a bounce off the square (the path tracer meets the environment when
+  // a ray escapes): lit at depth 1 and by default, black at depth 0.
+  auto render = [&](const char *depth, const char *name) {
+    NSIContext_t ctx = beginRender();
+    std::string geometry = whiteSquare(NSI_SCENE_ROOT);
+    if (depth)
+      geometry +=
+          std::string(
+              R"(SetAttribute ".global" "maximumraydepth.diffuse" "int" 1 )")
+          + depth + "\n";
+    Image image = renderWhite(ctx,
+        geometry,
+        "",
+        R"("resolution" "int[2]" 1 [ 16 16 ] "oversampling" "int" 1 4)",
+        path(name));
+    NSIEnd(ctx);
+    return image;
+  };
+  const Image none = render("0", "none.exr");
+  const Image one = render("1", "one.exr");
+  const Image unset = render(nullptr, "unset.exr");
+  EXPECT_EQ(m_messages.problems(), "");
+  EXPECT_EQ(value(none, 8, 8), 0.f);
+  EXPECT_GT(value(one, 8, 8), 0.8f);
+  EXPECT_GT(value(unset, 8, 8), 0.8f);
+}
+
+TEST_F(Render, ProceduralNodeIsALocalRoot)
+{
+  // A procedural node running the test procedural: its square hangs under
+  // the node, moved 1.5 right by the node's matrix and shaded by the
+  // attributes on it. Editing the node remakes the square; a synchronize
+  // with no edit does not run it again.
+  NSIContext_t ctx = beginRender();
+  const std::string output = path("procedural-node.exr");
+  const Image before = renderWhite(ctx,
+      std::string(
+          R"(Create "shape" "procedural" Connect "shape" "" ".root" "objects"
+SetAttribute "shape" "type" "string" 1 "dynamiclibrary"
+  "filename" "string" 1 ")")
+          + PRISM_TEST_PROCEDURAL_SQUARE + R"("
+  "transformationmatrix" "doublematrix" 1 [ 1 0 0 0  0 1 0 0  0 0 1 0  1.5 0 0 1 ]
+)",
+      "",
+      R"("resolution" "int[2]" 1 [ 16 16 ] "oversampling" "int" 1 4)",
+      output);
+  auto executions = [&] {
+    size_t n = 0;
+    for (auto &m : m_messages.take()) {
+      n += m.text == "square procedural: executed";
+      EXPECT_LT(m.level, NSIErrWarning) << m.text;
+    }
+    return n;
+  };
+  EXPECT_EQ(executions(), 1u);
+  NSI::ArgumentList left;
+  left.addFloat("x", -3);
+  NSISetAttribute(ctx, "shape", left.size(), left.data());
+  renderControl(ctx, "synchronize");
+  renderControl(ctx, "wait");
+  EXPECT_EQ(executions(), 1u);
+  const Image after = readImage(output);
+  renderControl(ctx, "synchronize");
+  renderControl(ctx, "wait");
+  EXPECT_EQ(executions(), 0u);
+  NSIEnd(ctx);
+  // 0.335 units per pixel: x from 0.5 to 2.5 is columns 9-15, x from -2.5
+  // to -0.5 columns 1-6.
+  ASSERT_EQ(after.width, 16u);
+  EXPECT_GT(value(before, 12, 8), 0.8f);
+  EXPECT_EQ(value(before, 4, 8), 0.f);
+  EXPECT_EQ(value(after, 12, 8), 0.f);
+  EXPECT_GT(value(after, 4, 8), 0.8f);
+}
+
+TEST_F(Render, Example3LiveEditsTouchTheirObjects)
+{
+  // The facts file's Example 3 after Example 1: the lamp's power and the
+  // floor's colour edited, then the lamp deleted, each synchronized.
+  const std::string example1 = writeFile("example1.nsi", kExample1);
+  const std::string example3 = writeFile("example3.nsi", R"(
+RenderControl "action" "string" 1 "start" "interactive" "int" 1 1
+SetAttribute "glow" "power" "float" 1 250
+SetAttribute "grey" "i_color" "color" 1 [ 0.8 0.2 0.2 ]
+RenderControl "action" "string" 1 "synchronize"
+Delete "lamp_xf" "recursive" "int" 1 1
+RenderControl "action" "string" 1 "synchronize"
+RenderControl "action" "string" 1 "stop"
+)");
+  ::setenv("PRISM_NSI_OUT", m_dir.c_str(), 1);
+  NSIContext_t ctx = beginRender();
+  include(ctx, example1);
+  EXPECT_EQ(m_messages.problems(), "");
+  include(ctx, example3);
+  NSIEnd(ctx);
+  ::unsetenv("PRISM_NSI_OUT");
+  std::vector<std::string> counts;
+  for (auto &m : m_messages.take()) {
+    const std::string prefix =
+        "NSIRenderControl: synchronize updated the ANARI objects: ";
+    if (m.level == NSIErrInfo && m.text.rfind(prefix, 0) == 0)
+      counts.push_back(m.text.substr(prefix.size()));
+    else
+      EXPECT_LT(m.level, NSIErrWarning) << m.text;
+  }
+  ASSERT_EQ(counts.size(), 2u);
+  // The light and the material set in place; nothing else.
+  EXPECT_EQ(counts[0],
+      "created geometry 0 material 0 surface 0 group 0 instance 0 light 0 "
+      "world 0; committed geometry 0 material 1 surface 0 group 0 instance 0 "
+      "light 1 world 0; released geometry 0 material 0 surface 0 group 0 "
+      "instance 0 light 0 world 0");
+  // The lamp (a quad light, no geometry) released, the world told.
+  EXPECT_EQ(counts[1],
+      "created geometry 0 material 0 surface 0 group 0 instance 0 light 0 "
+      "world 0; committed geometry 0 material 0 surface 0 group 0 instance 0 "
+      "light 0 world 1; released geometry 0 material 0 surface 0 group 0 "
+      "instance 0 light 1 world 0");
+}
+
 TEST_F(Render, SharedTransformsCannotExplode)
 {
   // 40 levels, each transform hung twice under the next: 2^40 paths from

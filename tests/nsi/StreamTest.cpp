@@ -19,7 +19,7 @@ class Stream : public NsiTest
   std::string rewrite(const std::string &source, const std::string &name)
   {
     const std::string out = path(name);
-    NSIContext_t ctx = beginStream(out, true);
+    NSIContext_t ctx = beginStream(out, "apistream");
     EXPECT_NE(ctx, NSI_BAD_CONTEXT);
     include(ctx, source);
     NSIEnd(ctx);

@@ -1,0 +1,23 @@
+// The `.global` node's options that have an ANARI form.
+#pragma once
+
+#include "Graph.h"
+
+#include <functional>
+#include <string>
+
+namespace prism::nsi {
+
+struct GlobalOptions
+{
+  // maximumraydepth.*: the renderer's maxPathLength, one more than the
+  // deepest bounce count given; 0 when none is (the renderer's default).
+  int maxPathLength{0};
+
+  bool operator==(const GlobalOptions &) const = default;
+};
+
+GlobalOptions readGlobalOptions(const Graph &graph,
+    const std::function<void(int level, const std::string &)> &report);
+
+} // namespace prism::nsi
