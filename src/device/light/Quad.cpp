@@ -146,9 +146,11 @@ class PlacedQuad : public PlacedLight
   {
     Subtended result;
     const float3 toCenter = m_corner + (m_edge1 + m_edge2) * 0.5f - point;
+    // The estimate |cos| area / d^2 below the bound, squared: no root.
     const float distance2 = lengthSquared(toCenter);
-    if (std::abs(dot(toCenter, m_normal))
-        < kMinSolidAngleSampling * distance2 * std::sqrt(distance2))
+    const float along = dot(toCenter, m_normal);
+    if (along * along < kMinSolidAngleSampling * kMinSolidAngleSampling
+                            * distance2 * distance2 * distance2)
       return result; // sampling by area
     const float3 corners[4] = {m_corner - point,
         m_corner + m_edge1 - point,
@@ -184,11 +186,12 @@ class PlacedQuad : public PlacedLight
     }
   }
 
-  // Area density converted to solid angle: d^2 / (area |cos|).
+  // Area density converted to solid angle: d^2 / (area |cos|), where
+  // area |cos| is |direction . (edge1 x edge2)|.
   float areaPdf(const float3 &direction, float distance) const
   {
-    const float cosine = std::abs(dot(direction, m_normal)) / m_area;
-    return cosine > 0.f ? distance * distance / (m_area * cosine) : 0.f;
+    const float projectedArea = std::abs(dot(direction, m_normal));
+    return projectedArea > 0.f ? distance * distance / projectedArea : 0.f;
   }
 
   // Radiance leaving the quad along the unit `out`.
