@@ -2,6 +2,7 @@
 // status message kept (and its source object) for assertions.
 #pragma once
 
+#include "DeviceTestSupport.h"
 #include "StatusRecorder.h"
 
 #include <anari/anari.h>
@@ -37,22 +38,10 @@ inline bool fromLayer(const LayerMessage &m)
   return i > 5 && i < t.size() && t[i] == '(';
 }
 
-class DebugLayerTest : public ::testing::Test
+class DebugLayerTest : public LibraryDeviceTest
 {
  protected:
-  void SetUp() override
-  {
-    m_library = anariLoadLibrary("debug", StatusRecorder::callback, &m_status);
-    ASSERT_NE(m_library, nullptr);
-    m_device = anariNewDevice(m_library, "default");
-    ASSERT_NE(m_device, nullptr);
-  }
-  void TearDown() override
-  {
-    if (m_device)
-      anariRelease(m_device, m_device);
-    anariUnloadLibrary(m_library);
-  }
+  DebugLayerTest() : LibraryDeviceTest("debug") {}
 
   // Exactly one of the layer's messages since the last call, with this
   // severity and code and a text containing `fragment` (the wrapped
@@ -112,8 +101,4 @@ class DebugLayerTest : public ::testing::Test
   {
     return anariNewArray1D(m_device, data, nullptr, nullptr, type, n);
   }
-
-  StatusRecorder m_status;
-  ANARILibrary m_library{nullptr};
-  ANARIDevice m_device{nullptr};
 };
