@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <initializer_list>
 #include <limits>
 #include <sstream>
 
@@ -171,27 +172,42 @@ std::string readFile(const std::string &path)
   return text.str();
 }
 
+// The trace of `program` run on a device of the layer ("" on failure).
+std::string traceOf(
+    ANARILibrary library, const std::string &path, void (*program)(ANARIDevice))
+{
+  ANARIDevice device = newTracedDevice(library, path);
+  if (!device)
+    return {};
+  program(device);
+  anariRelease(device, device);
+  return readFile(path);
+}
+
+// Every one of `runs` (lines, or lines in a row) is in the trace `text`.
+void expectInTrace(
+    const std::string &text, std::initializer_list<const char *> runs)
+{
+  for (const char *run : runs)
+    EXPECT_NE(text.find(run), std::string::npos) << run << "\n" << text;
+}
+
 } // namespace
 
 TEST_F(DebugLayerTest, TraceOfEveryKindOfCallReplays)
 {
   const std::string path = "debug-layer-test.trace";
-  ANARIDevice device = newTracedDevice(m_library, path);
-  ASSERT_NE(device, nullptr);
-  renderTriangle(device);
-  anariRelease(device, device);
+  const std::string text = traceOf(m_library, path, renderTriangle);
   EXPECT_TRUE(silent());
-
-  const std::string text = readFile(path);
-  for (const char *call : {"ParameterArray o1 \"vertex.position\"",
-           "ArrayData o2 @",
-           "Unset o1 \"name\"",
-           "Retain o",
-           "Array o5 ARRAY1D SURFACE [1 0 0] [o4]",
-           "ArrayData o8 [o7]",
-           "Map o11 \"channel.color\" 24 16 UFIXED8_RGBA_SRGB h",
-           "Release device"})
-    EXPECT_NE(text.find(call), std::string::npos) << call << "\n" << text;
+  expectInTrace(text,
+      {"ParameterArray o1 \"vertex.position\"",
+          "ArrayData o2 @",
+          "Unset o1 \"name\"",
+          "Retain o",
+          "Array o5 ARRAY1D SURFACE [1 0 0] [o4]",
+          "ArrayData o8 [o7]",
+          "Map o11 \"channel.color\" 24 16 UFIXED8_RGBA_SRGB h",
+          "Release device"});
 
 #ifdef PRISM_ANARI_REPLAY
   const std::string command =
@@ -251,32 +267,28 @@ int replayReports(const std::string &path, std::string &output)
 TEST_F(DebugLayerTest, TraceOfMisuseReplaysToTheSameReports)
 {
   const std::string path = "debug-layer-misuse.trace";
-  ANARIDevice device = newTracedDevice(m_library, path);
-  ASSERT_NE(device, nullptr);
-  misuse(device);
-  anariRelease(device, device);
+  const std::string text = traceOf(m_library, path, misuse);
   size_t reported = 0;
   for (auto &m : takeProblems(m_status))
     reported += fromLayer(m) ? 1 : 0;
   EXPECT_EQ(reported, 7u);
 
-  const std::string text = readFile(path);
   size_t recorded = 0;
   for (size_t at = text.find("\nReport "); at != std::string::npos;
        at = text.find("\nReport ", at + 1))
     ++recorded;
   EXPECT_EQ(recorded, reported) << text;
-  for (const char *line : {"Refused Set o1 \"radius\" FLOAT32",
-           "Report ERROR INVALID_ARGUMENT \"anariSetParameter(): object "
-           "handle is geometry sphere #1, used after its release",
-           "Refused Set o2 \"geometry\" GEOMETRY foreign",
-           "Refused Commit foreign\nReport ERROR INVALID_ARGUMENT "
-           "\"anariCommitParameters(): object handle 0x? is not",
-           "Set o3 \"color\" INT32",
-           "Commit o2\nReport ERROR INVALID_OPERATION",
-           "ArrayData o4 @",
-           "Refused UnmapArray o4\nReport ERROR INVALID_OPERATION"})
-    EXPECT_NE(text.find(line), std::string::npos) << line << "\n" << text;
+  expectInTrace(text,
+      {"Refused Set o1 \"radius\" FLOAT32",
+          "Report ERROR INVALID_ARGUMENT \"anariSetParameter(): object "
+          "handle is geometry sphere #1, used after its release",
+          "Refused Set o2 \"geometry\" GEOMETRY foreign",
+          "Refused Commit foreign\nReport ERROR INVALID_ARGUMENT "
+          "\"anariCommitParameters(): object handle 0x? is not",
+          "Set o3 \"color\" INT32",
+          "Commit o2\nReport ERROR INVALID_OPERATION",
+          "ArrayData o4 @",
+          "Refused UnmapArray o4\nReport ERROR INVALID_OPERATION"});
   EXPECT_EQ(text.find("0x5eed"), std::string::npos) << text;
 
 #ifdef PRISM_ANARI_REPLAY
@@ -377,35 +389,31 @@ void misuseMapsFramesAndCreation(ANARIDevice d)
 TEST_F(DebugLayerTest, TraceOfRefusedMapFrameAndCreationCallsReplays)
 {
   const std::string path = "debug-layer-refused.trace";
-  ANARIDevice device = newTracedDevice(m_library, path);
-  ASSERT_NE(device, nullptr);
-  misuseMapsFramesAndCreation(device);
-  anariRelease(device, device);
+  const std::string text =
+      traceOf(m_library, path, misuseMapsFramesAndCreation);
   std::vector<std::string> reported;
   for (auto &m : takeProblems(m_status)) {
     EXPECT_TRUE(fromLayer(m)) << m.text; // prism never saw a refused call
     reported.push_back(m.text);
   }
   EXPECT_EQ(reported.size(), 14u);
-
-  const std::string text = readFile(path);
-  for (const char *line : {"Refused New - GEOMETRY\nReport ERROR",
-           "Refused Array - ARRAY1D FLOAT32 [0 0 0] -\nReport ERROR",
-           "MapArray o1\n",
-           "Refused MapArray o1\nReport ERROR INVALID_OPERATION",
-           "MapParameterArray o2 \"background\" ARRAY2D FLOAT32_VEC4 [1 1 0]\n",
-           "Refused Set o2 \"background\" FLOAT32_VEC4",
-           "Refused MapParameterArray o2 \"background\" ARRAY2D FLOAT32_VEC4 "
-           "[1 1 0]\nReport ERROR INVALID_OPERATION",
-           "ParameterArray o2 \"background\" ARRAY2D FLOAT32_VEC4 [1 1 0] @",
-           "Refused UnmapParameterArray o2 \"background\"\nReport ERROR",
-           "Refused Map o3 \"channel.color\"\nReport ERROR INVALID_OPERATION",
-           "Refused Unmap o3 \"channel.color\"\nReport ERROR",
-           "Refused Render foreign\nReport ERROR INVALID_ARGUMENT",
-           "Refused Ready foreign WAIT\nReport ERROR",
-           "Refused Discard foreign\nReport ERROR",
-           "Refused Property foreign \"duration\" FLOAT32 4 WAIT\nReport"})
-    EXPECT_NE(text.find(line), std::string::npos) << line << "\n" << text;
+  expectInTrace(text,
+      {"Refused New - GEOMETRY\nReport ERROR",
+          "Refused Array - ARRAY1D FLOAT32 [0 0 0] -\nReport ERROR",
+          "MapArray o1\n",
+          "Refused MapArray o1\nReport ERROR INVALID_OPERATION",
+          "MapParameterArray o2 \"background\" ARRAY2D FLOAT32_VEC4 [1 1 0]\n",
+          "Refused Set o2 \"background\" FLOAT32_VEC4",
+          "Refused MapParameterArray o2 \"background\" ARRAY2D FLOAT32_VEC4 "
+          "[1 1 0]\nReport ERROR INVALID_OPERATION",
+          "ParameterArray o2 \"background\" ARRAY2D FLOAT32_VEC4 [1 1 0] @",
+          "Refused UnmapParameterArray o2 \"background\"\nReport ERROR",
+          "Refused Map o3 \"channel.color\"\nReport ERROR INVALID_OPERATION",
+          "Refused Unmap o3 \"channel.color\"\nReport ERROR",
+          "Refused Render foreign\nReport ERROR INVALID_ARGUMENT",
+          "Refused Ready foreign WAIT\nReport ERROR",
+          "Refused Discard foreign\nReport ERROR",
+          "Refused Property foreign \"duration\" FLOAT32 4 WAIT\nReport"});
 
   // The leak names the trace line that created the object.
   const size_t created = text.find("New o4 GEOMETRY \"sphere\"\n");
