@@ -11,23 +11,20 @@
 namespace prism::debug {
 namespace {
 
-// What setting or unsetting parameter `name` of `r` (every parameter if
-// `name` is kAll) requires: a name, and no such parameter mapped.
-const char *const kAll = "";
-
-bool changeable(Findings &f, const ObjectRecord &r, const char *name)
+// Whether the parameter `name` of `r` may be set or unset now: it is named
+// and not mapped. `name` "" (and `all`): whether none is mapped.
+bool changeable(
+    Findings &f, const ObjectRecord &r, const char *name, bool all = false)
 {
   if (!name) {
     f.error("parameter name is NULL");
     return false;
   }
-  const bool all = name == kAll;
   if (all ? r.mappedParameters.empty() : !r.mappedParameters.count(name))
     return true;
-  f.error(all ? "parameter '" + r.mappedParameters.begin()->first
-                    + "' is mapped (anariMapParameterArray); unmap it first"
-              : "the parameter is mapped (anariMapParameterArray); unmap it "
-                "first",
+  f.error((all ? "parameter '" + r.mappedParameters.begin()->first + "'"
+               : std::string("the parameter"))
+              + " is mapped (anariMapParameterArray); unmap it first",
       ANARI_STATUS_INVALID_OPERATION);
   return false;
 }
@@ -171,7 +168,7 @@ void DebugDevice::unsetAllParameters(ANARIObject object)
     };
     auto target =
         checked(f, object, ANARI_OBJECT, nullptr, [&](ObjectRecord &r) {
-          if (!changeable(f, r, kAll))
+          if (!changeable(f, r, "", true))
             return false;
           r.parameters.clear();
           r.name.clear();
@@ -215,9 +212,8 @@ void *DebugDevice::mapParameterArray(const char *function,
     Findings f(function);
     f.refused = [&] {
       // An element type no trace can name is left out.
-      return name && anari::isValidDataType(elementType)
-                 ? mapLine(object)
-                 : std::string();
+      return name && anari::isValidDataType(elementType) ? mapLine(object)
+                                                         : std::string();
     };
     auto target = checked(f, object, ANARI_OBJECT, name, [&](ObjectRecord &r) {
       if (!name) {
