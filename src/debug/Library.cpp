@@ -76,7 +76,9 @@ class Library : public anari::LibraryImpl
   const char **getDeviceExtensions(const char *deviceSubtype) override
   {
     auto *wrapped = probe();
-    return wrapped ? wrapped->library().getDeviceExtensions(deviceSubtype)
+    // Those of the device the layer would wrap for this subtype.
+    return wrapped ? wrapped->library().getDeviceExtensions(
+               defaultWrappedDevice(deviceSubtype).c_str())
                    : nullptr;
   }
 
