@@ -49,7 +49,14 @@ void Rules::checkRequired(Findings &f, const ObjectRecord &object)
     if (!seen.insert(list->name).second)
       continue;
     const auto *def = m_catalog.findParameter(object.type, subtype, list->name);
-    if (def && def->requiredByObject && !object.parameters.count(list->name)) {
+    // Time-keyed values (motion deformation's `motion.vertex.position`)
+    // stand in for the parameter they animate.
+    const std::string keyed = std::string("motion.") + list->name;
+    const bool given =
+        object.parameters.count(list->name)
+        || (object.parameters.count(keyed)
+            && m_catalog.findParameter(object.type, subtype, keyed.c_str()));
+    if (def && def->requiredByObject && !given) {
       f.error(std::string("required parameter '") + list->name
                   + "' is not set; the object is invalid",
           ANARI_STATUS_INVALID_OPERATION);

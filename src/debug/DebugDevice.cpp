@@ -1,4 +1,5 @@
 #include "DebugDevice.h"
+#include "WithheldReports.h"
 #include "trace/TraceFormat.h"
 
 #include "anari/frontend/type_utility.h"
@@ -115,6 +116,8 @@ void DebugDevice::forwardStatus(const void *userPtr,
     const char *message)
 {
   auto *self = (DebugDevice *)userPtr;
+  if (WithheldReports::withheld(self, severity))
+    return;
   ANARIObject translated = nullptr;
   if (source
       && (source == (ANARIObject)device
@@ -148,6 +151,7 @@ void DebugDevice::forwardFrameCompletion(
     std::lock_guard lock(self->m_mutex);
     handle = self->m_objects.fromWrapped((ANARIObject)frame);
     if (ObjectRecord *record = self->m_objects.find(handle)) {
+      record->awaited = true;
       callback = record->completion;
       callbackUserPtr = record->completionUserPtr;
     }
@@ -243,11 +247,12 @@ void DebugDevice::setDeviceParameter(
     m_statusUserPtr = mem; // a VOID_POINTER value is `mem` itself
     return;
   }
-  if (n == "wrappedLibrary") {
+  if (n == "wrappedLibrary" || n == "wrappedDevice") {
     if (type != ANARI_STRING)
       f.error("type must be ANARI_STRING");
     else
-      m_pendingWrappedSpec = (const char *)mem;
+      (n == "wrappedLibrary" ? m_pendingWrappedSpec : m_pendingSubtype) =
+          (const char *)mem;
     report(f);
     return;
   }
@@ -280,26 +285,45 @@ void DebugDevice::commitDevice()
 {
   Findings f("anariCommitParameters");
   f.about(nullptr);
-  if (!m_pendingWrappedSpec.empty() && m_pendingWrappedSpec != m_wrappedSpec) {
+  const std::string spec =
+      m_pendingWrappedSpec.empty() ? m_wrappedSpec : m_pendingWrappedSpec;
+  const std::string subtype =
+      m_pendingSubtype.empty() ? m_subtype : m_pendingSubtype;
+  if (spec != m_wrappedSpec || subtype != m_subtype) {
     std::unique_lock lock(m_mutex);
+    const std::string previous =
+        "'" + m_wrappedSpec + "' device '" + m_subtype + "'";
     if (m_objects.size() > 0) {
       f.error(
-          "'wrappedLibrary' can change only before the first object is "
-          "created; keeping '"
-              + m_wrappedSpec + "'",
+          "'wrappedLibrary' and 'wrappedDevice' can change only before the "
+          "first object is created; keeping "
+              + previous,
           ANARI_STATUS_INVALID_OPERATION);
+    } else if (wrap(spec, subtype)) {
+      m_subtype = subtype;
     } else {
-      const std::string previous = m_wrappedSpec;
-      if (!wrap(m_pendingWrappedSpec, m_subtype)) {
-        f.error(m_failure + "; keeping '" + previous + "'",
-            ANARI_STATUS_INVALID_OPERATION);
-      }
+      f.error(
+          m_failure + "; keeping " + previous, ANARI_STATUS_INVALID_OPERATION);
     }
-    m_pendingWrappedSpec.clear();
   }
+  m_pendingWrappedSpec.clear();
+  m_pendingSubtype.clear();
   report(f);
   trace("Commit device");
   m_wrapped->commitParameters((ANARIObject)m_wrapped);
+}
+
+void (*DebugDevice::getProcAddress(const char *name))(void)
+{
+  ++m_calls;
+  if (name && m_wrapped->getProcAddress(name)) {
+    report(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_UNSUPPORTED_DEVICE,
+        std::string("anariDeviceGetProcAddress(device '") + name
+            + "'): the wrapped device's extension function is not available "
+              "through the debug layer, which cannot translate its handles");
+  }
+  return nullptr;
 }
 
 void DebugDevice::reportLeaks()
@@ -321,8 +345,12 @@ void DebugDevice::reportLeaks()
     f.add(ANARI_SEVERITY_WARNING,
         ANARI_STATUS_NO_ERROR,
         "leaked " + describe(*record) + ", created by " + record->createdBy
-            + " (API call " + std::to_string(record->createdAtCall) + "), "
-            + std::to_string(record->publicReferences) + " reference(s)");
+            + " (API call " + std::to_string(record->createdAtCall)
+            + (record->traceLine
+                    ? ", trace line " + std::to_string(record->traceLine)
+                    : std::string())
+            + "), " + std::to_string(record->publicReferences)
+            + " reference(s)");
   }
   report(f);
 }

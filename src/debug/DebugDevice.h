@@ -8,6 +8,7 @@
 #include "Findings.h"
 #include "ObjectTable.h"
 #include "Rules.h"
+#include "WithheldReports.h"
 #include "WrappedLibrary.h"
 #include "trace/TraceWriter.h"
 
@@ -129,6 +130,10 @@ class DebugDevice : public anari::DeviceImpl
   void discardFrame(ANARIFrame frame) override;
 
   ANARIObject newObject(const char *objectType, const char *subtype) override;
+  // Extension functions take the layer's handles, which the wrapped device's
+  // own functions cannot read: none is handed out, and one the wrapped
+  // device has is reported.
+  void (*getProcAddress(const char *name))(void) override;
 
  private:
   // The wrapped device's status messages, with the layer's handles.
@@ -178,6 +183,12 @@ class DebugDevice : public anari::DeviceImpl
   void report(ANARIStatusSeverity severity,
       ANARIStatusCode code,
       const std::string &text);
+  // Withholds the wrapped device's reports while a call is forwarded whose
+  // problems `f` has reported already (WithheldReports).
+  WithheldReports withheldAfter(const Findings &f) const
+  {
+    return WithheldReports(this, f.any());
+  }
   bool isDevice(ANARIObject object) const
   {
     return object == (ANARIObject)this_device();
@@ -278,7 +289,8 @@ class DebugDevice : public anari::DeviceImpl
   {
     return m_trace != nullptr;
   }
-  void trace(const std::string &line);
+  // Returns the line's number in the trace (0: not tracing).
+  uint64_t trace(const std::string &line);
   // The line of a call the layer refused: `call`, the handle's name (it may
   // be released, `foreign` or `null`) and `operands`. Under the lock.
   std::string refusedLine(
@@ -302,6 +314,7 @@ class DebugDevice : public anari::DeviceImpl
   std::string m_subtype;
   std::string m_wrappedSpec;
   std::string m_pendingWrappedSpec;
+  std::string m_pendingSubtype; // the `wrappedDevice` parameter
   std::string m_failure;
   std::shared_ptr<WrappedLibrary> m_wrappedLibrary;
   anari::DeviceImpl *m_wrapped{nullptr};

@@ -47,6 +47,7 @@ void Findings::add(
   f.sourceType = m_sourceType;
   f.text = std::string(m_function) + "(" + m_prefix + "): " + text;
   m_list.push_back(std::move(f));
+  ++m_found;
 }
 
 } // namespace prism::debug

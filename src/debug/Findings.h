@@ -56,6 +56,11 @@ class Findings
   {
     return m_list.empty();
   }
+  // Whether anything was found, reported since or not.
+  bool any() const
+  {
+    return m_found > 0;
+  }
 
   // The trace's line for the call if the layer refuses it ("" for none;
   // DebugDevice::checked). Runs under the layer's lock.
@@ -67,6 +72,7 @@ class Findings
   ANARIObject m_source = nullptr;
   ANARIDataType m_sourceType = ANARI_DEVICE;
   std::vector<Finding> m_list;
+  size_t m_found = 0;
 };
 
 // "geometry", "spatial_field", "array1d": the ANARI type name, short.

@@ -15,22 +15,36 @@ int DebugDevice::getProperty(ANARIObject object,
     uint64_t size,
     ANARIWaitMask mask)
 {
+  // Appended, not concatenated: GCC 12 raises a false -Wrestrict.
+  auto propertyOperands = [&] {
+    return trace::quote(name)
+        .append(" ")
+        .append(trace::typeName(type))
+        .append(" ")
+        .append(std::to_string(size))
+        .append(mask == ANARI_WAIT ? " WAIT" : " NO_WAIT");
+  };
   return guarded("anariGetProperty", 0, [&]() -> int {
     Findings f("anariGetProperty");
+    f.refused = [&] {
+      return name && trace::isTraceable(type) ? refusedLine("Property",
+                 object,
+                 std::string(" ").append(propertyOperands()))
+                                              : std::string();
+    };
     ANARIObject target = isDevice(object) ? (ANARIObject)m_wrapped : nullptr;
     if (!target) {
       target = checked(f, object, ANARI_OBJECT, name, [&](ObjectRecord &) {
         if (!name)
           f.error("property name is NULL");
         else if (tracing() && trace::isTraceable(type))
-          trace("Property " + traceName(object) + " " + trace::quote(name) + " "
-                + trace::typeName(type) + " " + std::to_string(size)
-                + (mask == ANARI_WAIT ? " WAIT" : " NO_WAIT"));
+          trace("Property " + traceName(object) + " " + propertyOperands());
         return name != nullptr;
       });
     }
     if (!target || !name)
       return 0;
+    const auto quiet = withheldAfter(f);
     const int found =
         m_wrapped->getProperty(target, name, type, mem, size, mask);
     if (found && anari::isObject(type) && mem && size >= sizeof(ANARIObject)) {
@@ -95,6 +109,11 @@ const void *DebugDevice::frameBufferMap(ANARIFrame frame,
     *pixelType = ANARI_UNKNOWN;
   return guarded("anariMapFrame", (const void *)nullptr, [&]() -> const void * {
     Findings f("anariMapFrame");
+    f.refused = [&] {
+      return channel ? refusedLine(
+                 "Map", frame, std::string(" ").append(trace::quote(channel)))
+                     : std::string();
+    };
     std::string traceTarget;
     auto target = checked(f, frame, ANARI_FRAME, channel, [&](ObjectRecord &r) {
       if (!channel) {
@@ -107,6 +126,14 @@ const void *DebugDevice::frameBufferMap(ANARIFrame frame,
         return false;
       }
       traceTarget = traceName(r.handle);
+      if (!r.awaited) {
+        // Allowed (the map waits), but the application blocks unawares.
+        f.add(ANARI_SEVERITY_PERFORMANCE_WARNING,
+            ANARI_STATUS_NO_ERROR,
+            "the frame may still be rendering (no anariFrameReady since "
+            "anariRenderFrame): the map waits for it");
+        r.awaited = true;
+      }
       if (!r.mappedChannels.insert(channel).second)
         f.warning(
             "the channel is already mapped", ANARI_STATUS_INVALID_OPERATION);
@@ -114,6 +141,7 @@ const void *DebugDevice::frameBufferMap(ANARIFrame frame,
     });
     if (!target)
       return nullptr;
+    const auto quiet = withheldAfter(f);
     const void *pixels = m_wrapped->frameBufferMap(
         (ANARIFrame)target, channel, width, height, pixelType);
     if (pixels && tracing() && width && height && pixelType) {
@@ -133,6 +161,11 @@ void DebugDevice::frameBufferUnmap(ANARIFrame frame, const char *channel)
 {
   guarded("anariUnmapFrame", [&] {
     Findings f("anariUnmapFrame");
+    f.refused = [&] {
+      return channel ? refusedLine(
+                 "Unmap", frame, std::string(" ").append(trace::quote(channel)))
+                     : std::string();
+    };
     auto target = checked(f, frame, ANARI_FRAME, channel, [&](ObjectRecord &r) {
       if (channel && r.mappedChannels.erase(channel)) {
         trace("Unmap " + traceName(r.handle) + " " + trace::quote(channel));
@@ -141,6 +174,7 @@ void DebugDevice::frameBufferUnmap(ANARIFrame frame, const char *channel)
       f.error("the channel is not mapped", ANARI_STATUS_INVALID_OPERATION);
       return false;
     });
+    const auto quiet = withheldAfter(f);
     if (target)
       m_wrapped->frameBufferUnmap((ANARIFrame)target, channel);
   });
@@ -150,12 +184,17 @@ void DebugDevice::renderFrame(ANARIFrame frame)
 {
   guarded("anariRenderFrame", [&] {
     Findings f("anariRenderFrame");
+    f.refused = [&] {
+      return refusedLine("Render", frame);
+    };
     auto target = checked(f, frame, ANARI_FRAME, nullptr, [&](ObjectRecord &r) {
       m_rules->checkFrame(f, r, m_objects);
       r.rendered = true;
+      r.awaited = false;
       trace("Render " + traceName(r.handle));
       return true;
     });
+    const auto quiet = withheldAfter(f);
     if (target)
       m_wrapped->renderFrame((ANARIFrame)target);
   });
@@ -165,6 +204,10 @@ int DebugDevice::frameReady(ANARIFrame frame, ANARIWaitMask mask)
 {
   return guarded("anariFrameReady", 0, [&]() -> int {
     Findings f("anariFrameReady");
+    f.refused = [&] {
+      return refusedLine(
+          "Ready", frame, mask == ANARI_WAIT ? " WAIT" : " NO_WAIT");
+    };
     auto target = checked(f, frame, ANARI_FRAME, nullptr, [&](ObjectRecord &r) {
       if (!r.rendered)
         f.warning(
@@ -173,7 +216,15 @@ int DebugDevice::frameReady(ANARIFrame frame, ANARIWaitMask mask)
             + (mask == ANARI_WAIT ? " WAIT" : " NO_WAIT"));
       return true;
     });
-    return target ? m_wrapped->frameReady((ANARIFrame)target, mask) : 0;
+    const auto quiet = withheldAfter(f);
+    const int ready =
+        target ? m_wrapped->frameReady((ANARIFrame)target, mask) : 0;
+    if (ready) {
+      std::lock_guard lock(m_mutex);
+      if (ObjectRecord *record = m_objects.find(frame))
+        record->awaited = true;
+    }
+    return ready;
   });
 }
 
@@ -181,10 +232,14 @@ void DebugDevice::discardFrame(ANARIFrame frame)
 {
   guarded("anariDiscardFrame", [&] {
     Findings f("anariDiscardFrame");
+    f.refused = [&] {
+      return refusedLine("Discard", frame);
+    };
     auto target = checked(f, frame, ANARI_FRAME, nullptr, [&](ObjectRecord &r) {
       trace("Discard " + traceName(r.handle));
       return true;
     });
+    const auto quiet = withheldAfter(f);
     if (target)
       m_wrapped->discardFrame((ANARIFrame)target);
   });

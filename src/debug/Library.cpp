@@ -10,6 +10,11 @@
 namespace prism::debug {
 namespace {
 
+bool isLayerParameter(const std::string &name)
+{
+  return name == "wrappedLibrary" || name == "wrappedDevice";
+}
+
 class Library : public anari::LibraryImpl
 {
  public:
@@ -27,8 +32,8 @@ class Library : public anari::LibraryImpl
 
   ANARIDevice newDevice(const char *subtype) override
   {
-    const std::string s = subtype ? subtype : "default";
-    auto *device = new DebugDevice(this_library(), wrappedSpec(), s);
+    auto *device = new DebugDevice(
+        this_library(), wrappedSpec(), defaultWrappedDevice(subtype));
     if (!device->failure().empty()) {
       report("anariNewDevice: " + device->failure());
       delete device;
@@ -40,15 +45,16 @@ class Library : public anari::LibraryImpl
   ANARIDevice newInitializedDevice(
       const char *subtype, ANARIParameterValue *parameters) override
   {
-    // The layer's own parameter chooses the library before the device
-    // exists; the others go to the new device as anariSetParameter would.
+    // The layer's own parameters choose the library and its device before
+    // the device exists; the others go to the new device as
+    // anariSetParameter would.
     std::string spec = wrappedSpec();
+    std::string s = defaultWrappedDevice(subtype);
     for (auto *p = parameters; p && p->name; ++p) {
-      if (std::string(p->name) == "wrappedLibrary" && p->type == ANARI_STRING
-          && p->value)
-        spec = (const char *)p->value;
+      if (isLayerParameter(p->name) && p->type == ANARI_STRING && p->value)
+        (std::string(p->name) == "wrappedLibrary" ? spec : s) =
+            (const char *)p->value;
     }
-    const std::string s = subtype ? subtype : "default";
     auto *device = new DebugDevice(this_library(), spec, s);
     if (!device->failure().empty()) {
       report("anariNewInitializedDevice: " + device->failure());
@@ -57,7 +63,7 @@ class Library : public anari::LibraryImpl
     }
     bool any = false;
     for (auto *p = parameters; p && p->name; ++p) {
-      if (std::string(p->name) != "wrappedLibrary") {
+      if (!isLayerParameter(p->name)) {
         device->setParameter((ANARIObject)device, p->name, p->type, p->value);
         any = true;
       }
@@ -70,7 +76,9 @@ class Library : public anari::LibraryImpl
   const char **getDeviceExtensions(const char *deviceSubtype) override
   {
     auto *wrapped = probe();
-    return wrapped ? wrapped->library().getDeviceExtensions(deviceSubtype)
+    // Those of the device the layer would wrap for this subtype.
+    return wrapped ? wrapped->library().getDeviceExtensions(
+               defaultWrappedDevice(deviceSubtype).c_str())
                    : nullptr;
   }
 

@@ -49,26 +49,39 @@ ANARIObject DebugDevice::newSubtyped(const char *function,
     Findings f(function);
     if (type != ANARI_SURFACE && type != ANARI_GROUP && type != ANARI_WORLD
         && type != ANARI_FRAME) {
+      std::lock_guard lock(m_mutex);
       if (!subtype) {
         f.error("subtype is NULL");
-        report(f);
-        return nullptr;
+        // Refused: no object, so no name (`-`) and no subtype.
+        if (tracing())
+          trace("Refused New - " + trace::typeName(type));
+      } else {
+        m_rules->checkSubtype(f, type, subtype);
       }
-      std::lock_guard lock(m_mutex);
-      m_rules->checkSubtype(f, type, subtype);
     }
-    const bool known = f.empty();
-    report(f);
-    ANARIObject wrapped = make();
+    if (!subtype && f.any()) {
+      report(f);
+      return nullptr;
+    }
+    const bool known = !f.any();
+    ANARIObject wrapped = nullptr;
+    {
+      const auto quiet = withheldAfter(f);
+      wrapped = make();
+    }
     ANARIObject handle = nullptr;
     {
       std::lock_guard lock(m_mutex);
       handle = created(function, type, subtype, wrapped, f);
-      if (handle)
-        m_objects.find(handle)->knownSubtype = known;
       if (handle && tracing()) {
-        trace("New " + traceName(handle) + " " + trace::typeName(type)
-              + (subtype ? " " + trace::quote(subtype) : std::string()));
+        ObjectRecord &record = *m_objects.find(handle);
+        record.knownSubtype = known;
+        record.traceLine =
+            trace("New " + traceName(handle) + " " + trace::typeName(type)
+                  + (subtype ? " " + trace::quote(subtype) : std::string()));
+
+      } else if (handle) {
+        m_objects.find(handle)->knownSubtype = known;
       }
     }
     report(f);
@@ -184,9 +197,10 @@ ANARIObject DebugDevice::newObject(const char *objectType, const char *subtype)
         wrapped ? created("anariNewObject", ANARI_OBJECT, subtype, wrapped, f)
                 : nullptr;
     if (handle && tracing()) {
-      trace("NewObject " + traceName(handle) + " "
-            + trace::quote(objectType ? objectType : "") + " "
-            + trace::quote(subtype ? subtype : ""));
+      m_objects.find(handle)->traceLine =
+          trace("NewObject " + traceName(handle) + " "
+                + trace::quote(objectType ? objectType : "") + " "
+                + trace::quote(subtype ? subtype : ""));
     }
     return handle; // NULL from the device is its documented answer
   });
@@ -202,14 +216,27 @@ ANARIArray DebugDevice::newArray(const char *function,
     ANARIDataType elementType,
     const uint64_t items[3])
 {
+  // Refused: no object, so no name (`-`), and no data.
+  auto refuse = [&](Findings &f) -> ANARIArray {
+    {
+      std::lock_guard lock(m_mutex);
+      if (tracing() && anari::isValidDataType(elementType)) {
+        trace("Refused Array - " + trace::typeName(arrayType) + " "
+              + trace::typeName(elementType) + " [" + std::to_string(items[0])
+              + " " + std::to_string(items[1]) + " " + std::to_string(items[2])
+              + "] -");
+      }
+    }
+    report(f);
+    return nullptr;
+  };
   return guarded(function, ANARIArray(nullptr), [&]() -> ANARIArray {
     Findings f(function);
     if (!isArrayElementType(elementType)) {
       f.error(std::string("element type ") + anari::toString(elementType) + " ("
               + std::to_string(int(elementType))
               + ") cannot be an array element");
-      report(f);
-      return nullptr;
+      return refuse(f);
     }
     const int dimensions = arrayType == ANARI_ARRAY1D   ? 1
                            : arrayType == ANARI_ARRAY2D ? 2
@@ -218,8 +245,7 @@ ANARIArray DebugDevice::newArray(const char *function,
       if (items[i] == 0) {
         f.error("the array has no elements (dimension " + std::to_string(i + 1)
                 + " is 0)");
-        report(f);
-        return nullptr;
+        return refuse(f);
       }
     }
     uint64_t bytes = anari::sizeOf(elementType);
@@ -227,8 +253,7 @@ ANARIArray DebugDevice::newArray(const char *function,
       if (items[i] && __builtin_mul_overflow(bytes, items[i], &bytes)) {
         f.error("the array's size in bytes overflows 64 bits",
             ANARI_STATUS_OUT_OF_MEMORY);
-        report(f);
-        return nullptr;
+        return refuse(f);
       }
     }
     const bool objects = anari::isObject(elementType);
@@ -255,12 +280,15 @@ ANARIArray DebugDevice::newArray(const char *function,
     }
     ANARIObject wrapped = nullptr;
     if (arrayType == ANARI_ARRAY1D) {
+      const auto quiet = withheldAfter(f);
       wrapped = m_wrapped->newArray1D(
           appMemory, deleter, userData, elementType, items[0]);
     } else if (arrayType == ANARI_ARRAY2D) {
+      const auto quiet = withheldAfter(f);
       wrapped = m_wrapped->newArray2D(
           appMemory, deleter, userData, elementType, items[0], items[1]);
     } else {
+      const auto quiet = withheldAfter(f);
       wrapped = m_wrapped->newArray3D(appMemory,
           deleter,
           userData,
@@ -292,14 +320,15 @@ ANARIArray DebugDevice::newArray(const char *function,
               record.largestIndex);
         }
         if (tracing()) {
-          trace("Array " + traceName(handle) + " " + trace::typeName(arrayType)
-                + " " + trace::typeName(elementType) + " ["
-                + std::to_string(items[0]) + " " + std::to_string(items[1])
-                + " " + std::to_string(items[2]) + "] "
-                + traceContents(elementType,
-                    objects ? storage->appMemory : appMemory,
-                    count,
-                    0));
+          record.traceLine = trace(
+              "Array " + traceName(handle) + " " + trace::typeName(arrayType)
+              + " " + trace::typeName(elementType) + " ["
+              + std::to_string(items[0]) + " " + std::to_string(items[1]) + " "
+              + std::to_string(items[2]) + "] "
+              + traceContents(elementType,
+                  objects ? storage->appMemory : appMemory,
+                  count,
+                  0));
         }
       }
     }

@@ -43,6 +43,7 @@ struct ObjectRecord
   bool knownSubtype = true; // false: the wrapped device lacks the subtype
   uint64_t serial = 0;      // creation order within the device
   uint64_t createdAtCall = 0;
+  uint64_t traceLine = 0; // of its creation, if traced
   const char *createdBy = "";
   std::string name; // the "name" parameter, if set
 
@@ -74,6 +75,9 @@ struct ObjectRecord
 
   // Frames.
   bool rendered = false;
+  // The last render is known done (anariFrameReady said so, or the
+  // completion callback ran).
+  bool awaited = false;
   std::set<std::string> mappedChannels;
   ANARIFrameCompletionCallback completion = nullptr;
   const void *completionUserPtr = nullptr;

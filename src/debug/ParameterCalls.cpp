@@ -9,6 +9,27 @@
 #include <cstring>
 
 namespace prism::debug {
+namespace {
+
+// Whether the parameter `name` of `r` may be set or unset now: it is named
+// and not mapped. `name` "" (and `all`): whether none is mapped.
+bool changeable(
+    Findings &f, const ObjectRecord &r, const char *name, bool all = false)
+{
+  if (!name) {
+    f.error("parameter name is NULL");
+    return false;
+  }
+  if (all ? r.mappedParameters.empty() : !r.mappedParameters.count(name))
+    return true;
+  f.error((all ? "parameter '" + r.mappedParameters.begin()->first + "'"
+               : std::string("the parameter"))
+              + " is mapped (anariMapParameterArray); unmap it first",
+      ANARI_STATUS_INVALID_OPERATION);
+  return false;
+}
+
+} // namespace
 
 void DebugDevice::setParameter(
     ANARIObject object, const char *name, ANARIDataType type, const void *mem)
@@ -39,16 +60,11 @@ void DebugDevice::setParameter(
                                .append(v));
     };
     auto target = checked(f, object, ANARI_OBJECT, name, [&](ObjectRecord &r) {
-      // ANARI_VOID_POINTER values are `mem` itself (as in the SDK).
-      if (!name || (!mem && type != ANARI_VOID_POINTER)) {
-        f.error(name ? "value pointer is NULL" : "parameter name is NULL");
+      if (!changeable(f, r, name))
         return false;
-      }
-      if (r.mappedParameters.count(name)) {
-        f.error(
-            "the parameter is mapped (anariMapParameterArray); unmap it "
-            "before setting it",
-            ANARI_STATUS_INVALID_OPERATION);
+      // ANARI_VOID_POINTER values are `mem` itself (as in the SDK).
+      if (!mem && type != ANARI_VOID_POINTER) {
+        f.error("value pointer is NULL");
         return false;
       }
       const ObjectRecord *value = nullptr;
@@ -95,6 +111,7 @@ void DebugDevice::setParameter(
     });
     if (!target || !forward)
       return;
+    const auto quiet = withheldAfter(f);
     m_wrapped->setParameter(target, name, type, forwarded);
     if (withLayerAsUserData) {
       m_wrapped->setParameter(
@@ -119,15 +136,8 @@ void DebugDevice::unsetParameter(ANARIObject object, const char *name)
                              : std::string();
     };
     auto target = checked(f, object, ANARI_OBJECT, name, [&](ObjectRecord &r) {
-      if (!name) {
-        f.error("parameter name is NULL");
+      if (!changeable(f, r, name))
         return false;
-      }
-      if (r.mappedParameters.count(name)) {
-        f.error("the parameter is mapped; unmap it first",
-            ANARI_STATUS_INVALID_OPERATION);
-        return false;
-      }
       r.parameters.erase(name);
       r.changedSinceCommit = true;
       trace("Unset " + traceName(r.handle) + " " + trace::quote(name));
@@ -139,6 +149,7 @@ void DebugDevice::unsetParameter(ANARIObject object, const char *name)
       }
       return true;
     });
+    const auto quiet = withheldAfter(f);
     if (target)
       m_wrapped->unsetParameter(target, name);
   });
@@ -157,18 +168,15 @@ void DebugDevice::unsetAllParameters(ANARIObject object)
     };
     auto target =
         checked(f, object, ANARI_OBJECT, nullptr, [&](ObjectRecord &r) {
-          if (!r.mappedParameters.empty()) {
-            f.error("parameter '" + r.mappedParameters.begin()->first
-                        + "' is mapped; unmap it first",
-                ANARI_STATUS_INVALID_OPERATION);
+          if (!changeable(f, r, "", true))
             return false;
-          }
           r.parameters.clear();
           r.name.clear();
           r.changedSinceCommit = true;
           trace("UnsetAll " + traceName(r.handle));
           return true;
         });
+    const auto quiet = withheldAfter(f);
     if (target)
       m_wrapped->unsetAllParameters(target);
   });
@@ -182,8 +190,31 @@ void *DebugDevice::mapParameterArray(const char *function,
     const uint64_t items[3],
     uint64_t *elementStride)
 {
+  // "MapParameterArray o1 "name" ARRAY1D FLOAT32_VEC3 [3 0 0]"
+  auto mapLine = [&](ANARIObject handle) {
+    return std::string("MapParameterArray ")
+        .append(traceName(handle))
+        .append(" ")
+        .append(trace::quote(name))
+        .append(" ")
+        .append(trace::typeName(arrayType))
+        .append(" ")
+        .append(trace::typeName(elementType))
+        .append(" [")
+        .append(std::to_string(items[0]))
+        .append(" ")
+        .append(std::to_string(items[1]))
+        .append(" ")
+        .append(std::to_string(items[2]))
+        .append("]");
+  };
   return guarded(function, (void *)nullptr, [&]() -> void * {
     Findings f(function);
+    f.refused = [&] {
+      // An element type no trace can name is left out.
+      return name && anari::isValidDataType(elementType) ? mapLine(object)
+                                                         : std::string();
+    };
     auto target = checked(f, object, ANARI_OBJECT, name, [&](ObjectRecord &r) {
       if (!name) {
         f.error("parameter name is NULL");
@@ -205,6 +236,7 @@ void *DebugDevice::mapParameterArray(const char *function,
     });
     if (!target)
       return nullptr;
+    const auto quiet = withheldAfter(f);
     uint64_t stride = 0;
     void *memory = nullptr;
     if (arrayType == ANARI_ARRAY1D) {
@@ -238,6 +270,10 @@ void *DebugDevice::mapParameterArray(const char *function,
       staged.mappedCount = count;
       record->parameters[name] = staged;
       record->changedSinceCommit = true;
+      // Mapped now, so a replay maps it now too: calls on the parameter
+      // until its unmap (the `ParameterArray` line) meet it mapped.
+      if (tracing())
+        trace(mapLine(object));
     }
     return memory;
   });
@@ -298,6 +334,12 @@ void DebugDevice::unmapParameterArray(ANARIObject object, const char *name)
 {
   guarded("anariUnmapParameterArray", [&] {
     Findings f("anariUnmapParameterArray");
+    f.refused = [&] {
+      return name ? refusedLine("UnmapParameterArray",
+                 object,
+                 std::string(" ").append(trace::quote(name)))
+                  : std::string();
+    };
     auto target = checked(f, object, ANARI_OBJECT, name, [&](ObjectRecord &r) {
       auto it = name ? r.mappedParameters.find(name) : r.mappedParameters.end();
       if (it == r.mappedParameters.end()) {
@@ -326,6 +368,7 @@ void DebugDevice::unmapParameterArray(ANARIObject object, const char *name)
       r.mappedParameters.erase(it);
       return true;
     });
+    const auto quiet = withheldAfter(f);
     if (target)
       m_wrapped->unmapParameterArray(target, name);
   });
@@ -359,6 +402,7 @@ void DebugDevice::commitParameters(ANARIObject object)
           trace("Commit " + traceName(r.handle));
           return true;
         });
+    const auto quiet = withheldAfter(f);
     if (target)
       m_wrapped->commitParameters(target);
   });
@@ -392,6 +436,7 @@ void DebugDevice::release(ANARIObject object)
           }
           return true;
         });
+    const auto quiet = withheldAfter(f);
     if (target)
       m_wrapped->release(target);
   });
@@ -415,6 +460,7 @@ void DebugDevice::retain(ANARIObject object)
           trace("Retain " + traceName(r.handle));
           return true;
         });
+    const auto quiet = withheldAfter(f);
     if (target)
       m_wrapped->retain(target);
   });
@@ -425,6 +471,10 @@ void *DebugDevice::mapArray(ANARIArray array)
   return guarded("anariMapArray", (void *)nullptr, [&]() -> void * {
     Findings f("anariMapArray");
     void *memory = nullptr;
+    bool refused = true; // an object array's map is the layer's alone
+    f.refused = [&] {
+      return refused ? refusedLine("MapArray", array) : std::string();
+    };
     auto target = checked(f, array, ANARI_ARRAY, nullptr, [&](ObjectRecord &r) {
       if (r.mapped) {
         f.error("the array is already mapped", ANARI_STATUS_INVALID_OPERATION);
@@ -437,17 +487,24 @@ void *DebugDevice::mapArray(ANARIArray array)
             r.appMemory ? (void *)r.appMemory : (void *)r.ownedHandles.data();
         r.mapped = true;
         r.mappedMemory = memory;
+        refused = false;
+        trace("MapArray " + traceName(r.handle));
         return false;
       }
       return true;
     });
     if (!target)
       return memory;
+    const auto quiet = withheldAfter(f);
     memory = m_wrapped->mapArray((ANARIArray)target);
     std::lock_guard lock(m_mutex);
     if (ObjectRecord *record = m_objects.find(array)) {
       record->mapped = memory != nullptr;
       record->mappedMemory = memory;
+      // Mapped now, so a replay maps it now too: its unmap writes the data
+      // (`ArrayData`).
+      if (memory)
+        trace("MapArray " + traceName(array));
     }
     return memory;
   });
@@ -482,6 +539,7 @@ void DebugDevice::unmapArray(ANARIArray array)
       r.mapped = false;
       return true;
     });
+    const auto quiet = withheldAfter(f);
     if (target && objectArray) {
       // The wrapped device's copy is written as an application would.
       if (void *memory = m_wrapped->mapArray((ANARIArray)target)) {

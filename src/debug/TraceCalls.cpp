@@ -33,10 +33,9 @@ void DebugDevice::openTrace()
       "Device " + trace::quote(m_subtype) + " " + trace::quote(m_wrappedSpec));
 }
 
-void DebugDevice::trace(const std::string &line)
+uint64_t DebugDevice::trace(const std::string &line)
 {
-  if (m_trace)
-    m_trace->line(line);
+  return m_trace ? m_trace->line(line) : 0;
 }
 
 std::string DebugDevice::refusedLine(

@@ -26,6 +26,14 @@ std::string defaultWrappedLibrary()
   return name && *name ? name : "prism";
 }
 
+std::string defaultWrappedDevice(const char *requested)
+{
+  const char *subtype = std::getenv("ANARI_DEBUG_WRAPPED_DEVICE");
+  if (subtype && *subtype)
+    return subtype;
+  return requested ? requested : "default";
+}
+
 std::shared_ptr<WrappedLibrary> WrappedLibrary::load(const std::string &spec,
     ANARIStatusCallback callback,
     const void *userPtr,

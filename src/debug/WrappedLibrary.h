@@ -41,5 +41,9 @@ class WrappedLibrary
 // The library to wrap when nothing else says: ANARI_DEBUG_WRAPPED_LIBRARY,
 // else "prism".
 std::string defaultWrappedLibrary();
+// The device subtype of the wrapped library to create when nothing else
+// says: ANARI_DEBUG_WRAPPED_DEVICE, else the one the application asked the
+// layer for (NULL: "default").
+std::string defaultWrappedDevice(const char *requested);
 
 } // namespace prism::debug

@@ -1,4 +1,5 @@
-// A prism device loaded through libanari, with its status messages kept.
+// A device of a library loaded through libanari, with its status messages
+// kept: prism's (PrismDeviceTest), or the debug layer's (tests/debug).
 #pragma once
 
 #include "StatusRecorder.h"
@@ -10,12 +11,16 @@
 #include <string>
 #include <vector>
 
-class PrismDeviceTest : public ::testing::Test
+class LibraryDeviceTest : public ::testing::Test
 {
  protected:
+  // `library` as anariLoadLibrary takes it (a string literal).
+  explicit LibraryDeviceTest(const char *library) : m_libraryName(library) {}
+
   void SetUp() override
   {
-    m_library = anariLoadLibrary("prism", StatusRecorder::callback, &m_status);
+    m_library =
+        anariLoadLibrary(m_libraryName, StatusRecorder::callback, &m_status);
     ASSERT_NE(m_library, nullptr);
     m_device = anariNewDevice(m_library, "default");
     ASSERT_NE(m_device, nullptr);
@@ -133,7 +138,14 @@ class PrismDeviceTest : public ::testing::Test
     return out;
   }
 
+  const char *m_libraryName;
   StatusRecorder m_status;
   ANARILibrary m_library{nullptr};
   ANARIDevice m_device{nullptr};
+};
+
+class PrismDeviceTest : public LibraryDeviceTest
+{
+ protected:
+  PrismDeviceTest() : LibraryDeviceTest("prism") {}
 };

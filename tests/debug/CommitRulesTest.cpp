@@ -14,14 +14,14 @@ TEST_F(DebugCommit, RequiredParameterMissing)
 {
   ANARIGeometry geometry = anariNewGeometry(m_device, "triangle");
   anariCommitParameters(m_device, geometry);
-  EXPECT_TRUE(layerReported(ANARI_SEVERITY_ERROR,
+  EXPECT_TRUE(onlyLayerReported(ANARI_SEVERITY_ERROR,
       ANARI_STATUS_INVALID_OPERATION,
       "anariCommitParameters(geometry triangle #1): required parameter "
       "'vertex.position' is not set"));
   ANARISurface surface = anariNewSurface(m_device);
   anariSetParameter(m_device, surface, "geometry", ANARI_GEOMETRY, &geometry);
   anariCommitParameters(m_device, surface);
-  EXPECT_TRUE(layerReported(ANARI_SEVERITY_ERROR,
+  EXPECT_TRUE(onlyLayerReported(ANARI_SEVERITY_ERROR,
       ANARI_STATUS_INVALID_OPERATION,
       "required parameter 'material' is not set"));
 
@@ -55,7 +55,7 @@ TEST_F(DebugCommit, IndexOutOfRange)
   anariSetParameter(
       m_device, geometry, "primitive.index", ANARI_ARRAY1D, &index);
   anariCommitParameters(m_device, geometry);
-  EXPECT_TRUE(layerReported(ANARI_SEVERITY_ERROR,
+  EXPECT_TRUE(onlyLayerReported(ANARI_SEVERITY_ERROR,
       ANARI_STATUS_INVALID_ARGUMENT,
       "'primitive.index' (array1d #3) refers to vertex 3 but "
       "'vertex.position' has 3 vertices"));
@@ -83,7 +83,7 @@ TEST_F(DebugCommit, VertexArraysOfDifferentSizes)
       m_device, geometry, "vertex.position", ANARI_ARRAY1D, &positions);
   anariSetParameter(m_device, geometry, "vertex.color", ANARI_ARRAY1D, &colors);
   anariCommitParameters(m_device, geometry);
-  EXPECT_TRUE(layerReported(ANARI_SEVERITY_ERROR,
+  EXPECT_TRUE(onlyLayerReported(ANARI_SEVERITY_ERROR,
       ANARI_STATUS_INVALID_ARGUMENT,
       "'vertex.color' has 2 elements but 'vertex.position' has 3"));
 
@@ -134,7 +134,7 @@ TEST_F(DebugCommit, CompleteFrameRendersSilently)
   anariSetParameter(m_device, frame, "size", ANARI_UINT32_VEC2, size);
   anariSetParameter(m_device, frame, "channel.color", ANARI_DATA_TYPE, &color);
   anariRenderFrame(m_device, frame);
-  EXPECT_TRUE(layerReported(ANARI_SEVERITY_ERROR,
+  EXPECT_TRUE(onlyLayerReported(ANARI_SEVERITY_ERROR,
       ANARI_STATUS_INVALID_OPERATION,
       "anariRenderFrame(frame #4): the frame was never committed"));
   anariFrameReady(m_device, frame, ANARI_WAIT);

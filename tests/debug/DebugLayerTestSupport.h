@@ -2,6 +2,7 @@
 // status message kept (and its source object) for assertions.
 #pragma once
 
+#include "DeviceTestSupport.h"
 #include "StatusRecorder.h"
 
 #include <anari/anari.h>
@@ -37,48 +38,17 @@ inline bool fromLayer(const LayerMessage &m)
   return i > 5 && i < t.size() && t[i] == '(';
 }
 
-class DebugLayerTest : public ::testing::Test
+class DebugLayerTest : public LibraryDeviceTest
 {
  protected:
-  void SetUp() override
-  {
-    m_library = anariLoadLibrary("debug", StatusRecorder::callback, &m_status);
-    ASSERT_NE(m_library, nullptr);
-    m_device = anariNewDevice(m_library, "default");
-    ASSERT_NE(m_device, nullptr);
-  }
-  void TearDown() override
-  {
-    if (m_device)
-      anariRelease(m_device, m_device);
-    anariUnloadLibrary(m_library);
-  }
+  DebugLayerTest() : LibraryDeviceTest("debug") {}
 
   // Exactly one of the layer's messages since the last call, with this
   // severity and code and a text containing `fragment` (the wrapped
   // device's own messages about the same call are left aside).
-  ::testing::AssertionResult layerReported(ANARIStatusSeverity severity,
-      ANARIStatusCode code,
-      const std::string &fragment)
-  {
-    std::vector<LayerMessage> layer;
-    std::ostringstream all;
-    for (auto &m : takeProblems(m_status)) {
-      all << "[" << m.severity << "/" << m.code << "] " << m.text << "\n";
-      if (fromLayer(m))
-        layer.push_back(m);
-    }
-    if (layer.size() == 1 && layer[0].severity == severity
-        && layer[0].code == code
-        && layer[0].text.find(fragment) != std::string::npos)
-      return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure()
-           << "expected one layer message containing '" << fragment
-           << "', got:\n"
-           << all.str();
-  }
-  // Exactly one problem at all: the layer's, and the call did not reach
-  // the wrapped device (which would have reported too).
+  // Exactly one problem at all: the layer's. A call the layer refused
+  // never reaches the wrapped device, and the wrapped device's own report
+  // of a problem the layer reported is withheld (WithheldReports).
   ::testing::AssertionResult onlyLayerReported(ANARIStatusSeverity severity,
       ANARIStatusCode code,
       const std::string &fragment)
@@ -112,8 +82,4 @@ class DebugLayerTest : public ::testing::Test
   {
     return anariNewArray1D(m_device, data, nullptr, nullptr, type, n);
   }
-
-  StatusRecorder m_status;
-  ANARILibrary m_library{nullptr};
-  ANARIDevice m_device{nullptr};
 };

@@ -67,7 +67,8 @@ TEST_F(DebugLifetime, WrappedLibraryParameter)
   anariCommitParameters(m_device, m_device);
   EXPECT_TRUE(onlyLayerReported(ANARI_SEVERITY_ERROR,
       ANARI_STATUS_INVALID_OPERATION,
-      "'wrappedLibrary' can change only before the first object"));
+      "'wrappedLibrary' and 'wrappedDevice' can change only before the first "
+      "object"));
   anariRelease(m_device, geometry);
 
   // Chosen at creation instead.
@@ -80,6 +81,53 @@ TEST_F(DebugLifetime, WrappedLibraryParameter)
   anariCommitParameters(device, world);
   anariRelease(device, world);
   anariRelease(device, device);
+  EXPECT_TRUE(silent());
+}
+
+TEST_F(DebugLifetime, WrappedDeviceParameter)
+{
+  // The device subtype of the wrapped library, as wrappedLibrary.
+  anariSetParameter(
+      m_device, m_device, "wrappedDevice", ANARI_STRING, "nosuch");
+  anariCommitParameters(m_device, m_device);
+  EXPECT_TRUE(onlyLayerReported(ANARI_SEVERITY_ERROR,
+      ANARI_STATUS_INVALID_OPERATION,
+      "created no device of subtype 'nosuch'; keeping 'prism' device "
+      "'default'"));
+  anariSetParameter(m_device, m_device, "wrappedDevice", ANARI_STRING, "prism");
+  anariCommitParameters(m_device, m_device);
+  EXPECT_TRUE(silent());
+  ANARIWorld world = anariNewWorld(m_device);
+  anariSetParameter(
+      m_device, m_device, "wrappedDevice", ANARI_STRING, "default");
+  anariCommitParameters(m_device, m_device);
+  EXPECT_TRUE(onlyLayerReported(ANARI_SEVERITY_ERROR,
+      ANARI_STATUS_INVALID_OPERATION,
+      "can change only before the first object is created; keeping 'prism' "
+      "device 'prism'"));
+  anariRelease(m_device, world);
+
+  // At creation, and by environment variable: the layer's device subtype
+  // need not be the wrapped library's.
+  ANARIParameterValue initial[] = {{"wrappedDevice", ANARI_STRING, "prism"},
+      {nullptr, ANARI_UNKNOWN, nullptr}};
+  ANARIDevice device = anariNewInitializedDevice(m_library, "mine", initial);
+  ASSERT_NE(device, nullptr);
+  anariRelease(device, device);
+  EXPECT_EQ(anariNewDevice(m_library, "mine"), nullptr);
+  m_status.take();
+  ASSERT_EQ(setenv("ANARI_DEBUG_WRAPPED_DEVICE", "prism", 1), 0);
+  device = anariNewDevice(m_library, "mine");
+  unsetenv("ANARI_DEBUG_WRAPPED_DEVICE");
+  ASSERT_NE(device, nullptr);
+  anariRelease(device, device);
+  EXPECT_TRUE(silent());
+}
+
+TEST_F(DebugLifetime, ExtensionFunctionsAreNotHandedOut)
+{
+  // Prism has none; the layer hands out none, and says nothing of it.
+  EXPECT_EQ(anariDeviceGetProcAddress(m_device, "anariNewSomething"), nullptr);
   EXPECT_TRUE(silent());
 }
 

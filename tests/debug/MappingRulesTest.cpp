@@ -18,7 +18,7 @@ TEST_F(DebugMapping, ArrayMappedTwiceOrUnmappedUnmapped)
       ANARI_STATUS_INVALID_OPERATION,
       "the array is already mapped"));
   anariCommitParameters(m_device, array);
-  EXPECT_TRUE(layerReported(ANARI_SEVERITY_ERROR,
+  EXPECT_TRUE(onlyLayerReported(ANARI_SEVERITY_ERROR,
       ANARI_STATUS_INVALID_OPERATION,
       "the array is mapped; unmap it before committing"));
   anariUnmapArray(m_device, array);
@@ -78,4 +78,32 @@ TEST_F(DebugMapping, FrameMappedBeforeItWasRendered)
       "the channel is not mapped"));
   anariRelease(m_device, frame);
   EXPECT_TRUE(silent());
+}
+
+TEST_F(DebugMapping, FrameMappedWhileItMayStillRender)
+{
+  const float black[4] = {0, 0, 0, 1};
+  ANARIRenderer renderer = newRenderer(black);
+  ANARIFrame frame = newFrame(renderer, 8, 8);
+  anariRelease(m_device, renderer);
+  uint32_t w = 0, h = 0;
+  ANARIDataType type = ANARI_UNKNOWN;
+  // Allowed (the map waits for the frame), but worth knowing.
+  anariRenderFrame(m_device, frame);
+  EXPECT_NE(
+      anariMapFrame(m_device, frame, "channel.color", &w, &h, &type), nullptr);
+  EXPECT_TRUE(m_status.tookOne(ANARI_SEVERITY_PERFORMANCE_WARNING,
+      ANARI_STATUS_NO_ERROR,
+      "anariMapFrame(frame #4 'channel.color'): the frame may still be "
+      "rendering"));
+  anariUnmapFrame(m_device, frame, "channel.color");
+
+  // Waited for: nothing at all to say.
+  anariRenderFrame(m_device, frame);
+  EXPECT_EQ(anariFrameReady(m_device, frame, ANARI_WAIT), 1);
+  EXPECT_NE(
+      anariMapFrame(m_device, frame, "channel.color", &w, &h, &type), nullptr);
+  anariUnmapFrame(m_device, frame, "channel.color");
+  anariRelease(m_device, frame);
+  EXPECT_TRUE(m_status.take().empty());
 }

@@ -14,7 +14,7 @@ using DebugParameters = DebugLayerTest;
 TEST_F(DebugParameters, UnknownSubtype)
 {
   ANARIGeometry teapot = anariNewGeometry(m_device, "teapot");
-  EXPECT_TRUE(layerReported(ANARI_SEVERITY_ERROR,
+  EXPECT_TRUE(onlyLayerReported(ANARI_SEVERITY_ERROR,
       ANARI_STATUS_INVALID_ARGUMENT,
       "anariNewGeometry(): unknown geometry subtype 'teapot'"));
   anariRelease(m_device, teapot);
@@ -31,7 +31,7 @@ TEST_F(DebugParameters, UnknownParameterName)
   ANARICamera camera = anariNewCamera(m_device, "perspective");
   const float fovy = 1.f;
   anariSetParameter(m_device, camera, "fovyy", ANARI_FLOAT32, &fovy);
-  EXPECT_TRUE(layerReported(ANARI_SEVERITY_WARNING,
+  EXPECT_TRUE(onlyLayerReported(ANARI_SEVERITY_WARNING,
       ANARI_STATUS_INVALID_ARGUMENT,
       "anariSetParameter(camera perspective #1 'fovyy'): unknown parameter"));
 
@@ -47,7 +47,7 @@ TEST_F(DebugParameters, TypeMismatch)
   ANARICamera camera = anariNewCamera(m_device, "perspective");
   const int32_t notAFloat = 1;
   anariSetParameter(m_device, camera, "fovy", ANARI_INT32, &notAFloat);
-  EXPECT_TRUE(layerReported(ANARI_SEVERITY_ERROR,
+  EXPECT_TRUE(onlyLayerReported(ANARI_SEVERITY_ERROR,
       ANARI_STATUS_INVALID_ARGUMENT,
       "anariSetParameter(camera perspective #1 'fovy'): type ANARI_INT32 is "
       "not accepted (expected ANARI_FLOAT32)"));
@@ -60,7 +60,7 @@ TEST_F(DebugParameters, ValueNotAmongTheAcceptedOnes)
   ANARIFrame frame = anariNewFrame(m_device);
   ANARIDataType rgb = ANARI_FLOAT32_VEC3;
   anariSetParameter(m_device, frame, "channel.color", ANARI_DATA_TYPE, &rgb);
-  EXPECT_TRUE(layerReported(ANARI_SEVERITY_ERROR,
+  EXPECT_TRUE(onlyLayerReported(ANARI_SEVERITY_ERROR,
       ANARI_STATUS_INVALID_ARGUMENT,
       "data type ANARI_FLOAT32_VEC3 is not accepted"));
 
@@ -76,7 +76,7 @@ TEST_F(DebugParameters, ArrayElementType)
   ANARIArray1D vec4 = floatArray(ANARI_FLOAT32_VEC4, kTriangleVec4, 3);
   anariSetParameter(
       m_device, geometry, "vertex.position", ANARI_ARRAY1D, &vec4);
-  EXPECT_TRUE(layerReported(ANARI_SEVERITY_ERROR,
+  EXPECT_TRUE(onlyLayerReported(ANARI_SEVERITY_ERROR,
       ANARI_STATUS_INVALID_ARGUMENT,
       "anariSetParameter(geometry triangle #1 'vertex.position'): array1d #2 "
       "has elements of type ANARI_FLOAT32_VEC4, expected ANARI_FLOAT32_VEC3"));
@@ -97,7 +97,7 @@ TEST_F(DebugParameters, MappedParameterArrayElementType)
   uint64_t stride = 0;
   void *memory = anariMapParameterArray1D(
       m_device, geometry, "vertex.position", ANARI_UINT8, 3, &stride);
-  EXPECT_TRUE(layerReported(ANARI_SEVERITY_ERROR,
+  EXPECT_TRUE(onlyLayerReported(ANARI_SEVERITY_ERROR,
       ANARI_STATUS_INVALID_ARGUMENT,
       "element type ANARI_UINT8 is not accepted"));
   if (memory)

@@ -39,6 +39,29 @@ bool fromLayer(const char *text)
   return i > 5 && text[i] == '(';
 }
 
+// Warnings and errors are compared; performance warnings (a frame mapped
+// while it may still render) depend on timing.
+bool isProblem(const std::string &severity)
+{
+  return severity == "FATAL_ERROR" || severity == "ERROR"
+         || severity == "WARNING";
+}
+
+// A message less its ", trace line N": where the recording's trace had an
+// object created, which the replay (writing no trace) does not say.
+std::string withoutTraceLine(std::string text)
+{
+  const std::string mark = ", trace line ";
+  for (size_t at = text.find(mark); at != std::string::npos;
+       at = text.find(mark, at)) {
+    size_t end = at + mark.size();
+    while (end < text.size() && std::isdigit((unsigned char)text[end]))
+      ++end;
+    text.erase(at, end - at);
+  }
+  return text;
+}
+
 bool isWord(const trace::Token &t, const char *text = nullptr)
 {
   return t.kind == trace::Token::kWord && (!text || t.text == text);
@@ -56,6 +79,8 @@ void Replayer::collectStatus(const void *userPtr,
 {
   auto *self = (Replayer *)userPtr;
   if (message && fromLayer(message)) {
+    if (severity > ANARI_SEVERITY_WARNING)
+      return; // not a problem (isProblem)
     std::lock_guard lock(self->m_reportsMutex);
     self->m_replayedReports.push_back(
         trace::reportLine(severity, code, message));
@@ -142,9 +167,9 @@ bool Replayer::call(const Tokens &t)
     if (t.size() != 4 || !isWord(t[1]) || !isWord(t[2])
         || t[3].kind != trace::Token::kString)
       return fail("Report: severity, code, message expected");
-    if (m_options.checkReports) {
+    if (m_options.checkReports && isProblem(t[1].text)) {
       m_recordedReports.push_back("Report " + t[1].text + " " + t[2].text + " "
-                                  + trace::quote(t[3].text));
+                                  + trace::quote(withoutTraceLine(t[3].text)));
     }
     return true;
   }
@@ -162,11 +187,13 @@ bool Replayer::call(const Tokens &t)
     return newObject(t);
   if (keyword == "Array")
     return newArray(t);
+  if (keyword == "MapArray")
+    return mapArray(t);
   if (keyword == "ArrayData")
     return arrayData(t);
   if (keyword == "Set")
     return setParameter(t);
-  if (keyword == "ParameterArray")
+  if (keyword == "MapParameterArray" || keyword == "ParameterArray")
     return parameterArray(t);
   if (keyword == "Map")
     return mapFrame(t);
@@ -203,6 +230,8 @@ bool Replayer::call(const Tokens &t)
     anariUnmapArray(m_device, (ANARIArray)o);
   } else if (keyword == "Unmap" && t.size() == 3) {
     anariUnmapFrame(m_device, (ANARIFrame)o, t[2].text.c_str());
+  } else if (keyword == "UnmapParameterArray" && t.size() == 3) {
+    anariUnmapParameterArray(m_device, o, t[2].text.c_str());
   } else {
     return fail("unknown call '" + keyword + "'");
   }
@@ -326,7 +355,7 @@ bool Replayer::newObject(const Tokens &t)
   ANARIObject o = nullptr;
   if (t[0].text == "NewObject") {
     o = anariNewObject(m_device, t[2].text.c_str(), subtype ? subtype : "");
-    m_objects[t[1].text] = o;
+    name(t[1], o);
     return true;
   }
   ANARIDataType objectType;
@@ -375,7 +404,7 @@ bool Replayer::newObject(const Tokens &t)
   default:
     return fail("New: no object of type " + t[2].text);
   }
-  m_objects[t[1].text] = o;
+  name(t[1], o);
   return true;
 }
 
@@ -412,7 +441,25 @@ bool Replayer::newArray(const Tokens &t)
         items[1],
         items[2]);
   }
-  m_objects[t[1].text] = o;
+  name(t[1], o);
+  return true;
+}
+
+void Replayer::name(const trace::Token &token, ANARIObject o)
+{
+  // `-`: a creation the layer refused, which made no object to name.
+  if (token.text != "-")
+    m_objects[token.text] = o;
+}
+
+bool Replayer::mapArray(const Tokens &t)
+{
+  ANARIObject array = nullptr;
+  if (t.size() != 2 || !object(t[1], array))
+    return fail(m_error.empty() ? "MapArray: an array expected" : m_error);
+  void *memory = anariMapArray(m_device, (ANARIArray)array);
+  if (memory)
+    m_mappedArrays.emplace(t[1].text, memory); // a second map keeps the first
   return true;
 }
 
@@ -424,7 +471,15 @@ bool Replayer::arrayData(const Tokens &t)
   if (t.size() < 3 || !object(t[1], array)
       || !contents(t, 2, ANARI_UNKNOWN, bytes, none))
     return false;
-  void *memory = anariMapArray(m_device, (ANARIArray)array);
+  // Mapped by its `MapArray` line, or (traces without one) now.
+  void *memory = nullptr;
+  auto mapped = m_mappedArrays.find(t[1].text);
+  if (mapped != m_mappedArrays.end()) {
+    memory = mapped->second;
+    m_mappedArrays.erase(mapped);
+  } else {
+    memory = anariMapArray(m_device, (ANARIArray)array);
+  }
   if (memory && !none)
     std::memcpy(memory, bytes.data(), bytes.size());
   anariUnmapArray(m_device, (ANARIArray)array);
@@ -477,14 +532,24 @@ bool Replayer::parameterArray(const Tokens &t)
   uint64_t items[3];
   std::vector<unsigned char> bytes;
   bool none = false;
-  if (t.size() < 10 || !object(t[1], o) || !type(t[3], arrayType)
-      || !type(t[4], elementType) || !dimensions(t, 5, items)
-      || !contents(t, 10, elementType, bytes, none))
-    return false;
+  // `MapParameterArray` maps (a later `ParameterArray` writes and unmaps);
+  // `ParameterArray` alone (traces without the map's line) does both.
+  const bool mapOnly = t[0].text == "MapParameterArray";
+  if (t.size() < (mapOnly ? 10 : 11) || !object(t[1], o)
+      || !type(t[3], arrayType) || !type(t[4], elementType)
+      || !dimensions(t, 5, items)
+      || (!mapOnly && !contents(t, 10, elementType, bytes, none)))
+    return fail(m_error.empty() ? t[0].text + ": operands expected" : m_error);
   const char *name = t[2].text.c_str();
+  const std::string key = t[1].text + " " + trace::quote(t[2].text);
   uint64_t stride = 0;
   void *memory = nullptr;
-  if (arrayType == ANARI_ARRAY1D) {
+  auto mapped = m_mappedParameters.find(key);
+  if (!mapOnly && mapped != m_mappedParameters.end()) {
+    memory = mapped->second.first;
+    stride = mapped->second.second;
+    m_mappedParameters.erase(mapped);
+  } else if (arrayType == ANARI_ARRAY1D) {
     memory = anariMapParameterArray1D(
         m_device, o, name, elementType, items[0], &stride);
   } else if (arrayType == ANARI_ARRAY2D) {
@@ -496,6 +561,10 @@ bool Replayer::parameterArray(const Tokens &t)
   }
   if (!memory)
     return true; // the device refused, as it did (or not) when recorded
+  if (mapOnly) {
+    m_mappedParameters.emplace(key, std::make_pair(memory, stride));
+    return true;
+  }
   const size_t size = anari::sizeOf(elementType);
   const size_t step = stride ? stride : size;
   for (size_t i = 0; size && (i + 1) * size <= bytes.size(); ++i)
@@ -509,6 +578,14 @@ bool Replayer::mapFrame(const Tokens &t)
   ANARIObject frame = nullptr;
   uint64_t width = 0, height = 0;
   ANARIDataType recordedType;
+  if (t.size() == 3 && object(t[1], frame)) {
+    // A map the layer refused: no image to compare.
+    uint32_t w = 0, h = 0;
+    ANARIDataType pixelType = ANARI_UNKNOWN;
+    anariMapFrame(
+        m_device, (ANARIFrame)frame, t[2].text.c_str(), &w, &h, &pixelType);
+    return true;
+  }
   if (t.size() < 7 || !object(t[1], frame) || !number(t[3], width)
       || !number(t[4], height) || !type(t[5], recordedType))
     return fail(

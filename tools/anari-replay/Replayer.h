@@ -10,6 +10,7 @@
 #include <mutex>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace prism::replay {
@@ -61,6 +62,7 @@ class Replayer
   bool newArray(const Tokens &t);
   bool setParameter(const Tokens &t);
   bool parameterArray(const Tokens &t);
+  bool mapArray(const Tokens &t);
   bool arrayData(const Tokens &t);
   bool mapFrame(const Tokens &t);
   bool property(const Tokens &t);
@@ -84,6 +86,8 @@ class Replayer
       std::vector<unsigned char> &bytes,
       bool &none);
   bool fail(const std::string &message);
+  // Names the object a creation line made (`-`: none).
+  void name(const trace::Token &token, ANARIObject o);
   static void collectStatus(const void *userPtr,
       ANARIDevice device,
       ANARIObject source,
@@ -103,6 +107,12 @@ class Replayer
   // Memory of shared arrays, alive as long as the replay (the device may
   // read it until the array is gone).
   std::list<std::vector<unsigned char>> m_arrayMemory;
+  // Arrays and parameter arrays ("o1 \"name\"") mapped by their own line,
+  // until the line that writes their data and unmaps them; parameter
+  // arrays with the device's stride.
+  std::unordered_map<std::string, void *> m_mappedArrays;
+  std::unordered_map<std::string, std::pair<void *, uint64_t>>
+      m_mappedParameters;
   int m_framesWritten = 0;
   std::vector<std::string> m_recordedReports;
   std::mutex m_reportsMutex; // NOTE: status may come from any thread

@@ -18,7 +18,7 @@ const char *kUsage =
     "mapped channel to DIR (.raw bytes; FLOAT32_VEC4 also as .exr).\n"
     "--check-reports replays through the debug layer wrapped around NAME,\n"
     "with the calls the layer refused, and exits 3 unless the layer makes\n"
-    "the same reports as recorded, in the same order.\n";
+    "the same reports (warnings and errors) as recorded, in the same order.\n";
 
 } // namespace
 

@@ -17,6 +17,7 @@ TraceWriter::TraceWriter(const std::string &path)
         "%s.bin\n# replay: anari-replay %s [--library NAME]\n",
         path.c_str(),
         path.c_str());
+    m_lines = 2;
   }
 }
 
@@ -28,14 +29,15 @@ TraceWriter::~TraceWriter()
     std::fclose(m_data);
 }
 
-void TraceWriter::line(const std::string &text)
+uint64_t TraceWriter::line(const std::string &text)
 {
   std::lock_guard lock(m_mutex);
   if (!m_text)
-    return;
+    return 0;
   std::fputs(text.c_str(), m_text);
   std::fputc('\n', m_text);
   std::fflush(m_text);
+  return ++m_lines;
 }
 
 std::string TraceWriter::blob(const void *data, uint64_t size)

@@ -24,8 +24,9 @@ class TraceWriter
   {
     return m_text && m_data;
   }
-  // Appends one line (a call), flushed so a crash keeps what came before.
-  void line(const std::string &text);
+  // Appends one line (a call), flushed so a crash keeps what came before;
+  // returns its line number in the file (from 1).
+  uint64_t line(const std::string &text);
   // "@offset:size" naming `size` bytes in the side file (written once).
   std::string blob(const void *data, uint64_t size);
 
@@ -36,6 +37,7 @@ class TraceWriter
   FILE *m_text{nullptr};
   FILE *m_data{nullptr};
   uint64_t m_dataSize{0};
+  uint64_t m_lines{0};
   // (hash, size) -> offset of blocks already written.
   std::map<std::pair<uint64_t, uint64_t>, uint64_t> m_blobs;
 };
