@@ -504,7 +504,7 @@ bool PathTracer::survivesRoulette(PathState &path, float u) const
 {
   // After three bounces a path goes on with probability (at most 0.95) of
   // its throughput and is weighted up when it does: long paths unbiased.
-  if (path.bounce <= 3)
+  if (path.bounce <= kFirstRouletteBounce)
     return true;
   const float survive = std::min(0.95f, maxComponent(path.throughput));
   if (u >= survive)

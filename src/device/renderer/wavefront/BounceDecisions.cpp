@@ -2,6 +2,8 @@
 
 #include "../SampleSequence.h"
 
+#include <algorithm>
+
 namespace prism {
 namespace {
 
@@ -10,11 +12,12 @@ uint32_t seedOfStream(uint32_t pathSeed, uint32_t stream)
   return mixBits(pathSeed + (stream + 1u) * 0x9e3779b9u);
 }
 
-// Decision `offset` of every ray. Built twice, for AVX2 (eight lanes) and
-// for any x86-64 (four), chosen when the library loads: the loop is plain
-// integer arithmetic, which the compiler vectorises.
-__attribute__((target_clones("avx2", "default"))) void drawDecision(
-    const uint32_t *index,
+// Decision `offset` of every ray: both coordinates, or only the one a
+// one-dimensional decision uses (half the work).
+enum class Coordinates { kBoth, kX, kY };
+
+template <Coordinates kWanted>
+inline void drawEach(const uint32_t *index,
     const uint32_t *pathSeed,
     const uint32_t *firstStream,
     uint32_t offset,
@@ -23,12 +26,54 @@ __attribute__((target_clones("avx2", "default"))) void drawDecision(
     float *y)
 {
   for (size_t r = 0; r < count; r++) {
-    const float2 sample = sobolSample2D(
-        index[r], seedOfStream(pathSeed[r], firstStream[r] + offset));
-    x[r] = sample.x;
-    y[r] = sample.y;
+    const uint32_t seed = seedOfStream(pathSeed[r], firstStream[r] + offset);
+    if constexpr (kWanted == Coordinates::kBoth) {
+      const float2 sample = sobolSample2D(index[r], seed);
+      x[r] = sample.x;
+      y[r] = sample.y;
+    } else if constexpr (kWanted == Coordinates::kX) {
+      x[r] = sobolSampleX(index[r], seed);
+    } else {
+      y[r] = sobolSampleY(index[r], seed);
+    }
   }
 }
+
+// Built twice, for AVX2 (eight lanes) and for any x86-64 (four), chosen
+// when the library loads: the loops are plain integer arithmetic, which
+// the compiler vectorises.
+__attribute__((target_clones("avx2", "default"))) void drawDecision(
+    Coordinates wanted,
+    const uint32_t *index,
+    const uint32_t *pathSeed,
+    const uint32_t *firstStream,
+    uint32_t offset,
+    size_t count,
+    float *x,
+    float *y)
+{
+  switch (wanted) {
+  case Coordinates::kBoth:
+    drawEach<Coordinates::kBoth>(
+        index, pathSeed, firstStream, offset, count, x, y);
+    break;
+  case Coordinates::kX:
+    drawEach<Coordinates::kX>(
+        index, pathSeed, firstStream, offset, count, x, y);
+    break;
+  case Coordinates::kY:
+    drawEach<Coordinates::kY>(
+        index, pathSeed, firstStream, offset, count, x, y);
+    break;
+  }
+}
+
+// What each decision uses, in stream order.
+constexpr Coordinates kCoordinates[] = {Coordinates::kBoth,
+    Coordinates::kX,
+    Coordinates::kX,
+    Coordinates::kBoth,
+    Coordinates::kY};
 
 } // namespace
 
@@ -44,16 +89,21 @@ void BounceDecisions::draw(
   m_index.resize(count);
   m_seed.resize(count);
   m_stream.resize(count);
+  uint16_t deepest = 0;
   for (size_t r = 0; r < count; r++) {
     const PathState &path = paths[rays.tag(r)];
     m_index[r] = path.sampleIndex;
     m_seed[r] = path.seed;
     m_stream[r] = uint32_t(path.bounce) * kStreamsPerBounce;
+    deepest = std::max(deepest, path.bounce);
   }
   for (int d = 0; d < kDecisions; d++) {
     m_x[d].resize(count);
     m_y[d].resize(count);
-    drawDecision(m_index.data(),
+    if (d == kRoulette && deepest < kFirstRouletteBounce)
+      continue; // no path of this wavefront plays it yet
+    drawDecision(kCoordinates[d],
+        m_index.data(),
         m_seed.data(),
         m_stream.data(),
         uint32_t(d),

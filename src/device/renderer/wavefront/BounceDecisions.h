@@ -18,6 +18,9 @@ namespace prism {
 // Random streams per bounce: direction, lobe, light choice, light point
 // and roulette, numbered from kStreamsPerBounce * bounce.
 constexpr uint32_t kStreamsPerBounce = 5;
+// Russian roulette is played by paths leaving this bounce or later (before
+// it every path goes on).
+constexpr uint16_t kFirstRouletteBounce = 3;
 
 // Decision `stream` of the path: a 2D pair of the pixel's low-discrepancy
 // sequences, its own for each stream.
@@ -48,7 +51,8 @@ class BounceDecisions
   {
     return {m_x[kLightPoint][r], m_y[kLightPoint][r]};
   }
-  // Russian roulette (the second coordinate of its stream).
+  // Russian roulette (the second coordinate of its stream); drawn only
+  // when a path of the wavefront has reached kFirstRouletteBounce.
   float roulette(size_t r) const
   {
     return m_y[kRoulette][r];
