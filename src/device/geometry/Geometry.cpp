@@ -380,23 +380,21 @@ float3 Geometry::attributesAt(const rt::Hit &hit,
   const Corners corners = cornersAt(primitive, hit.u, hit.v);
   const uint32_t perPrimitive = faceVaryingCorners();
   // Face-varying corner indices follow the spec's formula n * primID + k;
-  // the corner order matches cornersAt's vertex order.
+  // the corner order matches cornersAt's vertex order, so corners.weight
+  // weighs them too.
   uint32_t cornerIndex[4];
-  float cornerWeight[4];
   uint32_t cornerCount = 0;
   if (perPrimitive > 0) {
     cornerCount = corners.count;
-    for (uint32_t i = 0; i < corners.count; i++) {
+    for (uint32_t i = 0; i < corners.count; i++)
       cornerIndex[i] = perPrimitive * primitive + corners.slot[i];
-      cornerWeight[i] = corners.weight[i];
-    }
   }
   for (int a = 0; a < 5 && interpolate; a++) {
     const AttributeData &data = m_attributes[a];
     float4 &out = attributes.values[a];
     if (!data.perCorner.empty())
       out = interpolateValues(
-          data.perCorner, cornerIndex, cornerWeight, cornerCount);
+          data.perCorner, cornerIndex, corners.weight, cornerCount);
     else if (!data.perVertex.empty())
       out = interpolateValues(
           data.perVertex, corners.vertex, corners.weight, corners.count);
@@ -409,7 +407,7 @@ float3 Geometry::attributesAt(const rt::Hit &hit,
   float3 smooth{0, 0, 0};
   if (!m_cornerNormals.empty()) {
     for (uint32_t i = 0; i < cornerCount; i++)
-      smooth = smooth + m_cornerNormals[cornerIndex[i]] * cornerWeight[i];
+      smooth = smooth + m_cornerNormals[cornerIndex[i]] * corners.weight[i];
   } else if (m_vertexMotion.hasNormals()) {
     for (uint32_t i = 0; i < corners.count; i++) {
       smooth =
