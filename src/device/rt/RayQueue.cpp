@@ -38,38 +38,6 @@ void RayQueue::reserve(size_t capacity)
     grow(capacity);
 }
 
-size_t RayQueue::push(const float3 &origin,
-    const float3 &direction,
-    float tMin,
-    float tMax,
-    float time,
-    uint32_t tag)
-{
-  if (m_size == m_originX.size())
-    grow(std::max<size_t>(64, 2 * m_size));
-  const size_t i = m_size++;
-  // An untraceable ray becomes an inactive one (tMin > tMax), which Embree
-  // skips and which therefore finds nothing.
-  const bool valid = isTraceable(origin, direction, tMin, tMax);
-  const float3 o = valid ? origin : float3{0.f, 0.f, 0.f};
-  const float3 d = valid ? direction : float3{0.f, 0.f, 1.f};
-  m_originX[i] = o.x;
-  m_originY[i] = o.y;
-  m_originZ[i] = o.z;
-  m_tMin[i] = valid ? tMin : 1.f;
-  m_directionX[i] = d.x;
-  m_directionY[i] = d.y;
-  m_directionZ[i] = d.z;
-  // Embree traces times in [0, 1]; anything else at the shutter midpoint.
-  m_time[i] = time >= 0.f && time <= 1.f ? time : 0.5f;
-  m_tMax[i] = valid ? tMax : 0.f;
-  m_tag[i] = tag;
-  m_geometryId[i] = kInvalidId;
-  m_instanceId[i] = kInvalidId;
-  m_transmittance[i] = float3{1.f, 1.f, 1.f}; // until traced
-  return i;
-}
-
 Hit RayQueue::hit(size_t i) const
 {
   Hit hit;
