@@ -23,6 +23,28 @@
 #include <limits>
 
 namespace prism::mpi {
+namespace {
+
+// The renderer's background under composited premultiplied color (the
+// processes rendered without it, so it is added once, behind everything).
+void addBackground(const Renderer &renderer,
+    uint32_t width,
+    uint32_t height,
+    std::vector<float4> &color)
+{
+  for (size_t i = 0; i < color.size(); i++) {
+    const float4 background = renderer.background(
+        uint32_t(i % width), uint32_t(i / width), width, height);
+    float4 &c = color[i];
+    const float rest = 1.f - c.w;
+    c = float4{c.x + rest * background.x,
+        c.y + rest * background.y,
+        c.z + rest * background.z,
+        c.w + rest * background.w};
+  }
+}
+
+} // namespace
 
 DataParallelDevice::DataParallelDevice(ANARILibrary library) : Device(library)
 {
@@ -490,13 +512,16 @@ void DataParallelDevice::renderComposited(
 {
   frame.shareTileRows(0, 1);
   frame.keepDepth(true);
+  frame.omitBackground(true);
   frame.renderInLockstep(false);
   Device::renderFrame(handle);
   const FrameBuffers &local = frame.linearPixels();
   politeBarrier(communicator);
   DepthCompositor compositor(communicator, state.width, state.height);
-  const CompositedImage image = compositor.composite(local.color, local.depth);
+  CompositedImage image = compositor.composite(local.color, local.depth);
   const bool rankZero = !image.color.empty();
+  if (rankZero && frame.renderer())
+    addBackground(*frame.renderer(), state.width, state.height, image.color);
   std::map<std::string, MappedChannel> assembled;
   for (const char *name : kChannelNames) {
     const ANARIDataType type = frame.channelType(name);
@@ -545,6 +570,7 @@ void DataParallelDevice::renderReplicated(
   uint64_t bytesSent = 0;
   frame.shareTileRows(uint32_t(rank), uint32_t(ranks));
   frame.keepDepth(false);
+  frame.omitBackground(false);
   frame.renderInLockstep(false);
   Device::renderFrame(handle);
   frame.ready(ANARI_WAIT);
@@ -628,6 +654,7 @@ void DataParallelDevice::renderPathTraced(
   // image.
   frame.shareTileRows(0, 1);
   frame.keepDepth(false);
+  frame.omitBackground(false);
   frame.renderInLockstep(true);
   uint64_t bytesSent = 0;
   {

@@ -135,8 +135,9 @@ CompositedImage DepthCompositor::composite(
     }
     m_nearestRank[p] = order[0];
     // The "under" operator on premultiplied color (what prism's renderers
-    // write). Background (infinite depth) is the same on every process, so
-    // only the first one counts, after every surface.
+    // write; the processes render without background, which the device
+    // adds under the result). What reaches infinity (lights seen there) is
+    // the same on every process, so only the first one counts.
     Fragment result{float4{0.f, 0.f, 0.f, 0.f}, perRank[order[0]].depth};
     for (int i = 0; i < m_ranks && result.color.w < 1.f; i++) {
       const Fragment &f = perRank[order[i]];

@@ -27,9 +27,10 @@ class DepthCompositor
  public:
   DepthCompositor(MPI_Comm communicator, uint32_t width, uint32_t height);
 
-  // `color` and `depth` hold this process's width x height render (either
-  // empty: it rendered nothing, so it adds only background). Rank 0 gets the
-  // composited image, the others empty vectors.
+  // `color` and `depth` hold this process's width x height render, made
+  // without background (either empty: it rendered nothing). Rank 0 gets
+  // the composited image, still without background; the others get empty
+  // vectors.
   CompositedImage composite(
       const std::vector<float4> &color, const std::vector<float> &depth);
 

@@ -553,7 +553,9 @@ void compositeShadows(uint32_t seed)
         "composite shadows: shadows across processes are missing ("
             + std::to_string(brighter) + " pixels brighter)");
   } else {
-    check(differingPixels(want.color, got.color, 4) == 0,
+    // Equal to float rounding: composite mode adds the background after
+    // accumulating, the single-process render inside each sample.
+    check(quality >= 100.0,
         "composite shadows: one process composites the whole image");
   }
 }

@@ -228,8 +228,13 @@ void Frame::render()
   m_tilesTotal = tilesX * tilesY;
   const std::unique_ptr<RayTransport> transport =
       device().transportFor(*m_world);
-  RenderContext context{
-      m_camera, m_world, transport.get(), m_width, m_height, m_sampleIndex};
+  RenderContext context{m_camera,
+      m_world,
+      transport.get(),
+      m_width,
+      m_height,
+      m_sampleIndex,
+      m_omitBackground};
   m_renderer->beginFrame(context);
   // Each tile is rendered, folded into the accumulation and converted to
   // the channels' types while it is still in cache.
@@ -463,6 +468,12 @@ void Frame::keepDepth(bool keep)
 {
   waitUntilDone();
   m_keepDepth = keep;
+}
+
+void Frame::omitBackground(bool omit)
+{
+  waitUntilDone();
+  m_omitBackground = omit;
 }
 
 void Frame::renderInLockstep(bool lockstep)

@@ -66,6 +66,9 @@ class Frame : public Object
   // when channel.depth is not enabled (compositing sorts by it).
   void shareTileRows(uint32_t part, uint32_t parts);
   void keepDepth(bool keep);
+  // Renders with a transparent background, for a device that composites
+  // the processes' pixels and adds the background itself.
+  void omitBackground(bool omit);
   // Renders tile after tile, in the same order on every process and on one
   // thread, so the collectives of a transport line up across processes.
   void renderInLockstep(bool lockstep);
@@ -127,6 +130,7 @@ class Frame : public Object
   uint32_t m_tileRowPart{0};
   uint32_t m_tileRowParts{1};
   bool m_keepDepth{false};
+  bool m_omitBackground{false};
   bool m_lockstep{false};
   bool m_accumulation{false};
   uint32_t m_sampleIndex{0}; // of the render in flight

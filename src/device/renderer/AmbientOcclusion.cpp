@@ -75,8 +75,7 @@ void AmbientOcclusion::renderTile(const RenderContext &context,
     times[i] = ray.time;
     rays.push(
         ray.origin, ray.direction, ray.tMin, ray.tMax, ray.time, uint32_t(i));
-    samples[i].color =
-        background(pixel.x, pixel.y, context.width, context.height);
+    samples[i].color = background(context, pixel.x, pixel.y);
   }
   rays.setCoherent(true);
   // Camera rays, then their continuations through see-through surfaces.

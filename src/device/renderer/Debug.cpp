@@ -116,7 +116,7 @@ PixelSample Debug::shadeSample(const RenderContext &context,
                            heat(float(layers) / 8.f).y,
                            heat(float(layers) / 8.f).z,
                            1.f}
-                       : background(x, y, context.width, context.height);
+                       : background(context, x, y);
     return sample;
   }
   float3 c{0, 0, 0};

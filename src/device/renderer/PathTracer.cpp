@@ -331,7 +331,7 @@ void PathTracer::emitAlongRay(const RenderContext &context, Bounce &b) const
   if (b.found)
     return;
   if (path.bounce == 0 && !path.recordedFirstHit) {
-    const float4 bg = background(path.x, path.y, context.width, context.height);
+    const float4 bg = background(context, path.x, path.y);
     path.sample.color = float4{path.radiance.x + bg.x,
         path.radiance.y + bg.y,
         path.radiance.z + bg.z,

@@ -334,7 +334,7 @@ void Raycast::renderTile(const RenderContext &context,
     sample.instanceId = constant.instanceId;
   };
   if (uniformBackground())
-    shading.fillBackground(background(0, 0, context.width, context.height));
+    shading.fillBackground(background(context, 0, 0));
   for (uint32_t y = tile.y0; y < tile.y1 && !cancel; y++) {
     for (uint32_t x0 = tile.x0; x0 < tile.x1; x0 += kLanes) {
       const int count = int(std::min<uint32_t>(kLanes, tile.x1 - x0));
@@ -343,7 +343,7 @@ void Raycast::renderTile(const RenderContext &context,
       world.intersect(packet, active);
       if (!uniformBackground()) {
         for (int i = 0; i < count; i++) {
-          const float4 b = background(x0 + i, y, context.width, context.height);
+          const float4 b = background(context, x0 + i, y);
           shading.backR[i] = b.x;
           shading.backG[i] = b.y;
           shading.backB[i] = b.z;
@@ -452,7 +452,7 @@ PixelSample Raycast::shadeSample(const RenderContext &context,
   }
   if (!hit.found())
     marchTo(ray.tMax);
-  sample.color = blend.over(background(x, y, context.width, context.height));
+  sample.color = blend.over(background(context, x, y));
   return sample;
 }
 

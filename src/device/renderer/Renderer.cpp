@@ -106,7 +106,7 @@ PixelSample Renderer::shadeSample(const RenderContext &context,
     uint32_t y) const
 {
   PixelSample sample;
-  sample.color = background(x, y, context.width, context.height);
+  sample.color = background(context, x, y);
   return sample;
 }
 

@@ -32,6 +32,11 @@ struct RenderContext
   // Which accumulated sample this frame renders (0: the first, through
   // pixel centres); seeds every random choice with the pixel.
   uint32_t sampleIndex;
+  // Render as if the background were transparent black: a compositing
+  // device blends the processes' pixels first and the background under
+  // the result (a background under each process's pixels would hide
+  // everything behind its volumes and see-through surfaces).
+  bool transparentBackground{false};
 };
 
 class Renderer : public Object
@@ -57,6 +62,14 @@ class Renderer : public Object
   // The background seen at pixel (x, y) of a width x height frame.
   float4 background(
       uint32_t x, uint32_t y, uint32_t width, uint32_t height) const;
+  // What a render shows behind pixel (x, y): background(), or nothing
+  // when the context asks for a transparent background.
+  float4 background(const RenderContext &context, uint32_t x, uint32_t y) const
+  {
+    return context.transparentBackground
+               ? float4{0.f, 0.f, 0.f, 0.f}
+               : background(x, y, context.width, context.height);
+  }
   // Whether background() is the same everywhere (no background image).
   bool uniformBackground() const
   {
