@@ -95,11 +95,12 @@ class Object
   // A hash of what this object renders with, so processes that must hold
   // the same objects can compare them: its type, subtype and committed
   // parameters (objects by their own contentHash(), strings by their text,
-  // other values by their bytes; pointers, callbacks and "name" by type
-  // only); arrays add their elements in use. Computed at the first call
-  // after a change and kept until the next (by epoch()), so shared
-  // children and unchanged arrays are hashed once. Call it after refresh(),
-  // on the thread that flushes commits (nothing here is locked).
+  // other values by their bytes; pointers and callbacks by name and type
+  // only, since addresses differ by process; "name" not at all); arrays
+  // add their elements in use. Computed at the first call after a change
+  // and kept until the next (by epoch()), so shared children and unchanged
+  // arrays are hashed once. Call it after refresh(), on the thread that
+  // flushes commits (nothing here is locked).
   uint64_t contentHash() const;
 
   // anariGetProperty; returns true when `mem` was written.
