@@ -149,12 +149,16 @@ inline ANARIWorld newBoxesWorld(ANARIDevice device,
   return world;
 }
 
+// Where addSunlight's light shines unless asked otherwise.
+constexpr float kSunDirection[3] = {-0.3f, -1.f, -0.5f};
+
 // A directional light from above for `world`, so boxes shadow the ones
 // below them; commits the world.
-inline void addSunlight(ANARIDevice device, ANARIWorld world)
+inline void addSunlight(ANARIDevice device,
+    ANARIWorld world,
+    const float *direction = kSunDirection)
 {
   ANARILight light = anariNewLight(device, "directional");
-  const float direction[3] = {-0.3f, -1.f, -0.5f};
   anariSetParameter(device, light, "direction", ANARI_FLOAT32_VEC3, direction);
   anariCommitParameters(device, light);
   setWorldObjects(device, world, "light", ANARI_LIGHT, light);

@@ -391,6 +391,7 @@ void DataParallelDevice::fingerprintWorld(
   }
   d.worldLights = uint32_t(world.lights().size());
   d.worldVolumes = uint32_t(world.volumes().size());
+  d.worldContent = world.contentHash();
 }
 
 uint32_t DataParallelDevice::declaredLights(const World &world)
@@ -421,8 +422,10 @@ FrameDescriptor DataParallelDevice::describe(
   if (m_mode == RenderMode::Replicated && frame->world())
     fingerprintWorld(*frame->world(), d);
   if (m_mode == RenderMode::PathTracer && frame->world()
-      && dynamic_cast<const PathTracer *>(frame->renderer()))
+      && dynamic_cast<const PathTracer *>(frame->renderer())) {
     d.declaredLights = declaredLights(*frame->world());
+    d.declaredLightsHash = frame->world()->declaredLightsHash();
+  }
   if (const Renderer *renderer = frame->renderer()) {
     const std::string &subtype = renderer->subtype();
     std::memcpy(d.renderer,

@@ -11,9 +11,10 @@
 namespace prism::mpi {
 namespace {
 
-// "name: A on ranks 0, 2; B on rank 1" when the ranks' values differ.
+// "name: A on ranks 0,2, B on rank 1" when the ranks' values differ;
+// returns whether they did.
 template <typename Value, typename Describe>
-void listDifferences(std::string &message,
+bool listDifferences(std::string &message,
     const char *name,
     const std::vector<FrameDescriptor> &all,
     Value value,
@@ -23,7 +24,7 @@ void listDifferences(std::string &message,
   for (size_t rank = 0; rank < all.size(); rank++)
     ranksByValue[value(all[rank])].push_back(int(rank));
   if (ranksByValue.size() < 2)
-    return;
+    return false;
   message += message.empty() ? "" : "; ";
   message += name;
   message += ":";
@@ -38,6 +39,15 @@ void listDifferences(std::string &message,
       message += std::to_string(ranks[i]);
     }
   }
+  return true;
+}
+
+// A hash as 16 hex digits.
+std::string hexadecimal(uint64_t hash)
+{
+  char text[17];
+  std::snprintf(text, sizeof(text), "%016llx", (unsigned long long)hash);
+  return text;
 }
 
 } // namespace
@@ -107,7 +117,7 @@ std::string describeDisagreement(const std::vector<FrameDescriptor> &all)
         return std::string(d.renderer, strnlen(d.renderer, sizeof(d.renderer)));
       },
       [](const std::string &v) { return "'" + v + "'"; });
-  listDifferences(
+  const bool worldsDiffer = listDifferences(
       message,
       "world (bounds, primitives, lights, volumes)",
       all,
@@ -129,12 +139,31 @@ std::string describeDisagreement(const std::vector<FrameDescriptor> &all)
         return std::string(text);
       },
       [](const std::string &v) { return v; });
-  listDifferences(
+  // Contents are compared where the sizes agree, so a difference of sizes
+  // is not named twice.
+  if (!worldsDiffer) {
+    listDifferences(
+        message,
+        "world contents (a hash of the committed world)",
+        all,
+        [](const FrameDescriptor &d) { return d.worldContent; },
+        hexadecimal);
+  }
+  const bool lightCountsDiffer = listDifferences(
       message,
       "lights (pathtracer mode needs the same on every process)",
       all,
       [](const FrameDescriptor &d) { return d.declaredLights; },
       number);
+  if (!lightCountsDiffer) {
+    listDifferences(
+        message,
+        "lights' parameters (pathtracer mode needs the same on every "
+        "process; a hash of them)",
+        all,
+        [](const FrameDescriptor &d) { return d.declaredLightsHash; },
+        hexadecimal);
+  }
   return message;
 }
 

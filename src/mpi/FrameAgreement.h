@@ -35,15 +35,19 @@ struct FrameDescriptor
   char renderer[32]{}; // the renderer's subtype, cut to fit
   // A cheap fingerprint of the world, set only where every process must
   // hold the same one (replicated mode): its bounds and how many surface
-  // primitives, lights and volumes it places.
+  // primitives, lights and volumes it places, and a hash of its contents
+  // (Object::contentHash()) for worlds alike in those.
   float worldBounds[6]{};
   uint64_t worldPrimitives{0};
   uint32_t worldLights{0};
   uint32_t worldVolumes{0};
-  // How many lights the world declares (emissive surfaces aside), set only
-  // when paths are traced across the processes (pathtracer mode): any
-  // process may shade a path, so all must sample the same lights.
+  uint64_t worldContent{0};
+  // How many lights the world declares (emissive surfaces aside) and a hash
+  // of them (World::declaredLightsHash()), set only when paths are traced
+  // across the processes (pathtracer mode): any process may shade a path,
+  // so all must sample the same lights.
   uint32_t declaredLights{0};
+  uint64_t declaredLightsHash{0};
 };
 
 // Empty when every descriptor (one per rank, in rank order) is the same,

@@ -52,10 +52,11 @@ class Status
 
 // Whether exactly one error arrived (besides, when `unrenderedMaps`, the
 // errors of mapping a frame that was not rendered) and it contains every
-// fragment.
+// fragment and none of `absent`.
 bool oneErrorMentioning(Status &status,
     const std::vector<std::string> &fragments,
-    bool unrenderedMaps = false)
+    bool unrenderedMaps = false,
+    const std::vector<std::string> &absent = {})
 {
   std::vector<std::string> errors = status.take();
   if (unrenderedMaps) {
@@ -67,6 +68,8 @@ bool oneErrorMentioning(Status &status,
   bool all = errors.size() == 1;
   for (const std::string &fragment : fragments)
     all = all && errors[0].find(fragment) != std::string::npos;
+  for (const std::string &fragment : absent)
+    all = all && errors[0].find(fragment) == std::string::npos;
   if (!all) {
     for (const std::string &e : errors)
       std::fprintf(stderr, "[rank %d] error: %s\n", g_worldRank, e.c_str());
@@ -123,6 +126,7 @@ struct Lighting
 {
   bool lit{false};
   int samples{1};
+  const float *sunDirection{kSunDirection};
 };
 
 Render renderBoxes(ANARIDevice device,
@@ -137,7 +141,7 @@ Render renderBoxes(ANARIDevice device,
   Render result;
   ANARIWorld world = newBoxesWorld(device, boxes);
   if (lighting.lit)
-    addSunlight(device, world);
+    addSunlight(device, world, lighting.sunDirection);
   if (communicator) {
     anariSetParameter(
         device, world, "mpiCommunicator", ANARI_VOID_POINTER, communicator);
@@ -627,6 +631,10 @@ void scenarioMismatch()
       kSize,
       rank == odd ? kSize / 2 : kSize);
   const std::string odder = "on rank " + std::to_string(odd);
+  // The ranks that agree with one another: "on rank 0", "on ranks 0,1,2".
+  std::string others = odd > 1 ? "on ranks 0" : "on rank 0";
+  for (int r = 1; r < odd; r++)
+    others += "," + std::to_string(r);
   check(oneErrorMentioning(status,
             {"disagree", "size", "64x32 " + odder, "64x64 on rank"},
             true),
@@ -654,6 +662,18 @@ void scenarioMismatch()
                 "1 on rank"},
             true),
       "lights that differ in pathtracer mode are reported");
+  // As many lights, one of them shining elsewhere: the lights' hash.
+  const float otherSun[3] = {0.3f, -1.f, -0.5f};
+  traceBoxes(mpi.device,
+      boxesOf(owners, rank),
+      &comm,
+      Lighting{true, 1, rank == odd ? otherSun : kSunDirection});
+  check(oneErrorMentioning(status,
+            {"disagree", "lights' parameters", odder, others},
+            true,
+            {"lights (pathtracer mode"}),
+      "lights of the same count that differ in pathtracer mode are reported "
+      "by their hash, not their count");
   const Render traced =
       traceBoxes(mpi.device, boxesOf(owners, rank), &comm, oneSample);
   check(
@@ -687,6 +707,37 @@ void scenarioMismatch()
                 "768 primitives, 0 lights, 0 volumes on rank 0"},
             true),
       "replicated worlds that differ are reported");
+  // Worlds alike in extent and sizes but not in contents: every box but
+  // one inner box, another one on the last rank (the same bounds and
+  // number of boxes, other vertices and colors).
+  auto everyBoxBut = [](int left) {
+    std::vector<int> boxes;
+    for (int box = 0; box < kBoxesPerSide * kBoxesPerSide * kBoxesPerSide;
+         box++) {
+      if (box != left)
+        boxes.push_back(box);
+    }
+    return boxes;
+  };
+  const int kInnerBox = 1 + kBoxesPerSide * (1 + kBoxesPerSide);
+  renderBoxes(mpi.device,
+      everyBoxBut(rank == odd ? kInnerBox + 1 : kInnerBox),
+      kEyeA,
+      "raycast",
+      &comm);
+  check(oneErrorMentioning(status,
+            {"disagree", "world contents", odder, others},
+            true,
+            {"world (bounds"}),
+      "replicated worlds of the same extent and sizes whose contents differ "
+      "are reported naming the ranks");
+  // The same world everywhere: silent, and rank 0's image is one
+  // process's.
+  const Render replicated =
+      renderBoxes(mpi.device, boxesOf(owners, -1), kEyeA, "raycast", &comm);
+  check(status.take().empty(), "an agreeing replicated render reports nothing");
+  if (rank == 0)
+    checkComposite(replicated, owners, kEyeA, "replicated after mismatches");
   anariSetParameter(mpi.device, mpi.device, "mode", ANARI_STRING, "composite");
 
   const Render agreed =

@@ -179,6 +179,22 @@ void Array::dropReferences()
   m_heldObjects.assign(capacity(), nullptr);
 }
 
+void Array::hashContent(ContentHash &hash) const
+{
+  hash.add(uint64_t(m_shape.elementType));
+  for (uint64_t size : m_shape.size)
+    hash.add(size);
+  hash.add(count());
+  if (!m_isObjectArray) {
+    hash.add(begin(), count() * m_elementSize);
+    return;
+  }
+  for (uint64_t i = m_regionBegin; i < m_regionEnd; i++) {
+    const Object *object = m_heldObjects[i];
+    hash.add(object ? object->contentHash() : 0);
+  }
+}
+
 void Array::commitParameters()
 {
   m_regionBegin = 0;

@@ -86,6 +86,13 @@ class Array : public Object
 
  protected:
   void commitParameters() override;
+  // The shape and the elements in use: bytes, or each object's hash.
+  void hashContent(ContentHash &hash) const override;
+  // An object array's elements may be recommitted while it is not.
+  bool keepsContentHash() const override
+  {
+    return !m_isObjectArray;
+  }
 
  private:
   void *storage();

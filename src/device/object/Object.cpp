@@ -6,6 +6,7 @@
 
 #include "anari/frontend/type_utility.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace prism {
@@ -223,6 +224,46 @@ void Object::reportUnusedParameters()
         "unknown parameter '%s' (%s) is ignored",
         name.c_str(),
         anari::toString(value.type()));
+  }
+}
+
+uint64_t Object::contentHash() const
+{
+  const uint64_t epoch = m_epoch.load();
+  if (m_hashedEpoch == epoch)
+    return m_contentHash;
+  if (m_hashing)
+    return 0; // back at an object of a reference cycle being hashed
+  m_hashing = true;
+  ContentHash hash;
+  hash.add(uint64_t(m_type));
+  hash.add(m_subtype);
+  hashContent(hash);
+  m_hashing = false;
+  if (!keepsContentHash())
+    return hash.value();
+  m_contentHash = hash.value();
+  m_hashedEpoch = epoch;
+  return m_contentHash;
+}
+
+void Object::hashContent(ContentHash &hash) const
+{
+  for (const auto &[name, value] : m_committed.all()) {
+    if (name == "name")
+      continue; // a label for messages, the same image either way
+    const ANARIDataType type = value.type();
+    hash.add(name);
+    hash.add(uint64_t(type));
+    if (anari::isObject(type)) {
+      hash.add(value.object() ? value.object()->contentHash() : 0);
+    } else if (type == ANARI_STRING) {
+      hash.add(value.string());
+    } else if (int(type) >= 1000 || type == ANARI_DATA_TYPE) {
+      // Values, not addresses (pointers and callbacks differ by process).
+      const size_t size = std::min(anari::sizeOf(type), Parameter::kValueBytes);
+      hash.add(value.data(), size);
+    }
   }
 }
 

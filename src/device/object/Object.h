@@ -2,6 +2,7 @@
 // parameters, the pull-model parameter readers, properties and status.
 #pragma once
 
+#include "ContentHash.h"
 #include "ObjectRef.h"
 #include "Parameter.h"
 
@@ -91,6 +92,17 @@ class Object
     m_epoch++;
   }
 
+  // A hash of what this object renders with, so processes that must hold
+  // the same objects can compare them: its type, subtype and committed
+  // parameters (objects by their own contentHash(), strings by their text,
+  // other values by their bytes; pointers and callbacks by name and type
+  // only, since addresses differ by process; "name" not at all); arrays
+  // add their elements in use. Computed at the first call after a change
+  // and kept until the next (by epoch()), so shared children and unchanged
+  // arrays are hashed once. Call it after refresh(), on the thread that
+  // flushes commits (nothing here is locked).
+  uint64_t contentHash() const;
+
   // anariGetProperty; returns true when `mem` was written.
   virtual bool getProperty(const std::string &name,
       ANARIDataType type,
@@ -124,6 +136,14 @@ class Object
  protected:
   // Reads committed parameters; called once per commit.
   virtual void commitParameters() {}
+  // Feeds what contentHash() covers beyond type and subtype.
+  virtual void hashContent(ContentHash &hash) const;
+  // Whether contentHash() may be kept until epoch() changes; false for
+  // objects whose content can change while their epoch does not.
+  virtual bool keepsContentHash() const
+  {
+    return true;
+  }
 
   // Pull-model readers: each marks the parameter as read and checks its
   // type; a mismatch is warned about once and the fallback returned.
@@ -186,6 +206,9 @@ class Object
   std::vector<Dependency> m_dependencies;
   uint64_t m_refreshedGeneration{0};
   std::string m_name;
+  mutable uint64_t m_hashedEpoch{~0ull};
+  mutable uint64_t m_contentHash{0};
+  mutable bool m_hashing{false}; // reference cycles count once
 };
 
 } // namespace prism

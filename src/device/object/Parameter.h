@@ -27,6 +27,9 @@ class Parameter
   // value); `object` is the resolved handle for object types.
   static Parameter make(ANARIDataType type, const void *mem, Object *object);
 
+  // The largest value held (larger ones are dropped at make()).
+  static constexpr size_t kValueBytes = 128;
+
   ANARIDataType type() const
   {
     return m_type;
@@ -56,7 +59,7 @@ class Parameter
   void adopt(Object *object);
 
   ANARIDataType m_type{ANARI_UNKNOWN};
-  alignas(16) unsigned char m_bytes[128]{};
+  alignas(16) unsigned char m_bytes[kValueBytes]{};
   std::string m_string;
   Object *m_object{nullptr};
 };

@@ -219,6 +219,29 @@ void World::finalize()
   m_lightSelector.build(m_placedLights, sceneRadius);
 }
 
+uint64_t World::declaredLightsHash() const
+{
+  if (m_lightsHashEpoch == epoch())
+    return m_lightsHash;
+  ContentHash hash;
+  auto addLights = [&](const std::vector<Object *> &lights) {
+    for (const Object *light : lights)
+      hash.add(light ? light->contentHash() : 0);
+  };
+  addLights(m_lights);
+  for (const Instance *instance : m_instances) {
+    if (!instance->isValid() || instance->group()->lights().empty())
+      continue;
+    for (size_t i = 0; i < instance->placementCount(); i++) {
+      hash.add(&instance->worldFromObject(i), sizeof(mat3x4));
+      addLights(instance->group()->lights());
+    }
+  }
+  m_lightsHash = hash.value();
+  m_lightsHashEpoch = epoch();
+  return m_lightsHash;
+}
+
 void World::placeVolumes()
 {
   m_placedVolumes.clear();

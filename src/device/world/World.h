@@ -102,6 +102,11 @@ class World : public Object
   {
     return m_placedVolumes;
   }
+  // A hash of the lights the world declares (its own, and its instances'
+  // groups' at each placement; emissive surfaces aside): each light's
+  // contentHash() and where it is placed. Kept until the world changes;
+  // call it like Object::contentHash().
+  uint64_t declaredLightsHash() const;
   // Chooses among lights() for next-event estimation.
   const LightSelector &lightSelector() const
   {
@@ -140,6 +145,8 @@ class World : public Object
   // directly: no instance level, the most common case for simple scenes.
   const rt::Scene *m_traced{nullptr};
   box3 m_bounds;
+  mutable uint64_t m_lightsHashEpoch{~0ull};
+  mutable uint64_t m_lightsHash{0};
 };
 
 } // namespace prism
