@@ -633,8 +633,10 @@ void scenarioMismatch()
   const std::string odder = "on rank " + std::to_string(odd);
   // The ranks that agree with one another: "on rank 0", "on ranks 0,1,2".
   std::string others = odd > 1 ? "on ranks 0" : "on rank 0";
-  for (int r = 1; r < odd; r++)
-    others += "," + std::to_string(r);
+  for (int r = 1; r < odd; r++) {
+    others += ',';
+    others += std::to_string(r);
+  }
   check(oneErrorMentioning(status,
             {"disagree", "size", "64x32 " + odder, "64x64 on rank"},
             true),
