@@ -359,7 +359,7 @@ RenderControl "action" "string" 1 "wait"
            "mesh 'short': 'nvertices' adds up to 6 but there are 3",
            "particles 'dust': 'width' count does not match 'P'",
            "curves 'knot': no 'P'",
-           "'volume' nodes are not supported yet",
+           "volume 'fog' has no vdbfilename",
            "bad 'resolution'"})
     EXPECT_NE(problems.find(expected), std::string::npos) << expected << "\n"
                                                           << problems;
@@ -866,9 +866,11 @@ TEST_F(Render, InteractiveEditsTouchOnlyTheirObjects)
   // One material and one instance set anew; nothing else made or changed.
   EXPECT_EQ(synchronizeCounts(m_messages),
       "created geometry 0 material 0 surface 0 group 0 instance 0 light 0 "
+      "volume 0 "
       "world 0; committed geometry 0 material 1 surface 0 group 0 instance 1 "
-      "light 0 world 0; released geometry 0 material 0 surface 0 group 0 "
-      "instance 0 light 0 world 0");
+      "light 0 volume 0 world 0; released geometry 0 material 0 surface 0 "
+      "group 0 "
+      "instance 0 light 0 volume 0 world 0");
   const Image edited = readImage(path("live.exr"));
 
   // Nothing edited: nothing touched, the same image.
@@ -876,9 +878,11 @@ TEST_F(Render, InteractiveEditsTouchOnlyTheirObjects)
   renderControl(ctx, "wait");
   EXPECT_EQ(synchronizeCounts(m_messages),
       "created geometry 0 material 0 surface 0 group 0 instance 0 light 0 "
+      "volume 0 "
       "world 0; committed geometry 0 material 0 surface 0 group 0 instance 0 "
-      "light 0 world 0; released geometry 0 material 0 surface 0 group 0 "
-      "instance 0 light 0 world 0");
+      "light 0 volume 0 world 0; released geometry 0 material 0 surface 0 "
+      "group 0 "
+      "instance 0 light 0 volume 0 world 0");
 
   // The left square deleted: its objects released, the world told.
   NSI::ArgumentList recursive;
@@ -888,9 +892,11 @@ TEST_F(Render, InteractiveEditsTouchOnlyTheirObjects)
   renderControl(ctx, "wait");
   EXPECT_EQ(synchronizeCounts(m_messages),
       "created geometry 0 material 0 surface 0 group 0 instance 0 light 0 "
+      "volume 0 "
       "world 0; committed geometry 0 material 0 surface 0 group 0 instance 0 "
-      "light 0 world 1; released geometry 1 material 1 surface 1 group 1 "
-      "instance 1 light 0 world 0");
+      "light 0 volume 0 world 1; released geometry 1 material 1 surface 1 "
+      "group 1 "
+      "instance 1 light 0 volume 0 world 0");
   const Image deleted = readImage(path("live.exr"));
   NSIEnd(ctx);
   ::unsetenv("PRISM_NSI_OUT");
@@ -1051,15 +1057,19 @@ RenderControl "action" "string" 1 "stop"
   // The light and the material set in place; nothing else.
   EXPECT_EQ(counts[0],
       "created geometry 0 material 0 surface 0 group 0 instance 0 light 0 "
+      "volume 0 "
       "world 0; committed geometry 0 material 1 surface 0 group 0 instance 0 "
-      "light 1 world 0; released geometry 0 material 0 surface 0 group 0 "
-      "instance 0 light 0 world 0");
+      "light 1 volume 0 world 0; released geometry 0 material 0 surface 0 "
+      "group 0 "
+      "instance 0 light 0 volume 0 world 0");
   // The lamp (a quad light, no geometry) released, the world told.
   EXPECT_EQ(counts[1],
       "created geometry 0 material 0 surface 0 group 0 instance 0 light 0 "
+      "volume 0 "
       "world 0; committed geometry 0 material 0 surface 0 group 0 instance 0 "
-      "light 0 world 1; released geometry 0 material 0 surface 0 group 0 "
-      "instance 0 light 1 world 0");
+      "light 0 volume 0 world 1; released geometry 0 material 0 surface 0 "
+      "group 0 "
+      "instance 0 light 1 volume 0 world 0");
 }
 
 TEST_F(Render, SharedTransformsCannotExplode)
