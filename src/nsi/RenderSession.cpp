@@ -64,9 +64,10 @@ void RenderSession::release()
 }
 
 bool RenderSession::start(
-    const std::string &library, const ResolvedScene &scene)
+    const std::string &library, const ResolvedScene &scene, bool progressive)
 {
   close();
+  m_progressive = progressive;
   m_library = anariLoadLibrary(library.c_str(), onAnariStatus, &m_report);
   if (!m_library) {
     m_report(NSIErrError, "cannot load the ANARI library '" + library + "'");
@@ -154,10 +155,37 @@ void RenderSession::wait()
 
 void RenderSession::stop()
 {
-  m_stopRequested = true;
+  {
+    // Under the lock, so a thread about to wait for resume sees it.
+    std::lock_guard lock(m_suspendMutex);
+    m_stopRequested = true;
+  }
+  m_resumed.notify_all();
   std::lock_guard lock(m_joinMutex);
   if (m_thread.joinable())
     m_thread.join();
+}
+
+void RenderSession::suspend()
+{
+  std::lock_guard lock(m_suspendMutex);
+  m_suspended = true;
+}
+
+void RenderSession::resume()
+{
+  {
+    std::lock_guard lock(m_suspendMutex);
+    m_suspended = false;
+  }
+  m_resumed.notify_all();
+}
+
+bool RenderSession::waitUntilResumed()
+{
+  std::unique_lock lock(m_suspendMutex);
+  m_resumed.wait(lock, [this] { return !m_suspended || m_stopRequested; });
+  return !m_stopRequested;
 }
 
 void RenderSession::close()
@@ -165,6 +193,43 @@ void RenderSession::close()
   stop();
   std::lock_guard lock(m_joinMutex);
   release();
+}
+
+void RenderSession::writeOutputs(const CameraItem &item,
+    const Framing &framing,
+    ANARIFrame frame,
+    const std::vector<const FrameChannel *> &channels,
+    bool warn)
+{
+  std::map<const FrameChannel *, image::Image> pictures;
+  for (const FrameChannel *channel : channels)
+    pictures[channel] = readFrameChannel(m_device, frame, *channel);
+  for (const OutputItem &output : item.outputs) {
+    if (output.driverName == "idisplay" || output.driverName.empty())
+      continue;
+    if (output.fileName.empty()) {
+      if (warn)
+        m_report(NSIErrWarning,
+            "output driver for layer '" + output.layerHandle
+                + "' has no imagefilename");
+      continue;
+    }
+    const FrameChannel *channel = channelForVariable(output.variableName);
+    image::Image written =
+        channel ? pictures.at(channel)
+                : image::Image(framing.frameWidth, framing.frameHeight);
+    if (!output.withAlpha) {
+      for (auto &p : written.pixels)
+        p.a = 1.f;
+    }
+    image::WriteOptions options;
+    options.exrPixelType = output.halfFloat ? image::ExrPixelType::Half
+                                            : image::ExrPixelType::Float;
+    auto status = image::write(output.fileName, written, options);
+    if (!status.ok())
+      m_report(NSIErrError,
+          "cannot write '" + output.fileName + "': " + status.error);
+  }
 }
 
 void RenderSession::renderAll()
@@ -247,48 +312,24 @@ void RenderSession::renderAll()
 
     int samples = 0;
     for (; samples < item.oversampling; ++samples) {
-      if (m_stopRequested) {
+      if (m_stopRequested || !waitUntilResumed()) {
         completed = false;
         break;
       }
       anariRenderFrame(m_device, frame);
       anariFrameReady(m_device, frame, ANARI_WAIT);
+      if (m_progressive) // a driver is warned about once
+        writeOutputs(item, framing, frame, channels, samples == 0);
+      ++m_frames;
+      if (m_frameDone)
+        m_frameDone(m_frames);
     }
-    if (samples == 0) { // stopped before the first frame: nothing to write
-      anariRelease(m_device, frame);
-      break;
-    }
-
-    std::map<const FrameChannel *, image::Image> pictures;
-    for (const FrameChannel *channel : channels)
-      pictures[channel] = readFrameChannel(m_device, frame, *channel);
+    // Stopped before the first frame: nothing to write.
+    if (samples > 0 && !m_progressive)
+      writeOutputs(item, framing, frame, channels, true);
     anariRelease(m_device, frame);
-
-    for (const OutputItem &output : item.outputs) {
-      if (output.driverName == "idisplay" || output.driverName.empty())
-        continue;
-      if (output.fileName.empty()) {
-        m_report(NSIErrWarning,
-            "output driver for layer '" + output.layerHandle
-                + "' has no imagefilename");
-        continue;
-      }
-      const FrameChannel *channel = channelForVariable(output.variableName);
-      image::Image written =
-          channel ? pictures.at(channel)
-                  : image::Image(framing.frameWidth, framing.frameHeight);
-      if (!output.withAlpha) {
-        for (auto &p : written.pixels)
-          p.a = 1.f;
-      }
-      image::WriteOptions options;
-      options.exrPixelType = output.halfFloat ? image::ExrPixelType::Half
-                                              : image::ExrPixelType::Float;
-      auto status = image::write(output.fileName, written, options);
-      if (!status.ok())
-        m_report(NSIErrError,
-            "cannot write '" + output.fileName + "': " + status.error);
-    }
+    if (samples == 0)
+      break;
   }
   m_running = false;
   if (m_stopped && !m_silent)
