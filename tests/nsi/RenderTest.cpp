@@ -1381,4 +1381,34 @@ INSTANTIATE_TEST_SUITE_P(Nsi,
             0}),
     [](const auto &info) { return std::string(info.param.name); });
 
+// suspend and resume reach a running progressive render, which then
+// completes; with no render they only say so. (RenderSessionTest checks
+// that no frame is issued while suspended.)
+TEST_F(Render, SuspendAndResumeAProgressiveRender)
+{
+  NSIContext_t ctx = beginRender();
+  renderControl(ctx, "suspend");
+  auto before = m_messages.take();
+  ASSERT_EQ(before.size(), 1u);
+  EXPECT_EQ(before[0].level, NSIErrInfo);
+  EXPECT_NE(before[0].text.find("no render running"), std::string::npos);
+
+  squareScene(ctx, path("square.png"));
+  StopRecord record;
+  NSI::ArgumentList start;
+  start.addString("action", "start").addInteger("progressive", 1);
+  start.addPointer(
+      "stoppedcallback", reinterpret_cast<const void *>(&StopRecord::callback));
+  start.addPointer("stoppedcallbackdata", &record);
+  NSIRenderControl(ctx, start.size(), start.data());
+  renderControl(ctx, "suspend");
+  renderControl(ctx, "resume");
+  renderControl(ctx, "wait");
+  NSIEnd(ctx);
+  EXPECT_EQ(m_messages.problems(), "");
+  ASSERT_EQ(record.calls.size(), 1u);
+  EXPECT_EQ(record.calls[0].second, NSIRenderCompleted);
+  EXPECT_GT(value(readImage(path("square.png")), 12, 12), 0.f); // lit
+}
+
 } // namespace
