@@ -2,11 +2,9 @@
 // until resumed, and a progressive one writes its outputs after every
 // frame, the last of them the full render.
 #include "ImageIO.h"
+#include "NsiTestSupport.h"
 #include "RenderSession.h"
 
-#include <gtest/gtest.h>
-
-#include <unistd.h>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -52,27 +50,9 @@ ResolvedScene ballScene(const std::string &file)
   return scene;
 }
 
-class Session : public ::testing::Test
+class Session : public NsiTest
 {
  protected:
-  void SetUp() override
-  {
-    m_dir =
-        std::filesystem::temp_directory_path()
-        / ("prism-nsi-session-" + std::to_string(::getpid()) + "-"
-            + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::remove_all(m_dir);
-    std::filesystem::create_directories(m_dir);
-  }
-  void TearDown() override
-  {
-    if (!HasFailure())
-      std::filesystem::remove_all(m_dir);
-  }
-  std::string path(const std::string &name) const
-  {
-    return (m_dir / name).string();
-  }
   ReportFunction recorder()
   {
     return [this](int level, const std::string &message) {
@@ -99,7 +79,6 @@ class Session : public ::testing::Test
     return largest;
   }
 
-  std::filesystem::path m_dir;
   std::string m_problems; // written by the render thread until it is joined
 };
 

@@ -161,11 +161,15 @@ void minimalScene(
   NSIConnect(ctx, "driver", "", "layer", "outputdrivers", 0, nullptr);
 }
 
-void renderControl(
-    NSIContext_t ctx, const char *action, StopRecord *record = nullptr)
+void renderControl(NSIContext_t ctx,
+    const char *action,
+    StopRecord *record = nullptr,
+    bool progressive = false)
 {
   NSI::ArgumentList args;
   args.addString("action", action);
+  if (progressive)
+    args.addInteger("progressive", 1);
   if (record) {
     args.addPointer("stoppedcallback",
         reinterpret_cast<const void *>(&StopRecord::callback));
@@ -1395,12 +1399,7 @@ TEST_F(Render, SuspendAndResumeAProgressiveRender)
 
   squareScene(ctx, path("square.png"));
   StopRecord record;
-  NSI::ArgumentList start;
-  start.addString("action", "start").addInteger("progressive", 1);
-  start.addPointer(
-      "stoppedcallback", reinterpret_cast<const void *>(&StopRecord::callback));
-  start.addPointer("stoppedcallbackdata", &record);
-  NSIRenderControl(ctx, start.size(), start.data());
+  renderControl(ctx, "start", &record, true);
   renderControl(ctx, "suspend");
   renderControl(ctx, "resume");
   renderControl(ctx, "wait");
