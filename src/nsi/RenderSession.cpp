@@ -5,6 +5,9 @@
 #include "OutputChannels.h"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <map>
 
 #include <cmath>
@@ -34,6 +37,17 @@ std::array<float, 3> cameraPoint(
 {
   auto q = vector ? transformVector(m, p) : transformPoint(m, p);
   return {float(q[0]), float(q[1]), float(q[2])};
+}
+
+// "dir/beauty.exr" -> "dir/beauty.partial.exr".
+std::string partialName(const std::string &file)
+{
+  const size_t slash = file.find_last_of('/');
+  const size_t dot = file.find_last_of('.');
+  const bool hasExtension =
+      dot != std::string::npos && (slash == std::string::npos || dot > slash);
+  return hasExtension ? file.substr(0, dot) + ".partial" + file.substr(dot)
+                      : file + ".partial";
 }
 
 } // namespace
@@ -225,10 +239,18 @@ void RenderSession::writeOutputs(const CameraItem &item,
     image::WriteOptions options;
     options.exrPixelType = output.halfFloat ? image::ExrPixelType::Half
                                             : image::ExrPixelType::Float;
-    auto status = image::write(output.fileName, written, options);
-    if (!status.ok())
-      m_report(NSIErrError,
-          "cannot write '" + output.fileName + "': " + status.error);
+    // A progressive file is replaced whole, so a reader never sees half of
+    // it: written beside it (same extension, same format), then renamed.
+    const std::string target =
+        m_progressive ? partialName(output.fileName) : output.fileName;
+    std::string error = image::write(target, written, options).error;
+    if (error.empty() && target != output.fileName
+        && std::rename(target.c_str(), output.fileName.c_str()) != 0) {
+      error = std::strerror(errno);
+      std::remove(target.c_str());
+    }
+    if (!error.empty())
+      m_report(NSIErrError, "cannot write '" + output.fileName + "': " + error);
   }
 }
 

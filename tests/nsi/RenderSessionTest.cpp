@@ -106,6 +106,8 @@ TEST_F(Session, SuspendedProgressiveRenderWaitsForResume)
   EXPECT_EQ(session.framesRendered(), uint64_t(kFrames));
   EXPECT_EQ(m_problems, "");
   const prism::image::Image progressive = read(file);
+  // Each frame's file was written beside it and renamed over it.
+  EXPECT_FALSE(std::filesystem::exists(path("progressive.partial.exr")));
 
   // The last output is the full render, as a render written once gives it.
   const std::string onceFile = path("once.exr");
