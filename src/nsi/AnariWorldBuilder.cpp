@@ -1,6 +1,7 @@
 #include "AnariWorldBuilder.h"
 
 #include "ImageIO.h"
+#include "VolumeBuilder.h"
 
 #include <anari/frontend/type_utility.h>
 
@@ -267,8 +268,14 @@ bool setObjectList(ANARIDevice device,
 
 std::string AnariUpdateCounts::summary() const
 {
-  static const char *const kNames[CategoryCount] = {
-      "geometry", "material", "surface", "group", "instance", "light", "world"};
+  static const char *const kNames[CategoryCount] = {"geometry",
+      "material",
+      "surface",
+      "group",
+      "instance",
+      "light",
+      "volume",
+      "world"};
   std::string text;
   auto list = [&](const char *what, const auto &counts) {
     text += text.empty() ? what : std::string("; ") + what;
@@ -299,6 +306,12 @@ AnariWorldBuilder::~AnariWorldBuilder()
     anariRelease(m_device, entry.handle);
   for (auto &[key, entry] : m_lights)
     anariRelease(m_device, entry.handle);
+  for (auto &[key, entry] : m_volumes) {
+    if (entry.handle) {
+      anariRelease(m_device, entry.data.volume);
+      anariRelease(m_device, entry.handle);
+    }
+  }
   if (m_world)
     anariRelease(m_device, m_world);
 }
@@ -465,10 +478,43 @@ void AnariWorldBuilder::releaseUnused(
       if (it->second.data.surface)
         release(Category::Surface, it->second.data.surface);
     }
+    if constexpr (std::is_same_v<Record, decltype(m_volumes)::mapped_type>) {
+      if (it->second.data.volume)
+        release(Category::Volume, it->second.data.volume);
+    }
     if (it->second.handle)
       release(category, it->second.handle);
     it = records.erase(it);
   }
+}
+
+ANARIGroup AnariWorldBuilder::volumeGroup(
+    const std::string &key, const VolumeItem &item)
+{
+  auto &entry = m_volumes[key];
+  VolumeItem unplaced = item;
+  unplaced.worldFromObject.clear();
+  entry.used = true;
+  // A file that failed is reported once, until the node changes.
+  if (entry.data.item == unplaced)
+    return entry.handle;
+  if (entry.data.volume)
+    release(Category::Volume, entry.data.volume);
+  if (entry.handle)
+    release(Category::Group, entry.handle);
+  entry.handle = nullptr;
+  entry.data = {unplaced, newNanoVdbVolume(m_device, item, m_report)};
+  if (!entry.data.volume)
+    return nullptr;
+  ++m_counts.created[Category::Volume];
+  entry.handle = anariNewGroup(m_device);
+  ++m_counts.created[Category::Group];
+  setArray(m_device,
+      entry.handle,
+      "volume",
+      newArray(m_device, ANARI_VOLUME, &entry.data.volume, 1));
+  commit(Category::Group, entry.handle);
+  return entry.handle;
 }
 
 AnariWorld AnariWorldBuilder::update(const ResolvedScene &scene)
@@ -487,6 +533,14 @@ AnariWorld AnariWorldBuilder::update(const ResolvedScene &scene)
     for (size_t p = 0; p < item.worldFromObject.size(); ++p)
       instances.push_back(this->instance(
           groupKey + '\n' + std::to_string(p), group, item.worldFromObject[p]));
+  }
+
+  for (const VolumeItem &item : scene.volumes) {
+    const std::string key = "volume\n" + item.handle + '\n' + item.shaderHandle;
+    ANARIGroup group = volumeGroup(key, item);
+    for (size_t p = 0; group && p < item.worldFromObject.size(); ++p)
+      instances.push_back(this->instance(
+          key + '\n' + std::to_string(p), group, item.worldFromObject[p]));
   }
 
   std::vector<ANARILight> lights;
@@ -535,6 +589,7 @@ AnariWorld AnariWorldBuilder::update(const ResolvedScene &scene)
   releaseUnused(m_materials, Category::Material);
   releaseUnused(m_geometries, Category::Geometry);
   releaseUnused(m_lights, Category::Light);
+  releaseUnused(m_volumes, Category::Group);
   out.world = m_world;
   return out;
 }

@@ -38,6 +38,7 @@ struct AnariUpdateCounts
     Group,
     Instance,
     Light,
+    Volume,
     World,
     CategoryCount
   };
@@ -74,6 +75,8 @@ class AnariWorldBuilder
   ANARIInstance instance(
       const std::string &key, ANARIGroup group, const Placement &placement);
   ANARILight light(size_t index, const LightItem &item);
+  // The group of a volume item's one volume; null when its file failed.
+  ANARIGroup volumeGroup(const std::string &key, const VolumeItem &item);
   template <typename Record>
   void releaseUnused(std::map<std::string, Record> &records, Category category);
 
@@ -99,6 +102,12 @@ class AnariWorldBuilder
   std::map<std::string, Entry<ANARIGroup, SurfaceData>> m_groups;
   std::map<std::string, Entry<ANARIInstance, Placement>> m_instances;
   std::map<std::string, Entry<ANARILight, LightItem>> m_lights;
+  struct VolumeData
+  {
+    VolumeItem item; // without its placements
+    ANARIVolume volume{nullptr};
+  };
+  std::map<std::string, Entry<ANARIGroup, VolumeData>> m_volumes;
   ANARIWorld m_world{nullptr};
   std::vector<ANARIInstance> m_worldInstances;
   std::vector<ANARILight> m_worldLights;

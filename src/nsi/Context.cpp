@@ -298,7 +298,13 @@ void Context::renderControl(const ParameterList &params)
   } else if (action == "stop") {
     finishRender(true);
   } else if (action == "suspend" || action == "resume") {
-    report(NSIErrInfo, "NSIRenderControl: '" + action + "' is ignored");
+    if (!m_render || !m_render->running())
+      report(NSIErrInfo,
+          "NSIRenderControl: '" + action + "' with no render running");
+    else if (action == "suspend")
+      m_render->suspend();
+    else
+      m_render->resume();
   } else {
     report(NSIErrError, "NSIRenderControl: unknown action '" + action + "'");
   }
@@ -375,7 +381,10 @@ void Context::startRender(const ParameterList &params, bool synchronizing)
   runProceduralNodes();
   const ResolvedScene scene = resolveScene(m_graph, reporter(), expandPath);
   m_render = std::make_shared<RenderSession>(reporter(), stopped);
-  if (!m_render->start(m_anariLibrary, scene))
+  // Interactive renders are progressive too (NSI says so).
+  const bool progressive = params.number("progressive", 0) != 0
+                           || params.number("interactive", 0) != 0;
+  if (!m_render->start(m_anariLibrary, scene, progressive))
     m_render.reset();
 }
 

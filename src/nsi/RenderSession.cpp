@@ -5,6 +5,9 @@
 #include "OutputChannels.h"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <map>
 
 #include <cmath>
@@ -36,6 +39,17 @@ std::array<float, 3> cameraPoint(
   return {float(q[0]), float(q[1]), float(q[2])};
 }
 
+// "dir/beauty.exr" -> "dir/beauty.partial.exr".
+std::string partialName(const std::string &file)
+{
+  const size_t slash = file.find_last_of('/');
+  const size_t dot = file.find_last_of('.');
+  const bool hasExtension =
+      dot != std::string::npos && (slash == std::string::npos || dot > slash);
+  return hasExtension ? file.substr(0, dot) + ".partial" + file.substr(dot)
+                      : file + ".partial";
+}
+
 } // namespace
 
 RenderSession::RenderSession(ReportFunction report, Stopped stopped)
@@ -64,9 +78,10 @@ void RenderSession::release()
 }
 
 bool RenderSession::start(
-    const std::string &library, const ResolvedScene &scene)
+    const std::string &library, const ResolvedScene &scene, bool progressive)
 {
   close();
+  m_progressive = progressive;
   m_library = anariLoadLibrary(library.c_str(), onAnariStatus, &m_report);
   if (!m_library) {
     m_report(NSIErrError, "cannot load the ANARI library '" + library + "'");
@@ -154,10 +169,37 @@ void RenderSession::wait()
 
 void RenderSession::stop()
 {
-  m_stopRequested = true;
+  {
+    // Under the lock, so a thread about to wait for resume sees it.
+    std::lock_guard lock(m_suspendMutex);
+    m_stopRequested = true;
+  }
+  m_resumed.notify_all();
   std::lock_guard lock(m_joinMutex);
   if (m_thread.joinable())
     m_thread.join();
+}
+
+void RenderSession::suspend()
+{
+  std::lock_guard lock(m_suspendMutex);
+  m_suspended = true;
+}
+
+void RenderSession::resume()
+{
+  {
+    std::lock_guard lock(m_suspendMutex);
+    m_suspended = false;
+  }
+  m_resumed.notify_all();
+}
+
+bool RenderSession::waitUntilResumed()
+{
+  std::unique_lock lock(m_suspendMutex);
+  m_resumed.wait(lock, [this] { return !m_suspended || m_stopRequested; });
+  return !m_stopRequested;
 }
 
 void RenderSession::close()
@@ -165,6 +207,51 @@ void RenderSession::close()
   stop();
   std::lock_guard lock(m_joinMutex);
   release();
+}
+
+void RenderSession::writeOutputs(const CameraItem &item,
+    const Framing &framing,
+    ANARIFrame frame,
+    const std::vector<const FrameChannel *> &channels,
+    bool warn)
+{
+  std::map<const FrameChannel *, image::Image> pictures;
+  for (const FrameChannel *channel : channels)
+    pictures[channel] = readFrameChannel(m_device, frame, *channel);
+  for (const OutputItem &output : item.outputs) {
+    if (output.driverName == "idisplay" || output.driverName.empty())
+      continue;
+    if (output.fileName.empty()) {
+      if (warn)
+        m_report(NSIErrWarning,
+            "output driver for layer '" + output.layerHandle
+                + "' has no imagefilename");
+      continue;
+    }
+    const FrameChannel *channel = channelForVariable(output.variableName);
+    image::Image written =
+        channel ? pictures.at(channel)
+                : image::Image(framing.frameWidth, framing.frameHeight);
+    if (!output.withAlpha) {
+      for (auto &p : written.pixels)
+        p.a = 1.f;
+    }
+    image::WriteOptions options;
+    options.exrPixelType = output.halfFloat ? image::ExrPixelType::Half
+                                            : image::ExrPixelType::Float;
+    // A progressive file is replaced whole, so a reader never sees half of
+    // it: written beside it (same extension, same format), then renamed.
+    const std::string target =
+        m_progressive ? partialName(output.fileName) : output.fileName;
+    std::string error = image::write(target, written, options).error;
+    if (error.empty() && target != output.fileName
+        && std::rename(target.c_str(), output.fileName.c_str()) != 0) {
+      error = std::strerror(errno);
+      std::remove(target.c_str());
+    }
+    if (!error.empty())
+      m_report(NSIErrError, "cannot write '" + output.fileName + "': " + error);
+  }
 }
 
 void RenderSession::renderAll()
@@ -247,48 +334,24 @@ void RenderSession::renderAll()
 
     int samples = 0;
     for (; samples < item.oversampling; ++samples) {
-      if (m_stopRequested) {
+      if (m_stopRequested || !waitUntilResumed()) {
         completed = false;
         break;
       }
       anariRenderFrame(m_device, frame);
       anariFrameReady(m_device, frame, ANARI_WAIT);
+      if (m_progressive) // a driver is warned about once
+        writeOutputs(item, framing, frame, channels, samples == 0);
+      ++m_frames;
+      if (m_frameDone)
+        m_frameDone(m_frames);
     }
-    if (samples == 0) { // stopped before the first frame: nothing to write
-      anariRelease(m_device, frame);
-      break;
-    }
-
-    std::map<const FrameChannel *, image::Image> pictures;
-    for (const FrameChannel *channel : channels)
-      pictures[channel] = readFrameChannel(m_device, frame, *channel);
+    // Stopped before the first frame: nothing to write.
+    if (samples > 0 && !m_progressive)
+      writeOutputs(item, framing, frame, channels, true);
     anariRelease(m_device, frame);
-
-    for (const OutputItem &output : item.outputs) {
-      if (output.driverName == "idisplay" || output.driverName.empty())
-        continue;
-      if (output.fileName.empty()) {
-        m_report(NSIErrWarning,
-            "output driver for layer '" + output.layerHandle
-                + "' has no imagefilename");
-        continue;
-      }
-      const FrameChannel *channel = channelForVariable(output.variableName);
-      image::Image written =
-          channel ? pictures.at(channel)
-                  : image::Image(framing.frameWidth, framing.frameHeight);
-      if (!output.withAlpha) {
-        for (auto &p : written.pixels)
-          p.a = 1.f;
-      }
-      image::WriteOptions options;
-      options.exrPixelType = output.halfFloat ? image::ExrPixelType::Half
-                                              : image::ExrPixelType::Float;
-      auto status = image::write(output.fileName, written, options);
-      if (!status.ok())
-        m_report(NSIErrError,
-            "cannot write '" + output.fileName + "': " + status.error);
-    }
+    if (samples == 0)
+      break;
   }
   m_running = false;
   if (m_stopped && !m_silent)

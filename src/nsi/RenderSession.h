@@ -1,17 +1,22 @@
 // One render started by NSIRenderControl "start": ANARI objects built from a
 // ResolvedScene on a device of the chosen library, frames accumulated on a
-// thread up to each screen's oversampling, then every output written. The
+// thread up to each screen's oversampling, then every output written (after
+// every frame, when progressive). A suspended render issues no frames until
+// it is resumed. The
 // device and its objects outlive the thread, so "synchronize" renders again
 // after updating only the objects an edit touched.
 #pragma once
 
 #include "AnariWorldBuilder.h"
 #include "GeometryBuilder.h"
+#include "OutputChannels.h"
 #include "ResolvedScene.h"
 
 #include <anari/anari.h>
 
 #include <atomic>
+#include <condition_variable>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -31,9 +36,16 @@ class RenderSession
   RenderSession(const RenderSession &) = delete;
   RenderSession &operator=(const RenderSession &) = delete;
 
+  // Called on the render thread after each frame, with the frames
+  // rendered since the session began.
+  using FrameDone = std::function<void(uint64_t frames)>;
+
   // Loads `library`, builds the scene and starts the thread; false (with
-  // the reason reported) when no device could be had.
-  bool start(const std::string &library, const ResolvedScene &scene);
+  // the reason reported) when no device could be had. `progressive`: the
+  // outputs are written after each accumulated frame, not once at the end.
+  bool start(const std::string &library,
+      const ResolvedScene &scene,
+      bool progressive = false);
   // After stop(): updates the ANARI objects to `scene` and renders again,
   // reporting to `stopped` when done. What the update did is in counts().
   void synchronize(const ResolvedScene &scene, Stopped stopped);
@@ -59,9 +71,30 @@ class RenderSession
   {
     return m_running;
   }
+  // No frame starts while suspended (the one under way finishes); stop()
+  // still ends the render.
+  void suspend();
+  void resume();
+  uint64_t framesRendered() const
+  {
+    return m_frames;
+  }
+  void setFrameDone(FrameDone frameDone)
+  {
+    m_frameDone = std::move(frameDone);
+  }
 
  private:
   void renderAll();
+  // Blocks while suspended; false once a stop is requested.
+  bool waitUntilResumed();
+  // Every output file of `item` from the frame's channels; `warn`: report
+  // drivers without a file.
+  void writeOutputs(const CameraItem &item,
+      const Framing &framing,
+      ANARIFrame frame,
+      const std::vector<const FrameChannel *> &channels,
+      bool warn);
   void release();
   void apply(const ResolvedScene &scene);
   void launch();
@@ -79,6 +112,12 @@ class RenderSession
   std::atomic<bool> m_stopRequested{false};
   std::atomic<bool> m_running{false}; // from start until the thread ends
   std::atomic<bool> m_silent{false};
+  bool m_progressive{false};
+  std::atomic<uint64_t> m_frames{0};
+  FrameDone m_frameDone;
+  std::mutex m_suspendMutex;
+  std::condition_variable m_resumed;
+  bool m_suspended{false}; // guarded by m_suspendMutex
   std::thread m_thread;
   std::mutex m_joinMutex; // one thread joins (and releases) at a time
 };

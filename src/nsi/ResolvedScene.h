@@ -43,6 +43,20 @@ struct SurfaceItem
   std::vector<Placement> worldFromObject;
 };
 
+// A `volume` node: one grid of a NanoVDB file, read when the ANARI objects
+// are built (so a bad file is reported there), placed once or more.
+struct VolumeItem
+{
+  std::string handle;
+  std::string fileName;     // vdbfilename, expanded
+  std::string densityGrid;  // empty: the file's first scalar grid
+  std::string shaderHandle; // empty: no volume shader
+  ShaderDescription shader; // its color and density
+  std::vector<Placement> worldFromObject;
+
+  bool operator==(const VolumeItem &) const = default;
+};
+
 struct LightItem
 {
   enum class Kind { Quad, Point, Spot, Ring, Ambient, Directional, Hdri };
@@ -85,6 +99,7 @@ struct ResolvedScene
   std::map<std::string, GeometryData> geometries; // by node handle
   std::vector<SurfaceItem> surfaces;
   std::vector<LightItem> lights;
+  std::vector<VolumeItem> volumes;
   std::vector<CameraItem> cameras;
   GlobalOptions options;
 };

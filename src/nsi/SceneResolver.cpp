@@ -249,6 +249,8 @@ class Resolver
                || type == "curves" || type == "cubiccurves"
                || type == "linearcurves") {
       geometry(handle, *node, world, attributes);
+    } else if (type == "volume") {
+      volume(handle, *node, world, attributes);
     } else if (type == "instances") {
       instances(handle, *node, world, attributes, depth);
     } else if (type == "perspectivecamera" || type == "orthographiccamera") {
@@ -304,13 +306,15 @@ class Resolver
   }
 
   // The highest priority wins, then the nearest, then the last connected.
+  // `connection`: "surfaceshader", or "volumeshader" for volumes.
   const Node *resolveShader(const std::vector<AttributesOnPath> &attributes,
-      std::string &shaderHandle)
+      std::string &shaderHandle,
+      const char *connection = "surfaceshader")
   {
     const Node *best = nullptr;
     int bestPriority = 0, bestLevel = 0;
     for (auto &a : attributes) {
-      for (const Input *input : a.node->inputsOf("surfaceshader")) {
+      for (const Input *input : a.node->inputsOf(connection)) {
         const Node *shader = m_graph.find(input->from);
         if (!shader)
           continue;
@@ -485,6 +489,53 @@ class Resolver
       m_scene.surfaces.push_back(std::move(item));
     }
     m_scene.surfaces[it->second].worldFromObject.push_back(world);
+  }
+
+  // A volume's placements with one shader gather in one item; its file is
+  // read when the ANARI objects are built.
+  void volume(const std::string &handle,
+      const Node &node,
+      const Placement &world,
+      const std::vector<AttributesOnPath> &attributes)
+  {
+    if (resolveFlag(attributes, "visibility").value_or(1) == 0)
+      return;
+    std::string shaderHandle;
+    const Node *shaderNode =
+        resolveShader(attributes, shaderHandle, "volumeshader");
+    auto [it, added] = m_volumeIndex.emplace(
+        handle + '\n' + shaderHandle, m_scene.volumes.size());
+    if (added) {
+      VolumeItem item;
+      item.handle = handle;
+      item.shaderHandle = shaderHandle;
+      const Value *file = node.attribute("vdbfilename");
+      item.fileName = file ? m_expandPath(file->string()) : std::string();
+      const Value *density = node.attribute("densitygrid");
+      item.densityGrid = density ? density->string() : std::string();
+      for (const char *grid : {"colorgrid",
+               "emissiongrid",
+               "emissionintensitygrid",
+               "temperaturegrid",
+               "velocitygrid"}) {
+        if (node.attribute(grid))
+          warnOnce("volume '" + handle + "': '" + grid
+                   + "' is not supported yet (only the density grid "
+                     "renders)");
+      }
+      item.shader = volumeShader();
+      if (shaderNode) {
+        const ShaderDescription shader = describeShader(*shaderNode);
+        if (shader.kind == ShaderDescription::Kind::Volume)
+          item.shader = shader;
+        else
+          warnOnce("shader '" + shaderHandle + "' ('" + shader.shaderName
+                   + "') is not a volume shader; volume '" + handle
+                   + "' is a white medium of density 1");
+      }
+      m_scene.volumes.push_back(std::move(item));
+    }
+    m_scene.volumes[it->second].worldFromObject.push_back(world);
   }
 
   // One planar quad or one particle with an emitter is an ANARI light.
@@ -678,6 +729,7 @@ class Resolver
   const std::function<std::string(const std::string &)> &m_expandPath;
   ResolvedScene m_scene;
   std::map<std::string, size_t> m_surfaceIndex;
+  std::map<std::string, size_t> m_volumeIndex; // by volume and shader
   std::set<std::string> m_failed;
   std::set<std::string> m_warned;
   std::vector<double> m_times;

@@ -135,11 +135,26 @@ ShaderDescription describeShader(const Node &shader)
   } else if (name == "distantLight" || name == "directionalLight") {
     d.kind = Kind::DistantLight;
     lightBrightness(shader, d);
+  } else if (name == "vdbVolume" || name == "dlVolume") {
+    // `density` multiplies the grid's.
+    d.kind = Kind::Volume;
+    d.color = volumeShader().color;
+    if (!color(shader, "scattering_color", d.color))
+      color(shader, "color", d.color);
+    d.density = number(shader, "density", 1.f);
   } else {
     d.kind = Kind::Matte;
     d.recognised = false;
     anyColor(shader, d.color);
   }
+  return d;
+}
+
+ShaderDescription volumeShader()
+{
+  ShaderDescription d;
+  d.kind = ShaderDescription::Kind::Volume;
+  d.color = {1.f, 1.f, 1.f};
   return d;
 }
 

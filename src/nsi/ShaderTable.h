@@ -17,7 +17,8 @@ struct ShaderDescription
     PhysicallyBased,
     Emitter,
     EnvironmentLight,
-    DistantLight
+    DistantLight,
+    Volume
   };
   Kind kind{Kind::Matte};
   std::string shaderName;
@@ -32,6 +33,7 @@ struct ShaderDescription
   float ior{1.5f};
   float opacity{1.f};
   std::array<float, 3> emissive{0.f, 0.f, 0.f};
+  float density{1.f}; // volumes: scales the extinction
 
   // Lights: `power` in watts when given, else `intensity` · 2^exposure.
   bool hasPower{false};
@@ -48,5 +50,8 @@ struct ShaderDescription
 std::string shaderName(const std::string &shaderFilename);
 
 ShaderDescription describeShader(const Node &shader);
+
+// What a volume without a volume shader is: white, density 1.
+ShaderDescription volumeShader();
 
 } // namespace prism::nsi

@@ -18,6 +18,7 @@
 
 namespace {
 
+using namespace prism::vdb;
 using namespace prism::render;
 
 std::string temporaryPath()

@@ -161,11 +161,15 @@ void minimalScene(
   NSIConnect(ctx, "driver", "", "layer", "outputdrivers", 0, nullptr);
 }
 
-void renderControl(
-    NSIContext_t ctx, const char *action, StopRecord *record = nullptr)
+void renderControl(NSIContext_t ctx,
+    const char *action,
+    StopRecord *record = nullptr,
+    bool progressive = false)
 {
   NSI::ArgumentList args;
   args.addString("action", action);
+  if (progressive)
+    args.addInteger("progressive", 1);
   if (record) {
     args.addPointer("stoppedcallback",
         reinterpret_cast<const void *>(&StopRecord::callback));
@@ -359,7 +363,7 @@ RenderControl "action" "string" 1 "wait"
            "mesh 'short': 'nvertices' adds up to 6 but there are 3",
            "particles 'dust': 'width' count does not match 'P'",
            "curves 'knot': no 'P'",
-           "'volume' nodes are not supported yet",
+           "volume 'fog' has no vdbfilename",
            "bad 'resolution'"})
     EXPECT_NE(problems.find(expected), std::string::npos) << expected << "\n"
                                                           << problems;
@@ -866,9 +870,11 @@ TEST_F(Render, InteractiveEditsTouchOnlyTheirObjects)
   // One material and one instance set anew; nothing else made or changed.
   EXPECT_EQ(synchronizeCounts(m_messages),
       "created geometry 0 material 0 surface 0 group 0 instance 0 light 0 "
+      "volume 0 "
       "world 0; committed geometry 0 material 1 surface 0 group 0 instance 1 "
-      "light 0 world 0; released geometry 0 material 0 surface 0 group 0 "
-      "instance 0 light 0 world 0");
+      "light 0 volume 0 world 0; released geometry 0 material 0 surface 0 "
+      "group 0 "
+      "instance 0 light 0 volume 0 world 0");
   const Image edited = readImage(path("live.exr"));
 
   // Nothing edited: nothing touched, the same image.
@@ -876,9 +882,11 @@ TEST_F(Render, InteractiveEditsTouchOnlyTheirObjects)
   renderControl(ctx, "wait");
   EXPECT_EQ(synchronizeCounts(m_messages),
       "created geometry 0 material 0 surface 0 group 0 instance 0 light 0 "
+      "volume 0 "
       "world 0; committed geometry 0 material 0 surface 0 group 0 instance 0 "
-      "light 0 world 0; released geometry 0 material 0 surface 0 group 0 "
-      "instance 0 light 0 world 0");
+      "light 0 volume 0 world 0; released geometry 0 material 0 surface 0 "
+      "group 0 "
+      "instance 0 light 0 volume 0 world 0");
 
   // The left square deleted: its objects released, the world told.
   NSI::ArgumentList recursive;
@@ -888,9 +896,11 @@ TEST_F(Render, InteractiveEditsTouchOnlyTheirObjects)
   renderControl(ctx, "wait");
   EXPECT_EQ(synchronizeCounts(m_messages),
       "created geometry 0 material 0 surface 0 group 0 instance 0 light 0 "
+      "volume 0 "
       "world 0; committed geometry 0 material 0 surface 0 group 0 instance 0 "
-      "light 0 world 1; released geometry 1 material 1 surface 1 group 1 "
-      "instance 1 light 0 world 0");
+      "light 0 volume 0 world 1; released geometry 1 material 1 surface 1 "
+      "group 1 "
+      "instance 1 light 0 volume 0 world 0");
   const Image deleted = readImage(path("live.exr"));
   NSIEnd(ctx);
   ::unsetenv("PRISM_NSI_OUT");
@@ -1051,15 +1061,19 @@ RenderControl "action" "string" 1 "stop"
   // The light and the material set in place; nothing else.
   EXPECT_EQ(counts[0],
       "created geometry 0 material 0 surface 0 group 0 instance 0 light 0 "
+      "volume 0 "
       "world 0; committed geometry 0 material 1 surface 0 group 0 instance 0 "
-      "light 1 world 0; released geometry 0 material 0 surface 0 group 0 "
-      "instance 0 light 0 world 0");
+      "light 1 volume 0 world 0; released geometry 0 material 0 surface 0 "
+      "group 0 "
+      "instance 0 light 0 volume 0 world 0");
   // The lamp (a quad light, no geometry) released, the world told.
   EXPECT_EQ(counts[1],
       "created geometry 0 material 0 surface 0 group 0 instance 0 light 0 "
+      "volume 0 "
       "world 0; committed geometry 0 material 0 surface 0 group 0 instance 0 "
-      "light 0 world 1; released geometry 0 material 0 surface 0 group 0 "
-      "instance 0 light 1 world 0");
+      "light 0 volume 0 world 1; released geometry 0 material 0 surface 0 "
+      "group 0 "
+      "instance 0 light 1 volume 0 world 0");
 }
 
 TEST_F(Render, SharedTransformsCannotExplode)
@@ -1370,5 +1384,30 @@ INSTANTIATE_TEST_SUITE_P(Nsi,
             1,
             0}),
     [](const auto &info) { return std::string(info.param.name); });
+
+// suspend and resume reach a running progressive render, which then
+// completes; with no render they only say so. (RenderSessionTest checks
+// that no frame is issued while suspended.)
+TEST_F(Render, SuspendAndResumeAProgressiveRender)
+{
+  NSIContext_t ctx = beginRender();
+  renderControl(ctx, "suspend");
+  auto before = m_messages.take();
+  ASSERT_EQ(before.size(), 1u);
+  EXPECT_EQ(before[0].level, NSIErrInfo);
+  EXPECT_NE(before[0].text.find("no render running"), std::string::npos);
+
+  squareScene(ctx, path("square.png"));
+  StopRecord record;
+  renderControl(ctx, "start", &record, true);
+  renderControl(ctx, "suspend");
+  renderControl(ctx, "resume");
+  renderControl(ctx, "wait");
+  NSIEnd(ctx);
+  EXPECT_EQ(m_messages.problems(), "");
+  ASSERT_EQ(record.calls.size(), 1u);
+  EXPECT_EQ(record.calls[0].second, NSIRenderCompleted);
+  EXPECT_GT(value(readImage(path("square.png")), 12, 12), 0.f); // lit
+}
 
 } // namespace

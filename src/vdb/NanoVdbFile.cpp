@@ -1,6 +1,6 @@
 #include "NanoVdbFile.h"
 
-#include "SceneFile.h"
+#include <sys/stat.h>
 
 #include <nanovdb/util/IO.h>
 
@@ -8,10 +8,16 @@
 #include <cstring>
 #include <fstream>
 
-namespace prism::render {
+namespace prism::vdb {
 namespace {
 
 using nanovdb::io::Codec;
+
+bool isRegularFile(const std::string &path)
+{
+  struct stat info;
+  return ::stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode);
+}
 
 // Reads `count` bytes at the stream's position, if the file has them.
 bool readBytes(std::ifstream &file, uint64_t remaining, void *out, size_t count)
@@ -179,4 +185,4 @@ std::string readNanoVdbContents(
   return {};
 }
 
-} // namespace prism::render
+} // namespace prism::vdb

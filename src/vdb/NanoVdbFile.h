@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace prism::render {
+namespace prism::vdb {
 
 struct NanoVdbGridEntry
 {
@@ -35,4 +35,4 @@ std::string nanoVdbGridTypeName(uint32_t gridType);
 // Whether a nanovdb field renders grids of this type as scalars.
 bool isScalarNanoVdbGridType(uint32_t gridType);
 
-} // namespace prism::render
+} // namespace prism::vdb
