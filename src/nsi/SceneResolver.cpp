@@ -475,6 +475,8 @@ class Resolver
           shader.color[1] * shader.intensity,
           shader.color[2] * shader.intensity};
       shader.color = {0, 0, 0};
+    } else {
+      shader.colorFromGeometry = !data.colors.empty();
     }
     const std::string surfaceKey =
         key + '\n' + shaderHandle + '\n' + (cameraSees ? "1" : "0");
