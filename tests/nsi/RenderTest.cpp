@@ -1246,6 +1246,34 @@ Connect "sun_attr" "" "sun" "geometryattributes"
   EXPECT_NEAR(bent / lit, 0.5f, 0.1f);
 }
 
+TEST_F(Render, SetsStandForTheirMembers)
+{
+  // Two squares reach the root only as members of a set, which is also
+  // given (unsupported) as the output layer's light set.
+  NSIContext_t ctx = beginRender();
+  const Image image = renderWhite(ctx,
+      R"(Create "group" "set" Connect "group" "" ".root" "objects"
+Create "shape" "mesh" Connect "shape" "" "group" "members"
+SetAttribute "shape" "nvertices" "int" 1 4
+  "P" "point" 4 [ -2 -1 -10  -0.5 -1 -10  -0.5 1 -10  -2 1 -10 ]
+Create "other" "mesh" Connect "other" "" "group" "members"
+SetAttribute "other" "nvertices" "int" 1 4
+  "P" "point" 4 [ 0.5 -1 -10  2 -1 -10  2 1 -10  0.5 1 -10 ]
+Connect "group" "" "layer" "lightset")",
+      "",
+      R"("resolution" "int[2]" 1 [ 32 16 ] "oversampling" "int" 1 4)",
+      path("set.exr"));
+  NSIEnd(ctx);
+  const std::string problems = m_messages.problems();
+  EXPECT_EQ(problems,
+      "2: outputlayer 'layer': 'lightset' is not supported; every light is "
+      "rendered\n");
+  // 0.335 units per pixel: the squares span columns 10-14 and 17-22.
+  EXPECT_GT(value(image, 12, 8), 0.8f) << "the white member";
+  EXPECT_GT(value(image, 20, 8), 0.5f) << "the grey member";
+  EXPECT_EQ(value(image, 16, 8), 0.f) << "between them";
+}
+
 struct FramingCase
 {
   const char *name;
