@@ -48,6 +48,12 @@ void setVec3(ANARIDevice device,
   anariSetParameter(device, object, name, ANARI_FLOAT32_VEC3, v.data());
 }
 
+void setString(
+    ANARIDevice device, ANARIObject object, const char *name, const char *value)
+{
+  anariSetParameter(device, object, name, ANARI_STRING, value);
+}
+
 const char *geometrySubtype(const GeometryData &data)
 {
   return data.spheres ? "sphere" : (data.curves ? "curve" : "triangle");
@@ -83,13 +89,25 @@ void setGeometryParameters(
           ANARI_UINT32_VEC3,
           data.triangles.data(),
           data.triangles.size() / 3));
-  if (!data.normals.empty())
-    setArray(device,
-        geometry,
-        "vertex.normal",
-        newArray(device, ANARI_FLOAT32_VEC3, data.normals.data(), vertices));
-  else // an edit may have removed them
-    anariUnsetParameter(device, geometry, "vertex.normal");
+  // Face-varying data is per vertex here: each face vertex is a vertex.
+  // An edit may have removed an array, so absent ones are unset.
+  const struct
+  {
+    const char *name;
+    ANARIDataType type;
+    const std::vector<float> &values;
+  } attributes[] = {{"vertex.normal", ANARI_FLOAT32_VEC3, data.normals},
+      {"vertex.attribute0", ANARI_FLOAT32_VEC2, data.texcoords},
+      {"vertex.color", ANARI_FLOAT32_VEC3, data.colors}};
+  for (const auto &a : attributes) {
+    if (a.values.empty())
+      anariUnsetParameter(device, geometry, a.name);
+    else
+      setArray(device,
+          geometry,
+          a.name,
+          newArray(device, a.type, a.values.data(), vertices));
+  }
 }
 
 const char *materialSubtype(const ShaderDescription &shader)
@@ -104,13 +122,20 @@ const char *materialSubtype(const ShaderDescription &shader)
 void setMaterialParameters(
     ANARIDevice device, ANARIMaterial material, const ShaderDescription &shader)
 {
+  // Cs on the geometry replaces the shader's colour (the `color` attribute).
   if (std::strcmp(materialSubtype(shader), "matte") == 0) {
-    setVec3(device, material, "color", shader.color);
+    if (shader.colorFromGeometry)
+      setString(device, material, "color", "color");
+    else
+      setVec3(device, material, "color", shader.color);
     return;
   }
   // physicallyBased's own defaults (metallic 1, roughness 1) are not the
   // shaders': every parameter is set.
-  setVec3(device, material, "baseColor", shader.color);
+  if (shader.colorFromGeometry)
+    setString(device, material, "baseColor", "color");
+  else
+    setVec3(device, material, "baseColor", shader.color);
   setFloat(device, material, "metallic", shader.metallic);
   setFloat(device, material, "roughness", shader.roughness);
   setFloat(device, material, "specular", shader.specular);

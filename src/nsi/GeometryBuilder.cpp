@@ -1,5 +1,6 @@
 #include "GeometryBuilder.h"
 
+#include "MeshPrimvars.h"
 #include "PolygonTriangulation.h"
 
 #include <cmath>
@@ -94,31 +95,16 @@ std::optional<GeometryData> buildMesh(
         "mesh '" + handle
             + "': subdivision is not supported; the cage is rendered");
 
-  // Normals: per point (as P), per face vertex, or indexed.
-  const std::vector<double> normals = numbersOf(mesh, "N");
-  auto normalIndices = indicesOf(mesh, "N");
-  enum class NormalSource { None, PerPoint, PerFaceVertex, Indexed } source{};
-  if (!normals.empty() && normals.size() % 3 == 0) {
-    const size_t n = normals.size() / 3;
-    if (normalIndices && normalIndices->size() == faceVertexCount) {
-      source = NormalSource::Indexed;
-      for (int64_t i : *normalIndices) {
-        if (i < 0 || size_t(i) >= n) {
-          report(NSIErrWarning,
-              "mesh '" + handle
-                  + "': 'N.indices' out of range; normals ignored");
-          source = NormalSource::None;
-          break;
-        }
-      }
-    } else if (n == pointCount) {
-      source = NormalSource::PerPoint;
-    } else if (n == faceVertexCount) {
-      source = NormalSource::PerFaceVertex;
-    } else {
-      report(NSIErrWarning,
-          "mesh '" + handle + "': 'N' does not match the vertices; ignored");
-    }
+  MeshLayout layout;
+  layout.pointCount = pointCount;
+  if (pointIndices)
+    layout.pointIndices = *pointIndices;
+  layout.faceCount = loopsPerFace.size();
+  for (size_t face = 0, loop = 0; face < loopsPerFace.size(); ++face) {
+    for (size_t l = 0; l < loopsPerFace[face]; ++l, ++loop)
+      layout.faceOfVertex.insert(layout.faceOfVertex.end(),
+          size_t(toIndex(nvertices[loop])),
+          uint32_t(face));
   }
 
   const bool flip = mesh.attribute("clockwisewinding")
@@ -129,16 +115,10 @@ std::optional<GeometryData> buildMesh(
     const size_t p = pointIndices ? size_t((*pointIndices)[k]) : k;
     for (int c = 0; c < 3; ++c)
       data.positions.push_back(float(points[3 * p + c]));
-    if (source != NormalSource::None) {
-      size_t n = k;
-      if (source == NormalSource::PerPoint)
-        n = p;
-      else if (source == NormalSource::Indexed)
-        n = size_t((*normalIndices)[k]);
-      for (int c = 0; c < 3; ++c)
-        data.normals.push_back(float(normals[3 * n + c]));
-    }
   }
+  data.normals = faceVertexValues(handle, mesh, "N", 3, layout, report);
+  data.texcoords = faceVertexValues(handle, mesh, "st", 2, layout, report);
+  data.colors = faceVertexValues(handle, mesh, "Cs", 3, layout, report);
   size_t first = 0, loop = 0;
   uint32_t face = 0;
   for (size_t loops : loopsPerFace) {

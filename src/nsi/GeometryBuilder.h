@@ -13,8 +13,8 @@ namespace prism::nsi {
 
 using ReportFunction = std::function<void(int level, const std::string &)>;
 
-// Polygons (nvertices, P, P.indices, N, N.indices), ear-clipped, so
-// concave ones are right too.
+// Polygons (nvertices, nholes, P, P.indices) with their N, st and Cs,
+// ear-clipped, so concave ones are right too.
 std::optional<GeometryData> buildMesh(
     const std::string &handle, const Node &mesh, const ReportFunction &report);
 

@@ -25,6 +25,8 @@ struct GeometryData
   double planeHalfSize{0};
   std::vector<float> positions;        // xyz
   std::vector<float> normals;          // xyz per position, or empty
+  std::vector<float> texcoords;        // st per position, or empty
+  std::vector<float> colors;           // rgb per position, or empty
   std::vector<float> radii;            // spheres and curves, per position
   std::vector<uint32_t> segmentStarts; // curves
   std::vector<uint32_t> triangles;

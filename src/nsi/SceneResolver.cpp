@@ -245,6 +245,10 @@ class Resolver
     if (type == "root" || transforms) {
       for (const Input *input : node->inputsOf("objects"))
         visit(input->from, world, attributes, depth + 1);
+    } else if (type == "set") {
+      // Where objects go, a set stands for its members.
+      for (const Input *input : node->inputsOf("members"))
+        visit(input->from, world, attributes, depth + 1);
     } else if (type == "mesh" || type == "particles" || type == "plane"
                || type == "curves" || type == "cubiccurves"
                || type == "linearcurves") {
@@ -475,6 +479,8 @@ class Resolver
           shader.color[1] * shader.intensity,
           shader.color[2] * shader.intensity};
       shader.color = {0, 0, 0};
+    } else {
+      shader.colorFromGeometry = !data.colors.empty();
     }
     const std::string surfaceKey =
         key + '\n' + shaderHandle + '\n' + (cameraSees ? "1" : "0");
@@ -702,6 +708,11 @@ class Resolver
       const Node *layer = m_graph.find(layerInput->from);
       if (!layer)
         continue;
+      // ANARI frames have no per-light channels: without a light set, as
+      // the spec says, every light is rendered.
+      if (!layer->inputsOf("lightset").empty())
+        warnOnce("outputlayer '" + layerInput->from
+                 + "': 'lightset' is not supported; every light is rendered");
       const Value *variable = layer->attribute("variablename");
       const Value *alpha = layer->attribute("withalpha");
       for (const Input *driverInput : layer->inputsOf("outputdrivers")) {

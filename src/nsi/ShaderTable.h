@@ -34,6 +34,9 @@ struct ShaderDescription
   float opacity{1.f};
   std::array<float, 3> emissive{0.f, 0.f, 0.f};
   float density{1.f}; // volumes: scales the extinction
+  // Surfaces on geometry with Cs: the colour is the geometry's `color`
+  // attribute instead of `color` (set where the shader meets the geometry).
+  bool colorFromGeometry{false};
 
   // Lights: `power` in watts when given, else `intensity` · 2^exposure.
   bool hasPower{false};

@@ -1179,6 +1179,101 @@ SetAttribute "shape" "nvertices" "int" 2 [ 4 4 ] "nholes" "int" 1 1
   EXPECT_EQ(value(image, 25, 16), 0.f) << "outside";
 }
 
+TEST_F(Render, FaceVaryingColorsAreInterpolated)
+{
+  // The white square with a colour per corner (Cs through Cs.indices):
+  // red, green, blue, white counter-clockwise from the bottom left.
+  NSIContext_t ctx = beginRender();
+  const Image image = renderWhite(ctx,
+      whiteSquare(".root")
+          + R"(SetAttribute "shape" "Cs" "color" 4 [ 1 0 0  0 1 0  0 0 1  1 1 1 ]
+  "Cs.indices" "int" 4 [ 0 1 2 3 ])",
+      "",
+      R"("resolution" "int[2]" 1 [ 32 32 ] "oversampling" "int" 1 4)",
+      path("colors.exr"));
+  NSIEnd(ctx);
+  EXPECT_EQ(m_messages.problems(), "");
+  // 0.1675 units per pixel: the square spans columns and rows 10-22; these
+  // pixels are 0.8 from the centre, near one corner each.
+  auto at = [&](uint32_t x, uint32_t yFromTop) {
+    return image.at(x, image.height - 1 - yFromTop);
+  };
+  const auto red = at(11, 20), green = at(20, 20), blue = at(20, 11),
+             white = at(11, 11), middle = at(16, 16);
+  EXPECT_GT(red.r, 0.6f);
+  EXPECT_LT(red.g, 0.3f);
+  EXPECT_GT(green.g, 0.6f);
+  EXPECT_LT(green.r, 0.3f);
+  EXPECT_GT(blue.b, 0.6f);
+  EXPECT_LT(blue.g, 0.3f);
+  EXPECT_GT(white.r + white.g + white.b, 2.f);
+  // The centre lies on a diagonal, halfway between red and blue or green
+  // and white: half red either way.
+  EXPECT_NEAR(middle.r, 0.5f, 0.15f);
+  EXPECT_GT(middle.b, 0.3f);
+}
+
+TEST_F(Render, FaceVaryingNormalsBendTheShading)
+{
+  // A sun behind the camera lights the square head on; normals tilted 60
+  // degrees (one value for every corner through N.indices) halve that.
+  const std::string sun =
+      R"(Create "sun" "environment" Connect "sun" "" ".root" "objects"
+SetAttribute "sun" "angle" "double" 1 1
+Create "sunlight" "shader" SetAttribute "sunlight" "shaderfilename" "string" 1 "distantLight"
+Create "sun_attr" "attributes" Connect "sunlight" "" "sun_attr" "surfaceshader"
+Connect "sun_attr" "" "sun" "geometryattributes"
+)";
+  const std::string screen =
+      R"("resolution" "int[2]" 1 [ 16 16 ] "oversampling" "int" 1 4)";
+  NSIContext_t ctx = beginRender();
+  const Image flat = renderWhite(
+      ctx, whiteSquare(".root") + sun, "", screen, path("flat.exr"), Sky::None);
+  NSIEnd(ctx);
+  ctx = beginRender();
+  const Image tilted = renderWhite(ctx,
+      whiteSquare(".root") + sun
+          + R"(SetAttribute "shape" "N" "normal" 1 [ 0.8660254 0 0.5 ]
+  "N.indices" "int" 4 [ 0 0 0 0 ])",
+      "",
+      screen,
+      path("tilted.exr"),
+      Sky::None);
+  NSIEnd(ctx);
+  EXPECT_EQ(m_messages.problems(), "");
+  const float lit = value(flat, 8, 8), bent = value(tilted, 8, 8);
+  EXPECT_GT(lit, 0.05f);
+  EXPECT_NEAR(bent / lit, 0.5f, 0.1f);
+}
+
+TEST_F(Render, SetsStandForTheirMembers)
+{
+  // Two squares reach the root only as members of a set, which is also
+  // given (unsupported) as the output layer's light set.
+  NSIContext_t ctx = beginRender();
+  const Image image = renderWhite(ctx,
+      R"(Create "group" "set" Connect "group" "" ".root" "objects"
+Create "shape" "mesh" Connect "shape" "" "group" "members"
+SetAttribute "shape" "nvertices" "int" 1 4
+  "P" "point" 4 [ -2 -1 -10  -0.5 -1 -10  -0.5 1 -10  -2 1 -10 ]
+Create "other" "mesh" Connect "other" "" "group" "members"
+SetAttribute "other" "nvertices" "int" 1 4
+  "P" "point" 4 [ 0.5 -1 -10  2 -1 -10  2 1 -10  0.5 1 -10 ]
+Connect "group" "" "layer" "lightset")",
+      "",
+      R"("resolution" "int[2]" 1 [ 32 16 ] "oversampling" "int" 1 4)",
+      path("set.exr"));
+  NSIEnd(ctx);
+  const std::string problems = m_messages.problems();
+  EXPECT_EQ(problems,
+      "2: outputlayer 'layer': 'lightset' is not supported; every light is "
+      "rendered\n");
+  // 0.335 units per pixel: the squares span columns 10-14 and 17-22.
+  EXPECT_GT(value(image, 12, 8), 0.8f) << "the white member";
+  EXPECT_GT(value(image, 20, 8), 0.5f) << "the grey member";
+  EXPECT_EQ(value(image, 16, 8), 0.f) << "between them";
+}
+
 struct FramingCase
 {
   const char *name;
