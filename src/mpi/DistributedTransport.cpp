@@ -114,14 +114,9 @@ void DistributedTransport::traceClosest(rt::RayQueue &queue) const
         m_communicator);
     m_bytesSent += count * sizeof(Nearest);
   }
-  m_owner.resize(count);
+  m_shaded.resize(count);
   for (size_t i = 0; i < count; i++)
-    m_owner[i] = nearest[i].rank;
-}
-
-bool DistributedTransport::shades(const rt::RayQueue &queue, size_t r) const
-{
-  return r >= m_owner.size() || m_owner[r] == m_rank;
+    m_shaded[i] = nearest[i].rank == m_rank ? 1 : 0;
 }
 
 void DistributedTransport::traceOcclusion(rt::RayQueue &queue) const
@@ -165,7 +160,7 @@ void DistributedTransport::shareBounce(std::vector<PathState> &paths,
   BounceCounts counts{0, uint32_t(next.size()), uint32_t(shadows.size())};
   std::vector<unsigned char> payload;
   for (size_t r = 0; r < rays.size(); r++) {
-    if (rays.untraceable(r) || !shades(rays, r))
+    if (rays.untraceable(r) || !m_shaded[r])
       continue;
     const ShadedPath shaded{rays.tag(r), paths[rays.tag(r)]};
     append(payload, &shaded, sizeof(shaded));

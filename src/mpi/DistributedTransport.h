@@ -27,7 +27,10 @@ class DistributedTransport final : public RayTransport
 
   void traceClosest(rt::RayQueue &queue) const override;
   void traceOcclusion(rt::RayQueue &queue) const override;
-  bool shades(const rt::RayQueue &queue, size_t r) const override;
+  const uint8_t *shadedRays() const override
+  {
+    return m_shaded.data();
+  }
   void shareBounce(std::vector<PathState> &paths,
       const rt::RayQueue &rays,
       rt::RayQueue &next,
@@ -42,7 +45,8 @@ class DistributedTransport final : public RayTransport
   // One thread drives a lockstep render, so the transport's const calls
   // may keep what the last closest trace found.
   uint64_t &m_bytesSent;
-  mutable std::vector<int> m_owner; // of each ray of the last closest trace
+  // Whether this process owns each ray of the last closest trace.
+  mutable std::vector<uint8_t> m_shaded;
 };
 
 } // namespace prism::mpi

@@ -226,10 +226,11 @@ void PathTracer::shadeBounce(const RenderContext &context,
   // ray. resolveHit fills what each ray reads.
   SurfaceHit surface;
   MaterialShading shading;
+  const uint8_t *shaded = context.transport->shadedRays();
   for (size_t r = 0; r < rays.size(); r++) {
     if (rays.untraceable(r))
       continue; // a degenerate camera or bounce ray ends its path
-    if (!context.transport->shades(rays, r))
+    if (shaded && !shaded[r])
       continue; // another process owns the hit
     Bounce b =
         resolveHit(context, paths[rays.tag(r)], rays, r, surface, shading);

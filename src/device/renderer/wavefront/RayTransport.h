@@ -8,6 +8,7 @@
 #include "../../rt/RayQueue.h"
 #include "PathState.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace prism {
@@ -22,11 +23,13 @@ class RayTransport
   // surface blocks it).
   virtual void traceOcclusion(rt::RayQueue &queue) const = 0;
 
-  // Data-parallel path tracing: after traceClosest(queue), whether this
-  // process shades ray r (across processes, the one owning the hit).
-  virtual bool shades(const rt::RayQueue &queue, size_t r) const
+  // Data-parallel path tracing: after traceClosest, which rays of the
+  // queue this process shades (a flag a ray; across processes, the one
+  // owning the hit), or null when it shades every ray. Asked once a
+  // bounce, so the integrator's per-ray test is a load, not a call.
+  virtual const uint8_t *shadedRays() const
   {
-    return true;
+    return nullptr;
   }
   // After a bounce was shaded: makes every process hold the same path
   // states and the same next and shadow queues (with their contributions),
