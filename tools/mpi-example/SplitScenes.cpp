@@ -1,55 +1,16 @@
 #include "SplitScenes.h"
 
 #include "BoxGrid.h"
+#include "Objects.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <vector>
 
 namespace prism::mpiexample {
 namespace {
-
-// Shared arrays over vectors this file keeps alive until the device
-// releases them: the device copies nothing it does not have to.
-template <typename T>
-ANARIArray1D newArray(ANARIDevice device,
-    ANARIDataType type,
-    const std::vector<T> &values,
-    size_t componentsPerElement)
-{
-  auto *copy = new std::vector<T>(values);
-  return anariNewArray1D(
-      device,
-      copy->data(),
-      [](const void *user, const void *) {
-        delete static_cast<const std::vector<T> *>(user);
-      },
-      copy,
-      type,
-      values.size() / componentsPerElement);
-}
-
-void setArray(ANARIDevice device,
-    ANARIObject object,
-    const char *name,
-    ANARIArray1D array)
-{
-  anariSetParameter(device, object, name, ANARI_ARRAY1D, &array);
-  anariRelease(device, array);
-}
-
-ANARISurface newSurface(
-    ANARIDevice device, ANARIGeometry geometry, ANARIMaterial material)
-{
-  ANARISurface surface = anariNewSurface(device);
-  anariSetParameter(device, surface, "geometry", ANARI_GEOMETRY, &geometry);
-  anariSetParameter(device, surface, "material", ANARI_MATERIAL, &material);
-  anariCommitParameters(device, surface);
-  anariRelease(device, geometry);
-  anariRelease(device, material);
-  return surface;
-}
 
 // A deterministic number in [0, 1) for sphere i and component k: every
 // process computes the same scene and keeps its share.
@@ -67,70 +28,56 @@ float hashed(uint32_t i, uint32_t k)
 SplitScene spheres(ANARIDevice device, int process, int processes)
 {
   constexpr uint32_t kSpheres = 300;
-  std::vector<float> centers, colors;
+  std::vector<scenes::Vec3> centers;
+  std::vector<scenes::Vec4> colors;
   for (uint32_t i = 0; i < kSpheres; i++) {
     if (int(i % uint32_t(processes)) != process)
       continue;
-    centers.insert(centers.end(),
-        {8.f * hashed(i, 0) - 4.f,
-            0.2f + 2.f * hashed(i, 1),
-            8.f * hashed(i, 2) - 4.f});
-    colors.insert(colors.end(),
-        {0.2f + 0.8f * hashed(i, 3),
-            0.2f + 0.8f * hashed(i, 4),
-            0.2f + 0.8f * hashed(i, 5),
-            1.f});
+    centers.push_back({8.f * hashed(i, 0) - 4.f,
+        0.2f + 2.f * hashed(i, 1),
+        8.f * hashed(i, 2) - 4.f});
+    colors.push_back({0.2f + 0.8f * hashed(i, 3),
+        0.2f + 0.8f * hashed(i, 4),
+        0.2f + 0.8f * hashed(i, 5),
+        1.f});
   }
-  std::vector<ANARISurface> surfaces;
+  std::vector<ANARIObject> surfaces;
+  auto addSurface = [&](ANARIGeometry geometry, ANARIMaterial material) {
+    anariCommitParameters(device, geometry);
+    anariCommitParameters(device, material);
+    surfaces.push_back(scenes::newSurface(device, geometry, material));
+    anariRelease(device, geometry);
+    anariRelease(device, material);
+  };
   if (!centers.empty()) {
     ANARIGeometry geometry = anariNewGeometry(device, "sphere");
-    setArray(device,
-        geometry,
-        "vertex.position",
-        newArray(device, ANARI_FLOAT32_VEC3, centers, 3));
-    setArray(device,
-        geometry,
-        "vertex.color",
-        newArray(device, ANARI_FLOAT32_VEC4, colors, 4));
-    const float radius = 0.25f;
-    anariSetParameter(device, geometry, "radius", ANARI_FLOAT32, &radius);
-    anariCommitParameters(device, geometry);
+    scenes::setArray(
+        device, geometry, "vertex.position", ANARI_FLOAT32_VEC3, centers);
+    scenes::setArray(
+        device, geometry, "vertex.color", ANARI_FLOAT32_VEC4, colors);
+    scenes::setFloat(device, geometry, "radius", 0.25f);
     ANARIMaterial material = anariNewMaterial(device, "matte");
-    anariSetParameter(device, material, "color", ANARI_STRING, "color");
-    anariCommitParameters(device, material);
-    surfaces.push_back(newSurface(device, geometry, material));
+    scenes::setString(device, material, "color", "color");
+    addSurface(geometry, material);
   }
   if (process == 0) { // the floor
-    const std::vector<float> corners = {
-        -6.f, 0.f, -6.f, 6.f, 0.f, -6.f, 6.f, 0.f, 6.f, -6.f, 0.f, 6.f};
-    const std::vector<uint32_t> quads = {0, 3, 2, 1};
+    const std::vector<scenes::Vec3> corners = {
+        {-6.f, 0.f, -6.f}, {6.f, 0.f, -6.f}, {6.f, 0.f, 6.f}, {-6.f, 0.f, 6.f}};
+    const std::vector<std::array<uint32_t, 4>> quads = {{0, 3, 2, 1}};
     ANARIGeometry geometry = anariNewGeometry(device, "quad");
-    setArray(device,
-        geometry,
-        "vertex.position",
-        newArray(device, ANARI_FLOAT32_VEC3, corners, 3));
-    setArray(device,
-        geometry,
-        "primitive.index",
-        newArray(device, ANARI_UINT32_VEC4, quads, 4));
-    anariCommitParameters(device, geometry);
-    ANARIMaterial material = anariNewMaterial(device, "matte");
-    anariCommitParameters(device, material);
-    surfaces.push_back(newSurface(device, geometry, material));
+    scenes::setArray(
+        device, geometry, "vertex.position", ANARI_FLOAT32_VEC3, corners);
+    scenes::setArray(
+        device, geometry, "primitive.index", ANARI_UINT32_VEC4, quads);
+    addSurface(geometry, anariNewMaterial(device, "matte"));
   }
   SplitScene scene;
   scene.world = anariNewWorld(device);
-  if (!surfaces.empty()) {
-    ANARIArray1D array = anariNewArray1D(device,
-        surfaces.data(),
-        nullptr,
-        nullptr,
-        ANARI_SURFACE,
-        surfaces.size());
-    setArray(device, scene.world, "surface", array);
-    for (ANARISurface surface : surfaces)
-      anariRelease(device, surface);
-  }
+  if (!surfaces.empty())
+    scenes::setObjectArray(
+        device, scene.world, "surface", ANARI_SURFACE, surfaces);
+  for (ANARIObject surface : surfaces)
+    anariRelease(device, surface);
   scenes::addSunlight(device, scene.world);
   scene.eye[0] = 6.f;
   scene.eye[1] = 6.f;
@@ -166,18 +113,13 @@ SplitScene volume(ANARIDevice device, int process, int processes)
         samples[(size_t(z) * kSide + y) * kSide + x] = value;
       }
   ANARISpatialField field = anariNewSpatialField(device, "structuredRegular");
-  auto *copy = new std::vector<float>(std::move(samples));
-  ANARIArray3D data = anariNewArray3D(
-      device,
-      copy->data(),
-      [](const void *user, const void *) {
-        delete static_cast<const std::vector<float> *>(user);
-      },
-      copy,
+  ANARIArray3D data = scenes::newArray3D(device,
       ANARI_FLOAT32,
+      samples.data(),
       kSide,
       kSide,
-      uint64_t(layers));
+      uint64_t(layers),
+      sizeof(float));
   anariSetParameter(device, field, "data", ANARI_ARRAY3D, &data);
   anariRelease(device, data);
   const float spacing[3] = {
@@ -188,16 +130,16 @@ SplitScene volume(ANARIDevice device, int process, int processes)
   anariCommitParameters(device, field);
 
   // The same transfer function on every process.
-  const std::vector<float> colors = {
-      0.1f, 0.1f, 0.6f, 0.2f, 0.8f, 0.6f, 1.f, 0.9f, 0.2f, 1.f, 0.3f, 0.1f};
+  const std::vector<scenes::Vec3> colors = {{0.1f, 0.1f, 0.6f},
+      {0.2f, 0.8f, 0.6f},
+      {1.f, 0.9f, 0.2f},
+      {1.f, 0.3f, 0.1f}};
   const std::vector<float> opacities = {0.f, 0.3f, 0.7f, 1.f};
   ANARIVolume volume = anariNewVolume(device, "transferFunction1D");
   anariSetParameter(device, volume, "value", ANARI_SPATIAL_FIELD, &field);
   anariRelease(device, field);
-  setArray(
-      device, volume, "color", newArray(device, ANARI_FLOAT32_VEC3, colors, 3));
-  setArray(
-      device, volume, "opacity", newArray(device, ANARI_FLOAT32, opacities, 1));
+  scenes::setArray(device, volume, "color", ANARI_FLOAT32_VEC3, colors);
+  scenes::setArray(device, volume, "opacity", ANARI_FLOAT32, opacities);
   const float range[2] = {0.1f, 1.f};
   anariSetParameter(device, volume, "valueRange", ANARI_FLOAT32_BOX1, range);
   const float unitDistance = 0.2f;
