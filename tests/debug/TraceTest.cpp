@@ -211,9 +211,9 @@ TEST_F(DebugLayerTest, TraceOfEveryKindOfCallReplays)
 
 #ifdef PRISM_ANARI_REPLAY
   const std::string command =
-      std::string(PRISM_ANARI_REPLAY) + " " + path + " > replay.out";
-  EXPECT_EQ(std::system(command.c_str()), 0) << readFile("replay.out");
-  EXPECT_NE(readFile("replay.out")
+      std::string(PRISM_ANARI_REPLAY) + " " + path + " > " + path + ".out";
+  EXPECT_EQ(std::system(command.c_str()), 0) << readFile(path + ".out");
+  EXPECT_NE(readFile(path + ".out")
                 .find("1 frame(s) the same bit for bit, 0 "
                       "different"),
       std::string::npos);
@@ -251,13 +251,15 @@ void misuse(ANARIDevice d)
 
 #ifdef PRISM_ANARI_REPLAY
 // anari-replay --check-reports's exit status on `path`, its output in
-// `output`.
+// `output`. Each trace has its own output file: ctest runs these tests
+// side by side in one directory.
 int replayReports(const std::string &path, std::string &output)
 {
+  const std::string out = path + ".reports.out";
   const std::string command = std::string(PRISM_ANARI_REPLAY) + " " + path
-                              + " --check-reports > replay-reports.out 2>&1";
+                              + " --check-reports > " + out + " 2>&1";
   const int status = std::system(command.c_str());
-  output = readFile("replay-reports.out");
+  output = readFile(out);
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
@@ -277,10 +279,10 @@ int replayReports(const std::string &path, std::string &output)
 ::testing::AssertionResult replaysWithoutTheLayer(const std::string &path)
 {
   const std::string command =
-      std::string(PRISM_ANARI_REPLAY) + " " + path + " > replay.out 2>&1";
+      std::string(PRISM_ANARI_REPLAY) + " " + path + " > " + path + ".out 2>&1";
   if (std::system(command.c_str()) == 0)
     return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << readFile("replay.out");
+  return ::testing::AssertionFailure() << readFile(path + ".out");
 }
 #endif
 
