@@ -6,6 +6,8 @@
 
 #include "Vec.h"
 
+#include <cmath>
+
 namespace prism {
 
 // cos and sin of x for |x| <= pi/4.
@@ -34,11 +36,13 @@ inline float2 cosSinQuarter(float x)
   return {c, s};
 }
 
-// cos and sin of 2 pi u, for |u| < 2^20 (a sampler's u is in [0, 1)).
+// cos and sin of 2 pi u, for |u| < 2^20 (a sampler's u is in [0, 1)); a
+// u outside that (or NaN) gives the angle 0 rather than an int conversion
+// out of range, which would be undefined.
 inline float2 cosSinTurn(float u)
 {
   constexpr float kQuarterTurn = 1.5707963267948966f;
-  const float quarters = 4.f * u;
+  const float quarters = std::abs(u) < 0x1p20f ? 4.f * u : 0.f;
   // The nearest whole quarter (a conversion, not a libm call on x86-64's
   // baseline, which has no rounding instruction).
   const int nearest = int(quarters + (quarters >= 0.f ? 0.5f : -0.5f));

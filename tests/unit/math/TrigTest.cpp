@@ -38,5 +38,19 @@ TEST(Trig, WholeTurnsMatchLibm)
   }
 }
 
+TEST(Trig, OutOfRangeTurnsGiveAngleZero)
+{
+  // Outside |u| < 2^20 (and NaN) no int conversion overflows (UBSan would
+  // report it): the angle is 0.
+  for (float u : {std::nanf(""), INFINITY, -INFINITY, 1e30f, -1e30f, 0x1p20f}) {
+    const float2 cs = cosSinTurn(u);
+    EXPECT_EQ(cs.x, 1.f) << u;
+    EXPECT_EQ(cs.y, 0.f) << u;
+  }
+  // Just inside the range the result is still on the circle.
+  const float2 cs = cosSinTurn(0x1p20f - 0.25f);
+  EXPECT_NEAR(cs.x * cs.x + cs.y * cs.y, 1.f, 4e-7f);
+}
+
 } // namespace
 } // namespace prism
