@@ -8,9 +8,9 @@
 //
 // Options: --scene boxes|spheres|volume, --library NAME (default
 // prism_mpi), --mode pathtracer|composite|replicated (prism_mpi's device
-// parameter; default: pathtracer, composite for the volume, which the
-// path tracer does not distribute), --renderer SUBTYPE, --size WxH,
-// --spp N, -o FILE (.png, .exr, .pfm).
+// parameter; default: pathtracer, composite for the volume, shown by the
+// raycast renderer), --renderer SUBTYPE, --size WxH, --spp N (samples
+// accumulated), -o FILE (.png, .exr, .pfm).
 #include "SplitScenes.h"
 
 #include "BoxGrid.h"
@@ -144,6 +144,10 @@ int main(int argc, char **argv)
         options.renderer.empty() ? scene.renderer : options.renderer.c_str());
     ANARIFrame frame = scenes::newFrame(
         device, scene.world, camera, renderer, options.width, options.height);
+    // --spp N: the image is the average of N accumulated samples.
+    const bool accumulate = true;
+    anariSetParameter(device, frame, "accumulation", ANARI_BOOL, &accumulate);
+    anariCommitParameters(device, frame);
     for (int s = 0; s < options.samples; s++) {
       anariRenderFrame(device, frame); // collective
       anariFrameReady(device, frame, ANARI_WAIT);
