@@ -76,6 +76,13 @@ void sortByTag(std::vector<QueuedRay> &rays)
   });
 }
 
+int rankIn(MPI_Comm communicator)
+{
+  int rank = 0;
+  MPI_Comm_rank(communicator, &rank);
+  return rank;
+}
+
 int checkedCount(size_t count)
 {
   if (count > size_t(INT_MAX))
@@ -87,21 +94,28 @@ int checkedCount(size_t count)
 
 DistributedTransport::DistributedTransport(
     const World &world, MPI_Comm communicator, uint64_t &bytesSent)
-    : m_local(world), m_communicator(communicator), m_bytesSent(bytesSent)
+    : m_local(world, streamSalt(rankIn(communicator))),
+      m_communicator(communicator),
+      m_bytesSent(bytesSent)
 {
   MPI_Comm_rank(communicator, &m_rank);
   MPI_Comm_size(communicator, &m_ranks);
 }
 
-void DistributedTransport::traceClosest(rt::RayQueue &queue) const
+void DistributedTransport::traceClosest(
+    rt::RayQueue &queue, const MediaEvents *media) const
 {
-  m_local.traceClosest(queue);
+  m_local.traceClosest(queue, media);
   const size_t count = queue.size();
   std::vector<Nearest> nearest(count);
   for (size_t i = 0; i < count; i++) {
     const rt::Hit hit = queue.hit(i);
-    nearest[i] = Nearest{
-        hit.found() ? hit.t : std::numeric_limits<float>::infinity(), m_rank};
+    float t = hit.found() ? hit.t : std::numeric_limits<float>::infinity();
+    // A collision in this process's volumes before its hit is the ray's
+    // event here: the nearest event over every process is shaded.
+    if (media)
+      t = std::min(t, media->collisionBefore(i, t));
+    nearest[i] = Nearest{t, m_rank};
   }
   // A minimum is exact, so every process gets the same owners; a ray no
   // process hits goes to rank 0 (the lowest of equal infinities).

@@ -21,15 +21,26 @@ namespace prism::mpi {
 class DistributedTransport final : public RayTransport
 {
  public:
+  // Rank r's salt for random streams of media: 0 for rank 0.
+  static uint32_t streamSalt(int rank)
+  {
+    return uint32_t(rank) * 0x9e3779b9u;
+  }
+
   // `bytesSent` grows by the payload this process hands to each exchange.
   DistributedTransport(
       const World &world, MPI_Comm communicator, uint64_t &bytesSent);
 
-  void traceClosest(rt::RayQueue &queue) const override;
+  void traceClosest(
+      rt::RayQueue &queue, const MediaEvents *media) const override;
   void traceOcclusion(rt::RayQueue &queue) const override;
   const uint8_t *shadedRays() const override
   {
     return m_shaded.data();
+  }
+  uint32_t mediaStreamSalt() const override
+  {
+    return streamSalt(m_rank);
   }
   void shareBounce(std::vector<PathState> &paths,
       const rt::RayQueue &rays,

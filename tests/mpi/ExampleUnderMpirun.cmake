@@ -3,9 +3,11 @@
 # scene); rank 0's image must match to RMSE 0.01 (PSNR 40 dB) and only one
 # process may write it.
 #   -DEXAMPLE= -DIMAGE_DIFF= -DMPIRUN=<;-list> -DRANKS= -DSCENE= -DWORK_DIR=
+#   [-DOPTIONS=<;-list>: more options for both runs, overriding the
+#   defaults]
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
-set(common --scene ${SCENE} --size 96x96 --spp 4)
+set(common --scene ${SCENE} --size 96x96 --spp 4 ${OPTIONS})
 
 execute_process(COMMAND ${EXAMPLE} --library prism ${common}
     -o ${WORK_DIR}/whole.pfm

@@ -80,7 +80,7 @@ void AmbientOcclusion::renderTile(const RenderContext &context,
   rays.setCoherent(true);
   // Camera rays, then their continuations through see-through surfaces.
   while (!rays.empty() && !cancel) {
-    transport.traceClosest(rays);
+    transport.traceClosest(rays, nullptr);
     next.clear();
     for (size_t r = 0; r < rays.size(); r++) {
       const uint32_t i = rays.tag(r);

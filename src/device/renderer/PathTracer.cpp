@@ -56,6 +56,67 @@ bool mayReach(const World::ReachableLight &light,
   return lengthSquared(across) <= radius * radius;
 }
 
+// Delta tracking through the world's volumes along the ray from `origin`
+// between tMin and tMax: the path's own random numbers, salted per process
+// (RayTransport::mediaStreamSalt), so whichever process samples a ray's
+// collisions samples the same ones.
+bool sampleCollision(const World &world,
+    const PathState &path,
+    const float3 &origin,
+    const float3 &direction,
+    float tMin,
+    float tMax,
+    uint32_t salt,
+    bool majorantGrid,
+    VolumeCollision &collision)
+{
+  HashedStream random(
+      streamSeed(path, kVolumeStreams + path.layer + 97u * path.bounce)
+      ^ mixBits(path.sampleIndex) ^ salt);
+  return trackCollision(
+      world, origin, direction, tMin, tMax, random, collision, majorantGrid);
+}
+
+// The collisions this process's volumes put before each ray's hit, for a
+// transport that decides across processes who shades a ray; shadeBounce
+// samples the same ones again on the process that does.
+class QueueMedia final : public MediaEvents
+{
+ public:
+  QueueMedia(const RenderContext &context,
+      const std::vector<PathState> &paths,
+      const rt::RayQueue &rays,
+      bool majorantGrid)
+      : m_context(context),
+        m_paths(paths),
+        m_rays(rays),
+        m_majorantGrid(majorantGrid)
+  {}
+
+  float collisionBefore(size_t r, float hitDistance) const override
+  {
+    VolumeCollision collision;
+    if (m_rays.untraceable(r)
+        || !sampleCollision(*m_context.world,
+            m_paths[m_rays.tag(r)],
+            m_rays.origin(r),
+            m_rays.direction(r),
+            m_rays.tMin(r),
+            hitDistance,
+            m_context.transport->mediaStreamSalt(),
+            m_majorantGrid,
+            collision))
+      return std::numeric_limits<float>::infinity();
+    return collision.t;
+  }
+
+ private:
+  const RenderContext &m_context;
+  const std::vector<PathState> &m_paths;
+  const rt::RayQueue &m_rays;
+  bool m_majorantGrid;
+};
+
 float3 exp3(const float3 &v)
 {
   return {std::exp(v.x), std::exp(v.y), std::exp(v.z)};
@@ -100,9 +161,11 @@ void PathTracer::renderTile(const RenderContext &context,
   }
   rays.setCoherent(true);
   uint64_t traced = 0;
+  const bool volumes = !context.world->volumes().empty();
   while (!rays.empty() && !cancel) {
     traced += rays.size();
-    transport.traceClosest(rays);
+    const QueueMedia media(context, paths, rays, m_volumeMajorantGrid);
+    transport.traceClosest(rays, volumes ? &media : nullptr);
     next.clear();
     shadows.clear();
     contributions.clear();
@@ -284,18 +347,16 @@ bool PathTracer::collidesInVolume(const RenderContext &context, Bounce &b) const
   PathState &path = b.path;
   const float hitDistance =
       b.hit.found() ? b.hit.t : std::numeric_limits<float>::infinity();
-  HashedStream random(
-      streamSeed(path, kVolumeStreams + path.layer + 97u * path.bounce)
-      ^ mixBits(path.sampleIndex));
   VolumeCollision collision;
-  if (!trackCollision(world,
+  if (!sampleCollision(world,
+          path,
           b.ray.origin,
           b.ray.direction,
           b.tMin,
           hitDistance,
-          random,
-          collision,
-          m_volumeMajorantGrid))
+          context.transport->mediaStreamSalt(),
+          m_volumeMajorantGrid,
+          collision))
     return false;
   // The volume absorbed the path there and emits its colour (the media of
   // spec 5.12.1 absorb and emit; they do not scatter).

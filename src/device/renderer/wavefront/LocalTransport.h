@@ -13,9 +13,12 @@ namespace prism {
 class LocalTransport final : public RayTransport
 {
  public:
-  explicit LocalTransport(const World &world) : m_world(world) {}
+  // `streamSalt`: see RayTransport::mediaStreamSalt().
+  explicit LocalTransport(const World &world, uint32_t streamSalt = 0)
+      : m_world(world), m_streamSalt(streamSalt)
+  {}
 
-  void traceClosest(rt::RayQueue &queue) const override
+  void traceClosest(rt::RayQueue &queue, const MediaEvents *) const override
   {
     m_world.intersect(queue);
   }
@@ -29,11 +32,11 @@ class LocalTransport final : public RayTransport
         continue;
       const float3 origin = queue.origin(i), direction = queue.direction(i);
       // Each ray its own random numbers, the same on every run.
-      HashedStream random(
-          queue.tag(i) * 0x9e3779b9u ^ std::bit_cast<uint32_t>(origin.x)
-          ^ mixBits(
-              std::bit_cast<uint32_t>(origin.y)
-              ^ mixBits(std::bit_cast<uint32_t>(direction.z + origin.z))));
+      HashedStream random(queue.tag(i) * 0x9e3779b9u ^ m_streamSalt
+                          ^ std::bit_cast<uint32_t>(origin.x)
+                          ^ mixBits(std::bit_cast<uint32_t>(origin.y)
+                                    ^ mixBits(std::bit_cast<uint32_t>(
+                                        direction.z + origin.z))));
       const float t = trackTransmittance(
           m_world, origin, direction, queue.tMin(i), queue.tMax(i), random);
       queue.attenuate(i, {t, t, t});
@@ -42,6 +45,7 @@ class LocalTransport final : public RayTransport
 
  private:
   const World &m_world;
+  uint32_t m_streamSalt;
 };
 
 } // namespace prism

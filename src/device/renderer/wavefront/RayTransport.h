@@ -13,12 +13,27 @@
 
 namespace prism {
 
+// Collisions in participating media before a ray's closest hit, as the
+// integrator samples them: across processes the nearest event of any
+// process's surfaces and media decides which process shades a ray.
+class MediaEvents
+{
+ public:
+  virtual ~MediaEvents() = default;
+  // The distance along ray `r` of the queue at which this process's media
+  // stop it before `hitDistance`, or +inf.
+  virtual float collisionBefore(size_t r, float hitDistance) const = 0;
+};
+
 class RayTransport
 {
  public:
   virtual ~RayTransport() = default;
-  // Fills in every ray's closest hit.
-  virtual void traceClosest(rt::RayQueue &queue) const = 0;
+  // Fills in every ray's closest hit. `media` (null without volumes) is
+  // for a transport that decides who shades each ray: one process leaves
+  // collisions to the integrator.
+  virtual void traceClosest(
+      rt::RayQueue &queue, const MediaEvents *media) const = 0;
   // Sets every ray's transmittance: what reaches its end (0 where an opaque
   // surface blocks it).
   virtual void traceOcclusion(rt::RayQueue &queue) const = 0;
@@ -30,6 +45,14 @@ class RayTransport
   virtual const uint8_t *shadedRays() const
   {
     return nullptr;
+  }
+  // Salts the random streams of this process's media, so processes
+  // holding different volumes sample independent collisions (their
+  // transmittances multiply). 0 in one process and on rank 0: a world
+  // whose volumes all sit on rank 0 renders as in one process.
+  virtual uint32_t mediaStreamSalt() const
+  {
+    return 0;
   }
   // After a bounce was shaded: makes every process hold the same path
   // states and the same next and shadow queues (with their contributions),
