@@ -85,7 +85,10 @@ struct CameraItem
   std::string handle;
   bool orthographic{false};
   double fov{35.0};
-  Matrix worldFromCamera{kIdentity};
+  Matrix worldFromCamera{kIdentity}; // at shutter open
+  // When the camera moves: world from camera at times uniform over the
+  // shutter (two or more, the first worldFromCamera); else empty.
+  Placement motion;
   double near{0}, far{INFINITY};              // clippingrange
   double apertureRadius{0}, focusDistance{1}; // depthoffield.*
   ScreenSettings screen;

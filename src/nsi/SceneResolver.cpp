@@ -640,6 +640,8 @@ class Resolver
     item.handle = handle;
     item.orthographic = node.type == "orthographiccamera";
     item.worldFromCamera = world;
+    if (placement.size() > 1)
+      item.motion = placement;
     if (const Value *fov = node.attribute("fov"))
       item.fov = fov->number(35);
     if (!std::isfinite(item.fov))
