@@ -124,7 +124,10 @@ bool RenderSession::start(
   }
   m_cameraMotion =
       hasExtension(m_library, "ANARI_KHR_CAMERA_MOTION_TRANSFORMATION");
-  m_builder = std::make_unique<AnariWorldBuilder>(m_device, m_report);
+  m_builder = std::make_unique<AnariWorldBuilder>(m_device,
+      m_report,
+      hasExtension(
+          m_library, "ANARI_KHR_GEOMETRY_TRIANGLE_MOTION_DEFORMATION"));
   m_renderer = anariNewRenderer(m_device, "default");
   apply(scene);
   launch();

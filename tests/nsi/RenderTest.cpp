@@ -664,7 +664,7 @@ bool samePixels(const Image &a, const Image &b)
   return true;
 }
 
-// How the camera motion scenes are rendered: samples at t = 0
+// How the camera and mesh motion scenes are rendered: samples at t = 0
 // and 1 with the shutter open over [0, 1], the same samples without a
 // shutter range, or a plain value (the pose at t = 0 or t = 1).
 enum class Motion { Shutter, NoShutter, StillOpen, StillClose };
@@ -728,6 +728,87 @@ TEST_F(Render, CameraMotionSmearsAcrossTheShutter)
       -2);
   // Without a shutter range the earliest sample holds, pixel for pixel.
   EXPECT_TRUE(samePixels(images[Motion::NoShutter], images[Motion::StillOpen]));
+}
+
+// The square's P set at t = 0 (centred on x = -2) and t = 1 (x = 2),
+// latest first; `pointsAtClose` points at t = 1 (4, or 5 to mismatch).
+Image deformingMesh(NSIContext_t ctx,
+    Motion motion,
+    const std::string &output,
+    int pointsAtClose = 4)
+{
+  NSICreate(ctx, "shape", "mesh", 0, nullptr);
+  NSIConnect(ctx, "shape", "", NSI_SCENE_ROOT, "objects", 0, nullptr);
+  const int nvertices = 4;
+  NSI::ArgumentList count;
+  count.add("nvertices", NSITypeInteger, &nvertices);
+  NSISetAttribute(ctx, "shape", count.size(), count.data());
+  auto setP = [&](double x, int points, const double *time) {
+    std::vector<float> p = squareAt(x);
+    p.resize(3 * size_t(points), 0.f);
+    NSI::ArgumentList args;
+    args.add("P", NSITypePoint, p.data(), size_t(points));
+    if (time)
+      NSISetAttributeAtTime(ctx, "shape", *time, args.size(), args.data());
+    else
+      NSISetAttribute(ctx, "shape", args.size(), args.data());
+  };
+  const double open = 0, close = 1;
+  if (motion == Motion::StillOpen) {
+    setP(-2, 4, nullptr);
+  } else if (motion == Motion::StillClose) {
+    setP(2, 4, nullptr);
+  } else {
+    setP(2, pointsAtClose, &close);
+    setP(-2, 4, &open);
+  }
+  return renderWhite(ctx,
+      "",
+      motion == Motion::Shutter ? R"("shutterrange" "double" 2 [ 0 1 ])" : "",
+      kSmallScreen,
+      output);
+}
+
+TEST_F(Render, VertexMotionSmearsAcrossTheShutter)
+{
+  std::map<Motion, Image> images;
+  for (Motion motion : {Motion::Shutter,
+           Motion::NoShutter,
+           Motion::StillOpen,
+           Motion::StillClose}) {
+    NSIContext_t ctx = beginRender();
+    images[motion] =
+        deformingMesh(ctx, motion, path(std::to_string(int(motion)) + ".exr"));
+    NSIEnd(ctx);
+    EXPECT_EQ(m_messages.problems(), "") << int(motion);
+  }
+  expectSmear(images[Motion::Shutter],
+      images[Motion::StillOpen],
+      images[Motion::StillClose],
+      -2,
+      2);
+  EXPECT_TRUE(samePixels(images[Motion::NoShutter], images[Motion::StillOpen]));
+}
+
+TEST_F(Render, VertexSamplesOfDifferentCountsRenderTheFirst)
+{
+  NSIContext_t ctx = beginRender();
+  const Image mismatched =
+      deformingMesh(ctx, Motion::Shutter, path("mismatched.exr"), 5);
+  NSIEnd(ctx);
+  EXPECT_TRUE(reportedOnce(m_messages,
+      {"mesh 'shape'",
+          "'P' time samples have different counts",
+          "4 at time 0",
+          "5 at time 1",
+          "the first sample is rendered"}));
+  ctx = beginRender();
+  const Image still = deformingMesh(ctx, Motion::StillOpen, path("still.exr"));
+  NSIEnd(ctx);
+  EXPECT_EQ(m_messages.problems(), "");
+  ASSERT_EQ(mismatched.width, 64u);
+  EXPECT_GT(middleRows(mismatched, 25), 0.9f); // x = -2.2: lit
+  EXPECT_TRUE(samePixels(mismatched, still));
 }
 
 TEST_F(Render, ClippingRangeAndDepthOfField)
@@ -1406,6 +1487,49 @@ Connect "sun_attr" "" "sun" "geometryattributes"
   const float lit = value(flat, 8, 8), bent = value(tilted, 8, 8);
   EXPECT_GT(lit, 0.05f);
   EXPECT_NEAR(bent / lit, 0.5f, 0.1f);
+}
+
+TEST_F(Render, NormalSamplesTurnTheShadingAcrossTheShutter)
+{
+  // The sun behind the camera; N (one value through N.indices) turns
+  // from facing it (t = 0) to 60 degrees off (t = 1) over the shutter.
+  const std::string scene =
+      whiteSquare(".root") +
+      R"(Create "sun" "environment" Connect "sun" "" ".root" "objects"
+SetAttribute "sun" "angle" "double" 1 1
+Create "sunlight" "shader" SetAttribute "sunlight" "shaderfilename" "string" 1 "distantLight"
+Create "sun_attr" "attributes" Connect "sunlight" "" "sun_attr" "surfaceshader"
+Connect "sun_attr" "" "sun" "geometryattributes"
+SetAttribute "shape" "N.indices" "int" 4 [ 0 0 0 0 ]
+SetAttributeAtTime "shape" 1 "N" "normal" 1 [ 0.8660254 0 0.5 ]
+SetAttributeAtTime "shape" 0 "N" "normal" 1 [ 0 0 1 ]
+)";
+  const std::string screen =
+      R"("resolution" "int[2]" 1 [ 16 16 ] "oversampling" "int" 1 64)";
+  NSIContext_t ctx = beginRender();
+  const Image turning = renderWhite(ctx,
+      scene,
+      R"("shutterrange" "double" 2 [ 0 1 ])",
+      screen,
+      path("turning.exr"),
+      Sky::None);
+  NSIEnd(ctx);
+  ctx = beginRender();
+  const Image still =
+      renderWhite(ctx, scene, "", screen, path("still.exr"), Sky::None);
+  NSIEnd(ctx);
+  EXPECT_EQ(m_messages.problems(), "");
+  // Normals interpolate linearly and are normalised: the mean of
+  // cos(angle to the sun) over the shutter.
+  double expected = 0;
+  for (int i = 0; i < 1000; ++i) {
+    const double t = (i + 0.5) / 1000;
+    const double x = t * std::sin(M_PI / 3), z = 1 - t + t * 0.5;
+    expected += z / std::hypot(x, z) / 1000;
+  }
+  const float lit = value(still, 8, 8); // the earliest sample: head on
+  EXPECT_GT(lit, 0.05f);
+  EXPECT_NEAR(value(turning, 8, 8) / lit, expected, 0.04) << expected;
 }
 
 TEST_F(Render, SetsStandForTheirMembers)
