@@ -59,8 +59,52 @@ const char *geometrySubtype(const GeometryData &data)
   return data.spheres ? "sphere" : (data.curves ? "curve" : "triangle");
 }
 
-void setGeometryParameters(
+// Keys as an array of arrays, one FLOAT32_VEC3 array each.
+ANARIArray1D newKeyArray(
+    ANARIDevice device, const std::vector<std::vector<float>> &keys)
+{
+  std::vector<ANARIArray1D> arrays;
+  for (const auto &key : keys)
+    arrays.push_back(
+        newArray(device, ANARI_FLOAT32_VEC3, key.data(), key.size() / 3));
+  ANARIArray1D out =
+      newArray(device, ANARI_ARRAY1D, arrays.data(), arrays.size());
+  for (ANARIArray1D array : arrays)
+    anariRelease(device, array); // the outer array holds them
+  return out;
+}
+
+// Deforming triangles: motion.vertex.* keys over the shutter, which the
+// camera maps to [0, 1]; unset when they stopped moving.
+void setVertexMotion(
     ANARIDevice device, ANARIGeometry geometry, const GeometryData &data)
+{
+  if (data.positionKeys.size() < 2) {
+    for (const char *name :
+        {"motion.vertex.position", "motion.vertex.normal", "time"})
+      anariUnsetParameter(device, geometry, name);
+    return;
+  }
+  setArray(device,
+      geometry,
+      "motion.vertex.position",
+      newKeyArray(device, data.positionKeys));
+  if (data.normalKeys.size() > 1)
+    setArray(device,
+        geometry,
+        "motion.vertex.normal",
+        newKeyArray(device, data.normalKeys));
+  else
+    anariUnsetParameter(device, geometry, "motion.vertex.normal");
+  const float time[2] = {0.f, 1.f};
+  anariSetParameter(device, geometry, "time", ANARI_FLOAT32_BOX1, time);
+}
+
+// `vertexMotion`: the device deforms triangles (else the first key stays).
+void setGeometryParameters(ANARIDevice device,
+    ANARIGeometry geometry,
+    const GeometryData &data,
+    bool vertexMotion)
 {
   const size_t vertices = data.positions.size() / 3;
   setArray(device,
@@ -108,6 +152,8 @@ void setGeometryParameters(
           a.name,
           newArray(device, a.type, a.values.data(), vertices));
   }
+  if (vertexMotion)
+    setVertexMotion(device, geometry, data);
 }
 
 const char *materialSubtype(const ShaderDescription &shader)
@@ -313,8 +359,11 @@ std::string AnariUpdateCounts::summary() const
   return text;
 }
 
-AnariWorldBuilder::AnariWorldBuilder(ANARIDevice device, ReportFunction report)
-    : m_device(device), m_report(std::move(report))
+AnariWorldBuilder::AnariWorldBuilder(
+    ANARIDevice device, ReportFunction report, bool vertexMotion)
+    : m_device(device),
+      m_report(std::move(report)),
+      m_vertexMotion(vertexMotion)
 {}
 
 AnariWorldBuilder::~AnariWorldBuilder()
@@ -370,7 +419,12 @@ ANARIGeometry AnariWorldBuilder::geometry(
     ++m_counts.created[Category::Geometry];
   }
   entry.data = data;
-  setGeometryParameters(m_device, entry.handle, data);
+  if (!m_vertexMotion && !data.positionKeys.empty())
+    m_report(NSIErrWarning,
+        "mesh '" + handle.substr(0, handle.find('\x1f'))
+            + "' moves, but the ANARI device has no vertex motion; its "
+              "vertices at shutter open are used");
+  setGeometryParameters(m_device, entry.handle, data, m_vertexMotion);
   commit(Category::Geometry, entry.handle);
   return entry.handle;
 }

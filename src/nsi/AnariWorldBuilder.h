@@ -50,7 +50,11 @@ struct AnariUpdateCounts
 class AnariWorldBuilder
 {
  public:
-  AnariWorldBuilder(ANARIDevice device, ReportFunction report);
+  // `vertexMotion`: the device deforms triangles over the shutter
+  // (KHR_GEOMETRY_TRIANGLE_MOTION_DEFORMATION); else moving meshes render
+  // their first key, warned about.
+  AnariWorldBuilder(
+      ANARIDevice device, ReportFunction report, bool vertexMotion = true);
   ~AnariWorldBuilder();
   AnariWorldBuilder(const AnariWorldBuilder &) = delete;
   AnariWorldBuilder &operator=(const AnariWorldBuilder &) = delete;
@@ -96,6 +100,7 @@ class AnariWorldBuilder
 
   ANARIDevice m_device;
   ReportFunction m_report;
+  bool m_vertexMotion{true};
   AnariUpdateCounts m_counts;
   std::map<std::string, Entry<ANARIGeometry, GeometryData>> m_geometries;
   std::map<std::string, Entry<ANARIMaterial, ShaderDescription>> m_materials;

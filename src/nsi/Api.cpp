@@ -3,6 +3,7 @@
 // (the default handler when the context itself is unknown).
 #include "ContextTable.h"
 
+#include <cmath>
 #include <exception>
 
 using prism::nsi::Context;
@@ -156,9 +157,18 @@ NSI_API void NSISetAttributeAtTime(NSIContext_t ctx,
     const NSIParam_t *p)
 {
   withContext(ctx, "NSISetAttributeAtTime", [&](Context &c) {
-    if (present(c, "NSISetAttributeAtTime", "handle", object))
-      c.setAttribute(
-          object, params(c, nparams, p, "NSISetAttributeAtTime"), time);
+    if (!present(c, "NSISetAttributeAtTime", "handle", object))
+      return;
+    // Samples are ordered by time: a NaN or infinite one has no place.
+    if (!std::isfinite(time)) {
+      c.report(NSIErrError,
+          std::string("NSISetAttributeAtTime: time ")
+              + prism::nsi::shortNumber(time) + " for '" + object
+              + "' is not a finite number; ignored");
+      return;
+    }
+    c.setAttribute(
+        object, params(c, nparams, p, "NSISetAttributeAtTime"), time);
   });
 }
 

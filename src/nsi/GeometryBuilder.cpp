@@ -1,9 +1,12 @@
 #include "GeometryBuilder.h"
 
 #include "MeshPrimvars.h"
+#include "MotionSamples.h"
 #include "PolygonTriangulation.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace prism::nsi {
 
@@ -35,16 +38,79 @@ std::optional<std::vector<int64_t>> indicesOf(
   return out;
 }
 
+// The moving attribute `name` at each of `times`, or nothing when it does
+// not move (or `times` has fewer than two). Samples of different lengths
+// are reported at `level` and give nothing: the first sample stands.
+std::vector<std::vector<double>> keysOf(const std::string &handle,
+    const Node &mesh,
+    const char *name,
+    const std::vector<double> &times,
+    int level,
+    const ReportFunction &report)
+{
+  auto found = mesh.attributes.find(name);
+  if (found == mesh.attributes.end() || !isMoving(found->second))
+    return {};
+  NumberSamples samples;
+  if (!numberSamples(found->second, samples)) {
+    std::string counts;
+    for (const auto &[time, numbers] : samples) {
+      counts += counts.empty() ? "" : ", ";
+      counts +=
+          std::to_string(numbers.size() / 3) + " at time " + shortNumber(time);
+    }
+    report(level,
+        "mesh '" + handle + "': '" + name
+            + "' time samples have different counts (" + counts
+            + "); the first sample is rendered, without motion");
+    return {};
+  }
+  if (times.size() < 2)
+    return {};
+  std::vector<std::vector<double>> keys;
+  for (double t : times)
+    keys.push_back(numbersAt(samples, t));
+  return keys;
+}
+
+// `node`'s attribute `name` (and its indices) with the value `numbers` in
+// place of its own: a mesh's primvar at one time.
+Node withNumbers(const Node &node,
+    const std::string &name,
+    const std::vector<double> &numbers)
+{
+  Node out;
+  out.type = node.type;
+  const Value *first = node.attribute(name);
+  Value value;
+  value.type = NSITypeDouble;
+  value.count = numbers.size();
+  value.flags = first ? first->flags & NSIParamPerFace : 0;
+  value.bytes.resize(numbers.size() * sizeof(double));
+  if (!numbers.empty())
+    std::memcpy(value.bytes.data(), numbers.data(), value.bytes.size());
+  out.attributes[name].value = std::move(value);
+  auto indices = node.attributes.find(name + ".indices");
+  if (indices != node.attributes.end())
+    out.attributes.insert(*indices);
+  return out;
+}
+
 } // namespace
 
-std::optional<GeometryData> buildMesh(
-    const std::string &handle, const Node &mesh, const ReportFunction &report)
+std::optional<GeometryData> buildMesh(const std::string &handle,
+    const Node &mesh,
+    const ReportFunction &report,
+    const std::vector<double> &times)
 {
   auto fail = [&](const std::string &why) {
     report(NSIErrWarning, "mesh '" + handle + "': " + why + "; not rendered");
     return std::nullopt;
   };
-  const std::vector<double> points = numbersOf(mesh, "P");
+  // Moving points are triangulated where they are at shutter open.
+  const auto pointKeys = keysOf(handle, mesh, "P", times, NSIErrError, report);
+  const std::vector<double> points =
+      pointKeys.empty() ? numbersOf(mesh, "P") : pointKeys.front();
   const std::vector<double> nvertices = numbersOf(mesh, "nvertices");
   if (points.empty() || points.size() % 3)
     return fail("no 'P'");
@@ -117,6 +183,34 @@ std::optional<GeometryData> buildMesh(
       data.positions.push_back(float(points[3 * p + c]));
   }
   data.normals = faceVertexValues(handle, mesh, "N", 3, layout, report);
+  // Keys per face vertex, as the still data; normals only when usable.
+  const auto normalKeys =
+      data.normals.empty()
+          ? std::vector<std::vector<double>>{}
+          : keysOf(handle, mesh, "N", times, NSIErrWarning, report);
+  for (const auto &key : normalKeys) {
+    data.normalKeys.push_back(faceVertexValues(
+        handle, withNumbers(mesh, "N", key), "N", 3, layout, report));
+  }
+  // Every key maps like the first (the samples have its length); checked.
+  if (std::any_of(data.normalKeys.begin(),
+          data.normalKeys.end(),
+          [&](auto &key) { return key.size() != data.normals.size(); }))
+    data.normalKeys.clear();
+  if (!data.normalKeys.empty())
+    data.normals = data.normalKeys.front();
+  for (const auto &key : pointKeys) {
+    std::vector<float> &positions = data.positionKeys.emplace_back();
+    positions.reserve(faceVertexCount * 3);
+    for (size_t k = 0; k < faceVertexCount; ++k) {
+      const size_t p = pointIndices ? size_t((*pointIndices)[k]) : k;
+      for (int c = 0; c < 3; ++c)
+        positions.push_back(float(key[3 * p + c]));
+    }
+  }
+  // Moving normals on still points: the points are keys too, unchanged.
+  if (data.positionKeys.empty() && !data.normalKeys.empty())
+    data.positionKeys.assign(data.normalKeys.size(), data.positions);
   data.texcoords = faceVertexValues(handle, mesh, "st", 2, layout, report);
   data.colors = faceVertexValues(handle, mesh, "Cs", 3, layout, report);
   size_t first = 0, loop = 0;

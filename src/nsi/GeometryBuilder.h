@@ -14,9 +14,14 @@ namespace prism::nsi {
 using ReportFunction = std::function<void(int level, const std::string &)>;
 
 // Polygons (nvertices, nholes, P, P.indices) with their N, st and Cs,
-// ear-clipped, so concave ones are right too.
-std::optional<GeometryData> buildMesh(
-    const std::string &handle, const Node &mesh, const ReportFunction &report);
+// ear-clipped, so concave ones are right too. With two or more shutter
+// `times`, P and N time samples become position and normal keys at those
+// times (triangulated at the first); P samples of different lengths are
+// reported (NSIErrError) and the first sample is rendered.
+std::optional<GeometryData> buildMesh(const std::string &handle,
+    const Node &mesh,
+    const ReportFunction &report,
+    const std::vector<double> &times = {});
 
 // P and width (one per particle, or one for all; default 1).
 std::optional<GeometryData> buildParticles(const std::string &handle,

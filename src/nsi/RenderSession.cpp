@@ -39,6 +39,34 @@ std::array<float, 3> cameraPoint(
   return {float(q[0]), float(q[1]), float(q[2])};
 }
 
+// Whether the library's default device lists `extension` (ANARI_KHR_...).
+bool hasExtension(ANARILibrary library, const char *extension)
+{
+  const char **list = anariGetDeviceExtensions(library, "default");
+  for (; list && *list; ++list) {
+    if (std::strcmp(*list, extension) == 0)
+      return true;
+  }
+  return false;
+}
+
+void setMatrixKeys(ANARIDevice device,
+    ANARIObject object,
+    const char *name,
+    const Placement &matrices)
+{
+  std::vector<float> values;
+  for (const Matrix &m : matrices)
+    values.insert(values.end(), m.begin(), m.end());
+  ANARIArray1D array = anariNewArray1D(
+      device, nullptr, nullptr, nullptr, ANARI_FLOAT32_MAT4, matrices.size());
+  if (void *mapped = anariMapArray(device, array))
+    std::memcpy(mapped, values.data(), values.size() * sizeof(float));
+  anariUnmapArray(device, array);
+  anariSetParameter(device, object, name, ANARI_ARRAY1D, &array);
+  anariRelease(device, array);
+}
+
 // "dir/beauty.exr" -> "dir/beauty.partial.exr".
 std::string partialName(const std::string &file)
 {
@@ -94,7 +122,12 @@ bool RenderSession::start(
     release();
     return false;
   }
-  m_builder = std::make_unique<AnariWorldBuilder>(m_device, m_report);
+  m_cameraMotion =
+      hasExtension(m_library, "ANARI_KHR_CAMERA_MOTION_TRANSFORMATION");
+  m_builder = std::make_unique<AnariWorldBuilder>(m_device,
+      m_report,
+      hasExtension(
+          m_library, "ANARI_KHR_GEOMETRY_TRIANGLE_MOTION_DEFORMATION"));
   m_renderer = anariNewRenderer(m_device, "default");
   apply(scene);
   launch();
@@ -148,6 +181,15 @@ void RenderSession::apply(const ResolvedScene &scene)
   m_options = scene.options;
   m_cameras = scene.cameras;
   m_hasMotion = scene.hasMotion;
+  for (CameraItem &camera : m_cameras) {
+    if (camera.motion.size() > 1 && !m_cameraMotion) {
+      m_report(NSIErrWarning,
+          "camera '" + camera.handle
+              + "' moves, but the ANARI device has no camera motion; its "
+                "pose at shutter open is used");
+      camera.motion.clear();
+    }
+  }
   if (m_cameras.empty())
     m_report(NSIErrWarning,
         "no camera with a screen hangs under .root; nothing is rendered");
@@ -262,9 +304,18 @@ void RenderSession::renderAll()
         frameCamera(item.orthographic, item.fov, item.screen);
     ANARICamera camera = anariNewCamera(
         m_device, item.orthographic ? "orthographic" : "perspective");
-    const auto position = cameraPoint(item.worldFromCamera, {0, 0, 0}, false);
-    const auto direction = cameraPoint(item.worldFromCamera, {0, 0, -1}, true);
-    const auto up = cameraPoint(item.worldFromCamera, {0, 1, 0}, true);
+    // A moving camera is its own frame (looking down -Z, +Y up) placed by
+    // motion.transform at times uniform over the shutter, [0, 1].
+    const bool moves = item.motion.size() > 1;
+    const Matrix &placed = moves ? kIdentity : item.worldFromCamera;
+    const auto position = cameraPoint(placed, {0, 0, 0}, false);
+    const auto direction = cameraPoint(placed, {0, 0, -1}, true);
+    const auto up = cameraPoint(placed, {0, 1, 0}, true);
+    if (moves) {
+      setMatrixKeys(m_device, camera, "motion.transform", item.motion);
+      const float time[2] = {0.f, 1.f};
+      anariSetParameter(m_device, camera, "time", ANARI_FLOAT32_BOX1, time);
+    }
     anariSetParameter(
         m_device, camera, "position", ANARI_FLOAT32_VEC3, position.data());
     anariSetParameter(

@@ -109,6 +109,7 @@ class RenderSession
   ANARIRenderer m_renderer{nullptr};
   std::vector<CameraItem> m_cameras;
   bool m_hasMotion{false};
+  bool m_cameraMotion{false}; // the device takes a camera's motion.transform
   std::atomic<bool> m_stopRequested{false};
   std::atomic<bool> m_running{false}; // from start until the thread ends
   std::atomic<bool> m_silent{false};

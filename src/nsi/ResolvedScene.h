@@ -23,7 +23,12 @@ struct GeometryData
   bool curves{false};  // round linear segments
   bool isPlane{false}; // an NSI plane's big square
   double planeHalfSize{0};
-  std::vector<float> positions;        // xyz
+  std::vector<float> positions; // xyz
+  // Triangles whose vertices move: `positions` and `normals` at times
+  // uniform over the shutter (two or more keys, the first equal to
+  // positions and normals; normalKeys empty when the normals stay).
+  std::vector<std::vector<float>> positionKeys;
+  std::vector<std::vector<float>> normalKeys;
   std::vector<float> normals;          // xyz per position, or empty
   std::vector<float> texcoords;        // st per position, or empty
   std::vector<float> colors;           // rgb per position, or empty
@@ -85,7 +90,10 @@ struct CameraItem
   std::string handle;
   bool orthographic{false};
   double fov{35.0};
-  Matrix worldFromCamera{kIdentity};
+  Matrix worldFromCamera{kIdentity}; // at shutter open
+  // When the camera moves: world from camera at times uniform over the
+  // shutter (two or more, the first worldFromCamera); else empty.
+  Placement motion;
   double near{0}, far{INFINITY};              // clippingrange
   double apertureRadius{0}, focusDistance{1}; // depthoffield.*
   ScreenSettings screen;
@@ -95,8 +103,8 @@ struct CameraItem
 
 struct ResolvedScene
 {
-  // Some placement moves: its matrices span the shutter, which ANARI sees
-  // as the time range [0, 1].
+  // Some placement or geometry moves: its matrices or keys span the
+  // shutter, which ANARI sees as the time range [0, 1].
   bool hasMotion{false};
   std::map<std::string, GeometryData> geometries; // by node handle
   std::vector<SurfaceItem> surfaces;

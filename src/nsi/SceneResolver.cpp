@@ -1,6 +1,7 @@
 #include "SceneResolver.h"
 
 #include "CurveTessellation.h"
+#include "MotionSamples.h"
 
 #include <algorithm>
 #include <cmath>
@@ -53,6 +54,17 @@ class Resolver
       m_report(NSIErrWarning, message);
   }
 
+  // Where the geometry's vertices are over the shutter: its positions, or
+  // each of its keys.
+  static std::vector<const std::vector<float> *> movingPositions(
+      const GeometryData &data)
+  {
+    std::vector<const std::vector<float> *> out{&data.positions};
+    for (const auto &key : data.positionKeys)
+      out.push_back(&key);
+    return out;
+  }
+
   // NSI planes are infinite (z = 0 in their space, facing +Z); ANARI gets
   // a square 100 times wider than everything else in the scene, cameras
   // included, as seen from each plane's origin.
@@ -77,10 +89,12 @@ class Resolver
       float margin = 0;
       for (float r : data.radii)
         margin = std::max(margin, r);
-      for (size_t i = 0; i < data.positions.size(); i += 3) {
-        for (int c = 0; c < 3; ++c) {
-          a[c] = std::min(a[c], double(data.positions[i + c]) - margin);
-          b[c] = std::max(b[c], double(data.positions[i + c]) + margin);
+      for (const auto *positions : movingPositions(data)) {
+        for (size_t i = 0; i + 2 < positions->size(); i += 3) {
+          for (int c = 0; c < 3; ++c) {
+            a[c] = std::min(a[c], double((*positions)[i + c]) - margin);
+            b[c] = std::max(b[c], double((*positions)[i + c]) + margin);
+          }
         }
       }
       for (const Placement &placement : item.worldFromObject) {
@@ -122,9 +136,10 @@ class Resolver
     }
   }
 
-  // The times at which moving transforms are sampled: uniform over the
-  // first camera's shutterrange, as many as the most samples any transform
-  // has; none (a still image) without a shutter or without samples.
+  // The times at which moving transforms and vertices are sampled: uniform
+  // over the first camera's shutterrange, as many as the most samples any
+  // transform, P or N has; none (a still image) without a shutter or
+  // without samples.
   std::vector<double> motionTimes()
   {
     double open = 0, close = 0;
@@ -142,9 +157,11 @@ class Resolver
     }
     size_t steps = 0;
     for (auto &[handle, node] : m_graph.nodes()) {
-      auto it = node.attributes.find("transformationmatrix");
-      if (it != node.attributes.end() && !it->second.value)
-        steps = std::max(steps, it->second.samples.size());
+      for (const char *name : {"transformationmatrix", "P", "N"}) {
+        auto it = node.attributes.find(name);
+        if (it != node.attributes.end() && !it->second.value)
+          steps = std::max(steps, it->second.samples.size());
+      }
     }
     if (close <= open || steps < 2)
       return {};
@@ -376,8 +393,14 @@ class Resolver
       if (m_failed.count(handle))
         return;
       std::optional<GeometryData> data;
+      auto points = node.attributes.find("P");
+      if (node.type != "mesh" && m_times.size() > 1
+          && points != node.attributes.end() && isMoving(points->second))
+        warnOnce(node.type + " '" + handle
+                 + "': 'P' moves, but only meshes have vertex motion; the "
+                   "first sample is rendered");
       if (node.type == "mesh")
-        data = buildMesh(handle, node, m_report);
+        data = buildMesh(handle, node, m_report, m_times);
       else if (node.type == "particles")
         data = buildParticles(handle, node, m_report);
       else if (node.type == "plane")
@@ -388,6 +411,8 @@ class Resolver
         m_failed.insert(handle);
         return;
       }
+      if (!data->positionKeys.empty())
+        m_scene.hasMotion = true;
       built = m_scene.geometries.emplace(handle, std::move(*data)).first;
     }
     const auto facesets = node.inputsOf("facesets");
@@ -640,6 +665,8 @@ class Resolver
     item.handle = handle;
     item.orthographic = node.type == "orthographiccamera";
     item.worldFromCamera = world;
+    if (placement.size() > 1)
+      item.motion = placement;
     if (const Value *fov = node.attribute("fov"))
       item.fov = fov->number(35);
     if (!std::isfinite(item.fov))

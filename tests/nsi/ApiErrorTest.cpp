@@ -3,6 +3,7 @@
 // and what was wrong is left out while the rest of the call still applies.
 #include "NsiTestSupport.h"
 
+#include <cmath>
 #include <thread>
 
 namespace {
@@ -69,6 +70,21 @@ TEST_F(ApiError, UnknownHandles)
   EXPECT_TRUE(reportedOnce(m_messages, {"NSIConnect", "'ghost'"}));
   NSIDisconnect(m_ctx, NSI_SCENE_ROOT, "", "ghost", "objects");
   EXPECT_TRUE(reportedOnce(m_messages, {"NSIDisconnect", "'ghost'"}));
+}
+
+TEST_F(ApiError, NonFiniteSampleTimes)
+{
+  NSICreate(m_ctx, "xf", "transform", 0, nullptr);
+  const double m[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  NSIParam_t p{"transformationmatrix", m, NSITypeDoubleMatrix, 0, 1, 0};
+  for (double time : {NAN, INFINITY, -INFINITY}) {
+    NSISetAttributeAtTime(m_ctx, "xf", time, 1, &p);
+    EXPECT_TRUE(reportedOnce(
+        m_messages, {"NSISetAttributeAtTime", "'xf'", "not a finite number"}))
+        << time;
+  }
+  NSISetAttributeAtTime(m_ctx, "xf", 0.5, 1, &p);
+  EXPECT_EQ(m_messages.problems(), "");
 }
 
 TEST_F(ApiError, NullArguments)

@@ -6,8 +6,10 @@
 #include "ImageIO.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <mutex>
 
 namespace {
@@ -566,6 +568,247 @@ TEST_F(Render, TransformSamplesBlurAcrossTheShutter)
     }
   }
   EXPECT_GT(checked, 30);
+}
+
+// The 64x16 renders below: a white 1 x 1 square 10 units ahead of a
+// camera with fov 30, so a column's centre is at world x
+// (-4 + 8 (col + 0.5) / 64) tan(15 deg) 10 on the square's plane (a
+// third of a unit per pixel), and rows 7 and 8 lie inside the square.
+double columnX(uint32_t col)
+{
+  return (-4 + 8 * (col + 0.5) / 64) * std::tan(15 * M_PI / 180) * 10;
+}
+
+float middleRows(const Image &image, uint32_t col)
+{
+  return (image.at(col, 7).r + image.at(col, 8).r) / 2;
+}
+
+// The 1 x 1 square's corners around x = `x` (camera space), as P.
+std::vector<float> squareAt(double x)
+{
+  const float l = float(x - 0.5), r = float(x + 0.5);
+  return {l, -0.5f, -10, r, -0.5f, -10, r, 0.5f, -10, l, 0.5f, -10};
+}
+
+const char *kSmallScreen =
+    R"("resolution" "int[2]" 1 [ 64 16 ] "oversampling" "int" 1 256)";
+
+// The share of the shutter during which the square, its centre moving
+// linearly from `from` to `to`, covers x.
+double shutterShare(double x, double from, double to)
+{
+  const double lo = std::min(from, to), hi = std::max(from, to);
+  return std::max(0.0, std::min(x + 0.5, hi) - std::max(x - 0.5, lo))
+         / (hi - lo);
+}
+
+// `blurred` is the square moving from `from` to `to` across the shutter,
+// `open` and `close` still renders of it there: the smear covers the
+// columns between the two, each as bright as the share of the shutter the
+// square covers it, and the square's light is spread, not lost.
+void expectSmear(const Image &blurred,
+    const Image &open,
+    const Image &close,
+    double from,
+    double to)
+{
+  ASSERT_EQ(blurred.width, 64u);
+  ASSERT_EQ(open.width, 64u);
+  ASSERT_EQ(close.width, 64u);
+  float blurredSum = 0, openSum = 0, closeSum = 0, blurredPeak = 0;
+  int between = 0;
+  for (uint32_t col = 0; col < 64; ++col) {
+    const double x = columnX(col);
+    const float b = middleRows(blurred, col);
+    const float o = middleRows(open, col), c = middleRows(close, col);
+    blurredSum += b;
+    openSum += o;
+    closeSum += c;
+    blurredPeak = std::max(blurredPeak, b);
+    // The noise of 256 samples is about 0.02 here.
+    EXPECT_NEAR(b, shutterShare(x, from, to), 0.07)
+        << "column " << col << ", x " << x;
+    // The stills: lit inside the square, dark outside (away from edges).
+    if (std::abs(std::abs(x - from) - 0.5) > 0.2) {
+      EXPECT_EQ(o > 0.5f, std::abs(x - from) < 0.5) << "column " << col;
+    }
+    if (std::abs(std::abs(x - to) - 0.5) > 0.2) {
+      EXPECT_EQ(c > 0.5f, std::abs(x - to) < 0.5) << "column " << col;
+    }
+    // Between the two still positions: dark in both, lit in the smear.
+    if (x > std::min(from, to) + 0.7 && x < std::max(from, to) - 0.7) {
+      EXPECT_LT(std::max(o, c), 0.02f) << "column " << col;
+      EXPECT_GT(b, 0.15f) << "column " << col;
+      ++between;
+    }
+  }
+  EXPECT_GE(between, 6);
+  EXPECT_NEAR(openSum, 3.0, 0.3); // a unit is three pixels wide
+  EXPECT_NEAR(closeSum, openSum, 0.3);
+  EXPECT_NEAR(blurredSum, openSum, 0.3);
+  EXPECT_LT(blurredPeak, 0.4f); // a quarter of the shutter, at most
+}
+
+bool samePixels(const Image &a, const Image &b)
+{
+  if (a.width != b.width || a.height != b.height)
+    return false;
+  for (uint32_t y = 0; y < a.height; ++y) {
+    for (uint32_t x = 0; x < a.width; ++x) {
+      const auto &p = a.at(x, y), &q = b.at(x, y);
+      if (p.r != q.r || p.g != q.g || p.b != q.b)
+        return false;
+    }
+  }
+  return true;
+}
+
+// How the camera and mesh motion scenes are rendered: samples at t = 0
+// and 1 with the shutter open over [0, 1], the same samples without a
+// shutter range, or a plain value (the pose at t = 0 or t = 1).
+enum class Motion { Shutter, NoShutter, StillOpen, StillClose };
+
+// A camera under `cam_xf` moving from x = -2 to x = 2 (samples set
+// latest first) past the square at x = 0: in the image the square moves
+// from x = 2 to x = -2.
+Image panningCamera(NSIContext_t ctx, Motion motion, const std::string &output)
+{
+  NSICreate(ctx, "cam_xf", "transform", 0, nullptr);
+  NSIConnect(ctx, "cam_xf", "", NSI_SCENE_ROOT, "objects", 0, nullptr);
+  auto at = [](double x) {
+    return std::array<double, 16>{
+        1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, x, 0, 0, 1};
+  };
+  if (motion == Motion::StillOpen || motion == Motion::StillClose) {
+    const auto m = at(motion == Motion::StillOpen ? -2 : 2);
+    NSI::ArgumentList args;
+    args.add("transformationmatrix", NSITypeDoubleMatrix, m.data());
+    NSISetAttribute(ctx, "cam_xf", args.size(), args.data());
+  } else {
+    for (double t : {1.0, 0.0}) {
+      const auto m = at(4 * t - 2);
+      NSI::ArgumentList args;
+      args.add("transformationmatrix", NSITypeDoubleMatrix, m.data());
+      NSISetAttributeAtTime(ctx, "cam_xf", t, args.size(), args.data());
+    }
+  }
+  const auto p = squareAt(0);
+  std::string geometry =
+      R"(Create "shape" "mesh" Connect "shape" "" ".root" "objects"
+Disconnect "cam" "" ".root" "objects" Connect "cam" "" "cam_xf" "objects"
+SetAttribute "shape" "nvertices" "int" 1 4 "P" "point" 4 [ )";
+  for (float v : p)
+    geometry += std::to_string(v) + " ";
+  geometry += "]\n";
+  return renderWhite(ctx,
+      geometry,
+      motion == Motion::Shutter ? R"("shutterrange" "double" 2 [ 0 1 ])" : "",
+      kSmallScreen,
+      output);
+}
+
+TEST_F(Render, CameraMotionSmearsAcrossTheShutter)
+{
+  std::map<Motion, Image> images;
+  for (Motion motion : {Motion::Shutter,
+           Motion::NoShutter,
+           Motion::StillOpen,
+           Motion::StillClose}) {
+    NSIContext_t ctx = beginRender();
+    images[motion] =
+        panningCamera(ctx, motion, path(std::to_string(int(motion)) + ".exr"));
+    NSIEnd(ctx);
+    EXPECT_EQ(m_messages.problems(), "") << int(motion);
+  }
+  expectSmear(images[Motion::Shutter],
+      images[Motion::StillOpen],
+      images[Motion::StillClose],
+      2,
+      -2);
+  // Without a shutter range the earliest sample holds, pixel for pixel.
+  EXPECT_TRUE(samePixels(images[Motion::NoShutter], images[Motion::StillOpen]));
+}
+
+// The square's P set at t = 0 (centred on x = -2) and t = 1 (x = 2),
+// latest first; `pointsAtClose` points at t = 1 (4, or 5 to mismatch).
+Image deformingMesh(NSIContext_t ctx,
+    Motion motion,
+    const std::string &output,
+    int pointsAtClose = 4)
+{
+  NSICreate(ctx, "shape", "mesh", 0, nullptr);
+  NSIConnect(ctx, "shape", "", NSI_SCENE_ROOT, "objects", 0, nullptr);
+  const int nvertices = 4;
+  NSI::ArgumentList count;
+  count.add("nvertices", NSITypeInteger, &nvertices);
+  NSISetAttribute(ctx, "shape", count.size(), count.data());
+  auto setP = [&](double x, int points, const double *time) {
+    std::vector<float> p = squareAt(x);
+    p.resize(3 * size_t(points), 0.f);
+    NSI::ArgumentList args;
+    args.add("P", NSITypePoint, p.data(), size_t(points));
+    if (time)
+      NSISetAttributeAtTime(ctx, "shape", *time, args.size(), args.data());
+    else
+      NSISetAttribute(ctx, "shape", args.size(), args.data());
+  };
+  const double open = 0, close = 1;
+  if (motion == Motion::StillOpen) {
+    setP(-2, 4, nullptr);
+  } else if (motion == Motion::StillClose) {
+    setP(2, 4, nullptr);
+  } else {
+    setP(2, pointsAtClose, &close);
+    setP(-2, 4, &open);
+  }
+  return renderWhite(ctx,
+      "",
+      motion == Motion::Shutter ? R"("shutterrange" "double" 2 [ 0 1 ])" : "",
+      kSmallScreen,
+      output);
+}
+
+TEST_F(Render, VertexMotionSmearsAcrossTheShutter)
+{
+  std::map<Motion, Image> images;
+  for (Motion motion : {Motion::Shutter,
+           Motion::NoShutter,
+           Motion::StillOpen,
+           Motion::StillClose}) {
+    NSIContext_t ctx = beginRender();
+    images[motion] =
+        deformingMesh(ctx, motion, path(std::to_string(int(motion)) + ".exr"));
+    NSIEnd(ctx);
+    EXPECT_EQ(m_messages.problems(), "") << int(motion);
+  }
+  expectSmear(images[Motion::Shutter],
+      images[Motion::StillOpen],
+      images[Motion::StillClose],
+      -2,
+      2);
+  EXPECT_TRUE(samePixels(images[Motion::NoShutter], images[Motion::StillOpen]));
+}
+
+TEST_F(Render, VertexSamplesOfDifferentCountsRenderTheFirst)
+{
+  NSIContext_t ctx = beginRender();
+  const Image mismatched =
+      deformingMesh(ctx, Motion::Shutter, path("mismatched.exr"), 5);
+  NSIEnd(ctx);
+  EXPECT_TRUE(reportedOnce(m_messages,
+      {"mesh 'shape'",
+          "'P' time samples have different counts",
+          "4 at time 0",
+          "5 at time 1",
+          "the first sample is rendered"}));
+  ctx = beginRender();
+  const Image still = deformingMesh(ctx, Motion::StillOpen, path("still.exr"));
+  NSIEnd(ctx);
+  EXPECT_EQ(m_messages.problems(), "");
+  ASSERT_EQ(mismatched.width, 64u);
+  EXPECT_GT(middleRows(mismatched, 25), 0.9f); // x = -2.2: lit
+  EXPECT_TRUE(samePixels(mismatched, still));
 }
 
 TEST_F(Render, ClippingRangeAndDepthOfField)
@@ -1244,6 +1487,49 @@ Connect "sun_attr" "" "sun" "geometryattributes"
   const float lit = value(flat, 8, 8), bent = value(tilted, 8, 8);
   EXPECT_GT(lit, 0.05f);
   EXPECT_NEAR(bent / lit, 0.5f, 0.1f);
+}
+
+TEST_F(Render, NormalSamplesTurnTheShadingAcrossTheShutter)
+{
+  // The sun behind the camera; N (one value through N.indices) turns
+  // from facing it (t = 0) to 60 degrees off (t = 1) over the shutter.
+  const std::string scene =
+      whiteSquare(".root") +
+      R"(Create "sun" "environment" Connect "sun" "" ".root" "objects"
+SetAttribute "sun" "angle" "double" 1 1
+Create "sunlight" "shader" SetAttribute "sunlight" "shaderfilename" "string" 1 "distantLight"
+Create "sun_attr" "attributes" Connect "sunlight" "" "sun_attr" "surfaceshader"
+Connect "sun_attr" "" "sun" "geometryattributes"
+SetAttribute "shape" "N.indices" "int" 4 [ 0 0 0 0 ]
+SetAttributeAtTime "shape" 1 "N" "normal" 1 [ 0.8660254 0 0.5 ]
+SetAttributeAtTime "shape" 0 "N" "normal" 1 [ 0 0 1 ]
+)";
+  const std::string screen =
+      R"("resolution" "int[2]" 1 [ 16 16 ] "oversampling" "int" 1 64)";
+  NSIContext_t ctx = beginRender();
+  const Image turning = renderWhite(ctx,
+      scene,
+      R"("shutterrange" "double" 2 [ 0 1 ])",
+      screen,
+      path("turning.exr"),
+      Sky::None);
+  NSIEnd(ctx);
+  ctx = beginRender();
+  const Image still =
+      renderWhite(ctx, scene, "", screen, path("still.exr"), Sky::None);
+  NSIEnd(ctx);
+  EXPECT_EQ(m_messages.problems(), "");
+  // Normals interpolate linearly and are normalised: the mean of
+  // cos(angle to the sun) over the shutter.
+  double expected = 0;
+  for (int i = 0; i < 1000; ++i) {
+    const double t = (i + 0.5) / 1000;
+    const double x = t * std::sin(M_PI / 3), z = 1 - t + t * 0.5;
+    expected += z / std::hypot(x, z) / 1000;
+  }
+  const float lit = value(still, 8, 8); // the earliest sample: head on
+  EXPECT_GT(lit, 0.05f);
+  EXPECT_NEAR(value(turning, 8, 8) / lit, expected, 0.04) << expected;
 }
 
 TEST_F(Render, SetsStandForTheirMembers)
