@@ -5,6 +5,7 @@
 #include "PoliteWait.h"
 #include "TileRowGather.h"
 
+#include "camera/Camera.h"
 #include "frame/Frame.h"
 #include "frame/PixelFormat.h"
 #include "geometry/Geometry.h"
@@ -431,7 +432,10 @@ FrameDescriptor DataParallelDevice::describe(
     std::memcpy(d.renderer,
         subtype.data(),
         std::min(subtype.size(), sizeof(d.renderer) - 1));
+    d.rendererContent = renderer->contentHash();
   }
+  if (const Camera *camera = frame->camera())
+    d.cameraContent = camera->contentHash();
   return d;
 }
 

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <mutex>
 #include <string>
@@ -129,6 +130,10 @@ struct Lighting
   const float *sunDirection{kSunDirection};
 };
 
+// What a scenario changes on the camera and renderer after they are made,
+// before the frame is (it commits what it changes).
+using Adjustment = std::function<void(ANARICamera, ANARIRenderer)>;
+
 Render renderBoxes(ANARIDevice device,
     const std::vector<int> &boxes,
     const float eye[3],
@@ -136,7 +141,8 @@ Render renderBoxes(ANARIDevice device,
     MPI_Comm *communicator,
     uint32_t width = kSize,
     uint32_t height = kSize,
-    Lighting lighting = {})
+    Lighting lighting = {},
+    const Adjustment &adjust = {})
 {
   Render result;
   ANARIWorld world = newBoxesWorld(device, boxes);
@@ -149,6 +155,8 @@ Render renderBoxes(ANARIDevice device,
   }
   ANARICamera camera = newCamera(device, eye, float(width) / float(height));
   ANARIRenderer renderer = newRenderer(device, rendererSubtype);
+  if (adjust)
+    adjust(camera, renderer);
   ANARIFrame frame = newFrame(device, world, camera, renderer, width, height);
   if (communicator) {
     anariSetParameter(
@@ -695,6 +703,30 @@ void scenarioMismatch()
             status, {"disagree", "renderer", "'ao' " + odder}, true),
       "a renderer mismatch is reported naming the ranks");
 
+  // Renderer and camera parameters must match too (compared by a hash of
+  // each object's committed parameters, in every mode). Here, path
+  // tracing: the last rank's renderer has another ambient radiance.
+  renderBoxes(mpi.device,
+      boxesOf(owners, rank),
+      kEyeA,
+      "pathtracer",
+      &comm,
+      kSize,
+      kSize,
+      Lighting{true, 1},
+      [&](ANARICamera, ANARIRenderer renderer) {
+        const float radiance = rank == odd ? 0.5f : 0.25f;
+        anariSetParameter(
+            mpi.device, renderer, "ambientRadiance", ANARI_FLOAT32, &radiance);
+        anariCommitParameters(mpi.device, renderer);
+      });
+  check(oneErrorMentioning(status,
+            {"disagree", "renderer parameters (a hash of them)", odder, others},
+            true,
+            {"camera", "'pathtracer'"}),
+      "a renderer parameter that differs in pathtracer mode is reported "
+      "naming the ranks");
+
   // Replicated rendering needs the same world everywhere: rank 0 holding
   // every box and the others their share differ in the fingerprint.
   anariSetParameter(mpi.device, mpi.device, "mode", ANARI_STRING, "replicated");
@@ -733,6 +765,29 @@ void scenarioMismatch()
             {"world (bounds"}),
       "replicated worlds of the same extent and sizes whose contents differ "
       "are reported naming the ranks");
+  // The same world everywhere but the last rank's background differs.
+  renderBoxes(mpi.device,
+      boxesOf(owners, -1),
+      kEyeA,
+      "raycast",
+      &comm,
+      kSize,
+      kSize,
+      {},
+      [&](ANARICamera, ANARIRenderer renderer) {
+        if (rank != odd)
+          return;
+        const float background[4] = {0.1f, 0.2f, 0.4f, 1.f};
+        anariSetParameter(
+            mpi.device, renderer, "background", ANARI_FLOAT32_VEC4, background);
+        anariCommitParameters(mpi.device, renderer);
+      });
+  check(oneErrorMentioning(status,
+            {"disagree", "renderer parameters (a hash of them)", odder, others},
+            true,
+            {"camera", "world"}),
+      "a renderer background that differs in replicated mode is reported "
+      "naming the ranks");
   // The same world everywhere: silent, and rank 0's image is one
   // process's.
   const Render replicated =
@@ -742,9 +797,82 @@ void scenarioMismatch()
     checkComposite(replicated, owners, kEyeA, "replicated after mismatches");
   anariSetParameter(mpi.device, mpi.device, "mode", ANARI_STRING, "composite");
 
-  const Render agreed =
-      renderBoxes(mpi.device, boxesOf(owners, rank), kEyeA, "raycast", &comm);
-  check(status.take().empty(), "an agreeing render reports nothing");
+  // The last rank's camera stands elsewhere (composite mode).
+  renderBoxes(mpi.device,
+      boxesOf(owners, rank),
+      kEyeA,
+      "raycast",
+      &comm,
+      kSize,
+      kSize,
+      {},
+      [&](ANARICamera camera, ANARIRenderer) {
+        if (rank != odd)
+          return;
+        anariSetParameter(
+            mpi.device, camera, "position", ANARI_FLOAT32_VEC3, kEyeB);
+        anariCommitParameters(mpi.device, camera);
+      });
+  check(oneErrorMentioning(status,
+            {"disagree",
+                "camera (a hash of its subtype and parameters)",
+                odder,
+                others},
+            true,
+            {"renderer"}),
+      "a camera position that differs is reported naming the ranks");
+
+  // Parameters none had set, set in another order on the last rank (and
+  // one of them twice there, the last value the others' one), agree: the
+  // next render is silent and right.
+  const Render agreed = renderBoxes(mpi.device,
+      boxesOf(owners, rank),
+      kEyeA,
+      "raycast",
+      &comm,
+      kSize,
+      kSize,
+      {},
+      [&](ANARICamera camera, ANARIRenderer renderer) {
+        const float radiance = 0.f, otherRadiance = 2.f;
+        const float ambient[3] = {1.f, 1.f, 1.f};
+        const float aperture = 0.f, focus = 1.f;
+        auto setRadiance = [&](const float *value) {
+          anariSetParameter(
+              mpi.device, renderer, "ambientRadiance", ANARI_FLOAT32, value);
+        };
+        auto setAmbient = [&] {
+          anariSetParameter(mpi.device,
+              renderer,
+              "ambientColor",
+              ANARI_FLOAT32_VEC3,
+              ambient);
+        };
+        auto setAperture = [&] {
+          anariSetParameter(
+              mpi.device, camera, "apertureRadius", ANARI_FLOAT32, &aperture);
+        };
+        auto setFocus = [&] {
+          anariSetParameter(
+              mpi.device, camera, "focusDistance", ANARI_FLOAT32, &focus);
+        };
+        if (rank == odd) {
+          setRadiance(&otherRadiance);
+          setAmbient();
+          setRadiance(&radiance);
+          setFocus();
+          setAperture();
+        } else {
+          setAmbient();
+          setRadiance(&radiance);
+          setAperture();
+          setFocus();
+        }
+        anariCommitParameters(mpi.device, renderer);
+        anariCommitParameters(mpi.device, camera);
+      });
+  check(status.take().empty(),
+      "an agreeing render (parameters set in another order) reports nothing");
   if (rank == 0)
     checkComposite(agreed, owners, kEyeA, "after mismatches");
 }
