@@ -65,6 +65,10 @@ class Frame : public Object
   {
     return m_world;
   }
+  World *world()
+  {
+    return m_world;
+  }
   // What a data-parallel device asks of the next renders: only the tile
   // rows whose index modulo `parts` is `part`, and the depth buffer even
   // when channel.depth is not enabled (compositing sorts by it).
