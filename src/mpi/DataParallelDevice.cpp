@@ -2,9 +2,11 @@
 
 #include "DepthCompositor.h"
 #include "DistributedTransport.h"
+#include "EmitterExchange.h"
 #include "PoliteWait.h"
 #include "TileRowGather.h"
 
+#include "camera/Camera.h"
 #include "frame/Frame.h"
 #include "frame/PixelFormat.h"
 #include "geometry/Geometry.h"
@@ -389,20 +391,15 @@ void DataParallelDevice::fingerprintWorld(
         d.worldPrimitives += surface->geometry()->primitiveCount();
     }
   }
-  d.worldLights = uint32_t(world.lights().size());
+  d.worldLights =
+      uint32_t(world.declaredLightCount() + world.ownEmitterCount());
   d.worldVolumes = uint32_t(world.volumes().size());
   d.worldContent = world.contentHash();
 }
 
 uint32_t DataParallelDevice::declaredLights(const World &world)
 {
-  size_t emitters = 0;
-  for (uint32_t p = 0; p < world.placementCount(); p++) {
-    const Group &group = *world.placement(p).group;
-    for (uint32_t s = 0; s < group.surfaceCount(); s++)
-      emitters += world.emitterLight(p, s) >= 0 ? 1 : 0;
-  }
-  return uint32_t(world.lights().size() - emitters);
+  return uint32_t(world.declaredLightCount());
 }
 
 FrameDescriptor DataParallelDevice::describe(
@@ -431,7 +428,10 @@ FrameDescriptor DataParallelDevice::describe(
     std::memcpy(d.renderer,
         subtype.data(),
         std::min(subtype.size(), sizeof(d.renderer) - 1));
+    d.rendererContent = renderer->contentHash();
   }
+  if (const Camera *camera = frame->camera())
+    d.cameraContent = camera->contentHash();
   return d;
 }
 
@@ -517,6 +517,8 @@ void DataParallelDevice::renderComposited(
   frame.keepDepth(true);
   frame.omitBackground(true);
   frame.renderInLockstep(false);
+  if (World *world = frame.world())
+    world->keepOwnEmitters(); // lit by its own process only
   Device::renderFrame(handle);
   const FrameBuffers &local = frame.linearPixels();
   politeBarrier(communicator);
@@ -575,6 +577,8 @@ void DataParallelDevice::renderReplicated(
   frame.keepDepth(false);
   frame.omitBackground(false);
   frame.renderInLockstep(false);
+  if (World *world = frame.world())
+    world->keepOwnEmitters(); // every process holds every emitter
   Device::renderFrame(handle);
   frame.ready(ANARI_WAIT);
   politeBarrier(communicator);
@@ -660,6 +664,19 @@ void DataParallelDevice::renderPathTraced(
   frame.omitBackground(false);
   frame.renderInLockstep(true);
   uint64_t bytesSent = 0;
+  // Any process may shade any path, so each samples every process's
+  // emissive surfaces (sent again only when a world placed them anew).
+  if (World *world = frame.world()) {
+    const EmitterExchangeResult shared = shareEmitters(*world, communicator);
+    bytesSent += shared.bytesSent;
+    if (!shared.problem.empty()) {
+      reportStatus(handle,
+          ANARI_FRAME,
+          ANARI_SEVERITY_WARNING,
+          ANARI_STATUS_INVALID_OPERATION,
+          "anariRenderFrame: " + shared.problem);
+    }
+  }
   {
     std::lock_guard lock(m_stateMutex);
     m_pathTracing = PathTracing{communicator, &bytesSent};

@@ -109,7 +109,7 @@ std::string describeDisagreement(const std::vector<FrameDescriptor> &all)
         return enabled.empty() ? std::string("none") : enabled;
       },
       [](const std::string &v) { return std::string("{").append(v) + "}"; });
-  listDifferences(
+  const bool renderersDiffer = listDifferences(
       message,
       "renderer",
       all,
@@ -117,6 +117,22 @@ std::string describeDisagreement(const std::vector<FrameDescriptor> &all)
         return std::string(d.renderer, strnlen(d.renderer, sizeof(d.renderer)));
       },
       [](const std::string &v) { return "'" + v + "'"; });
+  // Parameters are compared where the subtypes agree (the hash covers the
+  // subtype too, and a difference is named once).
+  if (!renderersDiffer) {
+    listDifferences(
+        message,
+        "renderer parameters (a hash of them)",
+        all,
+        [](const FrameDescriptor &d) { return d.rendererContent; },
+        hexadecimal);
+  }
+  listDifferences(
+      message,
+      "camera (a hash of its subtype and parameters)",
+      all,
+      [](const FrameDescriptor &d) { return d.cameraContent; },
+      hexadecimal);
   const bool worldsDiffer = listDifferences(
       message,
       "world (bounds, primitives, lights, volumes)",

@@ -33,6 +33,12 @@ struct FrameDescriptor
   // ANARIDataType of each of kChannelNames, ANARI_UNKNOWN when not enabled.
   uint32_t channelTypes[kChannelCount]{};
   char renderer[32]{}; // the renderer's subtype, cut to fit
+  // Content hashes (Object::contentHash(): subtype and committed parameters,
+  // in no particular order of setting) of the frame's renderer and camera,
+  // in every mode: the spec wants their parameters alike on every process.
+  // 0 when the frame has none.
+  uint64_t rendererContent{0};
+  uint64_t cameraContent{0};
   // A cheap fingerprint of the world, set only where every process must
   // hold the same one (replicated mode): its bounds and how many surface
   // primitives, lights and volumes it places, and a hash of its contents

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <mutex>
 #include <string>
@@ -127,7 +128,72 @@ struct Lighting
   bool lit{false};
   int samples{1};
   const float *sunDirection{kSunDirection};
+  // An emissive quad above the grid, in an instance of its own, glowing
+  // `glow`.
+  bool emissiveQuad{false};
+  const float *glow{nullptr};
 };
+
+constexpr float kWarmGlow[3] = {6.f, 5.f, 4.f};
+constexpr float kColdGlow[3] = {2.f, 3.f, 7.f};
+
+// A 2x2 quad above the grid (y = 2.2), glowing `glow` on both sides (warm
+// white by default): a group of its one surface, placed in `world` by an
+// untransformed instance. Returns its material (the caller releases it).
+ANARIMaterial addEmissiveQuad(
+    ANARIDevice device, ANARIWorld world, const float *glow)
+{
+  glow = glow ? glow : kWarmGlow;
+  const float corners[4][3] = {{-1.f, 2.2f, -1.f},
+      {1.f, 2.2f, -1.f},
+      {1.f, 2.2f, 1.f},
+      {-1.f, 2.2f, 1.f}};
+  const uint32_t triangles[2][3] = {{0, 1, 2}, {0, 2, 3}};
+  ANARIGeometry geometry = anariNewGeometry(device, "triangle");
+  auto setArray = [&](const char *name,
+                      ANARIDataType type,
+                      const void *data,
+                      uint64_t count) {
+    ANARIArray1D array =
+        anariNewArray1D(device, nullptr, nullptr, nullptr, type, count);
+    std::memcpy(
+        anariMapArray(device, array), data, count * anari::sizeOf(type));
+    anariUnmapArray(device, array);
+    anariSetParameter(device, geometry, name, ANARI_ARRAY1D, &array);
+    anariRelease(device, array);
+  };
+  setArray("vertex.position", ANARI_FLOAT32_VEC3, corners, 4);
+  setArray("primitive.index", ANARI_UINT32_VEC3, triangles, 2);
+  anariCommitParameters(device, geometry);
+  ANARIMaterial material = anariNewMaterial(device, "physicallyBased");
+  const float black[3] = {0.f, 0.f, 0.f};
+  anariSetParameter(device, material, "baseColor", ANARI_FLOAT32_VEC3, black);
+  anariSetParameter(device, material, "emissive", ANARI_FLOAT32_VEC3, glow);
+  anariCommitParameters(device, material);
+  ANARISurface surface = anariNewSurface(device);
+  anariSetParameter(device, surface, "geometry", ANARI_GEOMETRY, &geometry);
+  anariSetParameter(device, surface, "material", ANARI_MATERIAL, &material);
+  anariCommitParameters(device, surface);
+  ANARIGroup group = anariNewGroup(device);
+  ANARIArray1D surfaces =
+      anariNewArray1D(device, &surface, nullptr, nullptr, ANARI_SURFACE, 1);
+  anariSetParameter(device, group, "surface", ANARI_ARRAY1D, &surfaces);
+  anariCommitParameters(device, group);
+  ANARIInstance instance = anariNewInstance(device, "transform");
+  anariSetParameter(device, instance, "group", ANARI_GROUP, &group);
+  anariCommitParameters(device, instance);
+  setWorldObjects(device, world, "instance", ANARI_INSTANCE, instance);
+  anariRelease(device, instance);
+  anariRelease(device, surfaces);
+  anariRelease(device, group);
+  anariRelease(device, surface);
+  anariRelease(device, geometry);
+  return material;
+}
+
+// What a scenario changes on the camera and renderer after they are made,
+// before the frame is (it commits what it changes).
+using Adjustment = std::function<void(ANARICamera, ANARIRenderer)>;
 
 Render renderBoxes(ANARIDevice device,
     const std::vector<int> &boxes,
@@ -136,12 +202,15 @@ Render renderBoxes(ANARIDevice device,
     MPI_Comm *communicator,
     uint32_t width = kSize,
     uint32_t height = kSize,
-    Lighting lighting = {})
+    Lighting lighting = {},
+    const Adjustment &adjust = {})
 {
   Render result;
   ANARIWorld world = newBoxesWorld(device, boxes);
   if (lighting.lit)
     addSunlight(device, world, lighting.sunDirection);
+  if (lighting.emissiveQuad)
+    anariRelease(device, addEmissiveQuad(device, world, lighting.glow));
   if (communicator) {
     anariSetParameter(
         device, world, "mpiCommunicator", ANARI_VOID_POINTER, communicator);
@@ -149,6 +218,8 @@ Render renderBoxes(ANARIDevice device,
   }
   ANARICamera camera = newCamera(device, eye, float(width) / float(height));
   ANARIRenderer renderer = newRenderer(device, rendererSubtype);
+  if (adjust)
+    adjust(camera, renderer);
   ANARIFrame frame = newFrame(device, world, camera, renderer, width, height);
   if (communicator) {
     anariSetParameter(
@@ -570,6 +641,120 @@ void scenarioPathTracer()
   compositeShadows(7);
 }
 
+// One world, three frames: the holder's quad changes color between the
+// first two renders (its world places its emitters anew, the others' do
+// not), so every process must sample the new quad; the third render
+// changes nothing, so no emitters are sent again.
+void emissiveChange(const std::vector<int> &owners, int holder)
+{
+  const auto [rank, ranks] = worldRankAndSize();
+  Status status;
+  Render before, after, again;
+  {
+    Device mpi("prism_mpi", status);
+    if (!mpi.device)
+      return;
+    ANARIDevice device = mpi.device;
+    ANARIWorld world = newBoxesWorld(device, boxesOf(owners, rank));
+    addSunlight(device, world);
+    ANARIMaterial glow =
+        rank == holder ? addEmissiveQuad(device, world, kWarmGlow) : nullptr;
+    ANARICamera camera = newCamera(device, kEyeA, 1.f);
+    ANARIRenderer renderer = newRenderer(device, "pathtracer");
+    MPI_Comm comm = MPI_COMM_WORLD;
+    auto renderOnce = [&] {
+      Render result;
+      ANARIFrame frame =
+          newFrame(device, world, camera, renderer, kTracedSize, kTracedSize);
+      anariSetParameter(
+          device, frame, "mpiCommunicator", ANARI_VOID_POINTER, &comm);
+      anariCommitParameters(device, frame);
+      anariRenderFrame(device, frame);
+      anariFrameReady(device, frame, ANARI_WAIT);
+      result.image = readFrame(device, frame);
+      anariGetProperty(device,
+          frame,
+          "mpiBytesSent",
+          ANARI_UINT64,
+          &result.bytesSent,
+          sizeof(result.bytesSent),
+          ANARI_WAIT);
+      anariRelease(device, frame);
+      return result;
+    };
+    before = renderOnce();
+    if (glow) {
+      anariSetParameter(
+          device, glow, "emissive", ANARI_FLOAT32_VEC3, kColdGlow);
+      anariCommitParameters(device, glow);
+      anariRelease(device, glow);
+    }
+    after = renderOnce();
+    again = renderOnce();
+    anariRelease(device, renderer);
+    anariRelease(device, camera);
+    anariRelease(device, world);
+  }
+  for (const std::string &e : status.take())
+    check(false, "emissive change: unexpected error: " + e);
+  Lighting warm{true, 1};
+  warm.emissiveQuad = true;
+  warm.glow = kWarmGlow;
+  Lighting cold = warm;
+  cold.glow = kColdGlow;
+  checkPathTraced(before, owners, MPI_COMM_WORLD, "emissive, before", warm);
+  checkPathTraced(after, owners, MPI_COMM_WORLD, "emissive, changed", cold);
+  checkPathTraced(again, owners, MPI_COMM_WORLD, "emissive, again", cold);
+  if (rank == 0)
+    check(before.image.color != after.image.color,
+        "emissive change: the new color shows");
+  // What each process sends of its emitters: its bounds and emitter count
+  // (28 bytes), and the holder 92 bytes for its quad (radiance, counts,
+  // two triangles), to each other process.
+  if (ranks > 1) {
+    const uint64_t emitterBytes =
+        uint64_t(rank == holder ? 28 + 92 : 28) * uint64_t(ranks - 1);
+    check(after.bytesSent == again.bytesSent + emitterBytes,
+        "emissive change: the emitters are sent after the change ("
+            + std::to_string(after.bytesSent) + " bytes) and not again ("
+            + std::to_string(again.bytesSent) + " bytes)");
+  }
+}
+
+// An emissive quad held by one process (rank 1, or rank 0 alone) lights
+// the boxes of every process: every process samples it in next-event
+// estimation as one process holding the whole scene would, so rank 0's
+// image is the single-process one. Lit by the quad alone, then by the quad
+// and the sun (declared on every process), so light selection weighs a
+// light at infinity by the radius of all the processes' worlds together.
+void scenarioEmissive()
+{
+  const auto [rank, ranks] = worldRankAndSize();
+  const std::vector<int> owners = boxOwners(ranks, 5);
+  const int holder = ranks > 1 ? 1 : 0;
+  for (const bool sun : {false, true}) {
+    Lighting whole{sun, 4};
+    whole.emissiveQuad = true;
+    Lighting share = whole;
+    share.emissiveQuad = rank == holder;
+    const std::string label =
+        sun ? "emissive quad and sun" : "emissive quad alone";
+    Status status;
+    Render traced;
+    {
+      Device mpi("prism_mpi", status);
+      if (!mpi.device)
+        return;
+      MPI_Comm comm = MPI_COMM_WORLD;
+      traced = traceBoxes(mpi.device, boxesOf(owners, rank), &comm, share);
+    }
+    for (const std::string &e : status.take())
+      check(false, label + ": unexpected error: " + e);
+    checkPathTraced(traced, owners, MPI_COMM_WORLD, label, whole);
+  }
+  emissiveChange(owners, holder);
+}
+
 // Runs `scenario(communicator, half)` on the even and the odd ranks of
 // MPI_COMM_WORLD at once, each half on a communicator of its own.
 template <typename Scenario>
@@ -695,6 +880,30 @@ void scenarioMismatch()
             status, {"disagree", "renderer", "'ao' " + odder}, true),
       "a renderer mismatch is reported naming the ranks");
 
+  // Renderer and camera parameters must match too (compared by a hash of
+  // each object's committed parameters, in every mode). Here, path
+  // tracing: the last rank's renderer has another ambient radiance.
+  renderBoxes(mpi.device,
+      boxesOf(owners, rank),
+      kEyeA,
+      "pathtracer",
+      &comm,
+      kSize,
+      kSize,
+      Lighting{true, 1},
+      [&](ANARICamera, ANARIRenderer renderer) {
+        const float radiance = rank == odd ? 0.5f : 0.25f;
+        anariSetParameter(
+            mpi.device, renderer, "ambientRadiance", ANARI_FLOAT32, &radiance);
+        anariCommitParameters(mpi.device, renderer);
+      });
+  check(oneErrorMentioning(status,
+            {"disagree", "renderer parameters (a hash of them)", odder, others},
+            true,
+            {"camera", "'pathtracer'"}),
+      "a renderer parameter that differs in pathtracer mode is reported "
+      "naming the ranks");
+
   // Replicated rendering needs the same world everywhere: rank 0 holding
   // every box and the others their share differ in the fingerprint.
   anariSetParameter(mpi.device, mpi.device, "mode", ANARI_STRING, "replicated");
@@ -733,6 +942,29 @@ void scenarioMismatch()
             {"world (bounds"}),
       "replicated worlds of the same extent and sizes whose contents differ "
       "are reported naming the ranks");
+  // The same world everywhere but the last rank's background differs.
+  renderBoxes(mpi.device,
+      boxesOf(owners, -1),
+      kEyeA,
+      "raycast",
+      &comm,
+      kSize,
+      kSize,
+      {},
+      [&](ANARICamera, ANARIRenderer renderer) {
+        if (rank != odd)
+          return;
+        const float background[4] = {0.1f, 0.2f, 0.4f, 1.f};
+        anariSetParameter(
+            mpi.device, renderer, "background", ANARI_FLOAT32_VEC4, background);
+        anariCommitParameters(mpi.device, renderer);
+      });
+  check(oneErrorMentioning(status,
+            {"disagree", "renderer parameters (a hash of them)", odder, others},
+            true,
+            {"camera", "world"}),
+      "a renderer background that differs in replicated mode is reported "
+      "naming the ranks");
   // The same world everywhere: silent, and rank 0's image is one
   // process's.
   const Render replicated =
@@ -742,9 +974,82 @@ void scenarioMismatch()
     checkComposite(replicated, owners, kEyeA, "replicated after mismatches");
   anariSetParameter(mpi.device, mpi.device, "mode", ANARI_STRING, "composite");
 
-  const Render agreed =
-      renderBoxes(mpi.device, boxesOf(owners, rank), kEyeA, "raycast", &comm);
-  check(status.take().empty(), "an agreeing render reports nothing");
+  // The last rank's camera stands elsewhere (composite mode).
+  renderBoxes(mpi.device,
+      boxesOf(owners, rank),
+      kEyeA,
+      "raycast",
+      &comm,
+      kSize,
+      kSize,
+      {},
+      [&](ANARICamera camera, ANARIRenderer) {
+        if (rank != odd)
+          return;
+        anariSetParameter(
+            mpi.device, camera, "position", ANARI_FLOAT32_VEC3, kEyeB);
+        anariCommitParameters(mpi.device, camera);
+      });
+  check(oneErrorMentioning(status,
+            {"disagree",
+                "camera (a hash of its subtype and parameters)",
+                odder,
+                others},
+            true,
+            {"renderer"}),
+      "a camera position that differs is reported naming the ranks");
+
+  // Parameters none had set, set in another order on the last rank (and
+  // one of them twice there, the last value the others' one), agree: the
+  // next render is silent and right.
+  const Render agreed = renderBoxes(mpi.device,
+      boxesOf(owners, rank),
+      kEyeA,
+      "raycast",
+      &comm,
+      kSize,
+      kSize,
+      {},
+      [&](ANARICamera camera, ANARIRenderer renderer) {
+        const float radiance = 0.f, otherRadiance = 2.f;
+        const float ambient[3] = {1.f, 1.f, 1.f};
+        const float aperture = 0.f, focus = 1.f;
+        auto setRadiance = [&](const float *value) {
+          anariSetParameter(
+              mpi.device, renderer, "ambientRadiance", ANARI_FLOAT32, value);
+        };
+        auto setAmbient = [&] {
+          anariSetParameter(mpi.device,
+              renderer,
+              "ambientColor",
+              ANARI_FLOAT32_VEC3,
+              ambient);
+        };
+        auto setAperture = [&] {
+          anariSetParameter(
+              mpi.device, camera, "apertureRadius", ANARI_FLOAT32, &aperture);
+        };
+        auto setFocus = [&] {
+          anariSetParameter(
+              mpi.device, camera, "focusDistance", ANARI_FLOAT32, &focus);
+        };
+        if (rank == odd) {
+          setRadiance(&otherRadiance);
+          setAmbient();
+          setRadiance(&radiance);
+          setFocus();
+          setAperture();
+        } else {
+          setAmbient();
+          setRadiance(&radiance);
+          setAperture();
+          setFocus();
+        }
+        anariCommitParameters(mpi.device, renderer);
+        anariCommitParameters(mpi.device, camera);
+      });
+  check(status.take().empty(),
+      "an agreeing render (parameters set in another order) reports nothing");
   if (rank == 0)
     checkComposite(agreed, owners, kEyeA, "after mismatches");
 }
@@ -923,6 +1228,8 @@ int main(int argc, char **argv)
     scenarioPathTracerSubcommunicator();
   else if (scenario == "subcommunicator")
     scenarioSubcommunicator();
+  else if (scenario == "emissive")
+    scenarioEmissive();
   else if (scenario == "mismatch")
     scenarioMismatch();
   else if (scenario == "absent")

@@ -43,8 +43,8 @@ class Frame : public Object
 
   // Square tiles a render is split into, in pixels.
   static constexpr uint32_t kTileSize = 32;
-  // The committed size and renderer (the data-parallel device compares them
-  // across processes before a collective render).
+  // The committed size, renderer and camera (the data-parallel device
+  // compares them across processes before a collective render).
   uint32_t width() const
   {
     return m_width;
@@ -57,7 +57,15 @@ class Frame : public Object
   {
     return m_renderer;
   }
+  const Camera *camera() const
+  {
+    return m_camera;
+  }
   const World *world() const
+  {
+    return m_world;
+  }
+  World *world()
   {
     return m_world;
   }

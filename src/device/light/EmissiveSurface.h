@@ -30,6 +30,16 @@ class EmissiveSurface final : public PlacedLight
   {
     return m_cdf.size();
   }
+  // What it was made of (a data-parallel device sends it to the other
+  // processes, which make the same light of it).
+  const EmitterShape &shape() const
+  {
+    return m_shape;
+  }
+  const float3 &radiance() const
+  {
+    return m_radiance;
+  }
   LightSample sample(const float3 &point, const float2 &u) const override;
   float3 radianceAlong(const float3 &point,
       const float3 &direction,

@@ -89,6 +89,9 @@ void World::dropReferences()
   m_placedLights.clear();
   m_emitterLights.clear();
   m_reachableLights.clear();
+  m_ownEmitters.clear();
+  m_sharesEmitters = false;
+  m_declaredLightCount = 0;
   if (m_implicitGroup)
     m_implicitGroup->setSurfaces({});
 }
@@ -127,6 +130,9 @@ void World::finalize()
   m_implicitGroup->finalize();
   m_placements.clear();
   m_placedLights.clear();
+  m_ownEmitters.clear();
+  m_sharesEmitters = false;
+  m_firstOwnEmitter = 0;
   auto placeLights = [&](const std::vector<Object *> &lights,
                          const mat3x4 &transform) {
     for (Object *object : lights) {
@@ -144,6 +150,7 @@ void World::finalize()
     for (size_t i = 0; i < instance->placementCount(); i++)
       placeLights(instance->group()->lights(), instance->worldFromObject(i));
   }
+  m_declaredLightCount = m_placedLights.size();
   m_scene->clear();
   auto place = [&](const Group *group,
                    const Instance *instance,
@@ -214,9 +221,51 @@ void World::finalize()
       m_reachableLights.push_back(reachable);
     }
   }
-  const float sceneRadius =
-      isEmpty(m_bounds) ? 1.f : 0.5f * length(m_bounds.upper - m_bounds.lower);
-  m_lightSelector.build(m_placedLights, sceneRadius);
+  m_lightSelector.build(m_placedLights, sceneRadius(m_bounds));
+}
+
+float World::sceneRadius(const box3 &bounds)
+{
+  return isEmpty(bounds) ? 1.f : 0.5f * length(bounds.upper - bounds.lower);
+}
+
+void World::shareEmitters(std::vector<std::unique_ptr<PlacedLight>> emitters,
+    size_t firstOwn,
+    float radius)
+{
+  keepOwnEmitters();
+  const size_t own = m_placedLights.size() - m_declaredLightCount;
+  if (firstOwn + own > emitters.size())
+    return; // not this world's emitters among them: keep its own
+  for (size_t i = m_declaredLightCount; i < m_placedLights.size(); i++)
+    m_ownEmitters.push_back(std::move(m_placedLights[i]));
+  m_placedLights.resize(m_declaredLightCount);
+  for (auto &emitter : emitters)
+    m_placedLights.push_back(std::move(emitter));
+  for (auto &ofPlacement : m_emitterLights) {
+    for (int32_t &index : ofPlacement)
+      index = index >= 0 ? index + int32_t(firstOwn) : index;
+  }
+  m_firstOwnEmitter = firstOwn;
+  m_sharesEmitters = true;
+  m_lightSelector.build(m_placedLights, radius);
+}
+
+void World::keepOwnEmitters()
+{
+  if (!m_sharesEmitters)
+    return;
+  m_placedLights.resize(m_declaredLightCount);
+  for (auto &emitter : m_ownEmitters)
+    m_placedLights.push_back(std::move(emitter));
+  m_ownEmitters.clear();
+  for (auto &ofPlacement : m_emitterLights) {
+    for (int32_t &index : ofPlacement)
+      index = index >= 0 ? index - int32_t(m_firstOwnEmitter) : index;
+  }
+  m_firstOwnEmitter = 0;
+  m_sharesEmitters = false;
+  m_lightSelector.build(m_placedLights, sceneRadius(m_bounds));
 }
 
 uint64_t World::declaredLightsHash() const

@@ -3,6 +3,7 @@
 // placement of an implicit group for surfaces placed in the world directly.
 #pragma once
 
+#include "../light/EmissiveSurface.h"
 #include "../light/LightSelector.h"
 #include "../light/PlacedLight.h"
 #include "../rt/RayQueue.h"
@@ -112,6 +113,43 @@ class World : public Object
   {
     return m_lightSelector;
   }
+  // How many lights() the world declares (its own and its instances'
+  // groups', at each placement): the first ones of lights().
+  size_t declaredLightCount() const
+  {
+    return m_declaredLightCount;
+  }
+  // The emissive surfaces this world placed itself (after the declared
+  // ones in lights(), unless shared, below), in placement order.
+  size_t ownEmitterCount() const
+  {
+    return m_sharesEmitters ? m_ownEmitters.size()
+                            : m_placedLights.size() - m_declaredLightCount;
+  }
+  const EmissiveSurface &ownEmitter(size_t index) const
+  {
+    const PlacedLight &light =
+        m_sharesEmitters ? *m_ownEmitters[index]
+                         : *m_placedLights[m_declaredLightCount + index];
+    return static_cast<const EmissiveSurface &>(light);
+  }
+  // For a data-parallel device whose processes each hold part of a scene:
+  // `emitters` (every process's, in one order the same on every process)
+  // follow the declared lights in lights() instead of this world's own,
+  // which are emitters[firstOwn ...] (emitterLight() then names those);
+  // the light selector weighs lights at infinity by `sceneRadius`, the
+  // radius of every process's world together. Until keepOwnEmitters() or
+  // the next finalize().
+  void shareEmitters(std::vector<std::unique_ptr<PlacedLight>> emitters,
+      size_t firstOwn,
+      float sceneRadius);
+  void keepOwnEmitters();
+  bool sharesEmitters() const
+  {
+    return m_sharesEmitters;
+  }
+  // What the light selector takes for the radius of a scene of `bounds`.
+  static float sceneRadius(const box3 &bounds);
   void finalize() override;
   void dropReferences() override;
   bool getProperty(const std::string &name,
@@ -138,6 +176,12 @@ class World : public Object
   LightSelector m_lightSelector;
   // Per placement, per geometry id: see emitterLight().
   std::vector<std::vector<int32_t>> m_emitterLights;
+  size_t m_declaredLightCount{0};
+  // While sharing emitters: this world's own, out of lights(), and where
+  // they are among the shared ones.
+  bool m_sharesEmitters{false};
+  std::vector<std::unique_ptr<PlacedLight>> m_ownEmitters;
+  size_t m_firstOwnEmitter{0};
   std::vector<ReachableLight> m_reachableLights;
   std::vector<PlacedVolume> m_placedVolumes;
   std::unique_ptr<rt::Scene> m_scene;
