@@ -677,6 +677,13 @@ void DataParallelDevice::renderPathTraced(
           "anariRenderFrame: " + shared.problem);
     }
   }
+  // A world changed on some processes restarts their accumulation only:
+  // every process must start from the same sample, or their paths would
+  // differ and the lockstep break. One reduction of (first, ~last).
+  uint32_t samples[2] = {frame.nextSampleIndex(), ~frame.nextSampleIndex()};
+  MPI_Allreduce(MPI_IN_PLACE, samples, 2, MPI_UINT32_T, MPI_MIN, communicator);
+  if (samples[0] != ~samples[1])
+    frame.restartAccumulation();
   {
     std::lock_guard lock(m_stateMutex);
     m_pathTracing = PathTracing{communicator, &bytesSent};

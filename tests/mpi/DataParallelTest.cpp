@@ -755,6 +755,64 @@ void scenarioEmissive()
   emissiveChange(owners, holder);
 }
 
+// Accumulating, the last process commits its world again (its content
+// unchanged): that restarts its accumulation, and every process must
+// restart with it, or their paths would start from different samples and
+// the lockstep break. Two samples after the commit make the single-process
+// image of two samples.
+void scenarioAccumulationRestart()
+{
+  const auto [rank, ranks] = worldRankAndSize();
+  const std::vector<int> owners = boxOwners(ranks, 7);
+  Status status;
+  Render traced;
+  {
+    Device mpi("prism_mpi", status);
+    if (!mpi.device)
+      return;
+    const ANARIDevice d = mpi.device;
+    ANARIWorld world = newBoxesWorld(d, boxesOf(owners, rank));
+    addSunlight(d, world);
+    ANARICamera camera = newCamera(d, kEyeA, 1.f);
+    ANARIRenderer renderer = newRenderer(d, "pathtracer");
+    ANARIFrame frame =
+        newFrame(d, world, camera, renderer, kTracedSize, kTracedSize);
+    const bool accumulate = true;
+    anariSetParameter(d, frame, "accumulation", ANARI_BOOL, &accumulate);
+    anariCommitParameters(d, frame);
+    auto render = [&] {
+      anariRenderFrame(d, frame);
+      anariFrameReady(d, frame, ANARI_WAIT);
+    };
+    for (int sample = 0; sample < 3; sample++)
+      render();
+    if (rank == ranks - 1)
+      anariCommitParameters(d, world);
+    render();
+    render();
+    traced.image = readFrame(d, frame);
+    anariGetProperty(d,
+        frame,
+        "mpiBytesSent",
+        ANARI_UINT64,
+        &traced.bytesSent,
+        sizeof(traced.bytesSent),
+        ANARI_WAIT);
+    for (ANARIObject o : {(ANARIObject)frame,
+             (ANARIObject)renderer,
+             (ANARIObject)camera,
+             (ANARIObject)world})
+      anariRelease(d, o);
+  }
+  for (const std::string &e : status.take())
+    check(false, "accumulation restart: unexpected error: " + e);
+  checkPathTraced(traced,
+      owners,
+      MPI_COMM_WORLD,
+      "accumulation restarted by one process",
+      Lighting{true, 2});
+}
+
 // Runs `scenario(communicator, half)` on the even and the odd ranks of
 // MPI_COMM_WORLD at once, each half on a communicator of its own.
 template <typename Scenario>
@@ -1230,6 +1288,8 @@ int main(int argc, char **argv)
     scenarioSubcommunicator();
   else if (scenario == "emissive")
     scenarioEmissive();
+  else if (scenario == "accumulation-restart")
+    scenarioAccumulationRestart();
   else if (scenario == "mismatch")
     scenarioMismatch();
   else if (scenario == "absent")

@@ -124,12 +124,9 @@ void Frame::renderAsync()
     m_rendering = true;
   }
   // Any committed change (an epoch moved) restarts the accumulation.
-  const uint64_t version = sceneVersion();
-  if (!m_accumulation || version != m_accumulatedVersion) {
-    m_samplesDone = 0;
-    m_accumulatedVersion = version;
-  }
-  m_sampleIndex = m_samplesDone;
+  m_sampleIndex = nextSampleIndex();
+  m_samplesDone = m_sampleIndex;
+  m_accumulatedVersion = sceneVersion();
   m_cancel = false;
   m_tilesDone = 0;
   m_start = std::chrono::steady_clock::now();
@@ -480,6 +477,20 @@ void Frame::renderInLockstep(bool lockstep)
 {
   waitUntilDone();
   m_lockstep = lockstep;
+}
+
+uint32_t Frame::nextSampleIndex() const
+{
+  return m_accumulation && sceneVersion() == m_accumulatedVersion
+             ? m_samplesDone
+             : 0;
+}
+
+void Frame::restartAccumulation()
+{
+  waitUntilDone();
+  m_samplesDone = 0;
+  m_accumulatedVersion = ~0ull;
 }
 
 const FrameBuffers &Frame::linearPixels()

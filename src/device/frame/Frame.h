@@ -80,6 +80,12 @@ class Frame : public Object
   // Renders tile after tile, in the same order on every process and on one
   // thread, so the collectives of a transport line up across processes.
   void renderInLockstep(bool lockstep);
+  // The sample the next render draws (0 when accumulation restarts: off,
+  // or something the frame shows changed), and a restart forced, so
+  // processes rendering in lockstep start their paths from the same one
+  // (asked between renders).
+  uint32_t nextSampleIndex() const;
+  void restartAccumulation();
   // The committed pixel type of `channel`; ANARI_UNKNOWN when not enabled.
   ANARIDataType channelType(const std::string &channel) const;
   // The linear color and depth the channels were converted from (the
