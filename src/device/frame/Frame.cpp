@@ -235,12 +235,8 @@ void Frame::render()
   m_renderer->beginFrame(context);
   // Each tile is rendered, folded into the accumulation and converted to
   // the channels' types while it is still in cache.
-  // A process stopping on its own would leave the others waiting in a
-  // collective: in lockstep every tile is rendered.
-  const std::atomic<bool> never{false};
-  const std::atomic<bool> &cancel = m_lockstep ? never : m_cancel;
   auto renderTileAt = [&](uint32_t index) {
-    if (cancel)
+    if (m_cancel)
       return;
     const uint32_t tx = index % tilesX, ty = index / tilesX;
     if (ty % m_tileRowParts != m_tileRowPart) {
@@ -251,15 +247,34 @@ void Frame::render()
         ty * kTileSize,
         std::min((tx + 1) * kTileSize, m_width),
         std::min((ty + 1) * kTileSize, m_height)};
-    m_renderer->renderTile(context, tile, m_buffers, cancel);
+    m_renderer->renderTile(context, tile, m_buffers, m_cancel);
     if (m_accumulation)
       accumulate(tile);
     resolve(tile);
     m_tilesDone.fetch_add(1, std::memory_order_release);
   };
   if (m_lockstep) {
-    for (uint32_t index = 0; index < m_tilesTotal; index++)
-      renderTileAt(index);
+    // A row of tiles at a time, in order: one wavefront large enough to be
+    // traced and shaded on all the process's threads between two of the
+    // transport's collectives (and fewer, larger messages). A process
+    // stopping on its own would leave the others waiting in a collective:
+    // in lockstep every row is rendered.
+    const std::atomic<bool> never{false};
+    for (uint32_t ty = 0; ty < tilesY; ty++) {
+      const Tile row{
+          0, ty * kTileSize, m_width, std::min((ty + 1) * kTileSize, m_height)};
+      m_renderer->renderTile(context, row, m_buffers, never);
+      tbb::parallel_for(uint32_t(0), tilesX, [&](uint32_t tx) {
+        const Tile tile{tx * kTileSize,
+            row.y0,
+            std::min((tx + 1) * kTileSize, m_width),
+            row.y1};
+        if (m_accumulation)
+          accumulate(tile);
+        resolve(tile);
+      });
+      m_tilesDone.fetch_add(tilesX, std::memory_order_release);
+    }
   } else {
     tbb::parallel_for(uint32_t(0), m_tilesTotal, renderTileAt);
   }

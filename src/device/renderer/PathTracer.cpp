@@ -5,6 +5,7 @@
 #include "../light/EmissiveSurface.h"
 #include "../light/PlacedLight.h"
 #include "../material/Material.h"
+#include "../parallel/Blocks.h"
 #include "../shading/Bsdf.h"
 #include "../shading/Sampling.h"
 #include "SampleSequence.h"
@@ -143,21 +144,32 @@ void PathTracer::renderTile(const RenderContext &context,
   const size_t count = size_t(width) * (tile.y1 - tile.y0);
   const auto workspace = m_workspaces.take();
   std::vector<PathState> &paths = workspace->paths;
-  rt::RayQueue &rays = workspace->rays, &next = workspace->next,
-               &shadows = workspace->shadows;
-  std::vector<float3> &contributions = workspace->contributions;
-  paths.assign(count, PathState{});
+  rt::RayQueue &rays = workspace->rays;
+  BounceQueues &queued = workspace->queued;
+  rt::RayQueue &next = queued.next, &shadows = queued.shadows;
+  std::vector<float3> &contributions = queued.contributions;
+  paths.resize(count);
+  // Paths started and camera rays made in blocks (on several threads for
+  // a wavefront larger than a tile's), the rays queued in pixel order.
+  std::vector<Ray> &cameraRays = workspace->cameraRays;
+  cameraRays.resize(count);
+  forEachBlock(count, 1024, [&](size_t begin, size_t size) {
+    for (size_t i = begin; i < begin + size; i++) {
+      PathState &path = paths[i];
+      path = PathState{};
+      path.x = tile.x0 + uint32_t(i % width);
+      path.y = tile.y0 + uint32_t(i / width);
+      path.seed = sequenceSeed(path.x, path.y, 0);
+      path.sampleIndex = context.sampleIndex;
+      cameraRays[i] = cameraRay(context, path.x, path.y);
+      path.time = cameraRays[i].time;
+    }
+  });
   rays.clear();
   for (size_t i = 0; i < count; i++) {
-    PathState &path = paths[i];
-    path.x = tile.x0 + uint32_t(i % width);
-    path.y = tile.y0 + uint32_t(i / width);
-    path.seed = sequenceSeed(path.x, path.y, 0);
-    path.sampleIndex = context.sampleIndex;
-    const Ray ray = cameraRay(context, path.x, path.y);
-    path.time = ray.time;
+    const Ray &ray = cameraRays[i];
     rays.push(
-        ray.origin, ray.direction, ray.tMin, ray.tMax, path.time, uint32_t(i));
+        ray.origin, ray.direction, ray.tMin, ray.tMax, ray.time, uint32_t(i));
   }
   rays.setCoherent(true);
   uint64_t traced = 0;
@@ -166,16 +178,8 @@ void PathTracer::renderTile(const RenderContext &context,
     traced += rays.size();
     const QueueMedia media(context, paths, rays, m_volumeMajorantGrid);
     transport.traceClosest(rays, volumes ? &media : nullptr);
-    next.clear();
-    shadows.clear();
-    contributions.clear();
-    shadeBounce(context,
-        paths,
-        rays,
-        next,
-        shadows,
-        contributions,
-        workspace->decisions);
+    shadeBounce(
+        context, paths, rays, workspace->decisions, queued, workspace->blocks);
     transport.shareBounce(paths, rays, next, shadows, contributions);
     if (!shadows.empty()) {
       traced += shadows.size();
@@ -193,14 +197,16 @@ void PathTracer::renderTile(const RenderContext &context,
   m_raysTraced.fetch_add(traced, std::memory_order_relaxed);
   if (cancel)
     return;
-  for (PathState &path : paths) {
-    if (!path.recordedFirstHit && path.bounce == 0)
-      continue; // the background, already stored by shadeBounce
-    path.sample.color =
-        float4{path.radiance.x, path.radiance.y, path.radiance.z, 1.f};
-  }
-  for (const PathState &path : paths)
-    store(context, buffers, path.x, path.y, path.sample);
+  forEachBlock(count, 1024, [&](size_t begin, size_t size) {
+    for (size_t i = begin; i < begin + size; i++) {
+      PathState &path = paths[i];
+      // Else the background, already stored by shadeBounce.
+      if (path.recordedFirstHit || path.bounce > 0)
+        path.sample.color =
+            float4{path.radiance.x, path.radiance.y, path.radiance.z, 1.f};
+      store(context, buffers, path.x, path.y, path.sample);
+    }
+  });
 }
 
 float PathTracer::emissionWeight(const RenderContext &context,
@@ -276,21 +282,66 @@ float3 PathTracer::lightsAlong(const RenderContext &context,
   return sum;
 }
 
+void PathTracer::BounceQueues::clear()
+{
+  next.clear();
+  shadows.clear();
+  contributions.clear();
+}
+
+void PathTracer::BounceQueues::append(const BounceQueues &more)
+{
+  next.append(more.next);
+  shadows.append(more.shadows);
+  contributions.insert(contributions.end(),
+      more.contributions.begin(),
+      more.contributions.end());
+}
+
 void PathTracer::shadeBounce(const RenderContext &context,
     std::vector<PathState> &paths,
     const rt::RayQueue &rays,
-    rt::RayQueue &next,
-    rt::RayQueue &shadows,
-    std::vector<float3> &contributions,
-    BounceDecisions &decisions) const
+    BounceDecisions &decisions,
+    BounceQueues &out,
+    std::vector<BounceQueues> &blocks) const
 {
   decisions.draw(paths, rays);
+  out.clear();
+  // A tile's wavefront (32 x 32 rays): shaded here, straight into `out`.
+  constexpr size_t kBlock = 1024;
+  if (rays.size() <= kBlock) {
+    shadeRays(context, paths, rays, 0, rays.size(), decisions, out);
+    return;
+  }
+  // Each ray touches only its own path, so blocks shade side by side.
+  const size_t count = (rays.size() + kBlock - 1) / kBlock;
+  if (blocks.size() < count)
+    blocks.resize(count);
+  forEachBlock(rays.size(), kBlock, [&](size_t begin, size_t size) {
+    BounceQueues &block = blocks[begin / kBlock];
+    block.clear();
+    shadeRays(context, paths, rays, begin, begin + size, decisions, block);
+  });
+  for (size_t b = 0; b < count; b++)
+    out.append(blocks[b]);
+}
+
+void PathTracer::shadeRays(const RenderContext &context,
+    std::vector<PathState> &paths,
+    const rt::RayQueue &rays,
+    size_t begin,
+    size_t end,
+    const BounceDecisions &decisions,
+    BounceQueues &out) const
+{
+  rt::RayQueue &next = out.next, &shadows = out.shadows;
+  std::vector<float3> &contributions = out.contributions;
   // Reused ray after ray: building them afresh zeroed half a kilobyte a
   // ray. resolveHit fills what each ray reads.
   SurfaceHit surface;
   MaterialShading shading;
   const uint8_t *shaded = context.transport->shadedRays();
-  for (size_t r = 0; r < rays.size(); r++) {
+  for (size_t r = begin; r < end; r++) {
     if (rays.untraceable(r))
       continue; // a degenerate camera or bounce ray ends its path
     if (shaded && !shaded[r])

@@ -53,17 +53,38 @@ class PathTracer : public Renderer
   void commitParameters() override;
 
  private:
-  // Shades the hits of `rays`; continuing paths queue their next ray in
-  // `next` and light samples in `shadows` (contributions[k] for shadow
-  // ray k, added if nothing blocks it). Each ray passes the stages below
-  // in order; each stage reads and writes only the ray's Bounce and path.
+  // What shading some rays of a bounce queues: continuing paths' next
+  // rays, light samples' shadow rays and what each brings (contributions[k]
+  // for shadow ray k, added if nothing blocks it), in ray order.
+  struct BounceQueues
+  {
+    rt::RayQueue next, shadows;
+    std::vector<float3> contributions;
+
+    void clear();
+    // Appends `more`'s rays and contributions after these.
+    void append(const BounceQueues &more);
+  };
+  // Shades the hits of `rays` into `out`: a tile's wavefront on this
+  // thread, a larger one (a lockstep render's row of tiles) in tile-sized
+  // blocks on the process's threads, each into one of `blocks`, appended
+  // in ray order, so the queues are the same either way.
   void shadeBounce(const RenderContext &context,
       std::vector<PathState> &paths,
       const rt::RayQueue &rays,
-      rt::RayQueue &next,
-      rt::RayQueue &shadows,
-      std::vector<float3> &contributions,
-      BounceDecisions &decisions) const;
+      BounceDecisions &decisions,
+      BounceQueues &out,
+      std::vector<BounceQueues> &blocks) const;
+  // Shades rays [begin, end) of `rays` into `out`. Each ray passes the
+  // stages below in order; each stage reads and writes only the ray's
+  // Bounce and path.
+  void shadeRays(const RenderContext &context,
+      std::vector<PathState> &paths,
+      const rt::RayQueue &rays,
+      size_t begin,
+      size_t end,
+      const BounceDecisions &decisions,
+      BounceQueues &out) const;
 
   // One ray of a bounce as the stages see it.
   struct Bounce
@@ -134,8 +155,10 @@ class PathTracer : public Renderer
   struct TileWorkspace
   {
     std::vector<PathState> paths;
-    rt::RayQueue rays, next, shadows;
-    std::vector<float3> contributions;
+    rt::RayQueue rays;
+    BounceQueues queued;
+    std::vector<BounceQueues> blocks; // shadeBounce's, reused
+    std::vector<Ray> cameraRays;
     BounceDecisions decisions;
   };
   mutable WorkspacePool<TileWorkspace> m_workspaces;

@@ -38,6 +38,21 @@ void RayQueue::reserve(size_t capacity)
     grow(capacity);
 }
 
+void RayQueue::append(const RayQueue &other)
+{
+  reserve(m_size + other.m_size);
+  // push() keeps what it stored the first time (a traceable ray as it is,
+  // an untraceable one as its empty interval).
+  for (size_t i = 0; i < other.m_size; i++) {
+    push(other.origin(i),
+        other.direction(i),
+        other.m_tMin[i],
+        other.m_tMax[i],
+        other.m_time[i],
+        other.m_tag[i]);
+  }
+}
+
 Hit RayQueue::hit(size_t i) const
 {
   Hit hit;

@@ -32,6 +32,8 @@ class RayQueue
     m_coherent = false;
   }
   void reserve(size_t capacity);
+  // Appends `other`'s rays (not what tracing them found) after these.
+  void append(const RayQueue &other);
 
   // Appends a ray; `tag` is the caller's (e.g. which path it extends) and
   // comes back unchanged. A ray that could not be traced (non-finite

@@ -4,6 +4,8 @@
 #include "RayQueue.h"
 #include "RayValidity.h"
 
+#include "../parallel/Blocks.h"
+
 #include <embree3/rtcore.h>
 
 #include <algorithm>
@@ -13,6 +15,19 @@
 
 namespace prism::rt {
 namespace {
+
+// Rays per Embree stream call: a tile's wavefront (32 x 32).
+constexpr size_t kStreamSize = 1024;
+
+// How Embree should trace a queue's rays (coherent: a tile's camera rays).
+RTCIntersectContext contextFor(const RayQueue &queue)
+{
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = queue.coherent() ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
+                                   : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+  return context;
+}
 
 void userBounds(const RTCBoundsFunctionArguments *args)
 {
@@ -553,38 +568,46 @@ void Scene::confine(RayQueue &queue) const
   }
 }
 
+RTCRayNp Scene::streamAt(RayQueue &queue, size_t i)
+{
+  RTCRayNp rays;
+  rays.org_x = queue.m_originX.data() + i;
+  rays.org_y = queue.m_originY.data() + i;
+  rays.org_z = queue.m_originZ.data() + i;
+  rays.tnear = queue.m_tMin.data() + i;
+  rays.dir_x = queue.m_directionX.data() + i;
+  rays.dir_y = queue.m_directionY.data() + i;
+  rays.dir_z = queue.m_directionZ.data() + i;
+  rays.time = queue.m_time.data() + i;
+  rays.tfar = queue.m_tMax.data() + i;
+  rays.mask = queue.m_mask.data() + i;
+  rays.id = queue.m_tag.data() + i;
+  rays.flags = queue.m_flags.data() + i;
+  return rays;
+}
+
 void Scene::intersect(RayQueue &queue) const
 {
   if (!m_scene || queue.empty())
     return;
   confine(queue);
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  context.flags = queue.coherent() ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
-                                   : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
-  RTCRayHitNp rays;
-  rays.ray.org_x = queue.m_originX.data();
-  rays.ray.org_y = queue.m_originY.data();
-  rays.ray.org_z = queue.m_originZ.data();
-  rays.ray.tnear = queue.m_tMin.data();
-  rays.ray.dir_x = queue.m_directionX.data();
-  rays.ray.dir_y = queue.m_directionY.data();
-  rays.ray.dir_z = queue.m_directionZ.data();
-  rays.ray.time = queue.m_time.data();
-  rays.ray.tfar = queue.m_tMax.data();
-  rays.ray.mask = queue.m_mask.data();
-  rays.ray.id = queue.m_tag.data();
-  rays.ray.flags = queue.m_flags.data();
-  rays.hit.Ng_x = queue.m_normalX.data();
-  rays.hit.Ng_y = queue.m_normalY.data();
-  rays.hit.Ng_z = queue.m_normalZ.data();
-  rays.hit.u = queue.m_u.data();
-  rays.hit.v = queue.m_v.data();
-  rays.hit.primID = queue.m_primitiveId.data();
-  rays.hit.geomID = queue.m_geometryId.data();
-  static_assert(RTC_MAX_INSTANCE_LEVEL_COUNT == 1);
-  rays.hit.instID[0] = queue.m_instanceId.data();
-  rtcIntersectNp(m_scene, &context, &rays, unsigned(queue.size()));
+  // A tile's wavefront is one stream; a larger one (a lockstep render's
+  // row of tiles) streams of a tile's size on several threads.
+  forEachBlock(queue.size(), kStreamSize, [&](size_t i, size_t count) {
+    RTCIntersectContext context = contextFor(queue);
+    RTCRayHitNp rays;
+    rays.ray = streamAt(queue, i);
+    rays.hit.Ng_x = queue.m_normalX.data() + i;
+    rays.hit.Ng_y = queue.m_normalY.data() + i;
+    rays.hit.Ng_z = queue.m_normalZ.data() + i;
+    rays.hit.u = queue.m_u.data() + i;
+    rays.hit.v = queue.m_v.data() + i;
+    rays.hit.primID = queue.m_primitiveId.data() + i;
+    rays.hit.geomID = queue.m_geometryId.data() + i;
+    static_assert(RTC_MAX_INSTANCE_LEVEL_COUNT == 1);
+    rays.hit.instID[0] = queue.m_instanceId.data() + i;
+    rtcIntersectNp(m_scene, &context, &rays, unsigned(count));
+  });
 }
 
 void Scene::occluded(RayQueue &queue) const
@@ -592,24 +615,11 @@ void Scene::occluded(RayQueue &queue) const
   if (!m_scene || queue.empty())
     return;
   confine(queue);
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  context.flags = queue.coherent() ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
-                                   : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
-  RTCRayNp rays;
-  rays.org_x = queue.m_originX.data();
-  rays.org_y = queue.m_originY.data();
-  rays.org_z = queue.m_originZ.data();
-  rays.tnear = queue.m_tMin.data();
-  rays.dir_x = queue.m_directionX.data();
-  rays.dir_y = queue.m_directionY.data();
-  rays.dir_z = queue.m_directionZ.data();
-  rays.time = queue.m_time.data();
-  rays.tfar = queue.m_tMax.data();
-  rays.mask = queue.m_mask.data();
-  rays.id = queue.m_tag.data();
-  rays.flags = queue.m_flags.data();
-  rtcOccludedNp(m_scene, &context, &rays, unsigned(queue.size()));
+  forEachBlock(queue.size(), kStreamSize, [&](size_t i, size_t count) {
+    RTCIntersectContext context = contextFor(queue);
+    RTCRayNp rays = streamAt(queue, i);
+    rtcOccludedNp(m_scene, &context, &rays, unsigned(count));
+  });
   for (size_t i = 0; i < queue.size(); i++) {
     const float through = queue.occluded(i) ? 0.f : 1.f;
     queue.m_transmittance[i] = float3{through, through, through};

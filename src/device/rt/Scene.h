@@ -15,6 +15,7 @@
 
 struct RTCSceneTy;
 struct RTCGeometryTy;
+struct RTCRayNp;
 
 namespace prism {
 class MotionTransform;
@@ -125,6 +126,9 @@ class Scene
   void attach(RTCGeometryTy *geometry, uint32_t id);
   // Marks the queue's rays beyond rayRange() untraceable.
   void confine(RayQueue &queue) const;
+  // The queue's ray arrays from ray `i` on, as Embree's stream API takes
+  // them.
+  static RTCRayNp streamAt(RayQueue &queue, size_t i);
   // Triangles (3 indices per primitive) or quads (4), sharing the arrays.
   void addMesh(uint32_t id,
       bool quads,

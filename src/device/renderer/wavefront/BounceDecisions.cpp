@@ -1,5 +1,6 @@
 #include "BounceDecisions.h"
 
+#include "../../parallel/Blocks.h"
 #include "../SampleSequence.h"
 
 #include <algorithm>
@@ -102,14 +103,18 @@ void BounceDecisions::draw(
     m_y[d].resize(count);
     if (d == kRoulette && deepest < kFirstRouletteBounce)
       continue; // no path of this wavefront plays it yet
-    drawDecision(kCoordinates[d],
-        m_index.data(),
-        m_seed.data(),
-        m_stream.data(),
-        uint32_t(d),
-        count,
-        m_x[d].data(),
-        m_y[d].data());
+    // Each ray's numbers its own: a wavefront larger than a tile's is
+    // drawn in blocks on several threads.
+    forEachBlock(count, 1024, [&](size_t begin, size_t size) {
+      drawDecision(kCoordinates[d],
+          m_index.data() + begin,
+          m_seed.data() + begin,
+          m_stream.data() + begin,
+          uint32_t(d),
+          size,
+          m_x[d].data() + begin,
+          m_y[d].data() + begin);
+    });
   }
 }
 
