@@ -230,6 +230,11 @@ try {
     }
   }
   if (device) {
+    const ANARIObject value =
+        anari::isObject(type) && mem ? *(const ANARIObject *)mem : nullptr;
+    if (!liveWrapped(object, "anariSetParameter")
+        || (value && !liveWrapped(value, "anariSetParameter (its value)")))
+      return;
     if (!setWrappedParameter(object, parameter, type, mem))
       device->setParameter(object, name, type, mem);
     return;
@@ -251,8 +256,11 @@ void DataParallelDevice::unsetParameter(ANARIObject object, const char *name)
       setWrapParameter(parameter, ANARI_STRING, "");
     else if (parameter == "wrappedDevice")
       setWrapParameter(parameter, ANARI_STRING, "default");
-    else
+    else {
       Device::unsetParameter(object, name);
+      if (!wrapOpen() && m_wrappedDevice)
+        m_wrappedDevice->unsetParameter((ANARIObject)m_wrappedDevice, name);
+    }
     return;
   }
   if (parameter == "mpiCommunicator") {
@@ -263,7 +271,8 @@ void DataParallelDevice::unsetParameter(ANARIObject object, const char *name)
     }
   }
   if (anari::DeviceImpl *device = wrapped()) {
-    if (!unsetWrappedParameter(object, parameter))
+    if (liveWrapped(object, "anariUnsetParameter")
+        && !unsetWrappedParameter(object, parameter))
       device->unsetParameter(object, name);
     return;
   }
@@ -365,7 +374,9 @@ int DataParallelDevice::getProperty(ANARIObject object,
   anari::DeviceImpl *device =
       object == (ANARIObject)this_device() ? nullptr : wrapped();
   const int found =
-      device ? device->getProperty(object, name, type, mem, size, mask)
+      device ? (liveWrapped(object, "anariGetProperty")
+                    ? device->getProperty(object, name, type, mem, size, mask)
+                    : 0)
              : Device::getProperty(object, name, type, mem, size, mask);
   const bool worldBounds = m_session.usable() && (mask & ANARI_WAIT) && name
                            && std::string(name) == "bounds"
@@ -440,8 +451,14 @@ const void *DataParallelDevice::frameBufferMap(ANARIFrame frame,
       }
     }
   }
-  if (anari::DeviceImpl *device = wrapped())
+  if (anari::DeviceImpl *device = wrapped()) {
+    if (!liveWrapped(frame, "anariMapFrame")) {
+      *width = *height = 0;
+      *pixelType = ANARI_UNKNOWN;
+      return nullptr;
+    }
     return device->frameBufferMap(frame, channel, width, height, pixelType);
+  }
   return Device::frameBufferMap(frame, channel, width, height, pixelType);
 }
 

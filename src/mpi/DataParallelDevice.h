@@ -179,6 +179,9 @@ class DataParallelDevice : public prism::Device
     return !m_wrapChosen.load();
   }
   void chooseWrapped();
+  // Whether `object` is a live handle of the wrapped device the
+  // application holds; if not, reports it for `call`.
+  bool liveWrapped(ANARIObject object, const char *call);
   void setWrapParameter(
       const std::string &name, ANARIDataType type, const void *mem);
   // A device parameter of the application that is not this device's own:

@@ -167,6 +167,24 @@ void DataParallelDevice::passDeviceParameter(
   m_stagedDeviceParameters.push_back(std::move(p));
 }
 
+bool DataParallelDevice::liveWrapped(ANARIObject object, const char *call)
+{
+  {
+    std::lock_guard lock(m_stateMutex);
+    if (object && m_wrappedObjects.count(object))
+      return true;
+  }
+  // Never forwarded: another library may not check its handles.
+  reportStatus(object,
+      ANARI_OBJECT,
+      ANARI_SEVERITY_ERROR,
+      ANARI_STATUS_INVALID_ARGUMENT,
+      std::string(call)
+          + ": the handle is no live object of this device (NULL, released"
+            " or another device's); the call is ignored");
+  return false;
+}
+
 // Calls forwarded as they are /////////////////////////////////////////////////
 
 ANARIArray1D DataParallelDevice::newArray1D(const void *appMemory,
@@ -293,6 +311,8 @@ void *DataParallelDevice::mapParameterArray1D(ANARIObject object,
     uint64_t *elementStride)
 {
   if (anari::DeviceImpl *device = wrapped()) {
+    if (!liveWrapped(object, "anariMapParameterArray1D"))
+      return nullptr;
     return device->mapParameterArray1D(
         object, name, elementType, numElements1, elementStride);
   }
@@ -308,6 +328,8 @@ void *DataParallelDevice::mapParameterArray2D(ANARIObject object,
     uint64_t *elementStride)
 {
   if (anari::DeviceImpl *device = wrapped()) {
+    if (!liveWrapped(object, "anariMapParameterArray2D"))
+      return nullptr;
     return device->mapParameterArray2D(
         object, name, elementType, numElements1, numElements2, elementStride);
   }
@@ -324,6 +346,8 @@ void *DataParallelDevice::mapParameterArray3D(ANARIObject object,
     uint64_t *elementStride)
 {
   if (anari::DeviceImpl *device = wrapped()) {
+    if (!liveWrapped(object, "anariMapParameterArray3D"))
+      return nullptr;
     return device->mapParameterArray3D(object,
         name,
         elementType,
@@ -344,9 +368,10 @@ void *DataParallelDevice::mapParameterArray3D(ANARIObject object,
 void DataParallelDevice::unmapParameterArray(
     ANARIObject object, const char *name)
 {
-  if (anari::DeviceImpl *device = wrapped())
-    device->unmapParameterArray(object, name);
-  else
+  if (anari::DeviceImpl *device = wrapped()) {
+    if (liveWrapped(object, "anariUnmapParameterArray"))
+      device->unmapParameterArray(object, name);
+  } else
     Device::unmapParameterArray(object, name);
 }
 
@@ -362,21 +387,24 @@ void DataParallelDevice::retain(ANARIObject object)
     if (it != m_wrappedObjects.end())
       it->second.references++;
   }
-  m_wrappedDevice->retain(object);
+  if (liveWrapped(object, "anariRetain"))
+    m_wrappedDevice->retain(object);
 }
 
 void *DataParallelDevice::mapArray(ANARIArray array)
 {
   if (anari::DeviceImpl *device = wrapped())
-    return device->mapArray(array);
+    return liveWrapped(array, "anariMapArray") ? device->mapArray(array)
+                                               : nullptr;
   return Device::mapArray(array);
 }
 
 void DataParallelDevice::unmapArray(ANARIArray array)
 {
-  if (anari::DeviceImpl *device = wrapped())
-    device->unmapArray(array);
-  else
+  if (anari::DeviceImpl *device = wrapped()) {
+    if (liveWrapped(array, "anariUnmapArray"))
+      device->unmapArray(array);
+  } else
     Device::unmapArray(array);
 }
 
@@ -438,21 +466,26 @@ void DataParallelDevice::frameBufferUnmap(ANARIFrame frame, const char *channel)
     if (it != m_frames.end() && channel && it->second.assembled.count(channel))
       return;
   }
-  device->frameBufferUnmap(frame, channel);
+  if (liveWrapped(frame, "anariUnmapFrame"))
+    device->frameBufferUnmap(frame, channel);
 }
 
 int DataParallelDevice::frameReady(ANARIFrame frame, ANARIWaitMask mask)
 {
-  if (anari::DeviceImpl *device = wrapped())
-    return device->frameReady(frame, mask);
+  if (anari::DeviceImpl *device = wrapped()) {
+    return liveWrapped(frame, "anariFrameReady")
+               ? device->frameReady(frame, mask)
+               : 0;
+  }
   return Device::frameReady(frame, mask);
 }
 
 void DataParallelDevice::discardFrame(ANARIFrame frame)
 {
-  if (anari::DeviceImpl *device = wrapped())
-    device->discardFrame(frame);
-  else
+  if (anari::DeviceImpl *device = wrapped()) {
+    if (liveWrapped(frame, "anariDiscardFrame"))
+      device->discardFrame(frame);
+  } else
     Device::discardFrame(frame);
 }
 
@@ -566,6 +599,8 @@ bool DataParallelDevice::unsetWrappedParameter(
 
 void DataParallelDevice::unsetAllWrappedParameters(ANARIObject object)
 {
+  if (!liveWrapped(object, "anariUnsetAllParameters"))
+    return;
   anari::DeviceImpl &device = *m_wrappedDevice;
   device.unsetAllParameters(object);
   std::lock_guard lock(m_stateMutex);
@@ -595,11 +630,14 @@ void DataParallelDevice::commitWrapped(ANARIObject object)
     if (frame != m_frames.end())
       frame->second.committed = frame->second.staged;
   }
-  m_wrappedDevice->commitParameters(object);
+  if (liveWrapped(object, "anariCommitParameters"))
+    m_wrappedDevice->commitParameters(object);
 }
 
 void DataParallelDevice::releaseWrapped(ANARIObject object)
 {
+  if (!liveWrapped(object, "anariRelease"))
+    return;
   {
     // The application's last reference gone: so is what this device kept
     // (renderers' backgrounds stay: a frame may still render with one).

@@ -1044,6 +1044,35 @@ void scenarioWrappedErrors()
       checkComposite(render, owners, kEyeB, "after an unknown device subtype");
   }
   {
+    // Released and foreign handles are reported, never forwarded.
+    WrappingDevice mpi(status, "prism", "composite");
+    ANARICamera camera = anariNewCamera(mpi.device, "perspective");
+    ANARIFrame frame = anariNewFrame(mpi.device);
+    anariRelease(mpi.device, camera);
+    anariCommitParameters(mpi.device, camera);
+    check(oneErrorMentioning(status, {"anariCommitParameters", "no live"}),
+        "committing a released object is reported");
+    anariSetParameter(mpi.device, frame, "camera", ANARI_CAMERA, &camera);
+    check(oneErrorMentioning(status, {"anariSetParameter (its value)"}),
+        "a released object as a parameter value is reported");
+    uint32_t width = 1, height = 1;
+    ANARIDataType type = ANARI_FLOAT32;
+    check(!anariMapFrame(mpi.device,
+              (ANARIFrame)camera,
+              "channel.color",
+              &width,
+              &height,
+              &type)
+              && width == 0 && type == ANARI_UNKNOWN,
+        "mapping a released handle gives nothing");
+    check(oneErrorMentioning(status, {"anariMapFrame", "no live"}),
+        "mapping a released handle is reported");
+    anariRelease(mpi.device, frame);
+    anariRelease(mpi.device, frame);
+    check(oneErrorMentioning(status, {"anariRelease", "no live"}),
+        "releasing twice is reported");
+  }
+  {
     Device mpi("prism_mpi", status);
     anariSetParameter(
         mpi.device, mpi.device, "wrappedLibrary", ANARI_STRING, "prism_mpi");
