@@ -31,7 +31,8 @@ bool DebugDevice::wrap(
     const std::string &wrappedSpec, const std::string &subtype)
 {
   std::string error;
-  auto library = WrappedLibrary::load(wrappedSpec, &forwardStatus, this, error);
+  auto library =
+      WrappedLibrary::load(wrappedSpec, &forwardStatus, this, "debug", error);
   if (!library) {
     m_failure =
         "cannot load the wrapped library '" + wrappedSpec + "': " + error;

@@ -102,8 +102,11 @@ class Library : public anari::LibraryImpl
     std::lock_guard lock(m_mutex);
     if (!m_probe) {
       std::string error;
-      m_probe = WrappedLibrary::load(
-          m_wrappedSpec, defaultStatusCB(), defaultStatusCBUserPtr(), error);
+      m_probe = WrappedLibrary::load(m_wrappedSpec,
+          defaultStatusCB(),
+          defaultStatusCBUserPtr(),
+          "debug",
+          error);
       if (!m_probe)
         report("cannot load the wrapped library '" + m_wrappedSpec
                + "': " + error);

@@ -25,28 +25,6 @@
 #include <limits>
 
 namespace prism::mpi {
-namespace {
-
-// The renderer's background under composited premultiplied color (the
-// processes rendered without it, so it is added once, behind everything).
-void addBackground(const Renderer &renderer,
-    uint32_t width,
-    uint32_t height,
-    std::vector<float4> &color)
-{
-  for (size_t i = 0; i < color.size(); i++) {
-    const float4 background = renderer.background(
-        uint32_t(i % width), uint32_t(i / width), width, height);
-    float4 &c = color[i];
-    const float rest = 1.f - c.w;
-    c = float4{c.x + rest * background.x,
-        c.y + rest * background.y,
-        c.z + rest * background.z,
-        c.w + rest * background.w};
-  }
-}
-
-} // namespace
 
 DataParallelDevice::DataParallelDevice(ANARILibrary library) : Device(library)
 {
@@ -60,6 +38,13 @@ DataParallelDevice::DataParallelDevice(ANARILibrary library) : Device(library)
   // An unmodified single-process program chooses its mode from outside.
   if (const char *mode = std::getenv("PRISM_MPI_MODE"))
     setMode(ANARI_STRING, mode);
+  // ... and the library that renders its objects.
+  const char *wrappedName = std::getenv("PRISM_MPI_WRAPPED_LIBRARY");
+  if (wrappedName && *wrappedName)
+    setWrapParameter("wrappedLibrary", ANARI_STRING, wrappedName);
+  const char *subtype = std::getenv("PRISM_MPI_WRAPPED_DEVICE");
+  if (subtype && *subtype)
+    setWrapParameter("wrappedDevice", ANARI_STRING, subtype);
   if (const char *timeout = std::getenv("PRISM_MPI_TIMEOUT")) {
     const float seconds = std::strtof(timeout, nullptr);
     setTimeout(ANARI_FLOAT32, &seconds);
@@ -70,6 +55,10 @@ DataParallelDevice::~DataParallelDevice()
 {
   // Frames in flight finish before MPI may be finalized under them.
   taskPool().wait();
+  // The wrapped device goes before its library (a member, closed after).
+  if (m_wrappedDevice)
+    m_wrappedDevice->release((ANARIObject)m_wrappedDevice);
+  m_wrappedDevice = nullptr;
 }
 
 void DataParallelDevice::reportBadDeviceParameter(const std::string &message)
@@ -99,6 +88,7 @@ void DataParallelDevice::setMode(ANARIDataType type, const void *mem)
     return;
   }
   m_mode = *mode;
+  m_modeExplicit = true;
 }
 
 void DataParallelDevice::setTimeout(ANARIDataType type, const void *mem)
@@ -145,6 +135,20 @@ void DataParallelDevice::setThreads(ANARIDataType type, const void *mem)
 
 ANARIFrame DataParallelDevice::newFrame()
 {
+  if (anari::DeviceImpl *device = wrapped()) {
+    ANARIFrame frame = created(device->newFrame(), ANARI_FRAME);
+    if (frame) {
+      // The wrapped frame always renders what compositing needs.
+      const ANARIDataType color = ANARI_FLOAT32_VEC4;
+      const ANARIDataType depth = ANARI_FLOAT32;
+      device->setParameter(frame, "channel.color", ANARI_DATA_TYPE, &color);
+      device->setParameter(frame, "channel.depth", ANARI_DATA_TYPE, &depth);
+      std::lock_guard lock(m_stateMutex);
+      FrameState &state = m_frames[frame] = FrameState{};
+      state.index = m_framesCreated++;
+    }
+    return frame;
+  }
   ANARIFrame frame = Device::newFrame();
   if (frame) {
     std::lock_guard lock(m_stateMutex);
@@ -155,6 +159,14 @@ ANARIFrame DataParallelDevice::newFrame()
 
 ANARIWorld DataParallelDevice::newWorld()
 {
+  if (anari::DeviceImpl *device = wrapped()) {
+    ANARIWorld world = created(device->newWorld(), ANARI_WORLD);
+    if (world) {
+      std::lock_guard lock(m_stateMutex);
+      m_worlds[world] = {};
+    }
+    return world;
+  }
   ANARIWorld world = Device::newWorld();
   if (world) {
     std::lock_guard lock(m_stateMutex);
@@ -189,12 +201,23 @@ try {
     setThreads(type, mem);
     return;
   }
-  if (parameter == "mpiCommunicator" && lookup(object)) {
+  if (object == (ANARIObject)this_device()
+      && (parameter == "wrappedLibrary" || parameter == "wrappedDevice")) {
+    setWrapParameter(parameter, type, mem);
+    return;
+  }
+  if (object == (ANARIObject)this_device()) {
+    Device::setParameter(object, name, type, mem);
+    passDeviceParameter(parameter, type, mem);
+    return;
+  }
+  anari::DeviceImpl *device = wrapped();
+  if (parameter == "mpiCommunicator" && (device || lookup(object))) {
     std::lock_guard lock(m_stateMutex);
     if (CommunicatorParameter *communicator = communicatorOf(object)) {
       if (type != ANARI_VOID_POINTER || !mem) {
         reportStatus(object,
-            lookup(object)->type(),
+            m_frames.count(object) ? ANARI_FRAME : ANARI_WORLD,
             ANARI_SEVERITY_ERROR,
             ANARI_STATUS_INVALID_ARGUMENT,
             std::string("anariSetParameter: parameter 'mpiCommunicator' must"
@@ -205,6 +228,16 @@ try {
       communicator->staged = *(const MPI_Comm *)mem;
       return;
     }
+  }
+  if (device) {
+    const ANARIObject value =
+        anari::isObject(type) && mem ? *(const ANARIObject *)mem : nullptr;
+    if (!liveWrapped(object, "anariSetParameter")
+        || (value && !liveWrapped(value, "anariSetParameter (its value)")))
+      return;
+    if (!setWrappedParameter(object, parameter, type, mem))
+      device->setParameter(object, name, type, mem);
+    return;
   }
   Device::setParameter(object, name, type, mem);
 } catch (...) {
@@ -217,12 +250,31 @@ try {
 
 void DataParallelDevice::unsetParameter(ANARIObject object, const char *name)
 {
-  if (name && std::string(name) == "mpiCommunicator") {
+  const std::string parameter = name ? name : "";
+  if (object == (ANARIObject)this_device()) {
+    if (parameter == "wrappedLibrary")
+      setWrapParameter(parameter, ANARI_STRING, "");
+    else if (parameter == "wrappedDevice")
+      setWrapParameter(parameter, ANARI_STRING, "default");
+    else {
+      Device::unsetParameter(object, name);
+      if (!wrapOpen() && m_wrappedDevice)
+        m_wrappedDevice->unsetParameter((ANARIObject)m_wrappedDevice, name);
+    }
+    return;
+  }
+  if (parameter == "mpiCommunicator") {
     std::lock_guard lock(m_stateMutex);
     if (CommunicatorParameter *communicator = communicatorOf(object)) {
       communicator->staged = MPI_COMM_WORLD;
       return;
     }
+  }
+  if (anari::DeviceImpl *device = wrapped()) {
+    if (liveWrapped(object, "anariUnsetParameter")
+        && !unsetWrappedParameter(object, parameter))
+      device->unsetParameter(object, name);
+    return;
   }
   Device::unsetParameter(object, name);
 }
@@ -234,6 +286,10 @@ void DataParallelDevice::unsetAllParameters(ANARIObject object)
     if (CommunicatorParameter *communicator = communicatorOf(object))
       communicator->staged = MPI_COMM_WORLD;
   }
+  if (object != (ANARIObject)this_device() && wrapped()) {
+    unsetAllWrappedParameters(object);
+    return;
+  }
   Device::unsetAllParameters(object);
 }
 
@@ -244,6 +300,16 @@ void DataParallelDevice::commitParameters(ANARIObject object)
     if (CommunicatorParameter *communicator = communicatorOf(object))
       communicator->committed = communicator->staged;
   }
+  if (object == (ANARIObject)this_device()) {
+    Device::commitParameters(object);
+    if (!wrapOpen() && m_wrappedDevice)
+      m_wrappedDevice->commitParameters((ANARIObject)m_wrappedDevice);
+    return;
+  }
+  if (wrapped()) {
+    commitWrapped(object);
+    return;
+  }
   Device::commitParameters(object);
 }
 
@@ -251,6 +317,10 @@ void DataParallelDevice::release(ANARIObject object)
 {
   if (object == (ANARIObject)this_device()) {
     Device::release(object); // may delete this device: nothing after it
+    return;
+  }
+  if (wrapped()) {
+    releaseWrapped(object);
     return;
   }
   Device::release(object);
@@ -301,7 +371,13 @@ int DataParallelDevice::getProperty(ANARIObject object,
 {
   if (int answered = getFrameProperty(object, name, type, mem, size))
     return answered;
-  const int found = Device::getProperty(object, name, type, mem, size, mask);
+  anari::DeviceImpl *device =
+      object == (ANARIObject)this_device() ? nullptr : wrapped();
+  const int found =
+      device ? (liveWrapped(object, "anariGetProperty")
+                    ? device->getProperty(object, name, type, mem, size, mask)
+                    : 0)
+             : Device::getProperty(object, name, type, mem, size, mask);
   const bool worldBounds = m_session.usable() && (mask & ANARI_WAIT) && name
                            && std::string(name) == "bounds"
                            && type == ANARI_FLOAT32_BOX3 && mem
@@ -310,9 +386,15 @@ int DataParallelDevice::getProperty(ANARIObject object,
     return found;
   // A stale handle still takes part, so the other processes never wait on
   // this one.
-  Object *target = lookup(object);
-  if (target && target->type() != ANARI_WORLD)
+  if (device) {
+    std::lock_guard lock(m_stateMutex);
+    auto it = m_wrappedObjects.find(object);
+    if (it != m_wrappedObjects.end() && it->second.type != ANARI_WORLD)
+      return found;
+  } else if (Object *target = lookup(object);
+             target && target->type() != ANARI_WORLD) {
     return found;
+  }
   try {
     return collectiveWorldBounds(object, found != 0, (float *)mem) ? 1 : 0;
   } catch (...) {
@@ -329,7 +411,7 @@ int DataParallelDevice::getFrameProperty(ANARIObject object,
   const std::string property = name ? name : "";
   std::lock_guard lock(m_stateMutex);
   auto it = m_frames.find(object);
-  if (it == m_frames.end() || !lookup(object) || !mem)
+  if (it == m_frames.end() || !(m_wrappedDevice || lookup(object)) || !mem)
     return 0;
   if (property == "mpiBytesSent" && type == ANARI_UINT64
       && size >= sizeof(uint64_t)) {
@@ -368,6 +450,14 @@ const void *DataParallelDevice::frameBufferMap(ANARIFrame frame,
         return assembled->second.pixels.data();
       }
     }
+  }
+  if (anari::DeviceImpl *device = wrapped()) {
+    if (!liveWrapped(frame, "anariMapFrame")) {
+      *width = *height = 0;
+      *pixelType = ANARI_UNKNOWN;
+      return nullptr;
+    }
+    return device->frameBufferMap(frame, channel, width, height, pixelType);
   }
   return Device::frameBufferMap(frame, channel, width, height, pixelType);
 }
@@ -437,6 +527,10 @@ FrameDescriptor DataParallelDevice::describe(
 
 void DataParallelDevice::renderFrame(ANARIFrame handle)
 try {
+  if (wrapped()) {
+    renderWrapped(handle);
+    return;
+  }
   if (!m_session.usable()) {
     Device::renderFrame(handle);
     return;
@@ -525,8 +619,12 @@ void DataParallelDevice::renderComposited(
   DepthCompositor compositor(communicator, state.width, state.height);
   CompositedImage image = compositor.composite(local.color, local.depth);
   const bool rankZero = !image.color.empty();
-  if (rankZero && frame.renderer())
-    addBackground(*frame.renderer(), state.width, state.height, image.color);
+  if (rankZero && frame.renderer()) {
+    const Renderer &renderer = *frame.renderer();
+    addBackground(state.width, image.color, [&](uint32_t x, uint32_t y) {
+      return renderer.background(x, y, state.width, state.height);
+    });
+  }
   std::map<std::string, MappedChannel> assembled;
   for (const char *name : kChannelNames) {
     const ANARIDataType type = frame.channelType(name);

@@ -1,7 +1,10 @@
 // The prism_mpi device (KHR_DATA_PARALLEL_MPI): the prism device, with
 // anariRenderFrame, waiting world bounds queries and frame mapping made
 // collective over each frame's MPI communicator. Everything else (objects,
-// parameters, local rendering) is the prism device's, unchanged.
+// parameters, local rendering) is the prism device's, unchanged -- or, with
+// the device parameter `wrappedLibrary`, another library's device, to which
+// every object call is forwarded and whose frames are composited
+// (PassThrough.cpp).
 #pragma once
 
 #include "FrameAgreement.h"
@@ -10,9 +13,12 @@
 #include "Rendezvous.h"
 
 #include "Device.h"
+#include "LoadedLibrary.h"
+#include "math/Vec.h"
 
 #include <mpi.h>
 
+#include <atomic>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -33,28 +39,94 @@ class DataParallelDevice : public prism::Device
   explicit DataParallelDevice(ANARILibrary library);
   ~DataParallelDevice() override;
 
-  ANARIFrame newFrame() override;
+  ANARIArray1D newArray1D(const void *appMemory,
+      ANARIMemoryDeleter deleter,
+      const void *userData,
+      ANARIDataType elementType,
+      uint64_t numItems1) override;
+  ANARIArray2D newArray2D(const void *appMemory,
+      ANARIMemoryDeleter deleter,
+      const void *userData,
+      ANARIDataType elementType,
+      uint64_t numItems1,
+      uint64_t numItems2) override;
+  ANARIArray3D newArray3D(const void *appMemory,
+      ANARIMemoryDeleter deleter,
+      const void *userData,
+      ANARIDataType elementType,
+      uint64_t numItems1,
+      uint64_t numItems2,
+      uint64_t numItems3) override;
+  ANARIGeometry newGeometry(const char *subtype) override;
+  ANARIMaterial newMaterial(const char *subtype) override;
+  ANARISampler newSampler(const char *subtype) override;
+  ANARISurface newSurface() override;
+  ANARISpatialField newSpatialField(const char *subtype) override;
+  ANARIVolume newVolume(const char *subtype) override;
+  ANARILight newLight(const char *subtype) override;
+  ANARIGroup newGroup() override;
+  ANARIInstance newInstance(const char *subtype) override;
   ANARIWorld newWorld() override;
+  ANARICamera newCamera(const char *subtype) override;
+  ANARIRenderer newRenderer(const char *subtype) override;
+  ANARIFrame newFrame() override;
+  ANARIObject newObject(const char *objectType, const char *subtype) override;
   void setParameter(ANARIObject object,
       const char *name,
       ANARIDataType type,
       const void *mem) override;
   void unsetParameter(ANARIObject object, const char *name) override;
   void unsetAllParameters(ANARIObject object) override;
+  void *mapParameterArray1D(ANARIObject object,
+      const char *name,
+      ANARIDataType elementType,
+      uint64_t numElements1,
+      uint64_t *elementStride) override;
+  void *mapParameterArray2D(ANARIObject object,
+      const char *name,
+      ANARIDataType elementType,
+      uint64_t numElements1,
+      uint64_t numElements2,
+      uint64_t *elementStride) override;
+  void *mapParameterArray3D(ANARIObject object,
+      const char *name,
+      ANARIDataType elementType,
+      uint64_t numElements1,
+      uint64_t numElements2,
+      uint64_t numElements3,
+      uint64_t *elementStride) override;
+  void unmapParameterArray(ANARIObject object, const char *name) override;
   void commitParameters(ANARIObject object) override;
   void release(ANARIObject object) override;
+  void retain(ANARIObject object) override;
+  void *mapArray(ANARIArray array) override;
+  void unmapArray(ANARIArray array) override;
   int getProperty(ANARIObject object,
       const char *name,
       ANARIDataType type,
       void *mem,
       uint64_t size,
       ANARIWaitMask mask) override;
+  const char **getObjectSubtypes(ANARIDataType objectType) override;
+  const void *getObjectInfo(ANARIDataType objectType,
+      const char *objectSubtype,
+      const char *infoName,
+      ANARIDataType infoType) override;
+  const void *getParameterInfo(ANARIDataType objectType,
+      const char *objectSubtype,
+      const char *parameterName,
+      ANARIDataType parameterType,
+      const char *infoName,
+      ANARIDataType infoType) override;
   const void *frameBufferMap(ANARIFrame frame,
       const char *channel,
       uint32_t *width,
       uint32_t *height,
       ANARIDataType *pixelType) override;
+  void frameBufferUnmap(ANARIFrame frame, const char *channel) override;
   void renderFrame(ANARIFrame frame) override;
+  int frameReady(ANARIFrame frame, ANARIWaitMask mask) override;
+  void discardFrame(ANARIFrame frame) override;
   std::unique_ptr<RayTransport> transportFor(const World &world) override;
 
  private:
@@ -71,8 +143,22 @@ class DataParallelDevice : public prism::Device
     ANARIDataType type{ANARI_UNKNOWN};
     std::vector<unsigned char> pixels;
   };
+  // What the application set on a frame of the wrapped device that the
+  // wrapped frame sees otherwise (it always renders linear color and depth).
+  struct WrappedFrameParameters
+  {
+    uint32_t width{0};
+    uint32_t height{0};
+    // The application's ANARIDataType of each of kChannelNames.
+    ANARIDataType channelTypes[kChannelCount]{};
+    ANARIObject renderer{nullptr};
+    bool world{false};
+    bool camera{false};
+  };
   struct FrameState
   {
+    WrappedFrameParameters staged;    // wrapped device only
+    WrappedFrameParameters committed; // wrapped device only
     uint64_t index{0};
     uint64_t renders{0};
     CommunicatorParameter communicator;
@@ -84,6 +170,48 @@ class DataParallelDevice : public prism::Device
   };
 
   void reportBadDeviceParameter(const std::string &message);
+  // The wrapped device, chosen (loaded, or the built-in core: NULL) at the
+  // first call that creates an object; the choice never changes.
+  anari::DeviceImpl *wrapped();
+  // Whether `wrappedLibrary` may still change (no object was created yet).
+  bool wrapOpen() const
+  {
+    return !m_wrapChosen.load();
+  }
+  void chooseWrapped();
+  // Whether `object` is a live handle of the wrapped device the
+  // application holds; if not, reports it for `call`.
+  bool liveWrapped(ANARIObject object, const char *call);
+  void setWrapParameter(
+      const std::string &name, ANARIDataType type, const void *mem);
+  // A device parameter of the application that is not this device's own:
+  // the wrapped device gets it too (kept until the device is chosen).
+  void passDeviceParameter(
+      const std::string &name, ANARIDataType type, const void *mem);
+  // Records a handle the wrapped device created, as `type`.
+  template <typename T>
+  T created(T handle, ANARIDataType type)
+  {
+    if (handle) {
+      std::lock_guard lock(m_stateMutex);
+      m_wrappedObjects[(ANARIObject)handle] = WrappedObject{type, 1};
+    }
+    return handle;
+  }
+  // Frame and renderer parameters the wrapped device sees otherwise;
+  // true when the call is done.
+  bool setWrappedParameter(ANARIObject object,
+      const std::string &name,
+      ANARIDataType type,
+      const void *mem);
+  bool unsetWrappedParameter(ANARIObject object, const std::string &name);
+  void unsetAllWrappedParameters(ANARIObject object);
+  void commitWrapped(ANARIObject object);
+  void releaseWrapped(ANARIObject object);
+  FrameDescriptor describeWrapped(const FrameState &state) const;
+  void renderWrapped(ANARIFrame handle);
+  void renderWrappedComposited(
+      ANARIFrame handle, FrameState &state, MPI_Comm communicator);
   void setMode(ANARIDataType type, const void *mem);
   void setTimeout(ANARIDataType type, const void *mem);
   void setThreads(ANARIDataType type, const void *mem);
@@ -137,6 +265,40 @@ class DataParallelDevice : public prism::Device
   std::mutex m_stateMutex; // guards the maps below
   std::map<ANARIObject, FrameState> m_frames;
   std::map<ANARIObject, CommunicatorParameter> m_worlds;
+
+  // wrappedLibrary / wrappedDevice (PassThrough.cpp).
+  std::string m_wrappedSpec; // empty: the built-in core
+  std::string m_wrappedSubtype{"default"};
+  bool m_modeExplicit{false}; // `mode` set by parameter or environment
+  bool m_wrappedModeWarned{false};
+  std::mutex m_wrapMutex; // guards the choice and the staged parameters
+  std::atomic<bool> m_wrapChosen{false};
+  std::shared_ptr<frontend::LoadedLibrary> m_wrappedLibrary;
+  anari::DeviceImpl *m_wrappedDevice{nullptr};
+  struct DeviceParameter
+  {
+    std::string name;
+    ANARIDataType type{ANARI_UNKNOWN};
+    std::vector<unsigned char> value; // a string's characters and a NUL
+  };
+  std::vector<DeviceParameter> m_stagedDeviceParameters;
+  // Every handle the wrapped device gave the application (guarded by
+  // m_stateMutex), with its type and the application's references.
+  struct WrappedObject
+  {
+    ANARIDataType type{ANARI_OBJECT};
+    int64_t references{1};
+  };
+  std::map<ANARIObject, WrappedObject> m_wrappedObjects;
+  // A renderer of the wrapped device renders with a transparent background;
+  // rank 0 adds the application's under the composite.
+  struct WrappedRenderer
+  {
+    std::string subtype;
+    float4 stagedBackground{0.f, 0.f, 0.f, 1.f};
+    float4 background{0.f, 0.f, 0.f, 1.f}; // committed
+  };
+  std::map<ANARIObject, WrappedRenderer> m_wrappedRenderers;
 };
 
 } // namespace prism::mpi

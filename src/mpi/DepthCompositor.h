@@ -65,4 +65,24 @@ class DepthCompositor
   mutable uint64_t m_bytesSent{0};
 };
 
+// Adds a background under composited premultiplied color (the processes
+// rendered without it, so it is added once, behind everything);
+// `backgroundAt(x, y)` is the background at pixel (x, y) of `width`-pixel
+// rows.
+template <typename BackgroundAt>
+void addBackground(
+    uint32_t width, std::vector<float4> &color, BackgroundAt backgroundAt)
+{
+  for (size_t i = 0; i < color.size(); i++) {
+    const float4 background =
+        backgroundAt(uint32_t(i % width), uint32_t(i / width));
+    float4 &c = color[i];
+    const float rest = 1.f - c.w;
+    c = float4{c.x + rest * background.x,
+        c.y + rest * background.y,
+        c.z + rest * background.z,
+        c.w + rest * background.w};
+  }
+}
+
 } // namespace prism::mpi

@@ -392,7 +392,8 @@ void compositeColorOnly(ANARIDevice device,
 void compositeOn(MPI_Comm communicator,
     uint32_t seed,
     const std::string &label,
-    int holders = 0)
+    int holders = 0,
+    const char *wrappedLibrary = nullptr)
 {
   int rank = 0, ranks = 1;
   MPI_Comm_rank(communicator, &rank);
@@ -406,6 +407,13 @@ void compositeOn(MPI_Comm communicator,
       return;
     const char *mode = "composite";
     anariSetParameter(mpi.device, mpi.device, "mode", ANARI_STRING, mode);
+    if (wrappedLibrary) {
+      anariSetParameter(mpi.device,
+          mpi.device,
+          "wrappedLibrary",
+          ANARI_STRING,
+          wrappedLibrary);
+    }
     anariCommitParameters(mpi.device, mpi.device);
     for (const float *eye : {kEyeA, kEyeB}) {
       MPI_Comm comm = communicator;
@@ -841,6 +849,269 @@ void scenarioComposite()
   const int ranks = worldRankAndSize().second;
   if (ranks > 1)
     compositeOn(MPI_COMM_WORLD, 8, "composite, last rank empty", ranks - 1);
+}
+
+// Rank 0's channels of two renders, bit for bit; the number of pixels that
+// differ in any channel.
+size_t differingChannels(const Image &a, const Image &b)
+{
+  if (a.color.size() != b.color.size() || a.depth.size() != b.depth.size()
+      || a.normal.size() != b.normal.size()
+      || a.albedo.size() != b.albedo.size())
+    return ~size_t(0);
+  size_t differing = 0;
+  for (size_t i = 0; i < a.depth.size(); i++) {
+    differing +=
+        std::memcmp(&a.color[4 * i], &b.color[4 * i], 4 * sizeof(float)) != 0
+        || std::memcmp(&a.depth[i], &b.depth[i], sizeof(float)) != 0
+        || std::memcmp(&a.normal[3 * i], &b.normal[3 * i], 3 * sizeof(float))
+               != 0
+        || std::memcmp(&a.albedo[3 * i], &b.albedo[3 * i], 3 * sizeof(float))
+               != 0;
+  }
+  return differing;
+}
+
+// A prism_mpi device whose objects live on a device of `wrappedLibrary`,
+// chosen before any object (NULL: the built-in core), in `mode`.
+struct WrappingDevice : Device
+{
+  WrappingDevice(Status &status, const char *wrappedLibrary, const char *mode)
+      : Device("prism_mpi", status)
+  {
+    if (!device)
+      return;
+    anariSetParameter(device, device, "mode", ANARI_STRING, mode);
+    if (wrappedLibrary) {
+      anariSetParameter(
+          device, device, "wrappedLibrary", ANARI_STRING, wrappedLibrary);
+    }
+    anariCommitParameters(device, device);
+  }
+};
+
+// wrappedLibrary "prism": the plain prism library, loaded by prism_mpi as
+// any other library, renders each process's boxes; rank 0's composite
+// equals the single-process render (depth, raycast color, normal, albedo,
+// bytes sent, bounds) and the built-in composite mode's image bit for bit.
+void scenarioWrapped()
+{
+  const int ranks = worldRankAndSize().second;
+  compositeOn(MPI_COMM_WORLD, 7, "wrapped prism", 0, "prism");
+  if (ranks > 1) {
+    compositeOn(MPI_COMM_WORLD,
+        8,
+        "wrapped prism, last rank empty",
+        ranks - 1,
+        "prism");
+  }
+  const int rank = worldRankAndSize().first;
+  const std::vector<int> owners = boxOwners(ranks, 9);
+  MPI_Comm comm = MPI_COMM_WORLD;
+  Status status;
+  Render builtIn, passedThrough;
+  {
+    WrappingDevice mpi(status, nullptr, "composite");
+    builtIn =
+        renderBoxes(mpi.device, boxesOf(owners, rank), kEyeA, "raycast", &comm);
+  }
+  {
+    WrappingDevice mpi(status, "prism", "composite");
+    passedThrough =
+        renderBoxes(mpi.device, boxesOf(owners, rank), kEyeA, "raycast", &comm);
+  }
+  if (rank == 0) {
+    const size_t differing =
+        differingChannels(builtIn.image, passedThrough.image);
+    check(differing == 0 && !builtIn.image.depth.empty(),
+        "wrapped prism: rank 0's channels equal the built-in composite"
+        " mode's ("
+            + std::to_string(differing) + " pixels differ)");
+    check(builtIn.bytesSent == passedThrough.bytesSent,
+        "wrapped prism: the same bytes are sent as by the built-in"
+        " composite mode");
+  }
+  for (const std::string &e : status.take())
+    check(false, "wrapped prism: unexpected error: " + e);
+
+  // Another background and an sRGB color channel: the application's
+  // background goes under the composite once, in the type it asked for.
+  {
+    WrappingDevice mpi(status, "prism", "composite");
+    WrappingDevice core(status, nullptr, "composite");
+    std::vector<std::vector<uint8_t>> images;
+    for (ANARIDevice d : {mpi.device, core.device}) {
+      ANARIWorld world = newBoxesWorld(d, boxesOf(owners, rank));
+      ANARICamera camera = newCamera(d, kEyeB, 1.f);
+      ANARIRenderer renderer = newRenderer(d, "raycast");
+      const float background[3] = {0.9f, 0.5f, 0.1f};
+      anariSetParameter(
+          d, renderer, "background", ANARI_FLOAT32_VEC3, background);
+      anariCommitParameters(d, renderer);
+      ANARIFrame frame = newFrame(d, world, camera, renderer, kSize, kSize);
+      const ANARIDataType srgb = ANARI_UFIXED8_RGBA_SRGB;
+      anariSetParameter(d, frame, "channel.color", ANARI_DATA_TYPE, &srgb);
+      anariSetParameter(d, frame, "mpiCommunicator", ANARI_VOID_POINTER, &comm);
+      anariCommitParameters(d, frame);
+      anariRenderFrame(d, frame);
+      anariFrameReady(d, frame, ANARI_WAIT);
+      uint32_t width = 0, height = 0;
+      ANARIDataType type = ANARI_UNKNOWN;
+      const auto *pixels = (const uint8_t *)anariMapFrame(
+          d, frame, "channel.color", &width, &height, &type);
+      std::vector<uint8_t> image;
+      if (pixels && type == ANARI_UFIXED8_RGBA_SRGB && width == kSize
+          && height == kSize)
+        image.assign(pixels, pixels + size_t(kSize) * kSize * 4);
+      images.push_back(image);
+      anariUnmapFrame(d, frame, "channel.color");
+      anariRelease(d, frame);
+      anariRelease(d, renderer);
+      anariRelease(d, camera);
+      anariRelease(d, world);
+    }
+    check(images[0].size() == size_t(kSize) * kSize * 4,
+        "wrapped prism: every rank maps channel.color in its sRGB type");
+    if (rank == 0) {
+      size_t backgroundPixels = 0;
+      for (size_t i = 0; i + 3 < images[0].size(); i += 4) {
+        backgroundPixels += images[0][i] == 243 && images[0][i + 1] == 188
+                            && images[0][i + 2] == 89
+                            && images[0][i + 3] == 255;
+      }
+      check(images[0] == images[1] && backgroundPixels > 0,
+          "wrapped prism: an sRGB frame with an RGB background equals the"
+          " built-in composite mode's ("
+              + std::to_string(backgroundPixels)
+              + " pixels show the background)");
+    }
+  }
+  for (const std::string &e : status.take())
+    check(false, "wrapped prism, sRGB: unexpected error: " + e);
+
+  // Another mode is composited all the same, with one warning.
+  {
+    WrappingDevice mpi(status, "prism", "pathtracer");
+    Render render;
+    for (int i = 0; i < 2; i++) {
+      render = renderBoxes(
+          mpi.device, boxesOf(owners, rank), kEyeA, "raycast", &comm);
+    }
+    const std::vector<std::string> warnings =
+        status.take(ANARI_SEVERITY_WARNING);
+    check(warnings.size() == 1
+              && warnings[0].find("mode 'pathtracer'") != std::string::npos
+              && warnings[0].find("composited instead") != std::string::npos,
+        "wrapped prism in pathtracer mode: composited, warned about once");
+    if (rank == 0) {
+      check(differingChannels(render.image, passedThrough.image) == 0,
+          "wrapped prism in pathtracer mode: the composite mode's image");
+    }
+  }
+}
+
+// A wrappedLibrary that cannot be loaded, a device subtype the library
+// does not have, and a wrappedLibrary set too late are reported; the
+// device renders with the built-in core, correctly.
+void scenarioWrappedErrors()
+{
+  const auto [rank, ranks] = worldRankAndSize();
+  const std::vector<int> owners = boxOwners(ranks, 10);
+  MPI_Comm comm = MPI_COMM_WORLD;
+  Status status;
+  {
+    WrappingDevice mpi(status, "no_such_library", "composite");
+    check(status.take().empty(), "nothing is reported before the first object");
+    const Render render =
+        renderBoxes(mpi.device, boxesOf(owners, rank), kEyeA, "raycast", &comm);
+    check(oneErrorMentioning(status,
+              {"cannot load wrappedLibrary 'no_such_library'",
+                  "built-in prism core renders instead"}),
+        "an unloadable wrappedLibrary is reported");
+    if (rank == 0)
+      checkComposite(render, owners, kEyeA, "after an unloadable library");
+  }
+  {
+    WrappingDevice mpi(status, "prism", "composite");
+    anariSetParameter(
+        mpi.device, mpi.device, "wrappedDevice", ANARI_STRING, "nonsense");
+    const Render render =
+        renderBoxes(mpi.device, boxesOf(owners, rank), kEyeB, "raycast", &comm);
+    check(oneErrorMentioning(status,
+              {"wrappedLibrary 'prism' has no device of subtype 'nonsense'"}),
+        "an unknown wrappedDevice is reported");
+    if (rank == 0)
+      checkComposite(render, owners, kEyeB, "after an unknown device subtype");
+  }
+  {
+    // Released and foreign handles are reported, never forwarded.
+    WrappingDevice mpi(status, "prism", "composite");
+    ANARICamera camera = anariNewCamera(mpi.device, "perspective");
+    ANARIFrame frame = anariNewFrame(mpi.device);
+    anariRelease(mpi.device, camera);
+    anariCommitParameters(mpi.device, camera);
+    check(oneErrorMentioning(status, {"anariCommitParameters", "no live"}),
+        "committing a released object is reported");
+    anariSetParameter(mpi.device, frame, "camera", ANARI_CAMERA, &camera);
+    check(oneErrorMentioning(status, {"anariSetParameter (its value)"}),
+        "a released object as a parameter value is reported");
+    uint32_t width = 1, height = 1;
+    ANARIDataType type = ANARI_FLOAT32;
+    check(!anariMapFrame(mpi.device,
+              (ANARIFrame)camera,
+              "channel.color",
+              &width,
+              &height,
+              &type)
+              && width == 0 && type == ANARI_UNKNOWN,
+        "mapping a released handle gives nothing");
+    check(oneErrorMentioning(status, {"anariMapFrame", "no live"}),
+        "mapping a released handle is reported");
+    anariRelease(mpi.device, frame);
+    anariRelease(mpi.device, frame);
+    check(oneErrorMentioning(status, {"anariRelease", "no live"}),
+        "releasing twice is reported");
+  }
+  {
+    Device mpi("prism_mpi", status);
+    anariSetParameter(
+        mpi.device, mpi.device, "wrappedLibrary", ANARI_STRING, "prism_mpi");
+    const int notAString = 3;
+    anariSetParameter(
+        mpi.device, mpi.device, "wrappedDevice", ANARI_INT32, &notAString);
+    check(oneErrorMentioning(status, {"wrappedDevice", "STRING", "INT32"}),
+        "a wrappedDevice that is no string is reported");
+    ANARICamera camera = anariNewCamera(mpi.device, "perspective");
+    check(oneErrorMentioning(status, {"cannot wrap library 'prism_mpi'"}),
+        "prism_mpi does not wrap itself");
+    anariSetParameter(
+        mpi.device, mpi.device, "wrappedLibrary", ANARI_STRING, "prism");
+    check(oneErrorMentioning(status,
+              {"'wrappedLibrary' must be set before", "built-in prism core"}),
+        "a wrappedLibrary set after the first object is reported");
+    anariRelease(mpi.device, camera);
+  }
+  check(
+      status.take(ANARI_SEVERITY_WARNING).empty(), "nothing else is reported");
+}
+
+// PRISM_MPI_WRAPPED_LIBRARY=prism in the environment (set by ctest) wraps
+// prism for a program that sets nothing; the composite is right.
+void scenarioWrappedEnvironment()
+{
+  const auto [rank, ranks] = worldRankAndSize();
+  const std::vector<int> owners = boxOwners(ranks, 12);
+  MPI_Comm comm = MPI_COMM_WORLD;
+  Status status;
+  Device mpi("prism_mpi", status);
+  const Render render =
+      renderBoxes(mpi.device, boxesOf(owners, rank), kEyeB, "raycast", &comm);
+  if (rank == 0)
+    checkComposite(render, owners, kEyeB, "wrapped from the environment");
+  anariSetParameter(
+      mpi.device, mpi.device, "wrappedLibrary", ANARI_STRING, "prism");
+  check(oneErrorMentioning(status, {"render with library 'prism'"}),
+      "the environment's wrappedLibrary is in use");
 }
 
 // Two groups of processes render different scenes at once, each on its own
@@ -1296,6 +1567,12 @@ int main(int argc, char **argv)
     scenarioAbsent();
   else if (scenario == "parameters")
     scenarioParameters();
+  else if (scenario == "wrapped")
+    scenarioWrapped();
+  else if (scenario == "wrapped-errors")
+    scenarioWrappedErrors();
+  else if (scenario == "wrapped-environment")
+    scenarioWrappedEnvironment();
   else
     check(false, "unknown scenario '" + scenario + "'");
   int failures = g_failures, total = 0;

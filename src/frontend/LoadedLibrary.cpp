@@ -1,17 +1,16 @@
-#include "WrappedLibrary.h"
+#include "LoadedLibrary.h"
 
 #include <dlfcn.h>
 
-#include <cstdlib>
-
-namespace prism::debug {
+namespace prism::frontend {
 namespace {
 
-// The folder holding the debug layer: device libraries usually sit beside it.
-std::string layerDirectory()
+// The folder holding the library this code is linked into: device
+// libraries usually sit beside it.
+std::string ownDirectory()
 {
   Dl_info info{};
-  if (!dladdr((void *)&layerDirectory, &info) || !info.dli_fname)
+  if (!dladdr((void *)&ownDirectory, &info) || !info.dli_fname)
     return {};
   std::string path = info.dli_fname;
   auto slash = path.rfind('/');
@@ -20,23 +19,10 @@ std::string layerDirectory()
 
 } // namespace
 
-std::string defaultWrappedLibrary()
-{
-  const char *name = std::getenv("ANARI_DEBUG_WRAPPED_LIBRARY");
-  return name && *name ? name : "prism";
-}
-
-std::string defaultWrappedDevice(const char *requested)
-{
-  const char *subtype = std::getenv("ANARI_DEBUG_WRAPPED_DEVICE");
-  if (subtype && *subtype)
-    return subtype;
-  return requested ? requested : "default";
-}
-
-std::shared_ptr<WrappedLibrary> WrappedLibrary::load(const std::string &spec,
+std::shared_ptr<LoadedLibrary> LoadedLibrary::load(const std::string &spec,
     ANARIStatusCallback callback,
     const void *userPtr,
+    const std::string &self,
     std::string &error)
 {
   std::string name = spec;
@@ -47,20 +33,22 @@ std::shared_ptr<WrappedLibrary> WrappedLibrary::load(const std::string &spec,
     if (!folder.empty() && folder.back() != '/')
       folder += '/';
   }
-  if (name.empty() || name == "debug") {
-    // Wrapping the layer in itself would recurse without end.
+  if (name.empty() || name == self) {
+    // A library loading itself would recurse without end.
     error = "cannot wrap library '" + name + "'";
     return nullptr;
   }
   const std::string file = "libanari_library_" + name + ".so";
   void *dlHandle = anari::loadANARILibrary(folder + file);
   if (!dlHandle) {
-    error = dlerror();
-    const std::string own = layerDirectory();
+    const char *reason = dlerror();
+    error = reason ? reason : "not found";
+    const std::string own = ownDirectory();
     if (!own.empty() && own != folder)
       dlHandle = anari::loadANARILibrary(own + file);
     if (!dlHandle) {
-      error += std::string("; ") + dlerror();
+      reason = dlerror();
+      error += std::string("; ") + (reason ? reason : "not found");
       return nullptr;
     }
   }
@@ -77,18 +65,18 @@ std::shared_ptr<WrappedLibrary> WrappedLibrary::load(const std::string &spec,
     anari::freeLibrary(dlHandle);
     return nullptr;
   }
-  std::shared_ptr<WrappedLibrary> out(new WrappedLibrary);
+  std::shared_ptr<LoadedLibrary> out(new LoadedLibrary);
   out->m_name = name;
   out->m_dlHandle = dlHandle;
   out->m_library = library;
   return out;
 }
 
-WrappedLibrary::~WrappedLibrary()
+LoadedLibrary::~LoadedLibrary()
 {
   delete m_library;
   // NOTE: closing before the delete would unmap the destructor's code.
   anari::freeLibrary(m_dlHandle);
 }
 
-} // namespace prism::debug
+} // namespace prism::frontend
