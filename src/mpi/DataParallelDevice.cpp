@@ -607,10 +607,7 @@ try {
 void DataParallelDevice::renderComposited(
     ANARIFrame handle, Frame &frame, FrameState &state, MPI_Comm communicator)
 {
-  frame.shareTileRows(0, 1);
-  frame.keepDepth(true);
-  frame.omitBackground(true);
-  frame.renderInLockstep(false);
+  frame.share({.keepDepth = true, .omitBackground = true});
   if (World *world = frame.world())
     world->keepOwnEmitters(); // lit by its own process only
   Device::renderFrame(handle);
@@ -671,10 +668,7 @@ void DataParallelDevice::renderReplicated(
   MPI_Comm_rank(communicator, &rank);
   MPI_Comm_size(communicator, &ranks);
   uint64_t bytesSent = 0;
-  frame.shareTileRows(uint32_t(rank), uint32_t(ranks));
-  frame.keepDepth(false);
-  frame.omitBackground(false);
-  frame.renderInLockstep(false);
+  frame.share({.tileRowPart = uint32_t(rank), .tileRowParts = uint32_t(ranks)});
   if (World *world = frame.world())
     world->keepOwnEmitters(); // every process holds every emitter
   Device::renderFrame(handle);
@@ -757,10 +751,7 @@ void DataParallelDevice::renderPathTraced(
   // Every process renders every pixel: the paths, replicated, advance in
   // lockstep and end the same everywhere, so rank 0's own buffers are the
   // image.
-  frame.shareTileRows(0, 1);
-  frame.keepDepth(false);
-  frame.omitBackground(false);
-  frame.renderInLockstep(true);
+  frame.share({.lockstep = true});
   uint64_t bytesSent = 0;
   // Any process may shade any path, so each samples every process's
   // emissive surfaces (sent again only when a world placed them anew).

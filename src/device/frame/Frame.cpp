@@ -201,7 +201,7 @@ void Frame::render()
   // The denoiser is guided by depth, normal and albedo, mapped or not.
   m_denoise = m_renderer->denoise();
   const FrameBuffers::Needs needs{
-      m_denoise || m_keepDepth || m_channels.count("channel.depth") > 0,
+      m_denoise || m_sharing.keepDepth || m_channels.count("channel.depth") > 0,
       m_denoise || m_channels.count("channel.normal") > 0,
       m_denoise || m_channels.count("channel.albedo") > 0,
       m_channels.count("channel.primitiveId") > 0,
@@ -231,7 +231,7 @@ void Frame::render()
       m_width,
       m_height,
       m_sampleIndex,
-      m_omitBackground};
+      m_sharing.omitBackground};
   m_renderer->beginFrame(context);
   // Each tile is rendered, folded into the accumulation and converted to
   // the channels' types while it is still in cache.
@@ -239,7 +239,7 @@ void Frame::render()
     if (m_cancel)
       return;
     const uint32_t tx = index % tilesX, ty = index / tilesX;
-    if (ty % m_tileRowParts != m_tileRowPart) {
+    if (ty % m_sharing.tileRowParts != m_sharing.tileRowPart) {
       m_tilesDone.fetch_add(1, std::memory_order_release);
       return; // another process renders this row of tiles
     }
@@ -253,7 +253,7 @@ void Frame::render()
     resolve(tile);
     m_tilesDone.fetch_add(1, std::memory_order_release);
   };
-  if (m_lockstep) {
+  if (m_sharing.lockstep) {
     // A row of tiles at a time, in order: one wavefront large enough to be
     // traced and shaded on all the process's threads between two of the
     // transport's collectives (and fewer, larger messages). A process
@@ -463,35 +463,19 @@ const void *Frame::map(const char *channel,
 
 void Frame::unmap(const char *) {}
 
-void Frame::shareTileRows(uint32_t part, uint32_t parts)
+void Frame::share(const Sharing &sharing)
 {
   waitUntilDone();
-  m_tileRowParts = parts > 0 ? parts : 1;
-  m_tileRowPart = part < m_tileRowParts ? part : 0;
+  m_sharing = sharing;
+  m_sharing.tileRowParts = std::max(sharing.tileRowParts, 1u);
+  if (m_sharing.tileRowPart >= m_sharing.tileRowParts)
+    m_sharing.tileRowPart = 0;
 }
 
 ANARIDataType Frame::channelType(const std::string &channel) const
 {
   auto it = m_channels.find(channel);
   return it == m_channels.end() ? ANARI_UNKNOWN : it->second.type;
-}
-
-void Frame::keepDepth(bool keep)
-{
-  waitUntilDone();
-  m_keepDepth = keep;
-}
-
-void Frame::omitBackground(bool omit)
-{
-  waitUntilDone();
-  m_omitBackground = omit;
-}
-
-void Frame::renderInLockstep(bool lockstep)
-{
-  waitUntilDone();
-  m_lockstep = lockstep;
 }
 
 uint32_t Frame::nextSampleIndex() const

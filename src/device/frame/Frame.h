@@ -69,17 +69,25 @@ class Frame : public Object
   {
     return m_world;
   }
-  // What a data-parallel device asks of the next renders: only the tile
-  // rows whose index modulo `parts` is `part`, and the depth buffer even
-  // when channel.depth is not enabled (compositing sorts by it).
-  void shareTileRows(uint32_t part, uint32_t parts);
-  void keepDepth(bool keep);
-  // Renders with a transparent background, for a device that composites
-  // the processes' pixels and adds the background itself.
-  void omitBackground(bool omit);
-  // Renders tile after tile, in the same order on every process and on one
-  // thread, so the collectives of a transport line up across processes.
-  void renderInLockstep(bool lockstep);
+  // How a data-parallel device shares the next renders among processes
+  // (the default: one process renders the whole frame alone).
+  struct Sharing
+  {
+    // Only the tile rows whose index modulo `tileRowParts` is
+    // `tileRowPart`.
+    uint32_t tileRowPart{0};
+    uint32_t tileRowParts{1};
+    // The depth buffer even when channel.depth is not enabled (compositing
+    // sorts by it).
+    bool keepDepth{false};
+    // A transparent background, for a device that composites the
+    // processes' pixels and adds the background itself.
+    bool omitBackground{false};
+    // Rows of tiles rendered one after another, in the same order on
+    // every process, so the collectives of a transport line up.
+    bool lockstep{false};
+  };
+  void share(const Sharing &sharing);
   // The sample the next render draws (0 when accumulation restarts: off,
   // or something the frame shows changed), and a restart forced, so
   // processes rendering in lockstep start their paths from the same one
@@ -141,11 +149,7 @@ class Frame : public Object
   const void *m_completionUserPtr{nullptr};
 
   FrameBuffers m_buffers;
-  uint32_t m_tileRowPart{0};
-  uint32_t m_tileRowParts{1};
-  bool m_keepDepth{false};
-  bool m_omitBackground{false};
-  bool m_lockstep{false};
+  Sharing m_sharing;
   bool m_accumulation{false};
   uint32_t m_sampleIndex{0}; // of the render in flight
   uint32_t m_samplesDone{0}; // accumulated into m_accumulated
