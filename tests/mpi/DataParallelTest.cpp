@@ -78,12 +78,20 @@ bool oneErrorMentioning(Status &status,
   return all;
 }
 
-std::pair<int, int> worldRankAndSize()
+// This process's rank in MPI_COMM_WORLD, and its size. (Plain ints, not
+// a structured binding: clang 14 cannot capture those in lambdas.)
+int worldRank()
 {
-  int rank = 0, ranks = 1;
+  int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  return rank;
+}
+
+int worldSize()
+{
+  int ranks = 1;
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-  return {rank, ranks};
+  return ranks;
 }
 
 struct Device
@@ -602,7 +610,7 @@ void checkPathTraced(const Render &traced,
 // color differs where shadows cross processes; pathtracer mode has them.
 void compositeShadows(uint32_t seed)
 {
-  const auto [rank, ranks] = worldRankAndSize();
+  const int rank = worldRank(), ranks = worldSize();
   const std::vector<int> owners = boxOwners(ranks, seed);
   const Render composited =
       traceShare(MPI_COMM_WORLD, owners, "composite", "composite shadows");
@@ -655,7 +663,7 @@ void scenarioPathTracer()
 // changes nothing, so no emitters are sent again.
 void emissiveChange(const std::vector<int> &owners, int holder)
 {
-  const auto [rank, ranks] = worldRankAndSize();
+  const int rank = worldRank(), ranks = worldSize();
   Status status;
   Render before, after, again;
   {
@@ -737,7 +745,7 @@ void emissiveChange(const std::vector<int> &owners, int holder)
 // light at infinity by the radius of all the processes' worlds together.
 void scenarioEmissive()
 {
-  const auto [rank, ranks] = worldRankAndSize();
+  const int rank = worldRank(), ranks = worldSize();
   const std::vector<int> owners = boxOwners(ranks, 5);
   const int holder = ranks > 1 ? 1 : 0;
   for (const bool sun : {false, true}) {
@@ -770,7 +778,7 @@ void scenarioEmissive()
 // image of two samples.
 void scenarioAccumulationRestart()
 {
-  const auto [rank, ranks] = worldRankAndSize();
+  const int rank = worldRank(), ranks = worldSize();
   const std::vector<int> owners = boxOwners(ranks, 7);
   Status status;
   Render traced;
@@ -826,7 +834,7 @@ void scenarioAccumulationRestart()
 template <typename Scenario>
 void onHalves(Scenario scenario)
 {
-  const int rank = worldRankAndSize().first;
+  const int rank = worldRank();
   MPI_Comm group;
   MPI_Comm_split(MPI_COMM_WORLD, rank % 2, rank, &group);
   scenario(group, uint32_t(rank % 2));
@@ -846,7 +854,7 @@ void scenarioPathTracerSubcommunicator()
 void scenarioComposite()
 {
   compositeOn(MPI_COMM_WORLD, 7, "composite");
-  const int ranks = worldRankAndSize().second;
+  const int ranks = worldSize();
   if (ranks > 1)
     compositeOn(MPI_COMM_WORLD, 8, "composite, last rank empty", ranks - 1);
 }
@@ -896,7 +904,7 @@ struct WrappingDevice : Device
 // bytes sent, bounds) and the built-in composite mode's image bit for bit.
 void scenarioWrapped()
 {
-  const int ranks = worldRankAndSize().second;
+  const int ranks = worldSize();
   compositeOn(MPI_COMM_WORLD, 7, "wrapped prism", 0, "prism");
   if (ranks > 1) {
     compositeOn(MPI_COMM_WORLD,
@@ -905,7 +913,7 @@ void scenarioWrapped()
         ranks - 1,
         "prism");
   }
-  const int rank = worldRankAndSize().first;
+  const int rank = worldRank();
   const std::vector<int> owners = boxOwners(ranks, 9);
   MPI_Comm comm = MPI_COMM_WORLD;
   Status status;
@@ -1015,7 +1023,7 @@ void scenarioWrapped()
 // device renders with the built-in core, correctly.
 void scenarioWrappedErrors()
 {
-  const auto [rank, ranks] = worldRankAndSize();
+  const int rank = worldRank(), ranks = worldSize();
   const std::vector<int> owners = boxOwners(ranks, 10);
   MPI_Comm comm = MPI_COMM_WORLD;
   Status status;
@@ -1099,7 +1107,7 @@ void scenarioWrappedErrors()
 // prism for a program that sets nothing; the composite is right.
 void scenarioWrappedEnvironment()
 {
-  const auto [rank, ranks] = worldRankAndSize();
+  const int rank = worldRank(), ranks = worldSize();
   const std::vector<int> owners = boxOwners(ranks, 12);
   MPI_Comm comm = MPI_COMM_WORLD;
   Status status;
@@ -1128,7 +1136,7 @@ void scenarioSubcommunicator()
 // processes stay in step for the next, agreeing, render.
 void scenarioMismatch()
 {
-  const auto [rank, ranks] = worldRankAndSize();
+  const int rank = worldRank(), ranks = worldSize();
   const int odd = ranks - 1;
   const std::vector<int> owners = boxOwners(ranks, 3);
   Status status;
@@ -1387,7 +1395,7 @@ void scenarioMismatch()
 // once the device's mpiTimeout passes; the processes then render together.
 void scenarioAbsent()
 {
-  const auto [rank, ranks] = worldRankAndSize();
+  const int rank = worldRank(), ranks = worldSize();
   const int absent = ranks - 1;
   const std::vector<int> owners = boxOwners(ranks, 9);
   Status status;
