@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <mutex>
 
@@ -16,9 +17,33 @@ namespace {
 
 using prism::image::Image;
 
+// How the camera and mesh motion scenes are rendered: samples at t = 0
+// and 1 with the shutter open over [0, 1], the same samples without a
+// shutter range, or a plain value (the pose at t = 0 or t = 1).
+enum class Motion { Shutter, NoShutter, StillOpen, StillClose };
+
 class Render : public NsiTest
 {
  protected:
+  // The image of each Motion of a scene (`scene(context, motion,
+  // output)`), each rendered in a context of its own, reporting nothing.
+  std::map<Motion, Image> everyMotion(
+      const std::function<Image(NSIContext_t, Motion, const std::string &)>
+          &scene)
+  {
+    std::map<Motion, Image> images;
+    for (Motion motion : {Motion::Shutter,
+             Motion::NoShutter,
+             Motion::StillOpen,
+             Motion::StillClose}) {
+      NSIContext_t ctx = beginRender();
+      images[motion] =
+          scene(ctx, motion, path(std::to_string(int(motion)) + ".exr"));
+      NSIEnd(ctx);
+      EXPECT_EQ(m_messages.problems(), "") << int(motion);
+    }
+    return images;
+  }
   Image readImage(const std::string &file)
   {
     auto result = prism::image::read(file);
@@ -664,11 +689,6 @@ bool samePixels(const Image &a, const Image &b)
   return true;
 }
 
-// How the camera and mesh motion scenes are rendered: samples at t = 0
-// and 1 with the shutter open over [0, 1], the same samples without a
-// shutter range, or a plain value (the pose at t = 0 or t = 1).
-enum class Motion { Shutter, NoShutter, StillOpen, StillClose };
-
 // A camera under `cam_xf` moving from x = -2 to x = 2 (samples set
 // latest first) past the square at x = 0: in the image the square moves
 // from x = 2 to x = -2.
@@ -710,17 +730,7 @@ SetAttribute "shape" "nvertices" "int" 1 4 "P" "point" 4 [ )";
 
 TEST_F(Render, CameraMotionSmearsAcrossTheShutter)
 {
-  std::map<Motion, Image> images;
-  for (Motion motion : {Motion::Shutter,
-           Motion::NoShutter,
-           Motion::StillOpen,
-           Motion::StillClose}) {
-    NSIContext_t ctx = beginRender();
-    images[motion] =
-        panningCamera(ctx, motion, path(std::to_string(int(motion)) + ".exr"));
-    NSIEnd(ctx);
-    EXPECT_EQ(m_messages.problems(), "") << int(motion);
-  }
+  std::map<Motion, Image> images = everyMotion(panningCamera);
   expectSmear(images[Motion::Shutter],
       images[Motion::StillOpen],
       images[Motion::StillClose],
@@ -771,17 +781,10 @@ Image deformingMesh(NSIContext_t ctx,
 
 TEST_F(Render, VertexMotionSmearsAcrossTheShutter)
 {
-  std::map<Motion, Image> images;
-  for (Motion motion : {Motion::Shutter,
-           Motion::NoShutter,
-           Motion::StillOpen,
-           Motion::StillClose}) {
-    NSIContext_t ctx = beginRender();
-    images[motion] =
-        deformingMesh(ctx, motion, path(std::to_string(int(motion)) + ".exr"));
-    NSIEnd(ctx);
-    EXPECT_EQ(m_messages.problems(), "") << int(motion);
-  }
+  std::map<Motion, Image> images =
+      everyMotion([](NSIContext_t ctx, Motion motion, const std::string &out) {
+        return deformingMesh(ctx, motion, out);
+      });
   expectSmear(images[Motion::Shutter],
       images[Motion::StillOpen],
       images[Motion::StillClose],

@@ -67,6 +67,23 @@ class ObjectTestFixture : public ::testing::Test
     m_handles.push_back(handle);
     return result;
   }
+  // `handle`, released in TearDown.
+  template <typename T>
+  T keep(T handle)
+  {
+    m_handles.push_back(handle);
+    return handle;
+  }
+  // The handle of a managed 1D array holding a copy of `count` values.
+  ANARIArray1D managedArray(
+      ANARIDataType type, const void *values, uint64_t count)
+  {
+    ANARIArray1D array =
+        keep(m_device.newArray1D(nullptr, nullptr, nullptr, type, count));
+    std::memcpy(m_device.mapArray(array), values, count * anari::sizeOf(type));
+    m_device.unmapArray(array);
+    return array;
+  }
   static void set(
       Object *object, const char *name, ANARIDataType type, const void *mem)
   {

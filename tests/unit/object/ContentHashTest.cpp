@@ -25,21 +25,6 @@ class ContentHashTest : public testing::ObjectTestFixture
     ANARILight light;
   };
 
-  template <typename T>
-  T keep(T handle)
-  {
-    m_handles.push_back(handle);
-    return handle;
-  }
-  ANARIArray1D managedArray(
-      ANARIDataType type, const void *values, uint64_t count)
-  {
-    ANARIArray1D array =
-        keep(m_device.newArray1D(nullptr, nullptr, nullptr, type, count));
-    std::memcpy(m_device.mapArray(array), values, count * anari::sizeOf(type));
-    m_device.unmapArray(array);
-    return array;
-  }
   Scene scene(float3 color, float3 direction = {0.f, -1.f, 0.f})
   {
     Scene s;

@@ -20,21 +20,6 @@ namespace {
 class SharedEmittersTest : public testing::ObjectTestFixture
 {
  protected:
-  template <typename T>
-  T keep(T handle)
-  {
-    m_handles.push_back(handle);
-    return handle;
-  }
-  ANARIArray1D managedArray(
-      ANARIDataType type, const void *values, uint64_t count)
-  {
-    ANARIArray1D array =
-        keep(m_device.newArray1D(nullptr, nullptr, nullptr, type, count));
-    std::memcpy(m_device.mapArray(array), values, count * anari::sizeOf(type));
-    m_device.unmapArray(array);
-    return array;
-  }
   // A glowing triangle placed in the world directly and a directional
   // light.
   ANARIWorld glowingWorld()
