@@ -569,7 +569,7 @@ float3 Bsdf::eval(float3 wo, float3 wi) const
 {
   float3 f;
   float p;
-  evaluate(prepare(wo), wi, f, p);
+  evalAndPdf(wo, wi, f, p);
   return f;
 }
 
@@ -577,13 +577,33 @@ float Bsdf::pdf(float3 wo, float3 wi) const
 {
   float3 f;
   float p;
-  evaluate(prepare(wo), wi, f, p);
+  evalAndPdf(wo, wi, f, p);
   return p;
 }
 
 void Bsdf::evalAndPdf(float3 wo, float3 wi, float3 &f, float &pdf) const
 {
+  if (m_lambertOnly) {
+    evaluateLambert(wo, wi, f, pdf);
+    return;
+  }
   evaluate(prepare(wo), wi, f, pdf);
+}
+
+// What prepare() and evaluate() give a Lambert-only BSDF, without the
+// layers' context: the most common evaluation by far.
+void Bsdf::evaluateLambert(float3 wo, float3 wiIn, float3 &f, float &pdf) const
+{
+  f = {0.f, 0.f, 0.f};
+  pdf = 0.f;
+  if (!(wo.z != 0.f) || !std::isfinite(wo.x + wo.y + wo.z))
+    return;
+  const float sign = wo.z < 0.f ? -1.f : 1.f;
+  const float3 wi{wiIn.x, wiIn.y, wiIn.z * sign};
+  if (!(wi.z > 0.f) || !std::isfinite(wi.x + wi.y + wi.z))
+    return;
+  f = m_baseColor * kInvPi;
+  pdf = wi.z * kInvPi;
 }
 
 namespace {
@@ -654,16 +674,17 @@ BsdfSample Bsdf::sampleInterior(const Context &c, float2 u, float uLobe) const
 
 BsdfSample Bsdf::sample(float3 woIn, float2 u, float uLobe) const
 {
-  const Context c = prepare(woIn);
-  if (!c.valid)
-    return {};
   if (m_lambertOnly) {
+    // As prepare() checks wo, without the layers' context.
+    if (!(woIn.z != 0.f) || !std::isfinite(woIn.x + woIn.y + woIn.z))
+      return {};
+    const float sign = woIn.z < 0.f ? -1.f : 1.f;
     // One lobe sampled exactly by its density: f cos / pdf = baseColor.
     const float3 wi = sampleCosineHemisphere(u);
     if (!(wi.z > 0.f) || maxComponent(m_baseColor) <= 0.f)
       return {};
     BsdfSample s;
-    s.wi = {wi.x, wi.y, wi.z * c.sign};
+    s.wi = {wi.x, wi.y, wi.z * sign};
     s.f = m_baseColor * kInvPi;
     s.pdf = wi.z * kInvPi;
     s.weight = m_baseColor;
@@ -671,6 +692,9 @@ BsdfSample Bsdf::sample(float3 woIn, float2 u, float uLobe) const
     s.flags = kBsdfReflection;
     return s;
   }
+  const Context c = prepare(woIn);
+  if (!c.valid)
+    return {};
   if (c.inside)
     return sampleInterior(c, u, uLobe);
   const float3 wo = c.wo;

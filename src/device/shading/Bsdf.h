@@ -192,6 +192,7 @@ class Bsdf
 
   Context prepare(float3 wo) const;
   void evaluate(const Context &c, float3 wi, float3 &f, float &pdf) const;
+  void evaluateLambert(float3 wo, float3 wi, float3 &f, float &pdf) const;
   void evaluateInterior(
       const Context &c, float3 wi, float3 &f, float &pdf) const;
   BsdfSample sampleInterior(const Context &c, float2 u, float uLobe) const;
