@@ -12,9 +12,10 @@ constexpr float kInfinity = std::numeric_limits<float>::infinity();
 // Sampling by solid angle (uniform over the spherical quadrilateral the
 // quad subtends) has no variance from the 1/d^2 and cosine at the light;
 // outside these bounds its arithmetic degrades (a far speck or a point
-// almost in the quad's plane) and sampling by area takes over.
-constexpr double kMinSphericalArea = 1e-5;
-constexpr double kMaxSphericalArea = 6.0;
+// almost in the quad's plane) and sampling by area takes over. Float is
+// enough: kMinSolidAngleSampling keeps the quads sampled this way large.
+constexpr float kMinSphericalArea = 1e-5f;
+constexpr float kMaxSphericalArea = 6.f;
 // Below this solid angle (estimated from the centre) the 1/d^2 and cosine
 // hardly vary over the quad, so sampling by area is as good and costs no
 // trigonometry: solid-angle sampling is kept for close, large quads.
@@ -51,27 +52,28 @@ class PlacedQuad : public PlacedLight
     if (!litSide(point))
       return s;
     const Subtended subtended = subtend(point);
-    if (subtended.solidAngle > 0.0) {
+    if (subtended.solidAngle > 0.f) {
       // Pick a triangle in proportion to its solid angle, reusing u.x.
-      const double split = double(u.x) * subtended.solidAngle;
-      const double3 *v = subtended.vertices;
-      double3 direction;
+      const float split = u.x * subtended.solidAngle;
+      const float3 *v = subtended.vertices;
+      float3 direction;
       if (split < subtended.area[0]) {
-        const float2 uTriangle{float(split / subtended.area[0]), u.y};
+        const float2 uTriangle{split / subtended.area[0], u.y};
         direction = sampleSphericalTriangle(
             v[0], v[1], v[2], subtended.area[0], uTriangle);
       } else {
+        // At most 1 after rounding.
         const float2 uTriangle{
-            float((split - subtended.area[0]) / subtended.area[1]), u.y};
+            min((split - subtended.area[0]) / subtended.area[1], 1.f), u.y};
         direction = sampleSphericalTriangle(
             v[0], v[2], v[3], subtended.area[1], uTriangle);
       }
-      s.direction = normalize(vecCast<float>(direction));
+      s.direction = normalize(direction);
       const float along = dot(s.direction, m_normal);
       s.distance = along != 0.f
                        ? max(0.f, dot(m_corner - point, m_normal) / along)
                        : 0.f;
-      s.pdf = float(1.0 / subtended.solidAngle);
+      s.pdf = 1.f / subtended.solidAngle;
     } else {
       const float3 onQuad = m_corner + m_edge1 * u.x + m_edge2 * u.y;
       const float3 offset = onQuad - point;
@@ -113,7 +115,7 @@ class PlacedQuad : public PlacedLight
       return {0.f, 0.f, 0.f};
     distance = t;
     const Subtended subtended = subtend(point);
-    pdf = subtended.solidAngle > 0.0 ? float(1.0 / subtended.solidAngle)
+    pdf = subtended.solidAngle > 0.f ? 1.f / subtended.solidAngle
                                      : areaPdf(direction, t);
     return emitted(-direction);
   }
@@ -138,9 +140,9 @@ class PlacedQuad : public PlacedLight
   // sampling by area.
   struct Subtended
   {
-    double3 vertices[4];
-    double area[2];
-    double solidAngle{0.0};
+    float3 vertices[4];
+    float area[2];
+    float solidAngle{0.f};
   };
   Subtended subtend(const float3 &point) const
   {
@@ -157,16 +159,16 @@ class PlacedQuad : public PlacedLight
         m_corner + m_edge1 + m_edge2 - point,
         m_corner + m_edge2 - point};
     for (int i = 0; i < 4; i++) {
-      const double3 v = vecCast<double>(corners[i]);
-      const double length2 = lengthSquared(v);
-      if (!(length2 > 0.0))
+      const float3 v = corners[i];
+      const float length2 = lengthSquared(v);
+      if (!(length2 > 0.f))
         return result;
       result.vertices[i] = v / std::sqrt(length2);
     }
-    const double3 *v = result.vertices;
+    const float3 *v = result.vertices;
     result.area[0] = sphericalTriangleArea(v[0], v[1], v[2]);
     result.area[1] = sphericalTriangleArea(v[0], v[2], v[3]);
-    const double total = result.area[0] + result.area[1];
+    const float total = result.area[0] + result.area[1];
     if (total >= kMinSphericalArea && total <= kMaxSphericalArea)
       result.solidAngle = total;
     return result;

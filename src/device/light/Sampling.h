@@ -5,8 +5,10 @@
 
 #include "../math/Vec.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <vector>
 
 namespace prism::light {
@@ -82,17 +84,68 @@ inline float capPdf(float capHeight)
   return 1.f / (2.f * kPi * capHeight);
 }
 
+// Spherical triangles, in float (quad lights' sampling) or double (tests'
+// references).
+
+// Unit vector along `v`, or `fallback` when `v` is too short to normalise.
+template <typename T>
+inline Vec3<T> normalizeOr(const Vec3<T> &v, const Vec3<T> &fallback)
+{
+  const T length2 = lengthSquared(v);
+  return length2 > std::numeric_limits<T>::min() ? v / std::sqrt(length2)
+                                                 : fallback;
+}
 // Solid angle of the spherical triangle of the unit vectors a, b, c
 // (Van Oosterom and Strackee's formula; exact for every size).
-double sphericalTriangleArea(
-    const double3 &a, const double3 &b, const double3 &c);
+template <typename T>
+inline T sphericalTriangleArea(
+    const Vec3<T> &a, const Vec3<T> &b, const Vec3<T> &c)
+{
+  // tan(area / 2) = |a . (b x c)| / (1 + a.b + b.c + c.a) for unit vectors;
+  // atan2 keeps areas above pi, where the denominator turns negative.
+  const T numerator = std::abs(dot(a, cross(b, c)));
+  const T denominator = T(1) + dot(a, b) + dot(b, c) + dot(c, a);
+  return T(2) * std::atan2(numerator, denominator);
+}
+
 // A direction uniform in that triangle, `area` its solid angle (Arvo 1995:
 // a sub-triangle of area u.x * area, then a point along its last arc).
-double3 sampleSphericalTriangle(const double3 &a,
-    const double3 &b,
-    const double3 &c,
-    double area,
-    float2 u);
+template <typename T>
+inline Vec3<T> sampleSphericalTriangle(
+    const Vec3<T> &a, const Vec3<T> &b, const Vec3<T> &c, T area, float2 u)
+{
+  // The interior angle at `a`, between the great circles through a, b and
+  // a, c (the angle of their planes' normals).
+  // Its sine from the cross product stays accurate for thin triangles.
+  const Vec3<T> normalAB = normalizeOr(cross(a, b), {0, 0, 1});
+  const Vec3<T> normalAC = normalizeOr(cross(a, c), {0, 0, 1});
+  const T cosAlpha = clamp(dot(normalAB, normalAC), -T(1), T(1));
+  const T sinAlpha = std::min(T(1), length(cross(normalAB, normalAC)));
+
+  // The point c' on arc ac for which triangle a, b, c' has area u.x * area:
+  // the spherical law of cosines for angles solved for cos(arc a c'), with
+  // s, t the sine and cosine of u.x * area - alpha.
+  const T sampled = T(u.x) * area;
+  const T sinSampled = std::sin(sampled), cosSampled = std::cos(sampled);
+  const T s = sinSampled * cosAlpha - cosSampled * sinAlpha;
+  const T t = cosSampled * cosAlpha + sinSampled * sinAlpha;
+  const T p = t - cosAlpha;
+  const T q = s + sinAlpha * dot(a, b);
+  const T denominator = (q * s + p * t) * sinAlpha;
+  const T cosArc =
+      denominator != T(0)
+          ? clamp(((q * t - p * s) * cosAlpha - q) / denominator, -T(1), T(1))
+          : T(1);
+  const Vec3<T> towardsC = normalizeOr(c - a * dot(c, a), b);
+  const Vec3<T> cPrime =
+      a * cosArc + towardsC * std::sqrt(max(T(0), T(1) - cosArc * cosArc));
+
+  // Along arc b c', cos(angle from b) uniform between 1 and b . c' gives
+  // uniform area in the sub-triangle's last sliver.
+  const T z = T(1) - T(u.y) * (T(1) - dot(cPrime, b));
+  const Vec3<T> towardsCPrime = normalizeOr(cPrime - b * dot(cPrime, b), b);
+  return b * z + towardsCPrime * std::sqrt(max(T(0), T(1) - z * z));
+}
 
 // 2 pi * integral over [0, pi] of f(theta) sin(theta): the integral over the
 // sphere of a function of the angle to an axis. Composite Simpson between
