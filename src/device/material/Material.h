@@ -7,10 +7,20 @@
 #include "../object/Object.h"
 #include "MaterialShading.h"
 
+#include <optional>
+
 namespace prism {
 
 template <typename T>
 class MaterialInput;
+
+// What a material whose inputs read no surface attributes looks like at
+// every hit, and the BSDF that makes of it.
+struct ConstantShading
+{
+  MaterialShading shading;
+  Bsdf bsdf;
+};
 
 enum class AlphaMode : uint8_t {
   Opaque,
@@ -67,6 +77,23 @@ class Material : public Object
   {
     return m_readsAttributes;
   }
+  // shade() and its BSDF, built once per commit, when they are the same at
+  // every hit (no input reads attributes, no normal map bends the frame);
+  // NULL otherwise. Spares the path tracer shading such hits one by one.
+  const ConstantShading *constantShading() const
+  {
+    return m_constantShading ? &*m_constantShading : nullptr;
+  }
+  // Builds constantShading().
+  void finalize() override
+  {
+    m_constantShading.reset();
+    if (m_readsAttributes)
+      return;
+    const MaterialShading shading = shade(AttributeValues{});
+    if (!shading.hasNormalMap && !shading.hasCoatNormalMap)
+      m_constantShading.emplace(ConstantShading{shading, Bsdf(shading.bsdf)});
+  }
   float alphaCutoff() const
   {
     return m_alphaCutoff;
@@ -111,6 +138,7 @@ class Material : public Object
   AlphaMode m_alphaMode{AlphaMode::Opaque};
   float m_alphaCutoff{0.5f};
   bool m_doubleSided{true};
+  std::optional<ConstantShading> m_constantShading;
 };
 
 // The material of `subtype`, or NULL if the device does not implement it.

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <optional>
 
 namespace prism {
 namespace {
@@ -340,6 +341,7 @@ void PathTracer::shadeRays(const RenderContext &context,
   // ray. resolveHit fills what each ray reads.
   SurfaceHit surface;
   MaterialShading shading;
+  std::optional<Bsdf> bsdf;
   const uint8_t *shaded = context.transport->shadedRays();
   for (size_t r = begin; r < end; r++) {
     if (rays.untraceable(r))
@@ -358,7 +360,7 @@ void PathTracer::shadeRays(const RenderContext &context,
     // The last surface a path may meet is still lit directly (its light
     // sample then weighs fully: no BSDF sample follows to share it with).
     const bool last = b.path.bounce + 1 >= m_maxPathLength;
-    const Scattering scattering = scatteringAt(b);
+    const Scattering scattering = scatteringAt(b, bsdf);
     nextEvent(context, b, scattering, decisions, last, shadows, contributions);
     if (!last)
       scatter(b, scattering, decisions, next);
@@ -379,14 +381,21 @@ PathTracer::Bounce PathTracer::resolveHit(const RenderContext &context,
       rays.tMin(r),
       rays.hit(r),
       false,
-      surface,
-      shading};
+      surface};
   b.ray.time = path.time;
   b.found = b.hit.found()
             && resolveSurfaceHit(
                 *context.world, b.ray, b.hit, b.surface, HitDetail::ForShading);
-  if (b.found)
-    b.shading = b.surface.material().shade(b.surface.attributes);
+  if (b.found) {
+    const Material &material = b.surface.material();
+    if (const ConstantShading *constant = material.constantShading()) {
+      b.shading = &constant->shading;
+      b.constantBsdf = &constant->bsdf;
+    } else {
+      shading = material.shade(b.surface.attributes);
+      b.shading = &shading;
+    }
+  }
   return b;
 }
 
@@ -460,9 +469,9 @@ bool PathTracer::passThrough(Bounce &b, rt::RayQueue &next) const
   // See-through surfaces: pass through with probability 1 - opacity (each
   // layer its own random number).
   PathState &path = b.path;
-  if (!(b.shading.opacity < 1.f)
+  if (!(b.shading->opacity < 1.f)
       || randomX(path, kOpacityStreams + path.layer + 97u * path.bounce)
-             < b.shading.opacity) {
+             < b.shading->opacity) {
     path.layer = 0;
     return false;
   }
@@ -484,7 +493,7 @@ void PathTracer::recordFirstHit(Bounce &b) const
     return;
   path.sample.depth = b.hit.t;
   path.sample.normal = b.surface.shadingNormal;
-  path.sample.albedo = b.shading.albedo;
+  path.sample.albedo = b.shading->albedo;
   path.sample.primitiveId = b.surface.attributes.primitiveId;
   path.sample.objectId = b.surface.surface->id();
   path.sample.instanceId = b.surface.placement->instanceId;
@@ -496,11 +505,12 @@ void PathTracer::emitFromSurface(const RenderContext &context, Bounce &b) const
   PathState &path = b.path;
   path.radiance =
       path.radiance
-      + path.throughput * b.shading.emissive
+      + path.throughput * b.shading->emissive
             * emissionWeight(context, path, b.ray, b.hit, b.surface);
 }
 
-PathTracer::Scattering PathTracer::scatteringAt(const Bounce &b) const
+PathTracer::Scattering PathTracer::scatteringAt(
+    const Bounce &b, std::optional<Bsdf> &storage) const
 {
   // The local shading frame around the geometry's own (unflipped) shading
   // normal: the BSDF needs to know which side the viewer is on to tell
@@ -509,18 +519,23 @@ PathTracer::Scattering PathTracer::scatteringAt(const Bounce &b) const
   const float3 towardsViewer = b.ray.direction * -1.f;
   const float3 unbent =
       surface.backFacing ? surface.shadingNormal * -1.f : surface.shadingNormal;
+  const MaterialShading &shading = *b.shading;
   const float3 normal =
-      b.shading.hasNormalMap ? normalMapped(
-          surface, b.hit, unbent, b.shading.normalMap, towardsViewer)
-                             : unbent;
+      shading.hasNormalMap ? normalMapped(
+          surface, b.hit, unbent, shading.normalMap, towardsViewer)
+                           : unbent;
   const ShadingFrame frame = ShadingFrame::fromNormal(normal);
-  BsdfInputs inputs = b.shading.bsdf;
-  // The coat's normal map bends the geometry's normal on its own.
-  if (b.shading.hasCoatNormalMap)
-    inputs.clearcoatNormal = frame.toLocal(normalMapped(
-        surface, b.hit, unbent, b.shading.coatNormalMap, towardsViewer));
+  const Bsdf *bsdf = b.constantBsdf;
+  if (!bsdf) {
+    BsdfInputs inputs = shading.bsdf;
+    // The coat's normal map bends the geometry's normal on its own.
+    if (shading.hasCoatNormalMap)
+      inputs.clearcoatNormal = frame.toLocal(normalMapped(
+          surface, b.hit, unbent, shading.coatNormalMap, towardsViewer));
+    bsdf = &storage.emplace(inputs);
+  }
   return Scattering{frame,
-      Bsdf(inputs),
+      *bsdf,
       frame.toLocal(towardsViewer),
       1e-4f * std::max(1.f, b.hit.t)};
 }
@@ -588,7 +603,7 @@ void PathTracer::scatter(Bounce &b,
   path.throughput = path.throughput * bs.weight;
   path.previousPdf = bs.pdf;
   path.previousDelta = bs.isDelta();
-  path.ambientVisibility = b.shading.occlusion;
+  path.ambientVisibility = b.shading->occlusion;
   const float3 normal = scattering.frame.normal;
   const float3 wi = normalize(scattering.frame.toWorld(bs.wi));
   // Crossing a volume boundary: entering it (against the unflipped
@@ -596,7 +611,7 @@ void PathTracer::scatter(Bounce &b,
   if (bsdf.isVolumeBoundary()
       && dot(wi, normal) * dot(b.ray.direction, normal) > 0.f) {
     if (dot(wi, normal) < 0.f)
-      path.media.enter(b.shading.attenuation);
+      path.media.enter(b.shading->attenuation);
     else
       path.media.leave();
   }

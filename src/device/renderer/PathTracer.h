@@ -20,6 +20,7 @@
 #include "wavefront/RayTransport.h"
 #include "wavefront/WorkspacePool.h"
 
+#include <optional>
 #include <vector>
 
 namespace prism {
@@ -97,14 +98,18 @@ class PathTracer : public Renderer
     rt::Hit hit;
     bool found{false}; // a live surface was hit
     SurfaceHit &surface;
-    MaterialShading &shading;
+    // The material there: its own constant shading, or the hit's, shaded
+    // into the caller's storage.
+    const MaterialShading *shading{nullptr};
+    const Bsdf *constantBsdf{nullptr}; // when the material's is constant
   };
-  // Where the BSDF sits: its frame (normal maps applied), the BSDF, the
+  // Where the BSDF sits: its frame (normal maps applied), the BSDF (the
+  // material's constant one, or the hit's in the caller's storage), the
   // direction towards the viewer and how far new rays start off.
   struct Scattering
   {
     ShadingFrame frame;
-    Bsdf bsdf;
+    const Bsdf &bsdf;
     float3 wo;
     float offset;
   };
@@ -127,7 +132,7 @@ class PathTracer : public Renderer
   bool passThrough(Bounce &b, rt::RayQueue &next) const;
   void recordFirstHit(Bounce &b) const;
   void emitFromSurface(const RenderContext &context, Bounce &b) const;
-  Scattering scatteringAt(const Bounce &b) const;
+  Scattering scatteringAt(const Bounce &b, std::optional<Bsdf> &storage) const;
   // `last`: no BSDF sample follows (the path ends at this surface).
   void nextEvent(const RenderContext &context,
       const Bounce &b,
