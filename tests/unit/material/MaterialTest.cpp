@@ -557,6 +557,77 @@ TEST_F(MaterialTest, DoubleSidedByDefault)
   EXPECT_TRUE(m_messages.empty()) << m_messages.front();
 }
 
+// The BSDF of `shading` and `bsdf` agree on a few direction pairs.
+void expectSameBsdf(const Bsdf &bsdf, const MaterialShading &shading)
+{
+  const Bsdf built(shading.bsdf);
+  const float3 wo = normalize(float3{0.3f, -0.2f, 0.9f});
+  for (const float3 wi : {float3{0.f, 0.f, 1.f},
+           normalize(float3{-0.5f, 0.4f, 0.6f}),
+           normalize(float3{0.3f, -0.2f, -0.9f})}) {
+    EXPECT_EQ(bsdf.eval(wo, wi), built.eval(wo, wi));
+    EXPECT_EQ(bsdf.pdf(wo, wi), built.pdf(wo, wi));
+  }
+}
+
+TEST_F(MaterialTest, ConstantShadingFollowsEveryCommit)
+{
+  auto *matte = make<Matte>();
+  set(matte, "color", float3{0.2f, 0.4f, 0.6f});
+  commit(matte);
+  const ConstantShading *constant = matte->constantShading();
+  ASSERT_NE(constant, nullptr);
+  EXPECT_EQ(constant->shading.bsdf.baseColor, (float3{0.2f, 0.4f, 0.6f}));
+  EXPECT_EQ(constant->shading.albedo, (float3{0.2f, 0.4f, 0.6f}));
+  expectSameBsdf(constant->bsdf, matte->shade({}));
+  // A new color is the constant's after the next commit.
+  set(matte, "color", float3{0.9f, 0.1f, 0.1f});
+  commit(matte);
+  ASSERT_NE(matte->constantShading(), nullptr);
+  EXPECT_EQ(matte->constantShading()->shading.bsdf.baseColor,
+      (float3{0.9f, 0.1f, 0.1f}));
+  expectSameBsdf(matte->constantShading()->bsdf, matte->shade({}));
+  // A color read from attributes differs from hit to hit: no constant.
+  set(matte, "color", "color");
+  commit(matte);
+  EXPECT_EQ(matte->constantShading(), nullptr);
+  set(matte, "color", float3{0.5f, 0.5f, 0.5f});
+  commit(matte);
+  ASSERT_NE(matte->constantShading(), nullptr);
+  EXPECT_EQ(matte->constantShading()->shading.bsdf.baseColor,
+      (float3{0.5f, 0.5f, 0.5f}));
+}
+
+TEST_F(MaterialTest, PhysicallyBasedConstantShadingMatchesShade)
+{
+  auto *pbr = make<PhysicallyBased>();
+  set(pbr, "baseColor", float3{0.9f, 0.6f, 0.3f});
+  set(pbr, "metallic", 0.4f);
+  set(pbr, "roughness", 0.3f);
+  set(pbr, "clearcoat", 0.5f);
+  set(pbr, "emissive", float3{0.f, 2.f, 0.f});
+  set(pbr, "transmission", 0.2f);
+  set(pbr, "thickness", 1.f);
+  set(pbr, "attenuationColor", float3{0.5f, 0.5f, 1.f});
+  set(pbr, "attenuationDistance", 2.f);
+  commit(pbr);
+  const ConstantShading *constant = pbr->constantShading();
+  ASSERT_NE(constant, nullptr);
+  const MaterialShading shaded = pbr->shade({});
+  EXPECT_EQ(constant->shading.emissive, shaded.emissive);
+  EXPECT_EQ(constant->shading.attenuation, shaded.attenuation);
+  EXPECT_EQ(constant->shading.opacity, shaded.opacity);
+  EXPECT_EQ(constant->shading.bsdf.metallic, 0.4f);
+  EXPECT_EQ(
+      constant->bsdf.isVolumeBoundary(), Bsdf(shaded.bsdf).isVolumeBoundary());
+  expectSameBsdf(constant->bsdf, shaded);
+  // A normal map bends the frame hit by hit: no constant.
+  Transform *normal = transform("attribute0", kIdentityMat4, kZero);
+  set(pbr, "normal", normal);
+  commit(pbr);
+  EXPECT_EQ(pbr->constantShading(), nullptr);
+}
+
 TEST_F(MaterialTest, WorksThroughTheDeviceApi)
 {
   ANARISampler sampler = m_device.newSampler("transform");
