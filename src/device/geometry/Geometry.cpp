@@ -403,7 +403,6 @@ float3 Geometry::attributesAt(const rt::Hit &hit,
     else if (data.hasUniform)
       out = data.uniform;
   }
-  float3 normal = surfaceNormal(hit, objectPosition);
   float3 smooth{0, 0, 0};
   if (!m_cornerNormals.empty()) {
     for (uint32_t i = 0; i < cornerCount; i++)
@@ -418,8 +417,10 @@ float3 Geometry::attributesAt(const rt::Hit &hit,
     for (uint32_t i = 0; i < corners.count; i++)
       smooth = smooth + m_vertexNormals[corners.vertex[i]] * corners.weight[i];
   }
-  if (length(smooth) > 0.f)
-    normal = normalize(smooth);
+  // The geometry's own normal only where the interpolated one vanishes.
+  const float smoothLength = length(smooth);
+  const float3 normal = smoothLength > 0.f ? smooth * (1.f / smoothLength)
+                                           : surfaceNormal(hit, objectPosition);
   attributes[Attribute::ObjectNormal] =
       float4{normal.x, normal.y, normal.z, 0.f};
   return normal;
