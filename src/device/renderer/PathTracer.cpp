@@ -502,10 +502,13 @@ void PathTracer::recordFirstHit(Bounce &b) const
 
 void PathTracer::emitFromSurface(const RenderContext &context, Bounce &b) const
 {
+  const float3 &emissive = b.shading->emissive;
+  if (emissive.x == 0.f && emissive.y == 0.f && emissive.z == 0.f)
+    return; // most surfaces: nothing to weigh
   PathState &path = b.path;
   path.radiance =
       path.radiance
-      + path.throughput * b.shading->emissive
+      + path.throughput * emissive
             * emissionWeight(context, path, b.ray, b.hit, b.surface);
 }
 
