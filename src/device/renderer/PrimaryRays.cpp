@@ -70,8 +70,9 @@ void PrimaryRays::generate(uint32_t x0,
     const float2 screen{(float(x) + offset.x) * m_invWidth,
         (float(y) + offset.y) / float(m_context.height)};
     // The lens point: its own stream, decorrelated from the pixel offset.
-    const float2 lens =
-        sampleIndex == 0 ? float2{0.5f, 0.5f} : lensSample(x, y, sampleIndex);
+    const float2 lens = sampleIndex == 0 || !m_context.camera->hasDepthOfField()
+                            ? float2{0.5f, 0.5f}
+                            : lensSample(x, y, sampleIndex);
     const float rayTime =
         m_context.camera->rayTime(screen, exposureSample(x, y, sampleIndex));
     const Ray ray = m_context.camera->generateRay(screen, lens, rayTime);

@@ -153,10 +153,12 @@ Ray Renderer::cameraRay(
   // both paths' rays identical.
   const float2 screen{(float(x) + offset.x) * (1.f / float(context.width)),
       (float(y) + offset.y) / float(context.height)};
-  // The lens point: its own stream, decorrelated from the pixel offset.
-  const float2 lens = context.sampleIndex == 0
-                          ? float2{0.5f, 0.5f}
-                          : lensSample(x, y, context.sampleIndex);
+  // The lens point: its own stream, decorrelated from the pixel offset;
+  // a camera without a lens ignores it.
+  const float2 lens =
+      context.sampleIndex == 0 || !context.camera->hasDepthOfField()
+          ? float2{0.5f, 0.5f}
+          : lensSample(x, y, context.sampleIndex);
   const float time = context.camera->rayTime(
       screen, exposureSample(x, y, context.sampleIndex));
   return context.camera->generateRay(screen, lens, time);
