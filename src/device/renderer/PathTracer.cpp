@@ -599,7 +599,7 @@ void PathTracer::scatter(Bounce &b,
   const Bsdf &bsdf = scattering.bsdf;
   const BsdfSample bs = bsdf.sample(scattering.wo,
       decisions.direction(b.rayIndex),
-      decisions.lobe(b.rayIndex));
+      bsdf.choosesLobes() ? decisions.lobe(b.rayIndex) : 0.f);
   // A black BSDF (e.g. an unlit surface) ends the path.
   if (!bs.valid() || !(maxComponent(bs.weight) > 0.f))
     return;

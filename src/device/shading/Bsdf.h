@@ -162,6 +162,11 @@ class Bsdf
   // lobe. Both in [0, 1).
   BsdfSample sample(float3 wo, float2 uDirection, float uLobe) const;
 
+  // Whether sample() reads its lobe decision (false for Lambert alone).
+  bool choosesLobes() const
+  {
+    return !m_lambertOnly;
+  }
   // False when every lobe is delta: light sampling cannot contribute.
   bool hasNonDeltaLobes() const
   {

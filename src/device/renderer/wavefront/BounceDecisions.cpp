@@ -101,8 +101,8 @@ void BounceDecisions::draw(
   for (int d = 0; d < kDecisions; d++) {
     m_x[d].resize(count);
     m_y[d].resize(count);
-    if (d == kRoulette && deepest < kFirstRouletteBounce)
-      continue; // no path of this wavefront plays it yet
+    if (d == kLobe || (d == kRoulette && deepest < kFirstRouletteBounce))
+      continue; // drawn when asked; no path of this wavefront plays it yet
     // Each ray's numbers its own: a wavefront larger than a tile's is
     // drawn in blocks on several threads.
     forEachBlock(count, 1024, [&](size_t begin, size_t size) {
@@ -116,6 +116,12 @@ void BounceDecisions::draw(
           m_y[d].data() + begin);
     });
   }
+}
+
+float BounceDecisions::lobe(size_t r) const
+{
+  return sobolSampleX(
+      m_index[r], seedOfStream(m_seed[r], m_stream[r] + uint32_t(kLobe)));
 }
 
 } // namespace prism

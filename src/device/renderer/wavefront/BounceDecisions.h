@@ -1,9 +1,10 @@
 // The random numbers of one bounce's decisions for every ray of a
 // wavefront, drawn before any ray is shaded, decision by decision into
-// arrays: the sequences are computed many rays at a time in vector
-// registers instead of one number at a time between shading steps. Each
-// is exactly the number the path would draw alone: sobolSample2D of its
-// sample index and streamSeed (docs/sampling.md).
+// arrays (all but the lobe's, which few BSDFs need, drawn when asked): the
+// sequences are computed many rays at a time in vector registers instead of one
+// number at a time between shading steps. Each is exactly the number the path
+// would draw alone: sobolSample2D of its sample index and streamSeed
+// (docs/sampling.md).
 #pragma once
 
 #include "../../math/Vec.h"
@@ -38,10 +39,9 @@ class BounceDecisions
   {
     return {m_x[kDirection][r], m_y[kDirection][r]};
   }
-  float lobe(size_t r) const
-  {
-    return m_x[kLobe][r];
-  }
+  // Drawn when asked rather than with the others: most hits' BSDFs have a
+  // single lobe and never ask.
+  float lobe(size_t r) const;
   // Next-event estimation: which light, and where on it.
   float lightPick(size_t r) const
   {
