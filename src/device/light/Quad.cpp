@@ -53,21 +53,17 @@ class PlacedQuad : public PlacedLight
       return s;
     const Subtended subtended = subtend(point);
     if (subtended.solidAngle > 0.f) {
-      // Pick a triangle in proportion to its solid angle, reusing u.x.
+      // Pick a triangle in proportion to its solid angle, reusing u.x: by
+      // selects, as the choice is a coin toss a branch cannot predict.
       const float split = u.x * subtended.solidAngle;
       const float3 *v = subtended.vertices;
-      float3 direction;
-      if (split < subtended.area[0]) {
-        const float2 uTriangle{split / subtended.area[0], u.y};
-        direction = sampleSphericalTriangle(
-            v[0], v[1], v[2], subtended.area[0], uTriangle);
-      } else {
-        // At most 1 after rounding.
-        const float2 uTriangle{
-            min((split - subtended.area[0]) / subtended.area[1], 1.f), u.y};
-        direction = sampleSphericalTriangle(
-            v[0], v[2], v[3], subtended.area[1], uTriangle);
-      }
+      const bool first = split < subtended.area[0];
+      const float area = first ? subtended.area[0] : subtended.area[1];
+      // At most 1 after rounding.
+      const float2 uTriangle{
+          min((first ? split : split - subtended.area[0]) / area, 1.f), u.y};
+      const float3 direction = sampleSphericalTriangle(
+          v[0], first ? v[1] : v[2], first ? v[2] : v[3], area, uTriangle);
       s.direction = normalize(direction);
       const float along = dot(s.direction, m_normal);
       s.distance = along != 0.f
@@ -81,7 +77,7 @@ class PlacedQuad : public PlacedLight
       if (!(distance2 > 0.f))
         return {};
       s.distance = std::sqrt(distance2);
-      s.direction = offset / s.distance;
+      s.direction = offset * (1.f / s.distance);
       s.pdf = areaPdf(s.direction, s.distance);
       if (!(s.pdf > 0.f) || !std::isfinite(s.pdf))
         return {};
@@ -163,7 +159,7 @@ class PlacedQuad : public PlacedLight
       const float length2 = lengthSquared(v);
       if (!(length2 > 0.f))
         return result;
-      result.vertices[i] = v / std::sqrt(length2);
+      result.vertices[i] = v * (1.f / std::sqrt(length2));
     }
     const float3 *v = result.vertices;
     result.area[0] = sphericalTriangleArea(v[0], v[1], v[2]);

@@ -92,8 +92,9 @@ template <typename T>
 inline Vec3<T> normalizeOr(const Vec3<T> &v, const Vec3<T> &fallback)
 {
   const T length2 = lengthSquared(v);
-  return length2 > std::numeric_limits<T>::min() ? v / std::sqrt(length2)
-                                                 : fallback;
+  return length2 > std::numeric_limits<T>::min()
+             ? v * (T(1) / std::sqrt(length2))
+             : fallback;
 }
 // Solid angle of the spherical triangle of the unit vectors a, b, c
 // (Van Oosterom and Strackee's formula; exact for every size).
