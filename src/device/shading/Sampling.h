@@ -21,13 +21,13 @@ inline float2 sampleConcentricDisk(float2 u)
   const float b = 2.f * u.y - 1.f;
   if (a == 0.f && b == 0.f)
     return {0.f, 0.f};
-  if (std::abs(a) > std::abs(b)) {
-    const float2 cs = cosSinQuarter(kQuarterPi * (b / a));
-    return {a * cs.x, a * cs.y};
-  }
-  // The angle is pi/2 - theta: cosine and sine swap.
-  const float2 cs = cosSinQuarter(kQuarterPi * (a / b));
-  return {b * cs.y, b * cs.x};
+  // Selects rather than branches: which side wins is a coin toss per
+  // sample, which a branch predictor cannot learn. In the narrow case the
+  // angle is pi/2 - theta: cosine and sine swap.
+  const bool wide = std::abs(a) > std::abs(b);
+  const float radius = wide ? a : b;
+  const float2 cs = cosSinQuarter(kQuarterPi * ((wide ? b : a) / radius));
+  return {radius * (wide ? cs.x : cs.y), radius * (wide ? cs.y : cs.x)};
 }
 
 // Malley's method: project the disk up to the hemisphere; pdf cos(theta)/pi.
