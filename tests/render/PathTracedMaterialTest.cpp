@@ -264,6 +264,36 @@ TEST_F(Emissive, Pathtracer)
   });
 }
 
+// A material whose inputs read no attributes keeps its shading and BSDF
+// from commit to commit: a color committed between frames must reach the
+// image exactly as a material created with it.
+using RecommittedMaterial = MaterialBall;
+TEST_F(RecommittedMaterial, Pathtracer)
+{
+  ANARIRenderer renderer = keep(anariNewRenderer(device(), "pathtracer"));
+  anariCommitParameters(device(), renderer);
+  const ANARICamera view = camera();
+  auto ball = [&](const Vec3 &color) {
+    return pbr([&](ANARIMaterial m) { setVec3(m, "baseColor", color); });
+  };
+  const Vec3 red{0.9f, 0.1f, 0.1f}, green{0.1f, 0.9f, 0.1f};
+  ANARIMaterial edited = ball(red);
+  const ANARIWorld world = scene(edited);
+  const auto before = render(world, view, renderer, kWidth, kHeight, 4);
+  setVec3(edited, "baseColor", green);
+  anariCommitParameters(device(), edited);
+  const auto after = render(world, view, renderer, kWidth, kHeight, 4);
+  const auto fresh =
+      render(scene(ball(green)), view, renderer, kWidth, kHeight, 4);
+  ASSERT_FALSE(before.empty() || after.empty() || fresh.empty());
+  // The ball fills the middle of the image.
+  const auto &redPixel = before.at(kWidth / 2, kHeight / 2);
+  const auto &greenPixel = after.at(kWidth / 2, kHeight / 2);
+  EXPECT_GT(redPixel.r, 2.f * redPixel.g);
+  EXPECT_GT(greenPixel.g, 2.f * greenPixel.r);
+  expectSameImage(after, fresh, "recommitted and created green");
+}
+
 using PathTracedDepthOfField = MaterialBall; // focused on the ball
 TEST_F(PathTracedDepthOfField, Pathtracer)
 {
