@@ -50,7 +50,7 @@ for name in api loader nsi; do
   # signal 11" in ScanRangeForPointers: seen mid-run with TBB's workers
   # coming and going, and in the check at exit after a long run), so the
   # fuzzing runs with no leak check at all (not even at exit) and leaks are
-  # looked for in the replay, which runs once more if only the tracer
+  # looked for in the replay, which runs again if only the tracer
   # failed. libFuzzer exits non-zero on a crash, leak, timeout or OOM; its
   # per-input progress lines are left out of the log (pulses stay).
   status=0
@@ -61,18 +61,19 @@ for name in api loader nsi; do
       | grep --line-buffered -v -E '^#[0-9]+.*(NEW|REDUCE) '
     status=${PIPESTATUS[0]}
   fi
-  # Every input once more with leak checks, and once more again if only
-  # LeakSanitizer's tracer failed; the arguments prefix the fuzzer (env
+  # Every input once more with leak checks, and again (twice at most) if
+  # only LeakSanitizer's tracer failed: a rehearsal saw it crash twice in a
+  # row in the debug layer's replay. The arguments prefix the fuzzer (env
   # and an environment).
   replay() {
     local log="$build/fuzz-work/$name-replay.log"
-    for attempt in 1 2; do
+    for attempt in 1 2 3; do
       [ "$status" = 0 ] || return
       "$@" "$fuzzer" "${options[@]}" -runs=0 "$scratch" 2>&1 \
         | grep --line-buffered -v -E '^#[0-9]+.*(NEW|REDUCE) ' \
         | tee "$log"
       status=${PIPESTATUS[0]}
-      if [ "$status" != 0 ] && [ "$attempt" = 1 ] \
+      if [ "$status" != 0 ] && [ "$attempt" -lt 3 ] \
         && grep -q "LeakSanitizer has encountered a fatal error" "$log"; then
         echo "== fuzz_$name: LeakSanitizer's tracer crashed; replaying again"
         status=0
