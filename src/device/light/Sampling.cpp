@@ -6,7 +6,6 @@
 #include <cmath>
 
 namespace prism::light {
-namespace {} // namespace
 
 Frame frameAround(float3 z)
 {

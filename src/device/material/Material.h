@@ -84,8 +84,8 @@ class Material : public Object
   {
     return m_constantShading ? &*m_constantShading : nullptr;
   }
-  // Builds constantShading().
-  void finalize() override
+  // Builds constantShading(); final, so no subtype can leave it stale.
+  void finalize() final
   {
     m_constantShading.reset();
     if (m_readsAttributes)

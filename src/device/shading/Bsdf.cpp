@@ -21,6 +21,16 @@ constexpr float kDeltaAlpha = 1e-4f;
 // Clearcoat is a fixed ior 1.5 layer (KHR_materials_clearcoat).
 constexpr float kCoatF0 = 0.04f;
 
+// Whether the viewer's direction `wo` can be shaded (finite, off the
+// surface's plane), and on which side it is: -1 behind the shading normal.
+bool viewerSide(float3 wo, float &sign)
+{
+  if (!(wo.z != 0.f) || !std::isfinite(wo.x + wo.y + wo.z))
+    return false;
+  sign = wo.z < 0.f ? -1.f : 1.f;
+  return true;
+}
+
 float mean(float3 v)
 {
   return (v.x + v.y + v.z) * (1.f / 3.f);
@@ -357,18 +367,14 @@ float3 Bsdf::specularFresnel(float cosTheta) const
 
 Bsdf::Context Bsdf::prepare(float3 wo) const
 {
+  // Layered BSDFs only: Lambert alone needs none of this.
   Context c;
-  if (!(wo.z != 0.f) || !std::isfinite(wo.x + wo.y + wo.z))
+  if (!viewerSide(wo, c.sign))
     return c;
-  c.sign = wo.z < 0.f ? -1.f : 1.f;
   c.wo = {wo.x, wo.y, std::abs(wo.z)};
   c.cosO = c.wo.z;
   c.inside = c.sign < 0.f && m_volume;
   c.valid = true;
-  if (m_lambertOnly) {
-    c.probability[kDiffuse] = 1.f;
-    return c;
-  }
   c.specularO = specularAlbedo(c.cosO);
   if (c.inside)
     return c;
@@ -431,14 +437,6 @@ void Bsdf::evaluate(const Context &c, float3 wiIn, float3 &f, float &pdf) const
   }
   const float3 wo = c.wo;
   const float cosO = c.cosO;
-
-  if (m_lambertOnly) {
-    if (wi.z > 0.f) {
-      f = m_baseColor * kInvPi;
-      pdf = wi.z * kInvPi;
-    }
-    return;
-  }
 
   if (wi.z > 0.f) {
     const float cosI = wi.z;
@@ -590,15 +588,15 @@ void Bsdf::evalAndPdf(float3 wo, float3 wi, float3 &f, float &pdf) const
   evaluate(prepare(wo), wi, f, pdf);
 }
 
-// What prepare() and evaluate() give a Lambert-only BSDF, without the
-// layers' context: the most common evaluation by far.
+// A Lambert-only BSDF, the most common by far, without the layers'
+// context.
 void Bsdf::evaluateLambert(float3 wo, float3 wiIn, float3 &f, float &pdf) const
 {
   f = {0.f, 0.f, 0.f};
   pdf = 0.f;
-  if (!(wo.z != 0.f) || !std::isfinite(wo.x + wo.y + wo.z))
+  float sign = 1.f;
+  if (!viewerSide(wo, sign))
     return;
-  const float sign = wo.z < 0.f ? -1.f : 1.f;
   const float3 wi{wiIn.x, wiIn.y, wiIn.z * sign};
   if (!(wi.z > 0.f) || !std::isfinite(wi.x + wi.y + wi.z))
     return;
@@ -675,10 +673,9 @@ BsdfSample Bsdf::sampleInterior(const Context &c, float2 u, float uLobe) const
 BsdfSample Bsdf::sample(float3 woIn, float2 u, float uLobe) const
 {
   if (m_lambertOnly) {
-    // As prepare() checks wo, without the layers' context.
-    if (!(woIn.z != 0.f) || !std::isfinite(woIn.x + woIn.y + woIn.z))
+    float sign = 1.f;
+    if (!viewerSide(woIn, sign))
       return {};
-    const float sign = woIn.z < 0.f ? -1.f : 1.f;
     // One lobe sampled exactly by its density: f cos / pdf = baseColor.
     const float3 wi = sampleCosineHemisphere(u);
     if (!(wi.z > 0.f) || maxComponent(m_baseColor) <= 0.f)
