@@ -151,6 +151,7 @@ class PrismRoom
     for (const std::string &note : scene.notes)
       std::fprintf(stderr, "note: %s\n", note.c_str());
     m_world = scene.world;
+    m_lights = scene.lights;
 
     m_camera = anariNewCamera(d, "perspective");
     const Vec3 direction = normalize(view.at - view.eye);
@@ -188,6 +189,8 @@ class PrismRoom
              (ANARIObject)m_camera,
              (ANARIObject)m_world})
       anariRelease(m_device, object);
+    for (ANARILight light : m_lights)
+      anariRelease(m_device, light);
     anariRelease(m_device, m_device);
     anariUnloadLibrary(m_library);
   }
@@ -232,6 +235,7 @@ class PrismRoom
   ANARILibrary m_library{nullptr};
   ANARIDevice m_device{nullptr};
   ANARIWorld m_world{nullptr};
+  std::vector<ANARILight> m_lights; // the scene's, released with it
   ANARICamera m_camera{nullptr};
   ANARIRenderer m_renderer{nullptr};
   ANARIFrame m_frame{nullptr};

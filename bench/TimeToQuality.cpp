@@ -74,10 +74,9 @@ class Renderer
   }
   ~Renderer()
   {
-    for (ANARIObject o : {(ANARIObject)m_camera,
-             (ANARIObject)m_renderer,
-             (ANARIObject)m_scene.world})
+    for (ANARIObject o : {(ANARIObject)m_camera, (ANARIObject)m_renderer})
       anariRelease(m_device, o);
+    prism::scenes::releaseScene(m_device, m_scene);
     anariRelease(m_device, m_device);
     anariUnloadLibrary(m_library);
   }

@@ -78,9 +78,11 @@ void finishWorld(ANARIDevice device,
   if (!lights.empty())
     setObjectArray(device, world, "light", ANARI_LIGHT, lights);
   anariCommitParameters(device, world);
-  for (auto *list : {&surfaces, &instances, &lights})
+  for (auto *list : {&surfaces, &instances})
     for (ANARIObject object : *list)
       anariRelease(device, object);
+  for (ANARIObject light : lights)
+    scene.lights.push_back((ANARILight)light);
   scene.world = world;
 }
 

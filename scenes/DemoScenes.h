@@ -52,7 +52,8 @@ ANARILight newLightIfSupported(ANARIDevice device,
     std::vector<ANARIObject> &lights);
 
 // Sets the world's surfaces, instances and lights (empty lists are left
-// unset), commits it and stores it in `scene.world`; releases the handles.
+// unset), commits it and stores it in `scene.world`; releases the surfaces'
+// and instances' handles and hands the lights' to `scene.lights`.
 void finishWorld(ANARIDevice device,
     Scene &scene,
     std::vector<ANARIObject> surfaces,

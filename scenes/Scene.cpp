@@ -26,4 +26,14 @@ void Bounds::extend(const Bounds &other)
   extend(other.upper);
 }
 
+void releaseScene(ANARIDevice device, Scene &scene)
+{
+  for (ANARILight light : scene.lights)
+    anariRelease(device, light);
+  scene.lights.clear();
+  if (scene.world)
+    anariRelease(device, scene.world);
+  scene.world = nullptr;
+}
+
 } // namespace prism::scenes

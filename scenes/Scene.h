@@ -43,7 +43,8 @@ struct Bounds
 
 struct Scene
 {
-  // Committed; the caller owns this reference and releases it.
+  // Committed; the caller owns this reference and releases it (with the
+  // lights': releaseScene).
   ANARIWorld world{nullptr};
   std::string name;
   std::string description;
@@ -55,12 +56,20 @@ struct Scene
   // the renderer's default.
   bool hasBackground{false};
   Vec4 background{0.f, 0.f, 0.f, 1.f};
-  // Whether anything in the scene emits light (lights, emissive surfaces);
-  // file loaders say, so tools can light lightless files by default.
-  bool emitsLight{true};
+  // Whether the scene was made to be seen in a viewer's environment, as
+  // glTF and OBJ files are (their emissive materials light nothing much),
+  // or is lit as built (the demos).
+  bool expectsEnvironment{false};
+  // The world's own light objects (a glTF file's KHR_lights_punctual, a
+  // demo's lamps), one reference each owned like `world`, so a tool can add
+  // an environment to them (scene_io::addWorldLight).
+  std::vector<ANARILight> lights;
   // What the builder had to leave out on this device (e.g. lights), in
   // lower case without trailing period, for the application to report.
   std::vector<std::string> notes;
 };
+
+// Releases the scene's references (world and lights) and clears them.
+void releaseScene(ANARIDevice device, Scene &scene);
 
 } // namespace prism::scenes

@@ -9,7 +9,7 @@
 
 namespace {
 
-using namespace prism::render;
+using namespace prism::scene_io;
 
 // A file with one of everything that holds an index; each $name is replaced
 // by the value the test gives, or 0. (The extras hold 1e308, not 1e999:

@@ -14,7 +14,7 @@
 
 namespace {
 
-using namespace prism::render;
+using namespace prism::scene_io;
 using Corners = std::vector<std::array<float, 3>>;
 
 // A regular polygon of n corners in the xy plane (convex).

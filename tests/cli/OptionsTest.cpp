@@ -19,6 +19,7 @@
 namespace {
 
 using namespace prism::render;
+using namespace prism::scene_io;
 namespace scenes = prism::scenes;
 
 ParseResult parse(std::vector<const char *> arguments)
@@ -263,7 +264,7 @@ TEST(CameraFraming, FitsTheBoundsAndHonoursOverrides)
   prism::scenes::Bounds bounds;
   bounds.extend(prism::scenes::Vec3{-1.f, -1.f, -1.f});
   bounds.extend(prism::scenes::Vec3{1.f, 1.f, 1.f});
-  Options options;
+  CameraOverrides options;
   // A box, a flat panel and a long rod, in wide and tall images: every
   // corner inside the frame's kFill, the tighter direction filled to it,
   // the projection centred.

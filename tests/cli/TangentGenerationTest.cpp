@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-namespace prism::render {
+namespace prism::scene_io {
 namespace {
 
 // A grid of n x n quads over [-1, 1]^2 in z = 0, normals +z, uv from `uv`.
@@ -122,4 +122,4 @@ TEST(TangentGeneration, DegenerateUvsStillGiveAPerpendicularTangent)
 }
 
 } // namespace
-} // namespace prism::render
+} // namespace prism::scene_io

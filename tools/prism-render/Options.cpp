@@ -206,6 +206,7 @@ std::vector<OptionSpec> optionSpecs()
               return expected(
                   "--env", "studio, none or an image file (.hdr, .exr)", v);
             o.environment = v;
+            o.environmentGiven = true;
             return {};
           }},
       {nullptr,
@@ -599,10 +600,12 @@ Rendering
   -p, --param NAME=VALUE set a renderer parameter, typed by the device's
                          introspection: 0.5, 1,2,3, true, text
   --background R,G,B[,A] background color (linear)
-  --env studio|none|FILE lighting for scenes with no lights or emissive
-                         surfaces: a neutral studio (default), none (the
-                         ANARI default: black with the path tracer), or an
-                         equirectangular .hdr/.exr image
+  --env studio|none|FILE the environment that lights the scene besides its
+                         own lights: a neutral studio, none (the scene's
+                         lights only; black with the path tracer where it
+                         has none), or an equirectangular .hdr/.exr image.
+                         Default: files get the studio (at 1/4 when they
+                         hold lights of their own), demos none
   --env-intensity SCALE  multiplies the environment's radiance (default 1)
   --env-rotate DEGREES   turns the environment about the scene's up axis
   -l, --library NAME     ANARI library to load (default prism): loads

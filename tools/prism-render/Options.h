@@ -2,6 +2,8 @@
 // device is loaded, so a bad argument costs nothing and names itself.
 #pragma once
 
+#include "VolumeStyle.h"
+
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -13,18 +15,8 @@ namespace prism::render {
 
 using Vec3 = std::array<float, 3>;
 
-// How volumes are colored (--tf-*): applied by VolumeStyle.* wherever a
-// volume is made (volume files, demo:volume). What is not given keeps the
-// volume's own default (files: the data's range, coolwarm, the default
-// ramp, unit distance 1).
-struct TransferFunctionOptions
-{
-  std::optional<std::array<float, 2>> valueRange;
-  std::string colorMap;         // empty: the default
-  std::vector<float> opacities; // empty: the default
-  std::optional<float> unitDistance;
-  bool given{false}; // any --tf-* option, for "ignored" warnings
-};
+// How volumes are colored (--tf-*), as the scene loaders take it.
+using scene_io::TransferFunctionOptions;
 
 struct Options
 {
@@ -41,9 +33,11 @@ struct Options
   std::optional<float> fovyDegrees;
   int cameraIndex{-1}; // glTF camera to use; -1: the first in the scene
   std::optional<std::array<float, 4>> background;
-  // Lighting for scenes with nothing that emits light: "studio" (default),
-  // "none", or an equirectangular image file.
+  // The environment lighting the scene (scene_io::lightingFor): "studio",
+  // "none", or an equirectangular image file; `environmentGiven` when
+  // --env chose it rather than the default.
   std::string environment{"studio"};
+  bool environmentGiven{false};
   float environmentIntensity{1.f};
   float environmentRotateDegrees{0.f};
 

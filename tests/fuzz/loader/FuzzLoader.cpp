@@ -30,7 +30,7 @@
 
 namespace {
 
-using namespace prism::render;
+using namespace prism::scene_io;
 using prism::scenes::operator-;
 
 // Device messages are expected for broken inputs; crashes are what count.
@@ -193,9 +193,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         "fuzz_loader: format %d: %s\n",
         data[0] % kFormats,
         loaded.ok() ? "loaded and rendered" : loaded.error.c_str());
-  if (loaded.scene.world) {
+  if (loaded.scene.world)
     render(loaded);
-    anariRelease(g_session.device, loaded.scene.world);
-  }
+  prism::scenes::releaseScene(g_session.device, loaded.scene);
   return 0;
 }
