@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Configures and builds Prism into ./build (Release). Extra arguments go to
 # CMake's configure step, e.g. -DPRISM_SANITIZE=address,undefined.
+# PRISM_BUILD_TARGETS="a b" builds only those targets (and what they need).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${PRISM_BUILD_DIR:-$root/build}
@@ -11,4 +12,8 @@ if [ ! -f "$build/CMakeCache.txt" ]; then
 elif [ $# -gt 0 ]; then
   cmake "$build" "$@"
 fi
-cmake --build "$build" -j"$(nproc)"
+targets=()
+for target in ${PRISM_BUILD_TARGETS:-}; do
+  targets+=(--target "$target")
+done
+cmake --build "$build" -j"$(nproc)" "${targets[@]}"

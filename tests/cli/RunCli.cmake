@@ -4,9 +4,6 @@
 #   ARGS            its arguments
 #   WORKDIR         where it runs (created; outputs land here)
 #   EXPECT_EXIT     0, 1, 2 or nonzero
-#   OR_SUCCEEDS     when set, exit status 0 with every EXISTS file written
-#                   also passes (for features a device may gain later);
-#                   otherwise the EXISTS files must be absent
 #   EXPECT_STDERR   regex stderr must match
 #   REJECT_STDERR   regex stderr must not match
 #   STDERR_LINES    how many lines stderr must have
@@ -89,21 +86,6 @@ execute_process(COMMAND ${command}
 message("$ prism-render ${args}\nexit status: ${status}\n"
   "stdout:\n${stdout}\nstderr:\n${stderr}")
 
-set(succeeded FALSE)
-if(OR_SUCCEEDS AND status EQUAL 0)
-  set(succeeded TRUE)
-  foreach(file IN LISTS exists)
-    if(NOT EXISTS "${WORKDIR}/${file}")
-      message(FATAL_ERROR "exit status 0 but '${file}' was not written")
-    endif()
-  endforeach()
-  message("passed: the device now renders this")
-  return()
-elseif(OR_SUCCEEDS)
-  # The refusal path: nothing may have been written.
-  list(APPEND absent ${exists})
-  set(exists "")
-endif()
 
 if(EXPECT_EXIT STREQUAL "nonzero")
   if(status EQUAL 0 OR NOT status MATCHES "^[0-9]+$")
