@@ -125,6 +125,14 @@ void ObjImporter::noteDropped(
   if (obj.shortFaces > 0)
     note(plural(obj.shortFaces, "face", "faces")
          + " with fewer than 3 corners left out");
+  if (obj.cornersWithoutNormals > 0)
+    note(plural(obj.cornersWithoutNormals, "face corner", "face corners")
+         + " name normals (vn) the file does not have; their faces are "
+           "shaded with normals of their own shape");
+  if (obj.cornersWithoutUvs > 0)
+    note(plural(obj.cornersWithoutUvs, "face corner", "face corners")
+         + " name texture coordinates (vt) the file does not have; they "
+           "are used without");
   if (obj.linesAndPoints > 0)
     note("lines and points are not rendered; "
          + plural(obj.linesAndPoints, "l/p statement", "l/p statements")

@@ -278,7 +278,13 @@ bool Parser::resolveIndices()
   m_r.corners.resize(m_rawCorners.size());
   for (const ObjFace &f : m_r.faces) {
     for (size_t c = f.firstCorner; c < f.firstCorner + f.cornerCount; c++) {
-      const std::array<uint64_t, 3> &raw = m_rawCorners[c];
+      std::array<uint64_t, 3> &raw = m_rawCorners[c];
+      for (size_t k = 1; k < 3; k++) {
+        if (raw[k] > 0 && counts[k] == 0) {
+          raw[k] = 0; // the file has none of these: the corner goes without
+          (k == 1 ? m_r.cornersWithoutUvs : m_r.cornersWithoutNormals)++;
+        }
+      }
       for (size_t k = 0; k < 3; k++) {
         if (raw[k] > counts[k]) {
           m_line = f.line;

@@ -56,7 +56,11 @@ struct ObjParseResult
   std::vector<std::string> materialNames;     // in order of first use
   std::vector<std::string> materialLibraries; // mtllib names, as written
   ObjBadValues badValues;
-  size_t shortFaces{0};     // faces of fewer than 3 corners (left out)
+  size_t shortFaces{0}; // faces of fewer than 3 corners (left out)
+  // Corners naming a normal (vn) or texture coordinate (vt) of a file that
+  // has none at all: used without it (exporters write "f 1//1" regardless).
+  size_t cornersWithoutNormals{0};
+  size_t cornersWithoutUvs{0};
   size_t linesAndPoints{0}; // l and p statements (not rendered)
   std::string error;        // empty when the file can be used
 

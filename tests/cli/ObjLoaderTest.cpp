@@ -237,8 +237,8 @@ TEST(ObjParser, IndicesOutOfRange)
       {"f 1 2 -4\n", "a face uses vertex -4 but the file has 3 (line 4)"},
       {"f 1 2 4\n", "a face uses vertex 4 but the file has 3 (line 4)"},
       {"f 1 2 -9223372036854775809\n", "a face uses vertex -922337203685477"},
-      {"f 1/1 2/1 3/1\n",
-          "a face uses texture coordinate 1 but the file has 0"},
+      {"vt 0 0\nf 1/1 2/1 3/2\n",
+          "a face uses texture coordinate 2 but the file has 1"},
       {"vn 0 0 1\nf 1//1 2//1 3//2\n",
           "a face uses normal 2 but the file has 1 (line 5)"},
       {"f 1 2 x\n", "'x' is not a face corner (line 4)"},
@@ -255,6 +255,29 @@ TEST(ObjParser, IndicesOutOfRange)
   // A forward reference is fine: the vertex comes later in the file.
   const ObjParseResult forward = parseObj(vertices + "f 1 2 4\nv 1 1 1\n");
   EXPECT_TRUE(forward.ok()) << forward.error;
+}
+
+// Exporters write "f 1//1" whether or not they wrote any vn (tinyobjloader's
+// own catmark_torus_creases0.obj does): a file with no normals (or no
+// texture coordinates) at all has its faces used without them, and says
+// how many corners named one; a file with some is held to them (above).
+TEST(ObjParser, CornersNamingWhatTheFileLacks)
+{
+  const std::string vertices = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  const ObjParseResult normals = parseObj(vertices + "f 1//1 2//2 3//3\n");
+  ASSERT_TRUE(normals.ok()) << normals.error;
+  EXPECT_EQ(normals.cornersWithoutNormals, 3u);
+  EXPECT_EQ(normals.cornersWithoutUvs, 0u);
+  for (const ObjCorner &c : normals.corners)
+    EXPECT_EQ(c.normal, -1);
+  const ObjParseResult both = parseObj(vertices + "f 1/1/1 2/2/2 3/3/3\n");
+  ASSERT_TRUE(both.ok()) << both.error;
+  EXPECT_EQ(both.cornersWithoutNormals, 3u);
+  EXPECT_EQ(both.cornersWithoutUvs, 3u);
+  for (const ObjCorner &c : both.corners)
+    EXPECT_EQ(c.uv, -1);
+  // Positions are never optional.
+  EXPECT_FALSE(parseObj("f 1//1 2//2 3//3\n").ok());
 }
 
 TEST(ObjParser, FacesOfMoreThan255Corners)

@@ -31,7 +31,9 @@ the outputs are committed, so this only reruns when the assets change):
                         none), lit-box.gltf (the box under a directional
                         light along -z), emissive-box.gltf (an emissive box,
                         no lights), red-sky.hdr (8x4, radiance (1, 0, 0)
-                        everywhere), glowing.obj/.mtl (a quad with Ke)
+                        everywhere), glowing.obj/.mtl (a quad with Ke),
+                        named-normals.obj (a quad whose faces name vn and
+                        vt the file does not have)
   normal maps           normal-mapped-plane.gltf: a plane of two UV islands,
                         the right one mirrored in TEXCOORD_1 (which the
                         normal map reads; TEXCOORD_0 is a plain planar map),
@@ -353,6 +355,15 @@ v  1  1 0
 v -1  1 0
 usemtl glow
 f 1 2 3 4
+"""
+
+# A quad whose faces name normals and texture coordinates the file never
+# wrote, as some exporters do: rendered without them, with a note.
+NAMED_NORMALS_OBJ = """v -1 -1 0
+v  1 -1 0
+v  1  1 0
+v -1  1 0
+f 1/1/1 2/2/2 3/3/3 4/4/4
 """
 
 GLOWING_MTL = """newmtl glow
@@ -874,6 +885,7 @@ def main():
     write("fresnel-plane.gltf", fresnel_plane())
     write("expected-fresnel-48.pfm", expected_fresnel(48))
     write("glowing.obj", GLOWING_OBJ)
+    write("named-normals.obj", NAMED_NORMALS_OBJ)
     write("normal-mapped-plane.gltf", normal_mapped_plane(None))
     for stem, files in (("unlit", unlit_files()),
                         ("vertex-color-texture", vertex_color_files()),
