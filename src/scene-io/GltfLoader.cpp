@@ -112,18 +112,14 @@ Mat4d multiply(const Mat4d &a, const Mat4d &b)
   return m;
 }
 
-// The node's local matrix: `matrix`, or translation * rotation * scale.
-Mat4d localMatrix(const tinygltf::Node &node)
+// translation * rotation (a quaternion x, y, z, w) * scale; each may be
+// null (the identity's part).
+Mat4d trsMatrix(
+    const double *translation, const double *rotation, const double *scale)
 {
-  if (node.matrix.size() == 16) {
-    Mat4d m;
-    std::copy(node.matrix.begin(), node.matrix.end(), m.begin());
-    return m;
-  }
   Mat4d m = identity();
-  if (node.rotation.size() == 4) {
-    double x = node.rotation[0], y = node.rotation[1], z = node.rotation[2],
-           w = node.rotation[3];
+  if (rotation) {
+    double x = rotation[0], y = rotation[1], z = rotation[2], w = rotation[3];
     const double n = std::sqrt(x * x + y * y + z * z + w * w);
     if (n > 0.0) {
       x /= n, y /= n, z /= n, w /= n;
@@ -145,14 +141,28 @@ Mat4d localMatrix(const tinygltf::Node &node)
           1};
     }
   }
-  if (node.scale.size() == 3)
+  if (scale)
     for (int c = 0; c < 3; c++)
       for (int r = 0; r < 3; r++)
-        m[4 * c + r] *= node.scale[size_t(c)];
-  if (node.translation.size() == 3)
+        m[4 * c + r] *= scale[c];
+  if (translation)
     for (int r = 0; r < 3; r++)
-      m[12 + r] = node.translation[size_t(r)];
+      m[12 + r] = translation[r];
   return m;
+}
+
+// The node's local matrix: `matrix`, or translation * rotation * scale.
+Mat4d localMatrix(const tinygltf::Node &node)
+{
+  if (node.matrix.size() == 16) {
+    Mat4d m;
+    std::copy(node.matrix.begin(), node.matrix.end(), m.begin());
+    return m;
+  }
+  return trsMatrix(
+      node.translation.size() == 3 ? node.translation.data() : nullptr,
+      node.rotation.size() == 4 ? node.rotation.data() : nullptr,
+      node.scale.size() == 3 ? node.scale.data() : nullptr);
 }
 
 Mat4 toFloat(const Mat4d &m)
@@ -687,6 +697,8 @@ class GltfImporter
   bool traverse(int root);
   // What node `index` places at `world`.
   bool visit(int index, const Mat4d &world);
+  bool placeInstances(
+      int index, const Mat4d &world, const tinygltf::Value &instancing);
   bool buildMeshGroup(int meshIndex);
   bool buildPrimitive(int meshIndex,
       int primitiveIndex,
@@ -871,6 +883,9 @@ bool GltfImporter::visit(int index, const Mat4d &world)
     if (size_t(node.mesh) >= m_model.meshes.size())
       return fail("node " + std::to_string(index) + " uses mesh "
                   + std::to_string(node.mesh) + ", which does not exist");
+    if (const tinygltf::Value *instancing =
+            extension(node.extensions, "EXT_mesh_gpu_instancing"))
+      return placeInstances(index, world, *instancing);
     if (isPlaceable(world))
       m_meshPlacements[node.mesh].push_back({world, index});
     else
@@ -888,6 +903,67 @@ bool GltfImporter::visit(int index, const Mat4d &world)
     if (light >= 0 && size_t(light) < m_model.lights.size())
       m_lightPlacements.push_back({light, {world, index}});
   }
+  return true;
+}
+
+// EXT_mesh_gpu_instancing: the node's mesh once per element of its
+// TRANSLATION, ROTATION and SCALE accessors (any may be absent; those given
+// must agree in count), each at world * TRS. They become placements like
+// any node's, so a device with KHR_INSTANCE_TRANSFORM_ARRAY gets them as one
+// instance with an array of matrices.
+bool GltfImporter::placeInstances(
+    int index, const Mat4d &world, const tinygltf::Value &instancing)
+{
+  const tinygltf::Value *attributes = member(instancing, "attributes");
+  const char *names[3] = {"TRANSLATION", "ROTATION", "SCALE"};
+  const int widths[3] = {3, 4, 3};
+  std::vector<float> values[3];
+  size_t count = 0;
+  bool any = false;
+  for (int a = 0; a < 3; a++) {
+    const int accessor = integer(attributes, names[a], -1);
+    if (accessor < 0)
+      continue;
+    int components = 0;
+    std::string error;
+    if (!readAccessor(m_model,
+            accessor,
+            widths[a],
+            widths[a],
+            values[a],
+            components,
+            error))
+      return fail("node " + std::to_string(index) + " EXT_mesh_gpu_instancing "
+                  + names[a] + ": " + error);
+    const size_t n = values[a].size() / size_t(widths[a]);
+    if (any && n != count)
+      return fail("node " + std::to_string(index)
+                  + " EXT_mesh_gpu_instancing: its attributes count "
+                  + std::to_string(count) + " and " + std::to_string(n)
+                  + " instances");
+    count = n;
+    any = true;
+  }
+  const int mesh = m_model.nodes[size_t(index)].mesh;
+  size_t degenerate = 0;
+  for (size_t i = 0; i < count; i++) {
+    double trs[3][4];
+    for (int a = 0; a < 3; a++)
+      for (int c = 0; c < widths[a] && !values[a].empty(); c++)
+        trs[a][c] = values[a][i * size_t(widths[a]) + size_t(c)];
+    const Mat4d placed = multiply(world,
+        trsMatrix(values[0].empty() ? nullptr : trs[0],
+            values[1].empty() ? nullptr : trs[1],
+            values[2].empty() ? nullptr : trs[2]));
+    if (isFinite(placed) && isPlaceable(placed))
+      m_meshPlacements[mesh].push_back({placed, index});
+    else
+      degenerate++;
+  }
+  if (degenerate > 0)
+    note("node " + std::to_string(index) + ": " + std::to_string(degenerate)
+         + " of its instances have a degenerate transform and are not "
+           "drawn");
   return true;
 }
 

@@ -25,6 +25,7 @@ const std::set<std::string> kSupported = {
     "KHR_texture_transform",
     "KHR_lights_punctual",
     "KHR_mesh_quantization",
+    "EXT_mesh_gpu_instancing",
 };
 
 const char *kDraco = "KHR_draco_mesh_compression";

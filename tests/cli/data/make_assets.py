@@ -34,6 +34,8 @@ the outputs are committed, so this only reruns when the assets change):
                         everywhere), glowing.obj/.mtl (a quad with Ke),
                         named-normals.obj (a quad whose faces name vn and
                         vt the file does not have)
+  instancing            instanced-grid.gltf: one quad placed six times by
+                        EXT_mesh_gpu_instancing (INSTANCE_GRID)
   normal maps           normal-mapped-plane.gltf: a plane of two UV islands,
                         the right one mirrored in TEXCOORD_1 (which the
                         normal map reads; TEXCOORD_0 is a plain planar map),
@@ -511,6 +513,44 @@ def checker_linear(u, v):
     return tuple(linear(x) for x in c)
 
 
+# EXT_mesh_gpu_instancing: one white quad (half size 0.1) placed six times
+# in a 3 x 2 grid at x = -0.5, 0, 0.5 and y = 0.25, -0.25, seen by an
+# orthographic camera over [-1, 1]^2; the middle of the lower row is scaled
+# by 2 and its right neighbour turned 45 degrees about z.
+INSTANCE_GRID = [((-0.5, 0.25), 1.0, 0.0), ((0.0, 0.25), 1.0, 0.0),
+                 ((0.5, 0.25), 1.0, 0.0), ((-0.5, -0.25), 1.0, 0.0),
+                 ((0.0, -0.25), 2.0, 0.0), ((0.5, -0.25), 1.0, 45.0)]
+
+
+def instanced_grid():
+    buf = Buffer()
+    attributes, indices = quad_accessors(buf, half=0.1)
+    translations = [(x, y, 0.0) for (x, y), _, _ in INSTANCE_GRID]
+    rotations = [(0.0, 0.0, math.sin(math.radians(a) / 2),
+                  math.cos(math.radians(a) / 2)) for _, _, a in INSTANCE_GRID]
+    scales = [(s, s, 1.0) for _, s, _ in INSTANCE_GRID]
+    gltf = {
+        "asset": {"version": "2.0",
+                  "generator": "prism tests/cli/data/make_assets.py"},
+        "extensionsUsed": ["EXT_mesh_gpu_instancing"],
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1]}],
+        "nodes": [{"mesh": 0, "extensions": {"EXT_mesh_gpu_instancing": {
+            "attributes": {
+                "TRANSLATION": buf.accessor("f", FLOAT, "VEC3", translations),
+                "ROTATION": buf.accessor("f", FLOAT, "VEC4", rotations),
+                "SCALE": buf.accessor("f", FLOAT, "VEC3", scales)}}}},
+            {"camera": 0, "translation": [0.0, 0.0, 3.0]}],
+        "meshes": [{"primitives": [{"attributes": attributes,
+                                    "indices": indices, "material": 0}]}],
+        "materials": [{"pbrMetallicRoughness": {
+            "baseColorFactor": [1.0, 1.0, 1.0, 1.0], "metallicFactor": 0.0}}],
+        "cameras": [{"type": "orthographic", "orthographic": {
+            "xmag": 1.0, "ymag": 1.0, "znear": 0.1, "zfar": 10.0}}],
+    }
+    return finish_gltf(gltf, buf)
+
+
 def quads_gltf(quads, materials, images=None, extensions_used=None,
                lights=False, view_half=1.0):
     """Unit-textured 2 * half squares at z = 0, each (cx, cy, half, material,
@@ -886,6 +926,7 @@ def main():
     write("expected-fresnel-48.pfm", expected_fresnel(48))
     write("glowing.obj", GLOWING_OBJ)
     write("named-normals.obj", NAMED_NORMALS_OBJ)
+    write("instanced-grid.gltf", instanced_grid())
     write("normal-mapped-plane.gltf", normal_mapped_plane(None))
     for stem, files in (("unlit", unlit_files()),
                         ("vertex-color-texture", vertex_color_files()),
