@@ -52,6 +52,10 @@ struct Scene
   // World-space bounds as the builder computed them, for devices that do
   // not report the world's `bounds` property.
   Bounds bounds;
+  // A sample of the surface's points in world space (file loaders:
+  // scene_io/Outline.h), to frame a camera on the shape rather than its
+  // box; empty: the bounds frame it.
+  std::vector<Vec3> outline;
   // A background the scene looks right with; `hasBackground` false leaves
   // the renderer's default.
   bool hasBackground{false};

@@ -17,13 +17,14 @@ using scenes::operator*;
 
 namespace {
 
-// Fits `box` into a perspective view looking along -`towardsEye` with the
-// half-field tangents `tanY` (vertical) and `tanX`: the eight corners
-// projected, the eye moved back until every one is inside kFill of the
-// frame, the view shifted sideways until the projection is centred (a few
-// rounds; the last distance is computed for the last centre, so the fit
-// holds whatever the shift).
-void fitBox(const scenes::Bounds &box,
+// Fits `points` (inside `box`) into a perspective view looking along
+// -`towardsEye` with the half-field tangents `tanY` (vertical) and `tanX`:
+// the points projected, the eye moved back until every one is inside kFill
+// of the frame, the view shifted sideways until the projection is centred
+// (a few rounds; the last distance is computed for the last centre, so the
+// fit holds whatever the shift).
+void fitPoints(const std::vector<Vec3> &points,
+    const scenes::Bounds &box,
     const Vec3 &towardsEye,
     const Vec3 &upHint,
     float tanY,
@@ -36,19 +37,14 @@ void fitBox(const scenes::Bounds &box,
   if (scenes::length(right) == 0.f)
     right = scenes::normalize(scenes::cross(forward, Vec3{0.f, 0.f, 1.f}));
   const Vec3 up = scenes::cross(right, forward);
-  Vec3 corners[8];
-  for (int c = 0; c < 8; c++)
-    corners[c] = {(c & 1) ? box.upper[0] : box.lower[0],
-        (c & 2) ? box.upper[1] : box.lower[1],
-        (c & 4) ? box.upper[2] : box.lower[2]};
   const float size = std::max(scenes::length(box.upper - box.lower), 1e-3f);
   Vec3 center = (box.lower + box.upper) * 0.5f;
   float distance = size;
   for (int round = 0; round < 4; round++) {
     // The distance from `center` that fits every corner.
     distance = 0.f;
-    for (const Vec3 &corner : corners) {
-      const Vec3 p = corner - center;
+    for (const Vec3 &point : points) {
+      const Vec3 p = point - center;
       const float x = scenes::dot(p, right), y = scenes::dot(p, up),
                   z = scenes::dot(p, forward);
       distance = std::max(distance, std::abs(x) / (tanX * kFill) - z);
@@ -57,8 +53,8 @@ void fitBox(const scenes::Bounds &box,
     }
     // Where the projection's middle falls, moved to the frame's centre.
     float lowX = 1e30f, highX = -1e30f, lowY = 1e30f, highY = -1e30f;
-    for (const Vec3 &corner : corners) {
-      const Vec3 p = corner - center;
+    for (const Vec3 &point : points) {
+      const Vec3 p = point - center;
       const float depth = distance + scenes::dot(p, forward);
       const float sx = scenes::dot(p, right) / depth;
       const float sy = scenes::dot(p, up) / depth;
@@ -74,12 +70,23 @@ void fitBox(const scenes::Bounds &box,
   eye = center + towardsEye * distance;
 }
 
+std::vector<Vec3> corners(const scenes::Bounds &box)
+{
+  std::vector<Vec3> points(8);
+  for (int c = 0; c < 8; c++)
+    points[size_t(c)] = {(c & 1) ? box.upper[0] : box.lower[0],
+        (c & 2) ? box.upper[1] : box.lower[1],
+        (c & 4) ? box.upper[2] : box.lower[2]};
+  return points;
+}
+
 } // namespace
 
 CameraSetup frameCamera(const scenes::SuggestedCamera &suggested,
     const scenes::Bounds &bounds,
     float aspect,
-    const CameraOverrides &overrides)
+    const CameraOverrides &overrides,
+    const std::vector<Vec3> &outline)
 {
   CameraSetup camera;
   scenes::Bounds box = bounds;
@@ -105,7 +112,8 @@ CameraSetup frameCamera(const scenes::SuggestedCamera &suggested,
         0.5f * camera.fovyDegrees * std::numbers::pi_v<float> / 180.f;
     const Vec3 direction = scenes::normalize(Vec3{0.35f, 0.3f, 1.f});
     const Vec3 up = overrides.up.value_or(camera.up);
-    fitBox(box,
+    fitPoints(outline.empty() ? corners(box) : outline,
+        box,
         direction,
         up,
         std::tan(halfFovy),

@@ -6,6 +6,7 @@
 #include "Scene.h"
 
 #include <optional>
+#include <vector>
 
 namespace prism::scene_io {
 
@@ -27,18 +28,20 @@ struct CameraSetup
   bool framed{false}; // true when placed from the bounds
 };
 
-// How much of the frame (of its narrower side) a framed scene's bounds
-// fill: a margin of 4 % on each side.
+// How much of the frame (of its narrower side) a framed scene fills: a
+// margin of 4 % on each side.
 constexpr float kFill = 0.92f;
 
 // The camera for an image of `aspect` (width / height). Without a scene
 // camera the view looks at `bounds` from the front (+z), slightly from above
-// and the right, centred and just far enough back that the box's eight
-// corners fill kFill of the frame along its tighter direction. Empty bounds
-// frame the unit cube.
+// and the right, centred and just far enough back that the scene's
+// `outline` (scenes::Scene::outline; empty: the box's eight corners) fills
+// kFill of the frame along its tighter direction. Empty bounds frame the
+// unit cube.
 CameraSetup frameCamera(const scenes::SuggestedCamera &suggested,
     const scenes::Bounds &bounds,
     float aspect,
-    const CameraOverrides &overrides);
+    const CameraOverrides &overrides,
+    const std::vector<scenes::Vec3> &outline = {});
 
 } // namespace prism::scene_io

@@ -6,6 +6,7 @@
 #include "ImageIO.h"
 #include "Math.h"
 #include "Objects.h"
+#include "Outline.h"
 #include "SceneFile.h"
 #include "TangentGeneration.h"
 
@@ -695,6 +696,8 @@ class GltfImporter
   bool parse();
   // Places the meshes, cameras and lights of every node under `root`.
   bool traverse(int root);
+  // The meshes' outlines at every placement, when they fit kMaxOutline.
+  void placeOutline();
   // What node `index` places at `world`.
   bool visit(int index, const Mat4d &world);
   bool placeInstances(
@@ -766,6 +769,7 @@ class GltfImporter
 
   std::map<int, ANARIGroup> m_groups; // nullptr: a mesh with nothing to draw
   std::map<int, scenes::Bounds> m_meshBounds;
+  std::map<int, std::vector<Vec3>> m_meshOutlines; // local space
   std::map<std::pair<int, bool>, ANARIMaterial> m_materials;
   std::map<std::pair<int, bool>, ANARIArray2D> m_images;
   std::set<std::string> m_noted;
@@ -965,6 +969,22 @@ bool GltfImporter::placeInstances(
          + " of its instances have a degenerate transform and are not "
            "drawn");
   return true;
+}
+
+void GltfImporter::placeOutline()
+{
+  size_t total = 0;
+  for (const auto &[meshIndex, placements] : m_meshPlacements)
+    total += placements.size() * m_meshOutlines[meshIndex].size();
+  if (total > kMaxOutline)
+    return; // too many placements: the bounds frame the scene
+  std::vector<Vec3> &outline = m_result.scene.outline;
+  for (const auto &[meshIndex, placements] : m_meshPlacements)
+    for (const Placement &p : placements) {
+      const Mat4 matrix = toFloat(p.worldFromObject);
+      for (const Vec3 &point : m_meshOutlines[meshIndex])
+        outline.push_back(scenes::transformPoint(matrix, point));
+    }
 }
 
 // Depth first with a stack of its own: a file's hierarchy may be as deep
@@ -1742,6 +1762,7 @@ bool GltfImporter::buildPrimitive(int meshIndex,
   const size_t vertexCount = positions.size() / 3;
   if (vertexCount == 0)
     return true;
+  sampleOutline(positions.data(), vertexCount, m_meshOutlines[meshIndex]);
 
   std::vector<uint32_t> indices;
   if (primitive.indices >= 0) {
@@ -2280,6 +2301,7 @@ LoadResult GltfImporter::load()
     fail("the scene has no triangles, points or lines to render");
     return std::move(m_result);
   }
+  placeOutline();
   placeCamera();
   std::vector<ANARIObject> lights;
   placeLights(lights);

@@ -4,6 +4,7 @@
 #include "ObjBatches.h"
 #include "ObjParser.h"
 #include "Objects.h"
+#include "Outline.h"
 #include "PolygonTriangulation.h"
 #include "SceneFile.h"
 #include "TextureFile.h"
@@ -169,6 +170,11 @@ LoadResult ObjImporter::load()
   for (auto &[key, batch] : batches.byMaterial) {
     for (const Vec3 &p : batch.positions)
       scene.bounds.extend(p);
+    static_assert(sizeof(Vec3) == 3 * sizeof(float));
+    if (!batch.positions.empty())
+      sampleOutline(batch.positions.front().data(),
+          batch.positions.size(),
+          scene.outline);
     ANARIGeometry geometry = anariNewGeometry(m_device, "triangle");
     scenes::setArray(m_device,
         geometry,

@@ -369,8 +369,8 @@ int RenderRun::makeCamera()
   const float aspect = float(m_options.width) / float(m_options.height);
   const scene_io::CameraOverrides overrides{
       m_options.eye, m_options.at, m_options.up, m_options.fovyDegrees};
-  const scene_io::CameraSetup view =
-      scene_io::frameCamera(m_scene.camera, bounds, aspect, overrides);
+  const scene_io::CameraSetup view = scene_io::frameCamera(
+      m_scene.camera, bounds, aspect, overrides, m_scene.outline);
   if (!usable(view.eye) || !usable(view.at) || !usable(view.up)
       || !(scenes::length(view.at - view.eye) > 0.f)) {
     char where[128];

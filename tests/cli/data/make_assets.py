@@ -36,6 +36,8 @@ the outputs are committed, so this only reruns when the assets change):
                         vt the file does not have)
   instancing            instanced-grid.gltf: one quad placed six times by
                         EXT_mesh_gpu_instancing (INSTANCE_GRID)
+  framing               sphere.obj: a unit UV sphere (framed on its
+                        silhouette, not its bounding box)
   normal maps           normal-mapped-plane.gltf: a plane of two UV islands,
                         the right one mirrored in TEXCOORD_1 (which the
                         normal map reads; TEXCOORD_0 is a plain planar map),
@@ -367,6 +369,35 @@ v  1  1 0
 v -1  1 0
 f 1/1/1 2/2/2 3/3/3 4/4/4
 """
+
+def uv_sphere_obj(rings=12, segments=24):
+    """A unit sphere of quads (triangles at the poles), no normals: framing
+    must fit its silhouette, not its bounding box."""
+    lines = ["# A unit UV sphere, %d rings of %d segments" % (rings, segments),
+             "v 0 1 0"]
+    for r in range(1, rings):
+        theta = math.pi * r / rings
+        for s in range(segments):
+            phi = 2 * math.pi * s / segments
+            lines.append("v %.6f %.6f %.6f" % (math.sin(theta) * math.cos(phi),
+                                               math.cos(theta),
+                                               math.sin(theta) * math.sin(phi)))
+    lines.append("v 0 -1 0")
+    bottom = 2 + (rings - 1) * segments
+
+    def ring(r, s):  # 1-based index of ring r (1..rings-1), segment s
+        return 2 + (r - 1) * segments + s % segments
+
+    for s in range(segments):
+        lines.append("f 1 %d %d" % (ring(1, s + 1), ring(1, s)))
+        lines.append("f %d %d %d" % (bottom, ring(rings - 1, s),
+                                     ring(rings - 1, s + 1)))
+        for r in range(1, rings - 1):
+            lines.append("f %d %d %d %d" % (ring(r, s), ring(r, s + 1),
+                                            ring(r + 1, s + 1),
+                                            ring(r + 1, s)))
+    return "\n".join(lines) + "\n"
+
 
 GLOWING_MTL = """newmtl glow
 Kd 0.5 0.5 0.5
@@ -927,6 +958,7 @@ def main():
     write("glowing.obj", GLOWING_OBJ)
     write("named-normals.obj", NAMED_NORMALS_OBJ)
     write("instanced-grid.gltf", instanced_grid())
+    write("sphere.obj", uv_sphere_obj())
     write("normal-mapped-plane.gltf", normal_mapped_plane(None))
     for stem, files in (("unlit", unlit_files()),
                         ("vertex-color-texture", vertex_color_files()),
