@@ -696,6 +696,13 @@ class GltfImporter
   bool parse();
   // Places the meshes, cameras and lights of every node under `root`.
   bool traverse(int root);
+  // The index of options.variant among the file's KHR_materials_variants;
+  // false (and the run failed) when the file has no such variant.
+  bool findVariant();
+  // The material `primitive` uses in the chosen variant (its own where the
+  // variant maps none).
+  int variantMaterial(const tinygltf::Primitive &primitive) const;
+  int m_variant{-1};
   // The meshes' outlines at every placement, when they fit kMaxOutline.
   void placeOutline();
   // What node `index` places at `world`.
@@ -969,6 +976,56 @@ bool GltfImporter::placeInstances(
          + " of its instances have a degenerate transform and are not "
            "drawn");
   return true;
+}
+
+bool GltfImporter::findVariant()
+{
+  if (m_options.variant.empty())
+    return true;
+  const auto root = m_model.extensions.find("KHR_materials_variants");
+  const tinygltf::Value *variants = root == m_model.extensions.end()
+                                        ? nullptr
+                                        : member(root->second, "variants");
+  std::string names;
+  const size_t count =
+      variants && variants->IsArray() ? variants->ArrayLen() : 0;
+  for (size_t i = 0; i < count; i++) {
+    const tinygltf::Value *name = member(variants->Get(int(i)), "name");
+    const std::string text =
+        name && name->IsString() ? name->Get<std::string>() : std::string();
+    if (text == m_options.variant) {
+      m_variant = int(i);
+      return true;
+    }
+    names += (names.empty() ? "" : ", ") + text;
+  }
+  return fail("--variant " + m_options.variant + ": "
+              + (count ? "the file's variants are " + names
+                       : std::string("the file has no material variants "
+                                     "(KHR_materials_variants)")));
+}
+
+int GltfImporter::variantMaterial(const tinygltf::Primitive &primitive) const
+{
+  if (m_variant < 0)
+    return primitive.material;
+  const tinygltf::Value *variants =
+      extension(primitive.extensions, "KHR_materials_variants");
+  const tinygltf::Value *mappings =
+      variants ? member(*variants, "mappings") : nullptr;
+  const size_t count =
+      mappings && mappings->IsArray() ? mappings->ArrayLen() : 0;
+  for (size_t m = 0; m < count; m++) {
+    const tinygltf::Value &mapping = mappings->Get(int(m));
+    const tinygltf::Value *listed = member(mapping, "variants");
+    const size_t n = listed && listed->IsArray() ? listed->ArrayLen() : 0;
+    for (size_t v = 0; v < n; v++) {
+      const tinygltf::Value &index = listed->Get(int(v));
+      if (index.IsNumber() && index.GetNumberAsDouble() == double(m_variant))
+        return integer(&mapping, "material", primitive.material);
+    }
+  }
+  return primitive.material;
 }
 
 void GltfImporter::placeOutline()
@@ -1896,7 +1953,7 @@ bool GltfImporter::buildPrimitive(int meshIndex,
     anariRelease(m_device, array);
   }
 
-  const int materialIndex = primitive.material;
+  const int materialIndex = variantMaterial(primitive);
   if (materialIndex >= int(m_model.materials.size()))
     note(
         "a primitive uses a material that does not exist; the default "
@@ -2220,6 +2277,8 @@ LoadResult GltfImporter::load()
       if (!isChild[i])
         roots.push_back(int(i));
   }
+  if (!findVariant())
+    return std::move(m_result);
   m_onPath.assign(m_model.nodes.size(), false);
   for (int root : roots)
     if (!traverse(root))

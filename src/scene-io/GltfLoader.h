@@ -31,6 +31,9 @@ namespace prism::scene_io {
 struct GltfOptions
 {
   int cameraIndex{-1}; // glTF camera to view through; -1: the first found
+  // KHR_materials_variants: the variant whose materials primitives use;
+  // empty: their default materials.
+  std::string variant;
   // False: buffers and images must be inside the file (GLB chunk or data
   // URI); external URIs fail as missing files (fuzzing).
   bool readExternalFiles{true};

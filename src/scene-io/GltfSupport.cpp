@@ -26,6 +26,7 @@ const std::set<std::string> kSupported = {
     "KHR_lights_punctual",
     "KHR_mesh_quantization",
     "EXT_mesh_gpu_instancing",
+    "KHR_materials_variants",
 };
 
 const char *kDraco = "KHR_draco_mesh_compression";

@@ -46,6 +46,7 @@ LoadResult loadScene(
   case SceneFormat::Gltf: {
     GltfOptions gltf;
     gltf.cameraIndex = options.gltfCamera;
+    gltf.variant = options.gltfVariant;
     return loadGltf(device, source.path, gltf);
   }
   case SceneFormat::Obj:

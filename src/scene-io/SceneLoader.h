@@ -17,7 +17,8 @@ namespace prism::scene_io {
 
 struct LoadOptions
 {
-  int gltfCamera{-1}; // the glTF camera to view through; -1: the first
+  int gltfCamera{-1};      // the glTF camera to view through; -1: the first
+  std::string gltfVariant; // KHR_materials_variants; empty: the defaults
   // Raw volumes: what the user gave of the layout (the file's name fills
   // in the rest, resolveRawFormat).
   RawVolumeFormat raw;

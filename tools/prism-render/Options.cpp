@@ -199,6 +199,15 @@ std::vector<OptionSpec> optionSpecs()
             return {};
           }},
       {nullptr,
+          "--variant",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            if (v.empty())
+              return expected("--variant", "a material variant's name", v);
+            o.variant = v;
+            return {};
+          }},
+      {nullptr,
           "--env",
           true,
           [](Options &o, const std::string &v) -> std::string {
@@ -627,6 +636,10 @@ Camera (default: the scene's camera, or framed to the world bounds)
   --up X,Y,Z             up direction
   --fovy DEGREES         vertical field of view
   --camera N             use glTF camera N instead of the first one
+
+glTF files
+  --variant NAME         use the glTF file's material variant NAME
+                         (KHR_materials_variants) instead of its defaults
 
 Raw volumes
   --raw-dims XxYxZ       voxel counts (else taken from a name like

@@ -58,6 +58,7 @@ scene_io::LoadOptions loadOptions(const Options &options)
 {
   scene_io::LoadOptions load;
   load.gltfCamera = options.cameraIndex;
+  load.gltfVariant = options.variant;
   if (options.rawDimensions)
     load.raw.dimensions = *options.rawDimensions;
   load.raw.type = options.rawType;
@@ -231,6 +232,8 @@ int RenderRun::loadScene()
   const bool gltf = m_source.format == scene_io::SceneFormat::Gltf;
   if (m_options.cameraIndex >= 0 && !gltf)
     console::warning("--camera only applies to glTF files; ignored");
+  if (!m_options.variant.empty() && !gltf)
+    console::warning("--variant only applies to glTF files; ignored");
   if (m_options.transferFunction.given && !scene_io::hasVolumeStyle(m_source))
     console::warning(
         "--tf-* options only apply to volumes (.raw, .nvdb, demo:volume); "

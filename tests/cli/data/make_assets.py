@@ -38,6 +38,8 @@ the outputs are committed, so this only reruns when the assets change):
                         EXT_mesh_gpu_instancing (INSTANCE_GRID)
   framing               sphere.obj: a unit UV sphere (framed on its
                         silhouette, not its bounding box)
+  variants              variants.gltf: a quad, red by default, "green" and
+                        "blue" as KHR_materials_variants
   normal maps           normal-mapped-plane.gltf: a plane of two UV islands,
                         the right one mirrored in TEXCOORD_1 (which the
                         normal map reads; TEXCOORD_0 is a plain planar map),
@@ -582,6 +584,38 @@ def instanced_grid():
     return finish_gltf(gltf, buf)
 
 
+def variants_quad():
+    """KHR_materials_variants: a quad filling an orthographic view, red by
+    default, green in the variant "green" and blue in "blue"."""
+    buf = Buffer()
+    attributes, indices = quad_accessors(buf)
+
+    def colored(rgb):
+        return {"pbrMetallicRoughness": {"baseColorFactor": list(rgb) + [1.0],
+                                         "metallicFactor": 0.0}}
+
+    gltf = {
+        "asset": {"version": "2.0",
+                  "generator": "prism tests/cli/data/make_assets.py"},
+        "extensionsUsed": ["KHR_materials_variants"],
+        "extensions": {"KHR_materials_variants": {
+            "variants": [{"name": "green"}, {"name": "blue"}]}},
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1]}],
+        "nodes": [{"mesh": 0}, {"camera": 0, "translation": [0.0, 0.0, 3.0]}],
+        "meshes": [{"primitives": [{
+            "attributes": attributes, "indices": indices, "material": 0,
+            "extensions": {"KHR_materials_variants": {"mappings": [
+                {"material": 1, "variants": [0]},
+                {"material": 2, "variants": [1]}]}}}]}],
+        "materials": [colored((1.0, 0.0, 0.0)), colored((0.0, 1.0, 0.0)),
+                      colored((0.0, 0.0, 1.0))],
+        "cameras": [{"type": "orthographic", "orthographic": {
+            "xmag": 1.0, "ymag": 1.0, "znear": 0.1, "zfar": 10.0}}],
+    }
+    return finish_gltf(gltf, buf)
+
+
 def quads_gltf(quads, materials, images=None, extensions_used=None,
                lights=False, view_half=1.0):
     """Unit-textured 2 * half squares at z = 0, each (cx, cy, half, material,
@@ -959,6 +993,7 @@ def main():
     write("named-normals.obj", NAMED_NORMALS_OBJ)
     write("instanced-grid.gltf", instanced_grid())
     write("sphere.obj", uv_sphere_obj())
+    write("variants.gltf", variants_quad())
     write("normal-mapped-plane.gltf", normal_mapped_plane(None))
     for stem, files in (("unlit", unlit_files()),
                         ("vertex-color-texture", vertex_color_files()),
