@@ -703,17 +703,53 @@ class GltfImporter
   // variant maps none).
   int variantMaterial(const tinygltf::Primitive &primitive) const;
   int m_variant{-1};
+  // The morph weights group `key` renders with: its first node's
+  // `weights`, else its mesh's, else none.
+  const std::vector<double> &morphWeights(int key) const;
+  // Adds the weighted morph-target displacements of `attribute` (POSITION,
+  // NORMAL, TANGENT) to `values` (`components` per vertex; a TANGENT's w
+  // is not displaced).
+  bool morph(int key,
+      const tinygltf::Primitive &primitive,
+      const char *attribute,
+      int components,
+      std::vector<float> &values,
+      std::string &error);
   // The meshes' outlines at every placement, when they fit kMaxOutline.
   void placeOutline();
   // What node `index` places at `world`.
   bool visit(int index, const Mat4d &world);
   bool placeInstances(
       int index, const Mat4d &world, const tinygltf::Value &instancing);
-  bool buildMeshGroup(int meshIndex);
-  bool buildPrimitive(int meshIndex,
+  // Groups are keyed by mesh index, and skinned nodes (whose geometry is
+  // their own, posed in world space) by -1 - their index in m_skinned.
+  int meshOf(int key) const
+  {
+    return key >= 0 ? key : m_skinned[size_t(-key - 1)].mesh;
+  }
+  bool buildMeshGroup(int key);
+  bool buildPrimitive(int key,
       int primitiveIndex,
       std::vector<ANARIObject> &surfaces,
-      scenes::Bounds &bounds);
+      scenes::Bounds &bounds,
+      const std::vector<Mat4d> *joints);
+  // The skin's joint matrices (joint world x inverse bind matrix).
+  bool jointMatrices(int skin, std::vector<Mat4d> &joints);
+  // Poses `values` (`components` per vertex: positions 3, normals 3,
+  // tangents 4 whose w stays) by JOINTS_0 and WEIGHTS_0: each vertex by the
+  // weighted sum of its joints' matrices (directions by its linear part).
+  bool skin(const tinygltf::Primitive &primitive,
+      const std::vector<Mat4d> &joints,
+      bool directions,
+      int components,
+      std::vector<float> &values,
+      std::string &error);
+  struct Skinned
+  {
+    int mesh, node, skin;
+  };
+  std::vector<Skinned> m_skinned;
+  std::vector<Mat4d> m_nodeWorld; // every visited node's world matrix
   ANARIMaterial material(int index, bool vertexColors);
   // What the device offers beyond ANARI 1.1 for glTF (docs/extensions.md).
   // Sphere and curve radius for glTF points and lines, in the object space
@@ -890,10 +926,18 @@ bool GltfImporter::visit(int index, const Mat4d &world)
   if (!isFinite(world))
     return fail("node " + std::to_string(index)
                 + " has a transform that is not finite");
+  m_nodeWorld[size_t(index)] = world;
   if (node.mesh >= 0) {
     if (size_t(node.mesh) >= m_model.meshes.size())
       return fail("node " + std::to_string(index) + " uses mesh "
                   + std::to_string(node.mesh) + ", which does not exist");
+    if (node.skin >= 0 && size_t(node.skin) < m_model.skins.size()) {
+      // Posed by its joints, in world space: the node's own transform does
+      // not apply (glTF 2.0, skins). Built once the joints are placed.
+      m_skinned.push_back({node.mesh, index, node.skin});
+      m_meshPlacements[-int(m_skinned.size())].push_back({identity(), index});
+      return true;
+    }
     if (const tinygltf::Value *instancing =
             extension(node.extensions, "EXT_mesh_gpu_instancing"))
       return placeInstances(index, world, *instancing);
@@ -904,7 +948,9 @@ bool GltfImporter::visit(int index, const Mat4d &world)
           + " has a degenerate transform (zero scale or out of range); its "
             "mesh is not drawn there");
     if (node.skin >= 0)
-      note("skins are not applied; skinned meshes render in their bind pose");
+      note("node " + std::to_string(index) + " names skin "
+           + std::to_string(node.skin) + ", which does not exist; its mesh "
+           + "renders unskinned");
   }
   if (node.camera >= 0)
     m_cameraPlacements.push_back({world, index});
@@ -975,6 +1021,150 @@ bool GltfImporter::placeInstances(
     note("node " + std::to_string(index) + ": " + std::to_string(degenerate)
          + " of its instances have a degenerate transform and are not "
            "drawn");
+  return true;
+}
+
+const std::vector<double> &GltfImporter::morphWeights(int key) const
+{
+  if (const auto placed = m_meshPlacements.find(key);
+      placed != m_meshPlacements.end() && !placed->second.empty()) {
+    const tinygltf::Node &node =
+        m_model.nodes[size_t(placed->second.front().node)];
+    if (!node.weights.empty())
+      return node.weights;
+  }
+  return m_model.meshes[size_t(meshOf(key))].weights;
+}
+
+bool GltfImporter::jointMatrices(int skinIndex, std::vector<Mat4d> &joints)
+{
+  const tinygltf::Skin &skin = m_model.skins[size_t(skinIndex)];
+  const std::string name = "skin " + std::to_string(skinIndex);
+  std::vector<float> inverseBind;
+  if (skin.inverseBindMatrices >= 0) {
+    int components = 0;
+    std::string error;
+    if (!readAccessor(m_model,
+            skin.inverseBindMatrices,
+            16,
+            16,
+            inverseBind,
+            components,
+            error))
+      return fail(name + " inverseBindMatrices: " + error);
+    if (inverseBind.size() != 16 * skin.joints.size())
+      return fail(name + " has " + std::to_string(skin.joints.size())
+                  + " joints and " + std::to_string(inverseBind.size() / 16)
+                  + " inverse bind matrices");
+  }
+  joints.clear();
+  for (size_t j = 0; j < skin.joints.size(); j++) {
+    const int joint = skin.joints[j];
+    if (joint < 0 || size_t(joint) >= m_model.nodes.size())
+      return fail(name + " joint " + std::to_string(j) + " is node "
+                  + std::to_string(joint) + ", which does not exist");
+    Mat4d bind = identity();
+    if (!inverseBind.empty())
+      std::copy(inverseBind.begin() + ptrdiff_t(16 * j),
+          inverseBind.begin() + ptrdiff_t(16 * j + 16),
+          bind.begin());
+    joints.push_back(multiply(m_nodeWorld[size_t(joint)], bind));
+  }
+  return true;
+}
+
+bool GltfImporter::skin(const tinygltf::Primitive &primitive,
+    const std::vector<Mat4d> &joints,
+    bool directions,
+    int components,
+    std::vector<float> &values,
+    std::string &error)
+{
+  const auto jointsAttribute = primitive.attributes.find("JOINTS_0");
+  const auto weightsAttribute = primitive.attributes.find("WEIGHTS_0");
+  if (jointsAttribute == primitive.attributes.end()
+      || weightsAttribute == primitive.attributes.end()) {
+    error = "is skinned but has no JOINTS_0 and WEIGHTS_0";
+    return false;
+  }
+  std::vector<uint32_t> influences;
+  std::vector<float> weights;
+  int n = 0;
+  if (!readAccessor(
+          m_model, jointsAttribute->second, 4, 4, influences, n, error)
+      || !readAccessor(
+          m_model, weightsAttribute->second, 4, 4, weights, n, error)) {
+    error = "JOINTS_0/WEIGHTS_0: " + error;
+    return false;
+  }
+  const size_t vertices = values.size() / size_t(components);
+  if (influences.size() != 4 * vertices || weights.size() != 4 * vertices) {
+    error = "JOINTS_0/WEIGHTS_0 have a different count than POSITION";
+    return false;
+  }
+  for (size_t v = 0; v < vertices; v++) {
+    Mat4d m{};
+    double total = 0.0;
+    for (size_t k = 0; k < 4; k++) {
+      const uint32_t joint = influences[4 * v + k];
+      const double w = weights[4 * v + k];
+      if (w == 0.0)
+        continue;
+      if (joint >= joints.size()) {
+        error = "JOINTS_0 names joint " + std::to_string(joint)
+                + " of a skin of " + std::to_string(joints.size());
+        return false;
+      }
+      for (size_t e = 0; e < 16; e++)
+        m[e] += w * joints[joint][e];
+      total += w;
+    }
+    if (total == 0.0)
+      m = identity();
+    float *x = &values[v * size_t(components)];
+    const double p[3] = {x[0], x[1], x[2]};
+    const double h = directions ? 0.0 : 1.0;
+    for (int r = 0; r < 3; r++)
+      x[r] = float(m[size_t(r)] * p[0] + m[size_t(4 + r)] * p[1]
+                   + m[size_t(8 + r)] * p[2] + m[size_t(12 + r)] * h);
+  }
+  return true;
+}
+
+bool GltfImporter::morph(int key,
+    const tinygltf::Primitive &primitive,
+    const char *attribute,
+    int components,
+    std::vector<float> &values,
+    std::string &error)
+{
+  const std::vector<double> &weights = morphWeights(key);
+  const size_t targets = std::min(weights.size(), primitive.targets.size());
+  const int displaced = std::min(components, 3); // never a tangent's w
+  for (size_t t = 0; t < targets; t++) {
+    const auto found = primitive.targets[t].find(attribute);
+    if (weights[t] == 0.0 || found == primitive.targets[t].end())
+      continue;
+    std::vector<float> deltas;
+    int deltaComponents = 0;
+    if (!readAccessor(
+            m_model, found->second, 3, 3, deltas, deltaComponents, error)) {
+      error = std::string("morph target ") + std::to_string(t) + " " + attribute
+              + ": " + error;
+      return false;
+    }
+    const size_t vertices = values.size() / size_t(components);
+    if (deltas.size() != 3 * vertices) {
+      error = std::string("morph target ") + std::to_string(t) + " " + attribute
+              + " has a different count than the attribute";
+      return false;
+    }
+    const float w = float(weights[t]);
+    for (size_t v = 0; v < vertices; v++)
+      for (int c = 0; c < displaced; c++)
+        values[v * size_t(components) + size_t(c)] +=
+            w * deltas[3 * v + size_t(c)];
+  }
   return true;
 }
 
@@ -1772,11 +1962,13 @@ ANARIMaterial GltfImporter::newMaterial(int index, bool vertexColors)
   return material;
 }
 
-bool GltfImporter::buildPrimitive(int meshIndex,
+bool GltfImporter::buildPrimitive(int key,
     int primitiveIndex,
     std::vector<ANARIObject> &surfaces,
-    scenes::Bounds &bounds)
+    scenes::Bounds &bounds,
+    const std::vector<Mat4d> *joints)
 {
+  const int meshIndex = meshOf(key);
   const tinygltf::Primitive &primitive =
       m_model.meshes[size_t(meshIndex)].primitives[size_t(primitiveIndex)];
   const std::string where = "mesh " + std::to_string(meshIndex) + " primitive "
@@ -1802,8 +1994,6 @@ bool GltfImporter::buildPrimitive(int meshIndex,
          + (points ? "points" : "lines") + " are left out");
     return true;
   }
-  if (!primitive.targets.empty())
-    note("morph targets are not applied; meshes render in their base shape");
   auto attribute = [&](const char *name) {
     auto found = primitive.attributes.find(name);
     return found == primitive.attributes.end() ? -1 : found->second;
@@ -1819,7 +2009,10 @@ bool GltfImporter::buildPrimitive(int meshIndex,
   const size_t vertexCount = positions.size() / 3;
   if (vertexCount == 0)
     return true;
-  sampleOutline(positions.data(), vertexCount, m_meshOutlines[meshIndex]);
+  if (!morph(key, primitive, "POSITION", 3, positions, error)
+      || (joints && !skin(primitive, *joints, false, 3, positions, error)))
+    return fail(where + " " + error);
+  sampleOutline(positions.data(), vertexCount, m_meshOutlines[key]);
 
   std::vector<uint32_t> indices;
   if (primitive.indices >= 0) {
@@ -1942,6 +2135,14 @@ bool GltfImporter::buildPrimitive(int meshIndex,
       return fail(
           where + " " + o.gltf + " has a different count than POSITION");
     }
+    const bool direction =
+        std::string(o.gltf) == "NORMAL" || std::string(o.gltf) == "TANGENT";
+    if (!morph(key, primitive, o.gltf, components, values, error)
+        || (joints && direction
+            && !skin(primitive, *joints, true, components, values, error))) {
+      anariRelease(m_device, geometry);
+      return fail(where + " " + error);
+    }
     const ANARIDataType type = ANARIDataType(ANARI_FLOAT32 + components - 1);
     const std::vector<float> data = arranged(values, size_t(components));
     ANARIArray1D array = scenes::newArray1D(m_device,
@@ -2057,17 +2258,17 @@ void GltfImporter::choosePointAndLineRadius()
   // placed mesh (from POSITION's min and max, else its values), so they
   // show about 2 pixels wide in a 1000-pixel view framed to the scene.
   bool needed = false;
-  for (const auto &[meshIndex, placements] : m_meshPlacements)
+  for (const auto &[key, placements] : m_meshPlacements)
     for (const tinygltf::Primitive &p :
-        m_model.meshes[size_t(meshIndex)].primitives)
+        m_model.meshes[size_t(meshOf(key))].primitives)
       needed |=
           p.mode >= TINYGLTF_MODE_POINTS && p.mode <= TINYGLTF_MODE_LINE_STRIP;
   if (!needed)
     return;
   scenes::Bounds world;
-  for (const auto &[meshIndex, placements] : m_meshPlacements)
+  for (const auto &[key, placements] : m_meshPlacements)
     for (const tinygltf::Primitive &p :
-        m_model.meshes[size_t(meshIndex)].primitives) {
+        m_model.meshes[size_t(meshOf(key))].primitives) {
       const auto found = p.attributes.find("POSITION");
       if (found == p.attributes.end() || found->second < 0
           || size_t(found->second) >= m_model.accessors.size())
@@ -2108,14 +2309,17 @@ void GltfImporter::choosePointAndLineRadius()
                       : kPointAndLineRadius;
 }
 
-bool GltfImporter::buildMeshGroup(int meshIndex)
+bool GltfImporter::buildMeshGroup(int key)
 {
   std::vector<ANARIObject> surfaces;
   scenes::Bounds bounds;
-  const tinygltf::Mesh &mesh = m_model.meshes[size_t(meshIndex)];
+  const tinygltf::Mesh &mesh = m_model.meshes[size_t(meshOf(key))];
+  std::vector<Mat4d> joints;
+  if (key < 0 && !jointMatrices(m_skinned[size_t(-key - 1)].skin, joints))
+    return false;
   // The world radius at the mesh's first placement's scale.
   m_objectRadius = m_worldRadius;
-  if (const auto placed = m_meshPlacements.find(meshIndex);
+  if (const auto placed = m_meshPlacements.find(key);
       placed != m_meshPlacements.end() && !placed->second.empty()) {
     const Mat4d &m = placed->second.front().worldFromObject;
     const double det = m[0] * (m[5] * m[10] - m[9] * m[6])
@@ -2126,7 +2330,8 @@ bool GltfImporter::buildMeshGroup(int meshIndex)
       m_objectRadius = float(m_worldRadius / scale);
   }
   for (size_t p = 0; p < mesh.primitives.size(); p++) {
-    if (!buildPrimitive(meshIndex, int(p), surfaces, bounds)) {
+    if (!buildPrimitive(
+            key, int(p), surfaces, bounds, key < 0 ? &joints : nullptr)) {
       for (ANARIObject s : surfaces)
         anariRelease(m_device, s);
       return false;
@@ -2140,8 +2345,8 @@ bool GltfImporter::buildMeshGroup(int meshIndex)
     for (ANARIObject s : surfaces)
       anariRelease(m_device, s);
   }
-  m_groups[meshIndex] = group;
-  m_meshBounds[meshIndex] = bounds;
+  m_groups[key] = group;
+  m_meshBounds[key] = bounds;
   return true;
 }
 
@@ -2280,6 +2485,7 @@ LoadResult GltfImporter::load()
   if (!findVariant())
     return std::move(m_result);
   m_onPath.assign(m_model.nodes.size(), false);
+  m_nodeWorld.assign(m_model.nodes.size(), identity());
   for (int root : roots)
     if (!traverse(root))
       return std::move(m_result);

@@ -40,6 +40,10 @@ the outputs are committed, so this only reruns when the assets change):
                         silhouette, not its bounding box)
   variants              variants.gltf: a quad, red by default, "green" and
                         "blue" as KHR_materials_variants
+  morph targets         morphed-quad.gltf: a quad moved to z = 0.5 by its
+                        default morph weights
+  skins                 skinned-bar.gltf: a bar bent by 90 degrees by its
+                        second joint
   normal maps           normal-mapped-plane.gltf: a plane of two UV islands,
                         the right one mirrored in TEXCOORD_1 (which the
                         normal map reads; TEXCOORD_0 is a plain planar map),
@@ -616,6 +620,75 @@ def variants_quad():
     return finish_gltf(gltf, buf)
 
 
+def morphed_quad():
+    """A quad filling an orthographic view from z = 3, at z = 0, with two
+    morph targets: +1 along z (mesh weight 0.5: the quad renders at z = 0.5,
+    depth 2.5) and +10 along x (weight 0: no effect)."""
+    buf = Buffer()
+    attributes, indices = quad_accessors(buf)
+    gltf = {
+        "asset": {"version": "2.0",
+                  "generator": "prism tests/cli/data/make_assets.py"},
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1]}],
+        "nodes": [{"mesh": 0}, {"camera": 0, "translation": [0.0, 0.0, 3.0]}],
+        "meshes": [{"weights": [0.5, 0.0], "primitives": [{
+            "attributes": attributes, "indices": indices,
+            "targets": [
+                {"POSITION": buf.accessor("f", FLOAT, "VEC3",
+                                          [(0.0, 0.0, 1.0)] * 4)},
+                {"POSITION": buf.accessor("f", FLOAT, "VEC3",
+                                          [(10.0, 0.0, 0.0)] * 4)}]}]}],
+        "cameras": [{"type": "orthographic", "orthographic": {
+            "xmag": 1.0, "ymag": 1.0, "znear": 0.1, "zfar": 10.0}}],
+    }
+    return finish_gltf(gltf, buf)
+
+
+def skinned_bar():
+    """A bar 0.2 wide from x = 0 to 2 along y = 0, skinned to two joints:
+    the root at the origin holds x = 0 and 1, the second (a child at x = 1,
+    turned 90 degrees about z) holds x = 2, so the posed bar runs right to
+    (1, 0), then up to (1, 1). The mesh node's own translation (5, 0, 0)
+    does not apply to a skinned mesh. An orthographic camera sees x in
+    [0, 2], y in [-0.5, 1.5]."""
+    buf = Buffer()
+    positions = [(x, y, 0.0) for x in (0.0, 1.0, 2.0) for y in (-0.1, 0.1)]
+    indices = [0, 2, 3, 0, 3, 1, 2, 4, 5, 2, 5, 3]
+    joints = [(0, 0, 0, 0)] * 4 + [(1, 0, 0, 0)] * 2
+    weights = [(1.0, 0.0, 0.0, 0.0)] * 6
+    inverse_bind = [(1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0,
+                     0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0),
+                    (1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0,
+                     0.0, 0.0, 1.0, 0.0, -1.0, 0.0, 0.0, 1.0)]
+    half = math.sqrt(0.5)
+    gltf = {
+        "asset": {"version": "2.0",
+                  "generator": "prism tests/cli/data/make_assets.py"},
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1, 3]}],
+        "nodes": [{"mesh": 0, "skin": 0, "translation": [5.0, 0.0, 0.0]},
+                  {"children": [2]},
+                  {"translation": [1.0, 0.0, 0.0],
+                   "rotation": [0.0, 0.0, half, half]},
+                  {"camera": 0, "translation": [1.0, 0.5, 3.0]}],
+        "skins": [{"joints": [1, 2], "inverseBindMatrices":
+                   buf.accessor("f", FLOAT, "MAT4", inverse_bind)}],
+        "meshes": [{"primitives": [{
+            "attributes": {
+                "POSITION": buf.accessor("f", FLOAT, "VEC3", positions,
+                                         bounds=True),
+                "JOINTS_0": buf.accessor("B", UBYTE, "VEC4", joints),
+                "WEIGHTS_0": buf.accessor("f", FLOAT, "VEC4", weights)},
+            "indices": buf.accessor("H", USHORT, "SCALAR", indices),
+            "material": 0}]}],
+        "materials": [{"pbrMetallicRoughness": {"metallicFactor": 0.0}}],
+        "cameras": [{"type": "orthographic", "orthographic": {
+            "xmag": 1.0, "ymag": 1.0, "znear": 0.1, "zfar": 10.0}}],
+    }
+    return finish_gltf(gltf, buf)
+
+
 def quads_gltf(quads, materials, images=None, extensions_used=None,
                lights=False, view_half=1.0):
     """Unit-textured 2 * half squares at z = 0, each (cx, cy, half, material,
@@ -994,6 +1067,8 @@ def main():
     write("instanced-grid.gltf", instanced_grid())
     write("sphere.obj", uv_sphere_obj())
     write("variants.gltf", variants_quad())
+    write("morphed-quad.gltf", morphed_quad())
+    write("skinned-bar.gltf", skinned_bar())
     write("normal-mapped-plane.gltf", normal_mapped_plane(None))
     for stem, files in (("unlit", unlit_files()),
                         ("vertex-color-texture", vertex_color_files()),
