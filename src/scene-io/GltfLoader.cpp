@@ -1,6 +1,7 @@
 #include "GltfLoader.h"
 
 #include "DemoScenes.h"
+#include "GltfAnimation.h"
 #include "GltfIndexCheck.h"
 #include "GltfSupport.h"
 #include "ImageIO.h"
@@ -696,6 +697,8 @@ class GltfImporter
   bool parse();
   // Places the meshes, cameras and lights of every node under `root`.
   bool traverse(int root);
+  // The nodes at options.time, or a note that animations are not played.
+  bool pose();
   // The index of options.variant among the file's KHR_materials_variants;
   // false (and the run failed) when the file has no such variant.
   bool findVariant();
@@ -1165,6 +1168,37 @@ bool GltfImporter::morph(int key,
         values[v * size_t(components) + size_t(c)] +=
             w * deltas[3 * v + size_t(c)];
   }
+  return true;
+}
+
+bool GltfImporter::pose()
+{
+  if (!m_options.time) {
+    if (!m_model.animations.empty())
+      note(std::to_string(m_model.animations.size()) + " animation"
+           + (m_model.animations.size() == 1 ? " is" : "s are")
+           + " not played: the scene is in its nodes' own pose (--time T "
+             "poses it at T seconds)");
+    return true;
+  }
+  auto read = [](const tinygltf::Model &model,
+                  int accessor,
+                  int minComponents,
+                  int maxComponents,
+                  std::vector<float> &values,
+                  std::string &error) {
+    int components = 0;
+    return readAccessor(model,
+        accessor,
+        minComponents,
+        maxComponents,
+        values,
+        components,
+        error);
+  };
+  std::string error;
+  if (!poseAtTime(m_model, *m_options.time, read, error))
+    return fail(error);
   return true;
 }
 
@@ -2482,7 +2516,7 @@ LoadResult GltfImporter::load()
       if (!isChild[i])
         roots.push_back(int(i));
   }
-  if (!findVariant())
+  if (!findVariant() || !pose())
     return std::move(m_result);
   m_onPath.assign(m_model.nodes.size(), false);
   m_nodeWorld.assign(m_model.nodes.size(), identity());

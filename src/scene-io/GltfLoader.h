@@ -24,6 +24,7 @@
 
 #include <anari/anari.h>
 
+#include <optional>
 #include <string>
 
 namespace prism::scene_io {
@@ -34,6 +35,8 @@ struct GltfOptions
   // KHR_materials_variants: the variant whose materials primitives use;
   // empty: their default materials.
   std::string variant;
+  // Animations sampled at this time (seconds); unset: not played.
+  std::optional<double> time;
   // False: buffers and images must be inside the file (GLB chunk or data
   // URI); external URIs fail as missing files (fuzzing).
   bool readExternalFiles{true};

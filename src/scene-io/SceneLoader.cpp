@@ -47,6 +47,7 @@ LoadResult loadScene(
     GltfOptions gltf;
     gltf.cameraIndex = options.gltfCamera;
     gltf.variant = options.gltfVariant;
+    gltf.time = options.gltfTime;
     return loadGltf(device, source.path, gltf);
   }
   case SceneFormat::Obj:

@@ -11,6 +11,7 @@
 
 #include <anari/anari.h>
 
+#include <optional>
 #include <string>
 
 namespace prism::scene_io {
@@ -19,6 +20,7 @@ struct LoadOptions
 {
   int gltfCamera{-1};      // the glTF camera to view through; -1: the first
   std::string gltfVariant; // KHR_materials_variants; empty: the defaults
+  std::optional<double> gltfTime; // animations at this time; unset: none
   // Raw volumes: what the user gave of the layout (the file's name fills
   // in the rest, resolveRawFormat).
   RawVolumeFormat raw;

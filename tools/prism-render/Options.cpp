@@ -208,6 +208,16 @@ std::vector<OptionSpec> optionSpecs()
             return {};
           }},
       {nullptr,
+          "--time",
+          true,
+          [](Options &o, const std::string &v) -> std::string {
+            float f = 0.f;
+            if (!parseFloats(v, &f, 1) || !(std::abs(f) <= 1e9f))
+              return expected("--time", "a time in seconds", v);
+            o.time = f;
+            return {};
+          }},
+      {nullptr,
           "--env",
           true,
           [](Options &o, const std::string &v) -> std::string {
@@ -640,6 +650,8 @@ Camera (default: the scene's camera, or framed to the world bounds)
 glTF files
   --variant NAME         use the glTF file's material variant NAME
                          (KHR_materials_variants) instead of its defaults
+  --time SECONDS         pose the file's animations (nodes, skins, morph
+                         weights) at this time (default: not played)
 
 Raw volumes
   --raw-dims XxYxZ       voxel counts (else taken from a name like

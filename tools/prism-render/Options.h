@@ -31,8 +31,9 @@ struct Options
 
   std::optional<Vec3> eye, at, up;
   std::optional<float> fovyDegrees;
-  int cameraIndex{-1}; // glTF camera to use; -1: the first in the scene
-  std::string variant; // glTF material variant (KHR_materials_variants)
+  int cameraIndex{-1};        // glTF camera to use; -1: the first in the scene
+  std::string variant;        // glTF material variant (KHR_materials_variants)
+  std::optional<double> time; // glTF animations at this time (seconds)
   std::optional<std::array<float, 4>> background;
   // The environment lighting the scene (scene_io::lightingFor): "studio",
   // "none", or an equirectangular image file; `environmentGiven` when

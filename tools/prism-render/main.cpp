@@ -59,6 +59,7 @@ scene_io::LoadOptions loadOptions(const Options &options)
   scene_io::LoadOptions load;
   load.gltfCamera = options.cameraIndex;
   load.gltfVariant = options.variant;
+  load.gltfTime = options.time;
   if (options.rawDimensions)
     load.raw.dimensions = *options.rawDimensions;
   load.raw.type = options.rawType;
@@ -234,6 +235,8 @@ int RenderRun::loadScene()
     console::warning("--camera only applies to glTF files; ignored");
   if (!m_options.variant.empty() && !gltf)
     console::warning("--variant only applies to glTF files; ignored");
+  if (m_options.time && !gltf)
+    console::warning("--time only applies to glTF files; ignored");
   if (m_options.transferFunction.given && !scene_io::hasVolumeStyle(m_source))
     console::warning(
         "--tf-* options only apply to volumes (.raw, .nvdb, demo:volume); "

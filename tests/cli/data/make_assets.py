@@ -43,7 +43,8 @@ the outputs are committed, so this only reruns when the assets change):
   morph targets         morphed-quad.gltf: a quad moved to z = 0.5 by its
                         default morph weights
   skins                 skinned-bar.gltf: a bar bent by 90 degrees by its
-                        second joint
+                        second joint; animated-bar.gltf: the same joint
+                        turning from 0 (t = 0) to 90 degrees (t = 2)
   normal maps           normal-mapped-plane.gltf: a plane of two UV islands,
                         the right one mirrored in TEXCOORD_1 (which the
                         normal map reads; TEXCOORD_0 is a plain planar map),
@@ -645,6 +646,28 @@ def morphed_quad():
     return finish_gltf(gltf, buf)
 
 
+def animated_bar():
+    """skinned_bar() with its second joint animated: turned 0 degrees at
+    t = 0 and 90 at t = 2 (LINEAR: 45 at t = 1)."""
+    gltf = json.loads(skinned_bar())
+    buf = Buffer()
+    buf.data = bytearray(base64.b64decode(
+        gltf["buffers"][0]["uri"].split(",", 1)[1]))
+    buf.views, buf.accessors = gltf["bufferViews"], gltf["accessors"]
+    half = math.sqrt(0.5)
+    gltf["animations"] = [{
+        "samplers": [{
+            "input": buf.accessor("f", FLOAT, "SCALAR", [(0.0,), (2.0,)],
+                                  bounds=True),
+            "output": buf.accessor("f", FLOAT, "VEC4",
+                                   [(0.0, 0.0, 0.0, 1.0),
+                                    (0.0, 0.0, half, half)]),
+            "interpolation": "LINEAR"}],
+        "channels": [{"sampler": 0,
+                      "target": {"node": 2, "path": "rotation"}}]}]
+    return finish_gltf(gltf, buf)
+
+
 def skinned_bar():
     """A bar 0.2 wide from x = 0 to 2 along y = 0, skinned to two joints:
     the root at the origin holds x = 0 and 1, the second (a child at x = 1,
@@ -1069,6 +1092,7 @@ def main():
     write("variants.gltf", variants_quad())
     write("morphed-quad.gltf", morphed_quad())
     write("skinned-bar.gltf", skinned_bar())
+    write("animated-bar.gltf", animated_bar())
     write("normal-mapped-plane.gltf", normal_mapped_plane(None))
     for stem, files in (("unlit", unlit_files()),
                         ("vertex-color-texture", vertex_color_files()),
