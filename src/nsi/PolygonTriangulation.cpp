@@ -155,12 +155,14 @@ void bridgeHole(const std::vector<Point2> &points,
   } else {
     // The crossed edge's end further right, unless an outline corner lies
     // inside the triangle (m, crossing, that end): then the one of those
-    // closest in angle to the ray, which m certainly sees.
+    // closest in angle to the ray, which m certainly sees; of corners at
+    // the same angle (on one line with m, as when holes sit in a row) the
+    // nearest, so the bridge does not run along another hole's edge.
     const size_t end = (edge + 1) % outline.size();
     target = points[outline[edge]].x > points[outline[end]].x ? edge : end;
     const Point2 crossing{nearestX, m.y};
     const Point2 p = points[outline[target]];
-    double bestAngle = INFINITY;
+    double bestAngle = INFINITY, bestDistance = INFINITY;
     for (size_t i = 0; i < outline.size(); ++i) {
       const Point2 q = points[outline[i]];
       if (i == target || samePoint(q, p))
@@ -170,8 +172,11 @@ void bridgeHole(const std::vector<Point2> &points,
       if (!inside)
         continue;
       const double angle = std::atan2(std::abs(q.y - m.y), q.x - m.x);
-      if (angle < bestAngle) {
+      const double distance = std::hypot(q.x - m.x, q.y - m.y);
+      if (angle < bestAngle
+          || (angle == bestAngle && distance < bestDistance)) {
         bestAngle = angle;
+        bestDistance = distance;
         target = i;
       }
     }

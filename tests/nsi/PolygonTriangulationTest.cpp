@@ -161,4 +161,15 @@ TEST(PolygonTriangulation, TwoHolesSideBySide)
   expectCoversWithHoles({outline, left, right}, 13);
 }
 
+// The NSI spec's Listing 3.1, second face: two square holes in a row, wound
+// as the outline is; each hole's rightmost corners and the other hole's
+// leftmost ones lie on the same lines, so the bridges run along edges.
+TEST(PolygonTriangulation, SpecListingTwoSquareHoles)
+{
+  const Corners outline{{4, 0, 0}, {9, 0, 0}, {9, 3, 0}, {4, 3, 0}};
+  const Corners left{{5, 1, 0}, {6, 1, 0}, {6, 2, 0}, {5, 2, 0}};
+  const Corners right{{7, 1, 0}, {8, 1, 0}, {8, 2, 0}, {7, 2, 0}};
+  expectCoversWithHoles({outline, left, right}, 14);
+}
+
 } // namespace

@@ -1425,6 +1425,43 @@ SetAttribute "shape" "nvertices" "int" 2 [ 4 4 ] "nholes" "int" 1 1
   EXPECT_EQ(value(image, 25, 16), 0.f) << "outside";
 }
 
+TEST_F(Render, SpecListingMeshWithSeveralHoles)
+{
+  // The NSI spec's Listing 3.1: three squares, the first with a triangular
+  // hole, the second with two square holes, the third with none (scaled by
+  // 0.4 about the strip's centre, 10 ahead). The holes wind as the outlines
+  // do, as the listing writes them.
+  NSIContext_t ctx = beginRender();
+  const Image image = renderWhite(ctx,
+      R"(Create "shape" "mesh" Connect "shape" "" ".root" "objects"
+SetAttribute "shape" "nholes" "int" 3 [ 1 2 0 ]
+  "nvertices" "int" 6 [ 4 3  4 4 4  4 ]
+  "P" "point" 23 [ -2.6 -0.6 -10  -1.4 -0.6 -10  -1.4 0.6 -10  -2.6 0.6 -10
+    -2.2 -0.2 -10  -1.8 -0.2 -10  -2.2 0.2 -10
+    -1 -0.6 -10  1 -0.6 -10  1 0.6 -10  -1 0.6 -10
+    -0.6 -0.2 -10  -0.2 -0.2 -10  -0.2 0.2 -10  -0.6 0.2 -10
+    0.2 -0.2 -10  0.6 -0.2 -10  0.6 0.2 -10  0.2 0.2 -10
+    1.4 -0.6 -10  2.6 -0.6 -10  2.6 0.6 -10  1.4 0.6 -10 ])",
+      "",
+      R"("resolution" "int[2]" 1 [ 64 64 ] "oversampling" "int" 1 4)",
+      path("holes.exr"));
+  NSIEnd(ctx);
+  EXPECT_EQ(m_messages.problems(), "");
+  // 0.08375 units per pixel, the strip's centre at pixel (32, 32).
+  auto at = [&](float x, float y) {
+    return value(
+        image, uint32_t(32.f + x / 0.08375f), uint32_t(32.f - y / 0.08375f));
+  };
+  EXPECT_EQ(at(-2.1f, -0.1f), 0.f) << "the first square's triangular hole";
+  EXPECT_GT(at(-1.6f, 0.4f), 0.8f) << "the first square beside its hole";
+  EXPECT_EQ(at(-0.4f, 0.f), 0.f) << "the second square's left hole";
+  EXPECT_EQ(at(0.4f, 0.f), 0.f) << "the second square's right hole";
+  EXPECT_GT(at(0.f, 0.f), 0.8f) << "between the two holes";
+  EXPECT_GT(at(0.f, 0.45f), 0.8f) << "above the two holes";
+  EXPECT_GT(at(2.f, 0.f), 0.8f) << "the third square, whole";
+  EXPECT_EQ(at(-1.2f, 0.f), 0.f) << "between the first two squares";
+}
+
 TEST_F(Render, FaceVaryingColorsAreInterpolated)
 {
   // The white square with a colour per corner (Cs through Cs.indices):
