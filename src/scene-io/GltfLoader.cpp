@@ -671,6 +671,33 @@ std::vector<Vec4> cornerTangents(const std::vector<float> &positions,
 
 // ---- the importer ---------------------------------------------------------
 
+// One glTF primitive on its way to an ANARI geometry.
+struct PrimitiveData
+{
+  const tinygltf::Primitive *primitive{nullptr};
+  std::string where; // "mesh M primitive P", for messages
+  int mode{TINYGLTF_MODE_TRIANGLES};
+  bool points{false}, lines{false};
+  const char *subtype{"triangle"};
+  std::vector<float> positions; // x, y, z per vertex
+  size_t vertexCount{0};
+  // Points and lines: the vertices in drawing order, and where each curve
+  // segment starts; triangles: their corners.
+  std::vector<uint32_t> order, segmentStarts;
+  std::vector<std::array<uint32_t, 3>> triangles;
+  size_t geometryVertices{0}; // vertices as the geometry gets them
+  bool drawn{false};
+  // NORMAL and TEXCOORD_n as read, for tangent generation.
+  std::map<std::string, std::vector<float>> kept;
+
+  // The attribute accessor `name` names, or -1.
+  int attribute(const char *name) const;
+  // Per-vertex values as the geometry gets them: for points and lines in
+  // drawing order.
+  std::vector<float> arranged(
+      const std::vector<float> &values, size_t components) const;
+};
+
 struct Placement
 {
   Mat4d worldFromObject;
@@ -731,11 +758,29 @@ class GltfImporter
     return key >= 0 ? key : m_skinned[size_t(-key - 1)].mesh;
   }
   bool buildMeshGroup(int key);
+  using Joints = std::vector<Mat4d>;
   bool buildPrimitive(int key,
       int primitiveIndex,
       std::vector<ANARIObject> &surfaces,
       scenes::Bounds &bounds,
-      const std::vector<Mat4d> *joints);
+      const Joints *joints);
+  // A primitive's positions (morphed, skinned) and topology; `d.drawn`
+  // false when it draws nothing (or is left out with a note).
+  bool readPrimitive(
+      int key, int primitiveIndex, const Joints *joints, PrimitiveData &d);
+  // Positions, radius and indices; `bounds` grows by the shape.
+  void setShape(
+      const PrimitiveData &d, ANARIGeometry geometry, scenes::Bounds &bounds);
+  // NORMAL, TANGENT and TEXCOORD_n (morphed, skinned), kept in `d.kept`.
+  bool setVertexAttributes(
+      int key, PrimitiveData &d, const Joints *joints, ANARIGeometry geometry);
+  void setTangents(const PrimitiveData &d,
+      const tinygltf::Material *gm,
+      ANARIGeometry geometry);
+  bool setVertexColors(const PrimitiveData &d,
+      const tinygltf::Material *gm,
+      ANARIGeometry geometry,
+      bool &vertexColors);
   // The skin's joint matrices (joint world x inverse bind matrix).
   bool jointMatrices(int skin, std::vector<Mat4d> &joints);
   // Poses `values` (`components` per vertex: positions 3, normals 3,
@@ -1996,78 +2041,19 @@ ANARIMaterial GltfImporter::newMaterial(int index, bool vertexColors)
   return material;
 }
 
-bool GltfImporter::buildPrimitive(int key,
-    int primitiveIndex,
-    std::vector<ANARIObject> &surfaces,
-    scenes::Bounds &bounds,
-    const std::vector<Mat4d> *joints)
-{
-  const int meshIndex = meshOf(key);
-  const tinygltf::Primitive &primitive =
-      m_model.meshes[size_t(meshIndex)].primitives[size_t(primitiveIndex)];
-  const std::string where = "mesh " + std::to_string(meshIndex) + " primitive "
-                            + std::to_string(primitiveIndex);
-  const int mode =
-      primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
-  const bool points = mode == TINYGLTF_MODE_POINTS;
-  const bool lines = mode == TINYGLTF_MODE_LINE
-                     || mode == TINYGLTF_MODE_LINE_LOOP
-                     || mode == TINYGLTF_MODE_LINE_STRIP;
-  if (!points && !lines && mode != TINYGLTF_MODE_TRIANGLES
-      && mode != TINYGLTF_MODE_TRIANGLE_STRIP
-      && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
-    note("primitive mode " + std::to_string(mode)
-         + " is not a glTF mode; such primitives are left out");
-    return true;
-  }
-  const char *subtype = points ? "sphere" : lines ? "curve" : "triangle";
-  if ((points || lines)
-      && !scenes::hasSubtype(m_device, ANARI_GEOMETRY, subtype)) {
-    note(std::string("the device has no ") + subtype
-         + " geometry (KHR_GEOMETRY_" + (points ? "SPHERE" : "CURVE") + "); "
-         + (points ? "points" : "lines") + " are left out");
-    return true;
-  }
-  auto attribute = [&](const char *name) {
-    auto found = primitive.attributes.find(name);
-    return found == primitive.attributes.end() ? -1 : found->second;
-  };
-  std::string error;
-  int components = 0;
-  std::vector<float> positions;
-  if (attribute("POSITION") < 0)
-    return fail(where + " has no POSITION attribute");
-  if (!readAccessor(
-          m_model, attribute("POSITION"), 3, 3, positions, components, error))
-    return fail(where + " POSITION: " + error);
-  const size_t vertexCount = positions.size() / 3;
-  if (vertexCount == 0)
-    return true;
-  if (!morph(key, primitive, "POSITION", 3, positions, error)
-      || (joints && !skin(primitive, *joints, false, 3, positions, error)))
-    return fail(where + " " + error);
-  sampleOutline(positions.data(), vertexCount, m_meshOutlines[key]);
+namespace {
 
-  std::vector<uint32_t> indices;
-  if (primitive.indices >= 0) {
-    if (!readAccessor(
-            m_model, primitive.indices, 1, 1, indices, components, error))
-      return fail(where + " indices: " + error);
-  } else {
-    indices.resize(vertexCount);
-    for (size_t i = 0; i < vertexCount; i++)
-      indices[i] = uint32_t(i);
-  }
-  for (uint32_t i : indices)
-    if (i >= vertexCount)
-      return fail(where + " has an index (" + std::to_string(i) + ") past its "
-                  + std::to_string(vertexCount) + " vertices");
-  // Points become spheres and lines round curves, over their vertices
-  // rearranged in drawing order (`order`); a curve segment runs from each
-  // of `segmentStarts` to the next vertex.
-  std::vector<uint32_t> order, segmentStarts;
-  std::vector<std::array<uint32_t, 3>> triangles;
-  if (points) {
+// Points become spheres and lines round curves, over their vertices
+// rearranged in drawing order (`order`); a curve segment runs from each of
+// `segmentStarts` to the next vertex. Triangles, strips and fans become
+// triangles.
+void arrangeTopology(int mode,
+    const std::vector<uint32_t> &indices,
+    std::vector<uint32_t> &order,
+    std::vector<uint32_t> &segmentStarts,
+    std::vector<std::array<uint32_t, 3>> &triangles)
+{
+  if (mode == TINYGLTF_MODE_POINTS) {
     order = indices;
   } else if (mode == TINYGLTF_MODE_LINE) {
     for (size_t i = 0; i + 1 < indices.size(); i += 2) {
@@ -2075,7 +2061,8 @@ bool GltfImporter::buildPrimitive(int key,
       order.push_back(indices[i]);
       order.push_back(indices[i + 1]);
     }
-  } else if (lines) {
+  } else if (mode == TINYGLTF_MODE_LINE_LOOP
+             || mode == TINYGLTF_MODE_LINE_STRIP) {
     if (indices.size() >= 2) {
       order = indices;
       if (mode == TINYGLTF_MODE_LINE_LOOP)
@@ -2096,99 +2083,267 @@ bool GltfImporter::buildPrimitive(int key,
         triangles.push_back({indices[i - 1], indices[i - 2], indices[i]});
     }
   }
-  if (triangles.empty() && (points ? order.empty() : segmentStarts.empty()))
-    return true;
-  // Per-vertex values as the geometry gets them: for points and lines in
-  // drawing order.
-  const size_t geometryVertices = order.empty() ? vertexCount : order.size();
-  auto arranged = [&](const std::vector<float> &values, size_t components) {
-    if (order.empty())
-      return values;
-    std::vector<float> out(order.size() * components);
-    for (size_t v = 0; v < order.size(); v++)
-      std::copy_n(
-          &values[order[v] * components], components, &out[v * components]);
-    return out;
-  };
+}
 
-  ANARIGeometry geometry = anariNewGeometry(m_device, subtype);
-  const std::vector<float> placed = arranged(positions, 3);
+} // namespace
+
+std::vector<float> PrimitiveData::arranged(
+    const std::vector<float> &values, size_t components) const
+{
+  if (order.empty())
+    return values;
+  std::vector<float> out(order.size() * components);
+  for (size_t v = 0; v < order.size(); v++)
+    std::copy_n(
+        &values[order[v] * components], components, &out[v * components]);
+  return out;
+}
+
+int PrimitiveData::attribute(const char *name) const
+{
+  auto found = primitive->attributes.find(name);
+  return found == primitive->attributes.end() ? -1 : found->second;
+}
+
+bool GltfImporter::readPrimitive(
+    int key, int primitiveIndex, const Joints *joints, PrimitiveData &d)
+{
+  const int meshIndex = meshOf(key);
+  d.primitive =
+      &m_model.meshes[size_t(meshIndex)].primitives[size_t(primitiveIndex)];
+  d.where = "mesh " + std::to_string(meshIndex) + " primitive "
+            + std::to_string(primitiveIndex);
+  d.mode = d.primitive->mode < 0 ? TINYGLTF_MODE_TRIANGLES : d.primitive->mode;
+  d.points = d.mode == TINYGLTF_MODE_POINTS;
+  d.lines = d.mode == TINYGLTF_MODE_LINE || d.mode == TINYGLTF_MODE_LINE_LOOP
+            || d.mode == TINYGLTF_MODE_LINE_STRIP;
+  if (!d.points && !d.lines && d.mode != TINYGLTF_MODE_TRIANGLES
+      && d.mode != TINYGLTF_MODE_TRIANGLE_STRIP
+      && d.mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+    note("primitive mode " + std::to_string(d.mode)
+         + " is not a glTF mode; such primitives are left out");
+    return true;
+  }
+  d.subtype = d.points ? "sphere" : d.lines ? "curve" : "triangle";
+  if ((d.points || d.lines)
+      && !scenes::hasSubtype(m_device, ANARI_GEOMETRY, d.subtype)) {
+    note(std::string("the device has no ") + d.subtype
+         + " geometry (KHR_GEOMETRY_" + (d.points ? "SPHERE" : "CURVE") + "); "
+         + (d.points ? "points" : "lines") + " are left out");
+    return true;
+  }
+  std::string error;
+  int components = 0;
+  if (d.attribute("POSITION") < 0)
+    return fail(d.where + " has no POSITION attribute");
+  if (!readAccessor(m_model,
+          d.attribute("POSITION"),
+          3,
+          3,
+          d.positions,
+          components,
+          error))
+    return fail(d.where + " POSITION: " + error);
+  d.vertexCount = d.positions.size() / 3;
+  if (d.vertexCount == 0)
+    return true;
+  if (!morph(key, *d.primitive, "POSITION", 3, d.positions, error)
+      || (joints && !skin(*d.primitive, *joints, false, 3, d.positions, error)))
+    return fail(d.where + " " + error);
+  sampleOutline(d.positions.data(), d.vertexCount, m_meshOutlines[key]);
+
+  std::vector<uint32_t> indices;
+  if (d.primitive->indices >= 0) {
+    if (!readAccessor(
+            m_model, d.primitive->indices, 1, 1, indices, components, error))
+      return fail(d.where + " indices: " + error);
+  } else {
+    indices.resize(d.vertexCount);
+    for (size_t i = 0; i < d.vertexCount; i++)
+      indices[i] = uint32_t(i);
+  }
+  for (uint32_t i : indices)
+    if (i >= d.vertexCount)
+      return fail(d.where + " has an index (" + std::to_string(i)
+                  + ") past its " + std::to_string(d.vertexCount)
+                  + " vertices");
+  arrangeTopology(d.mode, indices, d.order, d.segmentStarts, d.triangles);
+  d.drawn = !d.triangles.empty()
+            || (d.points ? !d.order.empty() : !d.segmentStarts.empty());
+  d.geometryVertices = d.order.empty() ? d.vertexCount : d.order.size();
+  return true;
+}
+
+void GltfImporter::setShape(
+    const PrimitiveData &d, ANARIGeometry geometry, scenes::Bounds &bounds)
+{
+  const std::vector<float> placed = d.arranged(d.positions, 3);
   scenes::setArray(m_device,
       geometry,
       "vertex.position",
       ANARI_FLOAT32_VEC3,
       std::vector<Vec3>((const Vec3 *)placed.data(),
-          (const Vec3 *)placed.data() + geometryVertices));
-  const float radius = points || lines ? m_objectRadius : 0.f;
-  if (points || lines)
+          (const Vec3 *)placed.data() + d.geometryVertices));
+  const float radius = d.points || d.lines ? m_objectRadius : 0.f;
+  if (d.points || d.lines)
     scenes::setFloat(m_device, geometry, "radius", radius);
-  if (lines)
+  if (d.lines)
     scenes::setArray(
-        m_device, geometry, "primitive.index", ANARI_UINT32, segmentStarts);
-  else if (!points)
+        m_device, geometry, "primitive.index", ANARI_UINT32, d.segmentStarts);
+  else if (!d.points)
     scenes::setArray(
-        m_device, geometry, "primitive.index", ANARI_UINT32_VEC3, triangles);
-  for (size_t v = 0; v < geometryVertices; v++)
+        m_device, geometry, "primitive.index", ANARI_UINT32_VEC3, d.triangles);
+  for (size_t v = 0; v < d.geometryVertices; v++)
     for (float side : {-radius, radius})
       bounds.extend(Vec3{placed[3 * v] + side,
           placed[3 * v + 1] + side,
           placed[3 * v + 2] + side});
+}
 
-  // Optional attributes: (glTF name, ANARI name, components, type).
+bool GltfImporter::setVertexAttributes(
+    int key, PrimitiveData &d, const Joints *joints, ANARIGeometry geometry)
+{
+  // (glTF name, ANARI name, components)
   struct Optional
   {
     const char *gltf;
     const char *anari;
-    int minComponents, maxComponents;
+    int components;
+    bool direction; // posed by a skin's linear part
   };
-  const Optional optional[] = {{"NORMAL", "vertex.normal", 3, 3},
-      {"TANGENT", "vertex.tangent", 4, 4},
-      {"TEXCOORD_0", "vertex.attribute0", 2, 2},
-      {"TEXCOORD_1", "vertex.attribute1", 2, 2},
-      {"TEXCOORD_2", "vertex.attribute2", 2, 2},
-      {"TEXCOORD_3", "vertex.attribute3", 2, 2}};
-  // NORMAL and TEXCOORD_n, kept for tangent generation.
-  std::map<std::string, std::vector<float>> kept;
+  const Optional optional[] = {{"NORMAL", "vertex.normal", 3, true},
+      {"TANGENT", "vertex.tangent", 4, true},
+      {"TEXCOORD_0", "vertex.attribute0", 2, false},
+      {"TEXCOORD_1", "vertex.attribute1", 2, false},
+      {"TEXCOORD_2", "vertex.attribute2", 2, false},
+      {"TEXCOORD_3", "vertex.attribute3", 2, false}};
   for (const Optional &o : optional) {
     // Spheres and round curves have their own normals.
-    if (attribute(o.gltf) < 0 || ((points || lines) && o.minComponents != 2))
+    if (d.attribute(o.gltf) < 0 || ((d.points || d.lines) && o.components != 2))
       continue;
-    std::vector<float> &values = kept[o.gltf];
+    std::vector<float> &values = d.kept[o.gltf];
+    std::string error;
+    int components = 0;
     if (!readAccessor(m_model,
-            attribute(o.gltf),
-            o.minComponents,
-            o.maxComponents,
+            d.attribute(o.gltf),
+            o.components,
+            o.components,
             values,
             components,
-            error)) {
-      anariRelease(m_device, geometry);
-      return fail(where + " " + o.gltf + ": " + error);
-    }
-    if (values.size() != vertexCount * size_t(components)) {
-      anariRelease(m_device, geometry);
+            error))
+      return fail(d.where + " " + o.gltf + ": " + error);
+    if (values.size() != d.vertexCount * size_t(components))
       return fail(
-          where + " " + o.gltf + " has a different count than POSITION");
-    }
-    const bool direction =
-        std::string(o.gltf) == "NORMAL" || std::string(o.gltf) == "TANGENT";
-    if (!morph(key, primitive, o.gltf, components, values, error)
-        || (joints && direction
-            && !skin(primitive, *joints, true, components, values, error))) {
-      anariRelease(m_device, geometry);
-      return fail(where + " " + error);
-    }
+          d.where + " " + o.gltf + " has a different count than POSITION");
+    if (!morph(key, *d.primitive, o.gltf, components, values, error)
+        || (joints && o.direction
+            && !skin(*d.primitive, *joints, true, components, values, error)))
+      return fail(d.where + " " + error);
     const ANARIDataType type = ANARIDataType(ANARI_FLOAT32 + components - 1);
-    const std::vector<float> data = arranged(values, size_t(components));
+    const std::vector<float> data = d.arranged(values, size_t(components));
     ANARIArray1D array = scenes::newArray1D(m_device,
         type,
         data.data(),
-        geometryVertices,
+        d.geometryVertices,
         sizeof(float) * size_t(components));
     anariSetParameter(m_device, geometry, o.anari, ANARI_ARRAY1D, &array);
     anariRelease(m_device, array);
   }
+  return true;
+}
 
-  const int materialIndex = variantMaterial(primitive);
+// glTF: a normal-mapped primitive without TANGENT gets MikkTSpace tangents,
+// one per triangle corner (mirrored UVs split vertices).
+void GltfImporter::setTangents(const PrimitiveData &d,
+    const tinygltf::Material *gm,
+    ANARIGeometry geometry)
+{
+  const int texCoord = gm && !d.triangles.empty() ? normalMapTexCoord(*gm) : -1;
+  if (texCoord < 0 || d.attribute("TANGENT") >= 0)
+    return;
+  const auto uvs = d.kept.find("TEXCOORD_" + std::to_string(texCoord));
+  if (uvs == d.kept.end()) {
+    note("a normal map uses TEXCOORD_" + std::to_string(texCoord)
+         + ", which its primitive does not have; tangents come from the "
+           "device");
+    return;
+  }
+  const auto normals = d.kept.find("NORMAL");
+  const std::vector<Vec4> tangents = cornerTangents(d.positions,
+      normals == d.kept.end() ? nullptr : &normals->second,
+      uvs->second,
+      d.triangles);
+  scenes::setArray(
+      m_device, geometry, "faceVarying.tangent", ANARI_FLOAT32_VEC4, tangents);
+}
+
+// glTF multiplies COLOR_0 into the base color. Alone with the base color
+// factor, the factor goes into the colors here; with a texture (or a
+// converted specular-glossiness color) the device multiplies them
+// (PRISM_MATERIAL_BASE_COLOR_FACTOR).
+bool GltfImporter::setVertexColors(const PrimitiveData &d,
+    const tinygltf::Material *gm,
+    ANARIGeometry geometry,
+    bool &vertexColors)
+{
+  vertexColors = false;
+  if (d.attribute("COLOR_0") < 0)
+    return true;
+  const bool specularGlossiness =
+      gm && extension(gm->extensions, "KHR_materials_pbrSpecularGlossiness");
+  const bool deviceMultiplies =
+      specularGlossiness
+      || (gm && gm->pbrMetallicRoughness.baseColorTexture.index >= 0);
+  if (deviceMultiplies && !m_baseColorFactor) {
+    note(
+        "the device does not implement PRISM_MATERIAL_BASE_COLOR_FACTOR; "
+        "vertex colors (COLOR_0) are ignored where a base color texture "
+        "or specular-glossiness color would multiply them");
+    return true;
+  }
+  std::vector<float> colors;
+  std::string error;
+  int components = 0;
+  if (!readAccessor(
+          m_model, d.attribute("COLOR_0"), 3, 4, colors, components, error))
+    return fail(d.where + " COLOR_0: " + error);
+  if (colors.size() != d.vertexCount * size_t(components))
+    return fail(d.where + " COLOR_0 has a different count than POSITION");
+  // ANARI multiplies nothing into an attribute color, so the base color
+  // factor goes into the colors here.
+  Vec4 factor{1.f, 1.f, 1.f, 1.f};
+  if (gm && !deviceMultiplies
+      && gm->pbrMetallicRoughness.baseColorFactor.size() == 4)
+    for (int i = 0; i < 4; i++)
+      factor[i] = float(gm->pbrMetallicRoughness.baseColorFactor[size_t(i)]);
+  const std::vector<float> ordered = d.arranged(colors, size_t(components));
+  std::vector<Vec4> rgba(d.geometryVertices);
+  for (size_t v = 0; v < d.geometryVertices; v++)
+    for (int i = 0; i < 4; i++)
+      rgba[v][i] =
+          factor[i]
+          * (i < components ? ordered[v * size_t(components) + size_t(i)]
+                            : 1.f);
+  scenes::setArray(
+      m_device, geometry, "vertex.color", ANARI_FLOAT32_VEC4, rgba);
+  vertexColors = true;
+  return true;
+}
+
+bool GltfImporter::buildPrimitive(int key,
+    int primitiveIndex,
+    std::vector<ANARIObject> &surfaces,
+    scenes::Bounds &bounds,
+    const Joints *joints)
+{
+  PrimitiveData d;
+  if (!readPrimitive(key, primitiveIndex, joints, d))
+    return false;
+  if (!d.drawn)
+    return true; // left out, with a note where there is something to say
+  ANARIGeometry geometry = anariNewGeometry(m_device, d.subtype);
+  setShape(d, geometry, bounds);
+  const int materialIndex = variantMaterial(*d.primitive);
   if (materialIndex >= int(m_model.materials.size()))
     note(
         "a primitive uses a material that does not exist; the default "
@@ -2197,77 +2352,13 @@ bool GltfImporter::buildPrimitive(int key,
       materialIndex >= 0 && size_t(materialIndex) < m_model.materials.size()
           ? &m_model.materials[size_t(materialIndex)]
           : nullptr;
-  // glTF: a normal-mapped primitive without TANGENT gets MikkTSpace
-  // tangents, one per triangle corner (mirrored UVs split vertices).
-  const int tangentTexCoord =
-      gm && !triangles.empty() ? normalMapTexCoord(*gm) : -1;
-  if (tangentTexCoord >= 0 && attribute("TANGENT") < 0) {
-    const auto uvs = kept.find("TEXCOORD_" + std::to_string(tangentTexCoord));
-    if (uvs == kept.end()) {
-      note("a normal map uses TEXCOORD_" + std::to_string(tangentTexCoord)
-           + ", which its primitive does not have; tangents come from the "
-             "device");
-    } else {
-      const auto normals = kept.find("NORMAL");
-      const std::vector<Vec4> tangents = cornerTangents(positions,
-          normals == kept.end() ? nullptr : &normals->second,
-          uvs->second,
-          triangles);
-      scenes::setArray(m_device,
-          geometry,
-          "faceVarying.tangent",
-          ANARI_FLOAT32_VEC4,
-          tangents);
-    }
-  }
   bool vertexColors = false;
-  // glTF multiplies COLOR_0 into the base color. Alone with the base color
-  // factor, the factor goes into the colors here; with a texture (or a
-  // converted specular-glossiness color) the device multiplies them
-  // (PRISM_MATERIAL_BASE_COLOR_FACTOR).
-  const bool specularGlossiness =
-      gm && extension(gm->extensions, "KHR_materials_pbrSpecularGlossiness");
-  const bool deviceMultiplies =
-      specularGlossiness
-      || (gm && gm->pbrMetallicRoughness.baseColorTexture.index >= 0);
-  if (attribute("COLOR_0") >= 0) {
-    if (deviceMultiplies && !m_baseColorFactor) {
-      note(
-          "the device does not implement PRISM_MATERIAL_BASE_COLOR_FACTOR; "
-          "vertex colors (COLOR_0) are ignored where a base color texture "
-          "or specular-glossiness color would multiply them");
-    } else {
-      std::vector<float> colors;
-      if (!readAccessor(
-              m_model, attribute("COLOR_0"), 3, 4, colors, components, error)) {
-        anariRelease(m_device, geometry);
-        return fail(where + " COLOR_0: " + error);
-      }
-      if (colors.size() != vertexCount * size_t(components)) {
-        anariRelease(m_device, geometry);
-        return fail(where + " COLOR_0 has a different count than POSITION");
-      }
-      // ANARI multiplies nothing into an attribute color, so the base color
-      // factor goes into the colors here.
-      Vec4 factor{1.f, 1.f, 1.f, 1.f};
-      if (gm && !deviceMultiplies
-          && gm->pbrMetallicRoughness.baseColorFactor.size() == 4)
-        for (int i = 0; i < 4; i++)
-          factor[i] =
-              float(gm->pbrMetallicRoughness.baseColorFactor[size_t(i)]);
-      const std::vector<float> ordered = arranged(colors, size_t(components));
-      std::vector<Vec4> rgba(geometryVertices);
-      for (size_t v = 0; v < geometryVertices; v++)
-        for (int i = 0; i < 4; i++)
-          rgba[v][i] =
-              factor[i]
-              * (i < components ? ordered[v * size_t(components) + size_t(i)]
-                                : 1.f);
-      scenes::setArray(
-          m_device, geometry, "vertex.color", ANARI_FLOAT32_VEC4, rgba);
-      vertexColors = true;
-    }
+  if (!setVertexAttributes(key, d, joints, geometry)
+      || !setVertexColors(d, gm, geometry, vertexColors)) {
+    anariRelease(m_device, geometry);
+    return false;
   }
+  setTangents(d, gm, geometry);
   anariCommitParameters(m_device, geometry);
 
   ANARISurface surface = anariNewSurface(m_device);
