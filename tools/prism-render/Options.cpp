@@ -78,11 +78,13 @@ std::string expected(const std::string &option,
   return option + ": expected " + what + ", got '" + value + "'";
 }
 
-std::vector<OptionSpec> optionSpecs()
+// Pixel and sample counts are capped where a typo would otherwise ask for
+// terabytes (64k x 64k pixels, a million samples).
+constexpr uint64_t kMaxImageSide = 65536;
+
+// Options for the scene, the image and its samples.
+std::vector<OptionSpec> inputAndImageOptions()
 {
-  // Pixel and sample counts are capped where a typo would otherwise ask
-  // for terabytes (64k x 64k pixels, a million samples).
-  constexpr uint64_t kMaxImageSide = 65536;
   return {
       {"-o",
           "--output",
@@ -126,6 +128,13 @@ std::vector<OptionSpec> optionSpecs()
             o.samplesPerPixel = uint32_t(n);
             return {};
           }},
+  };
+}
+
+// Options for the renderer and its parameters.
+std::vector<OptionSpec> rendererOptions()
+{
+  return {
       {"-r",
           "--renderer",
           true,
@@ -146,6 +155,13 @@ std::vector<OptionSpec> optionSpecs()
                 v.substr(0, equals), v.substr(equals + 1));
             return {};
           }},
+  };
+}
+
+// Options for the view, and what of a glTF file is shown.
+std::vector<OptionSpec> cameraOptions()
+{
+  return {
       {nullptr,
           "--eye",
           true,
@@ -217,6 +233,13 @@ std::vector<OptionSpec> optionSpecs()
             o.time = f;
             return {};
           }},
+  };
+}
+
+// Options for the environment and the background.
+std::vector<OptionSpec> lightingOptions()
+{
+  return {
       {nullptr,
           "--env",
           true,
@@ -259,6 +282,13 @@ std::vector<OptionSpec> optionSpecs()
             o.background = c;
             return {};
           }},
+  };
+}
+
+// Options for the frame channels written besides color.
+std::vector<OptionSpec> channelOptions()
+{
+  return {
       {nullptr,
           "--depth",
           true,
@@ -305,6 +335,13 @@ std::vector<OptionSpec> optionSpecs()
             o.denoise = true;
             return {};
           }},
+  };
+}
+
+// Options for the library, the device and how it runs.
+std::vector<OptionSpec> deviceOptions()
+{
+  return {
       {nullptr,
           "--mpi-partition",
           false,
@@ -359,6 +396,13 @@ std::vector<OptionSpec> optionSpecs()
             o.threads = uint32_t(n);
             return {};
           }},
+  };
+}
+
+// Options for raw and NanoVDB volumes and their transfer function.
+std::vector<OptionSpec> volumeOptions()
+{
+  return {
       {nullptr,
           "--raw-dims",
           true,
@@ -462,6 +506,13 @@ std::vector<OptionSpec> optionSpecs()
             o.transferFunction.given = true;
             return {};
           }},
+  };
+}
+
+// Options for messages and help.
+std::vector<OptionSpec> generalOptions()
+{
+  return {
       {"-q",
           "--quiet",
           false,
@@ -491,6 +542,22 @@ std::vector<OptionSpec> optionSpecs()
             return {};
           }},
   };
+}
+
+std::vector<OptionSpec> optionSpecs()
+{
+  std::vector<OptionSpec> all;
+  for (auto group : {&inputAndImageOptions,
+           &rendererOptions,
+           &cameraOptions,
+           &lightingOptions,
+           &channelOptions,
+           &deviceOptions,
+           &volumeOptions,
+           &generalOptions})
+    for (OptionSpec &spec : group())
+      all.push_back(std::move(spec));
+  return all;
 }
 
 } // namespace
