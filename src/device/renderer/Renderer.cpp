@@ -161,7 +161,8 @@ Ray Renderer::cameraRay(
           : lensSample(x, y, context.sampleIndex);
   const float time = context.camera->rayTime(
       screen, exposureSample(x, y, context.sampleIndex));
-  return context.camera->generateRay(screen, lens, time);
+  return context.camera->generateRay(
+      screen, lens, time, float(context.width) / float(context.height));
 }
 
 rt::Hit Renderer::traceBeyond(
