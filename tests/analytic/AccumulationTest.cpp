@@ -149,12 +149,7 @@ TEST_F(Accumulation, PathTracedImageIsTheSameForAnyThreadCount)
   const float position[3] = {1, -1, 3}, intensity = 10.f;
   anariSetParameter(m_device, light, "position", ANARI_FLOAT32_VEC3, position);
   anariSetParameter(m_device, light, "intensity", ANARI_FLOAT32, &intensity);
-  anariCommitParameters(m_device, light);
-  setArray(w,
-      "light",
-      anariNewArray1D(m_device, &light, nullptr, nullptr, ANARI_LIGHT, 1));
-  anariRelease(m_device, light);
-  anariCommitParameters(m_device, w);
+  setOnlyLight(w, light);
   const float eye[3] = {0, -5, 3}, direction[3] = {0, 5, -2.5f};
   ANARICamera c = perspective(eye, direction, 0.8f);
   ANARIRenderer r = renderer("pathtracer");

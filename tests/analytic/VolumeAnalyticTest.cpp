@@ -284,12 +284,7 @@ TEST_F(VolumeTest, ShadowThroughASlabDimsTheLitPlane)
   ANARILight light = anariNewLight(m_device, "directional");
   anariSetParameter(m_device, light, "direction", ANARI_FLOAT32_VEC3, kDown);
   anariSetParameter(m_device, light, "irradiance", ANARI_FLOAT32, &E);
-  anariCommitParameters(m_device, light);
-  setArray(w,
-      "light",
-      anariNewArray1D(m_device, &light, nullptr, nullptr, ANARI_LIGHT, 1));
-  anariRelease(m_device, light);
-  anariCommitParameters(m_device, w);
+  setOnlyLight(w, light);
   // Looking down at a slant from beside the slab, at the plane below it.
   ANARIRenderer r = withBackground("pathtracer", background);
   const int one = 1;
