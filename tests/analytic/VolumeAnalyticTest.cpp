@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -232,6 +233,42 @@ TEST_F(VolumeTest, DepthIsWhereTheSlabIsEntered)
     for (ANARIObject o : {(ANARIObject)w, (ANARIObject)c, (ANARIObject)r})
       anariRelease(m_device, o);
   }
+  EXPECT_TRUE(problems().empty());
+}
+
+// The ANARI-SDK's volumeSampleRateFactor (EXP_VOLUME_SAMPLE_RATE) is the
+// raycast renderer's volumeSamplingRate under another name. A black slab
+// whose opacity is 0 up to value 0.5 and rises to 1 at value 1, over
+// values falling linearly from 1 at its top (z = 2) to 0 at z = 1: one
+// step per unit cell samples value 0.5 there and lets the white
+// background through; four per cell sample the opaque part.
+TEST_F(VolumeTest, SdkSampleRateFactorIsTheSamplingRate)
+{
+  const float black[3] = {0, 0, 0}, white[4] = {1, 1, 1, 1};
+  auto top = [](float, float, float z) {
+    return std::max(0.f, z - 1.f);
+  };
+  ANARIWorld w =
+      volumeWorld(volume(field(2, 2, 3, 2.f, top), black, {0.f, 0.f, 1.f}));
+  ANARICamera c = orthographic(kEye, kDown, 0.5f);
+  auto centre = [&](const char *name, float rate) {
+    ANARIRenderer r = withBackground("raycast", white);
+    if (name) {
+      anariSetParameter(m_device, r, name, ANARI_FLOAT32, &rate);
+      anariCommitParameters(m_device, r);
+    }
+    const float value = render(w, c, r, 8, 8).pixel(4, 4)[0];
+    anariRelease(m_device, r);
+    return value;
+  };
+  const float coarse = centre(nullptr, 1.f);
+  const float fine = centre("volumeSamplingRate", 4.f);
+  EXPECT_FLOAT_EQ(coarse, 1.f);
+  EXPECT_LT(fine, 0.9f);
+  EXPECT_EQ(centre("volumeSampleRateFactor", 4.f), fine);
+  EXPECT_EQ(centre("volumeSampleRateFactor", 1.f), coarse);
+  for (ANARIObject o : {(ANARIObject)w, (ANARIObject)c})
+    anariRelease(m_device, o);
   EXPECT_TRUE(problems().empty());
 }
 

@@ -2950,6 +2950,12 @@ constexpr float kDefault31_volumeSamplingRate[] = {1.f};
 constexpr float kMinimum31_volumeSamplingRate[] = {0.001f};
 // volumeSamplingRate maximum: ANARI_FLOAT32
 constexpr float kMaximum31_volumeSamplingRate[] = {1000.f};
+// volumeSampleRateFactor default: ANARI_FLOAT32
+constexpr float kDefault31_volumeSampleRateFactor[] = {1.f};
+// volumeSampleRateFactor minimum: ANARI_FLOAT32
+constexpr float kMinimum31_volumeSampleRateFactor[] = {0.001f};
+// volumeSampleRateFactor maximum: ANARI_FLOAT32
+constexpr float kMaximum31_volumeSampleRateFactor[] = {1000.f};
 // volumeMajorantGrid default: ANARI_BOOL
 alignas(4) constexpr int8_t kDefault31_volumeMajorantGrid[] = {1, 0, 0, 0};
 // clang-format on
@@ -3011,6 +3017,14 @@ constexpr ParameterEntry kParameters31[] = {
         .defaultValue = kDefault31_volumeSamplingRate,
         .minimum = kMinimum31_volumeSamplingRate,
         .maximum = kMaximum31_volumeSamplingRate,
+        .extension = kPrismRenderers},
+    {.name = "volumeSampleRateFactor",
+        .types = {kTypeList6, 1},
+        .description = "the ANARI-SDK's name (EXP_VOLUME_SAMPLE_RATE) for "
+                       "volumeSamplingRate, which wins when both are set",
+        .defaultValue = kDefault31_volumeSampleRateFactor,
+        .minimum = kMinimum31_volumeSampleRateFactor,
+        .maximum = kMaximum31_volumeSampleRateFactor,
         .extension = kPrismRenderers},
     {.name = "volumeMajorantGrid",
         .types = {kTypeList16, 1},
@@ -4104,7 +4118,7 @@ const ObjectEntry kObjects[] = {
                        "(empty space skipped): the fast preview",
         .extension = kPrismRenderers,
         .contributors = {kContributors31, 4},
-        .parameters = {kParameters31, 10}},
+        .parameters = {kParameters31, 11}},
     // ANARI_SURFACE
     {.type = ANARI_SURFACE,
         .description = "surface object",
