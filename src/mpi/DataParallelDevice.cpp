@@ -482,14 +482,9 @@ void DataParallelDevice::fingerprintWorld(
     }
   }
   d.worldLights =
-      uint32_t(world.declaredLightCount() + world.ownEmitterCount());
+      uint32_t(world.ownDeclaredLights().size() + world.ownEmitterCount());
   d.worldVolumes = uint32_t(world.volumes().size());
   d.worldContent = world.contentHash();
-}
-
-uint32_t DataParallelDevice::declaredLights(const World &world)
-{
-  return uint32_t(world.declaredLightCount());
 }
 
 FrameDescriptor DataParallelDevice::describe(
@@ -508,11 +503,6 @@ FrameDescriptor DataParallelDevice::describe(
     d.channelTypes[c] = frame->channelType(kChannelNames[c]);
   if (m_mode == RenderMode::Replicated && frame->world())
     fingerprintWorld(*frame->world(), d);
-  if (m_mode == RenderMode::PathTracer && frame->world()
-      && dynamic_cast<const PathTracer *>(frame->renderer())) {
-    d.declaredLights = declaredLights(*frame->world());
-    d.declaredLightsHash = frame->world()->declaredLightsHash();
-  }
   if (const Renderer *renderer = frame->renderer()) {
     const std::string &subtype = renderer->subtype();
     std::memcpy(d.renderer,
@@ -754,9 +744,10 @@ void DataParallelDevice::renderPathTraced(
   frame.share({.lockstep = true});
   uint64_t bytesSent = 0;
   // Any process may shade any path, so each samples every process's
-  // emissive surfaces (sent again only when a world placed them anew).
+  // emissive surfaces and declared lights (sent again only when a world
+  // placed them anew).
   if (World *world = frame.world()) {
-    const EmitterExchangeResult shared = shareEmitters(*world, communicator);
+    const EmitterExchangeResult shared = shareLights(*world, communicator);
     bytesSent += shared.bytesSent;
     if (!shared.problem.empty()) {
       reportStatus(handle,

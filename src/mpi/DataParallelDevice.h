@@ -220,8 +220,6 @@ class DataParallelDevice : public prism::Device
   FrameDescriptor describe(Frame *frame, const FrameState &state) const;
   // Replicated mode: what must be the same in every process's world.
   static void fingerprintWorld(const World &world, FrameDescriptor &d);
-  // The lights `world` declares, not counting its emissive surfaces.
-  static uint32_t declaredLights(const World &world);
   void renderComposited(ANARIFrame handle,
       Frame &frame,
       FrameState &state,
