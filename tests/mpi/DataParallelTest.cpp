@@ -730,6 +730,26 @@ void scenarioPathTracer()
   compositeShadows(7);
 }
 
+// This process's share of `owners`' boxes lit by `share`, path traced by
+// prism_mpi on MPI_COMM_WORLD; any warning or error is a failure.
+Render traceLitShare(const std::vector<int> &owners,
+    const Lighting &share,
+    const std::string &label)
+{
+  Status status;
+  Render traced;
+  {
+    Device mpi("prism_mpi", status);
+    if (!mpi.device)
+      return traced;
+    MPI_Comm comm = MPI_COMM_WORLD;
+    traced = traceBoxes(mpi.device, boxesOf(owners, worldRank()), &comm, share);
+  }
+  for (const std::string &e : status.take(ANARI_SEVERITY_WARNING))
+    check(false, label + ": unexpected report: " + e);
+  return traced;
+}
+
 // One world, three frames: the holder's quad changes color between the
 // first two renders (its world places its emitters anew, the others' do
 // not), so every process must sample the new quad; the third render
@@ -828,17 +848,7 @@ void scenarioEmissive()
     share.emissiveQuad = rank == holder;
     const std::string label =
         sun ? "emissive quad and sun" : "emissive quad alone";
-    Status status;
-    Render traced;
-    {
-      Device mpi("prism_mpi", status);
-      if (!mpi.device)
-        return;
-      MPI_Comm comm = MPI_COMM_WORLD;
-      traced = traceBoxes(mpi.device, boxesOf(owners, rank), &comm, share);
-    }
-    for (const std::string &e : status.take())
-      check(false, label + ": unexpected error: " + e);
+    const Render traced = traceLitShare(owners, share, label);
     checkPathTraced(traced, owners, MPI_COMM_WORLD, label, whole);
   }
   emissiveChange(owners, holder);
@@ -868,21 +878,12 @@ void scenarioLights()
     share.lit = whole.lit && rank == 0;
     share.sky = whole.sky && rank == 0;
     share.floor = rank == 0;
-    Status status;
-    Render traced;
-    {
-      Device mpi("prism_mpi", status);
-      if (!mpi.device)
-        return;
-      MPI_Comm comm = MPI_COMM_WORLD;
-      traced = traceBoxes(mpi.device, boxesOf(owners, rank), &comm, share);
-    }
-    for (const std::string &e : status.take(ANARI_SEVERITY_WARNING))
-      check(false, label + ": unexpected report: " + e);
+    const Render traced = traceLitShare(owners, share, label);
     checkPathTraced(traced, owners, MPI_COMM_WORLD, label, whole);
     if (rank != 0 || g_failures || sky)
       continue;
     // The floor alone, lit by the sun, in one process.
+    Status status;
     Render floor;
     {
       Device prism("prism", status);
