@@ -594,12 +594,35 @@ try {
       "anariRenderFrame: failed for an unknown reason");
 }
 
+uint64_t DataParallelDevice::shareWorldLights(
+    ANARIFrame handle, World &world, MPI_Comm communicator, bool withEmitters)
+{
+  const EmitterExchangeResult shared =
+      shareLights(world, communicator, withEmitters);
+  if (!shared.problem.empty()) {
+    reportStatus(handle,
+        ANARI_FRAME,
+        ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_OPERATION,
+        "anariRenderFrame: " + shared.problem);
+  }
+  return shared.bytesSent;
+}
+
 void DataParallelDevice::renderComposited(
     ANARIFrame handle, Frame &frame, FrameState &state, MPI_Comm communicator)
 {
   frame.share({.keepDepth = true, .omitBackground = true});
-  if (World *world = frame.world())
-    world->keepOwnEmitters(); // lit by its own process only
+  uint64_t lightBytes = 0;
+  if (World *world = frame.world()) {
+    // Lit by its own emitters, and by every process's declared lights for
+    // the path tracer (the only renderer that reads lights; every process
+    // runs the same one, so all take part alike).
+    if (dynamic_cast<const PathTracer *>(frame.renderer()))
+      lightBytes = shareWorldLights(handle, *world, communicator, false);
+    else
+      world->keepOwnEmitters();
+  }
   Device::renderFrame(handle);
   const FrameBuffers &local = frame.linearPixels();
   politeBarrier(communicator);
@@ -648,7 +671,7 @@ void DataParallelDevice::renderComposited(
   }
   std::lock_guard lock(m_stateMutex);
   state.assembled = std::move(assembled);
-  state.bytesSent = compositor.bytesSent();
+  state.bytesSent = compositor.bytesSent() + lightBytes;
 }
 
 void DataParallelDevice::renderReplicated(
@@ -746,17 +769,8 @@ void DataParallelDevice::renderPathTraced(
   // Any process may shade any path, so each samples every process's
   // emissive surfaces and declared lights (sent again only when a world
   // placed them anew).
-  if (World *world = frame.world()) {
-    const EmitterExchangeResult shared = shareLights(*world, communicator);
-    bytesSent += shared.bytesSent;
-    if (!shared.problem.empty()) {
-      reportStatus(handle,
-          ANARI_FRAME,
-          ANARI_SEVERITY_WARNING,
-          ANARI_STATUS_INVALID_OPERATION,
-          "anariRenderFrame: " + shared.problem);
-    }
-  }
+  if (World *world = frame.world())
+    bytesSent += shareWorldLights(handle, *world, communicator, true);
   // A world changed on some processes restarts their accumulation only:
   // every process must start from the same sample, or their paths would
   // differ and the lockstep break. One reduction of (first, ~last).

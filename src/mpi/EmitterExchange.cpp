@@ -19,13 +19,14 @@ namespace {
 // center and radius (4 floats); then, only when the processes' declared
 // lights differ, whether its lights could be described (a count) and
 // their descriptions (LightExchange.h).
-void describeOwnEmitters(const World &world, ByteWriter &out)
+void describeOwnEmitters(const World &world, bool withEmitters, ByteWriter &out)
 {
   const box3 bounds = world.bounds();
   out.add(bounds.lower);
   out.add(bounds.upper);
-  out.add(uint32_t(world.ownEmitterCount()));
-  for (size_t e = 0; e < world.ownEmitterCount(); e++) {
+  const size_t count = withEmitters ? world.ownEmitterCount() : 0;
+  out.add(uint32_t(count));
+  for (size_t e = 0; e < count; e++) {
     const EmissiveSurface &emitter = world.ownEmitter(e);
     const EmitterShape &shape = emitter.shape();
     out.add(emitter.radiance());
@@ -117,7 +118,8 @@ std::vector<LightDescription> distinctLights(
 
 } // namespace
 
-EmitterExchangeResult shareLights(World &world, MPI_Comm communicator)
+EmitterExchangeResult shareLights(
+    World &world, MPI_Comm communicator, bool withEmitters)
 {
   EmitterExchangeResult result;
   int rank = 0, ranks = 1;
@@ -125,14 +127,23 @@ EmitterExchangeResult shareLights(World &world, MPI_Comm communicator)
   MPI_Comm_size(communicator, &ranks);
   if (ranks == 1)
     return result;
-  int changed = world.sharesEmitters() ? 0 : 1;
+  if (!withEmitters && world.sharesEmitters())
+    world.keepOwnEmitters(); // shared for another kind of render
+  int changed =
+      (withEmitters ? world.sharesEmitters() : world.sharesDeclaredLights())
+          ? 0
+          : 1;
   MPI_Allreduce(MPI_IN_PLACE, &changed, 1, MPI_INT, MPI_MAX, communicator);
   if (!changed)
     return result;
   const bool sendLights = !sameDeclaredLights(world, communicator);
+  if (!withEmitters && !sendLights) {
+    world.keepOwnEmitters();
+    return result;
+  }
 
   ByteWriter out;
-  describeOwnEmitters(world, out);
+  describeOwnEmitters(world, withEmitters, out);
   std::string ownProblem;
   if (sendLights) {
     ByteWriter lights;
@@ -221,7 +232,10 @@ EmitterExchangeResult shareLights(World &world, MPI_Comm communicator)
                                 : ownProblem)
           + "); each process samples its own declared lights only";
     }
-    world.shareEmitters(std::move(emitters), firstOwn, radius);
+    if (withEmitters)
+      world.shareEmitters(std::move(emitters), firstOwn, radius);
+    else
+      world.keepOwnEmitters();
     return result;
   }
   // Every process rebuilds the same lights from the same bytes.
@@ -230,7 +244,10 @@ EmitterExchangeResult shareLights(World &world, MPI_Comm communicator)
     if (auto placed = placeDescribedLight(world.device(), light))
       lights.push_back(std::move(placed));
   }
-  world.shareLights(std::move(lights), std::move(emitters), firstOwn, radius);
+  if (withEmitters)
+    world.shareLights(std::move(lights), std::move(emitters), firstOwn, radius);
+  else
+    world.shareDeclaredLights(std::move(lights), radius);
   result.lightsShared = true;
   return result;
 }

@@ -39,7 +39,10 @@ struct EmitterExchangeResult
 // (LightExchange.h) and every world declares every process's, a light
 // declared alike on several processes once, in rank order
 // (World::shareLights()). Otherwise nothing but one flag is reduced. On
-// one process the world is left as it is and nothing is called.
-EmitterExchangeResult shareLights(World &world, MPI_Comm communicator);
+// one process the world is left as it is and nothing is called. Without
+// `withEmitters` (composite mode) only the declared lights are shared
+// (World::shareDeclaredLights()), and each world keeps its own emitters.
+EmitterExchangeResult shareLights(
+    World &world, MPI_Comm communicator, bool withEmitters = true);
 
 } // namespace prism::mpi

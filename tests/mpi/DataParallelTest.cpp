@@ -731,10 +731,12 @@ void scenarioPathTracer()
 }
 
 // This process's share of `owners`' boxes lit by `share`, path traced by
-// prism_mpi on MPI_COMM_WORLD; any warning or error is a failure.
+// prism_mpi on MPI_COMM_WORLD (in `mode`, or the default); any warning or
+// error is a failure.
 Render traceLitShare(const std::vector<int> &owners,
     const Lighting &share,
-    const std::string &label)
+    const std::string &label,
+    const char *mode = nullptr)
 {
   Status status;
   Render traced;
@@ -742,6 +744,8 @@ Render traceLitShare(const std::vector<int> &owners,
     Device mpi("prism_mpi", status);
     if (!mpi.device)
       return traced;
+    if (mode)
+      anariSetParameter(mpi.device, mpi.device, "mode", ANARI_STRING, mode);
     MPI_Comm comm = MPI_COMM_WORLD;
     traced = traceBoxes(mpi.device, boxesOf(owners, worldRank()), &comm, share);
   }
@@ -854,6 +858,59 @@ void scenarioEmissive()
   emissiveChange(owners, holder);
 }
 
+// Composite mode path traces each process's part alone, but with every
+// process's declared lights: the sun on rank 0 lights the boxes of the
+// others, so the boxes rank 0 composites hold at least half the light
+// they hold in the whole scene (the rest is what the compositing model
+// cannot have: light bounced off the floor and the other processes'
+// boxes; shadows from them), where with rank 0's sun unknown to the
+// others they would be black.
+void compositeLights(const std::vector<int> &owners)
+{
+  const int rank = worldRank();
+  Lighting whole{true, 4};
+  whole.floor = true;
+  Lighting share = whole;
+  share.lit = rank == 0;
+  share.floor = rank == 0;
+  const Render composited =
+      traceLitShare(owners, share, "composite, sun on rank 0", "composite");
+  if (rank != 0 || g_failures)
+    return;
+  Status status;
+  Render all, floor;
+  {
+    Device prism("prism", status);
+    all = traceBoxes(prism.device, boxesOf(owners, -1), nullptr, whole);
+    floor = traceBoxes(prism.device, {}, nullptr, whole);
+  }
+  const Image &got = composited.image, &want = all.image;
+  check(got.depth == want.depth && !want.depth.empty(),
+      "composite, sun on rank 0: depth equals the single-process depth");
+  if (g_failures)
+    return;
+  double gotSum = 0.0, wantSum = 0.0;
+  size_t boxPixels = 0;
+  for (size_t i = 0; i < want.depth.size(); i++) {
+    // A box, not the floor nor the background.
+    if (!std::isfinite(want.depth[i]) || want.depth[i] == floor.image.depth[i])
+      continue;
+    boxPixels++;
+    for (int c = 0; c < 3; c++) {
+      gotSum += got.color[4 * i + c];
+      wantSum += want.color[4 * i + c];
+    }
+  }
+  std::printf(
+      "composite, sun on rank 0: %zu box pixels, %.1f of the whole scene's "
+      "%.1f\n",
+      boxPixels,
+      gotSum,
+      wantSum);
+  check(boxPixels > want.depth.size() / 10 && gotSum >= 0.5 * wantSum,
+      "composite, sun on rank 0: the other processes' boxes are lit");
+}
+
 // The paper's model: a light is globally visible wherever it is declared.
 // Rank 0 holds the floor and the world's only light; the other processes
 // hold the boxes (on one process, rank 0 all). Every process samples the
@@ -910,6 +967,7 @@ void scenarioLights()
             + std::to_string(shadowed) + " of " + std::to_string(floorSeen)
             + " floor pixels)");
   }
+  compositeLights(owners);
 }
 
 // Accumulating, the last process commits its world again (its content

@@ -278,32 +278,60 @@ void World::share(std::vector<std::unique_ptr<PlacedLight>> *declared,
   m_declaredLightCount = m_placedLights.size();
   for (auto &emitter : emitters)
     m_placedLights.push_back(std::move(emitter));
+  shiftEmitterIndices(m_emitterShift);
+  m_sharesEmitters = true;
+  indexLights(radius);
+}
+
+void World::shiftEmitterIndices(int32_t shift)
+{
   for (auto &ofPlacement : m_emitterLights) {
     for (int32_t &index : ofPlacement)
-      index = index >= 0 ? index + m_emitterShift : index;
+      index = index >= 0 ? index + shift : index;
   }
-  m_sharesEmitters = true;
+}
+
+void World::shareDeclaredLights(
+    std::vector<std::unique_ptr<PlacedLight>> declared, float radius)
+{
+  keepOwnEmitters();
+  std::vector<std::unique_ptr<PlacedLight>> emitters;
+  for (size_t i = m_declaredLightCount; i < m_placedLights.size(); i++)
+    emitters.push_back(std::move(m_placedLights[i]));
+  m_placedLights.resize(m_declaredLightCount);
+  m_ownDeclared = std::move(m_placedLights);
+  m_placedLights = std::move(declared);
+  m_emitterShift =
+      int32_t(m_placedLights.size()) - int32_t(m_declaredLightCount);
+  m_declaredLightCount = m_placedLights.size();
+  for (auto &emitter : emitters)
+    m_placedLights.push_back(std::move(emitter));
+  shiftEmitterIndices(m_emitterShift);
+  m_sharesDeclared = true;
   indexLights(radius);
 }
 
 void World::keepOwnEmitters()
 {
-  if (!m_sharesEmitters)
+  if (!m_sharesEmitters && !m_sharesDeclared)
     return;
+  std::vector<std::unique_ptr<PlacedLight>> emitters;
+  if (m_sharesEmitters) {
+    emitters = std::move(m_ownEmitters);
+    m_ownEmitters.clear();
+  } else {
+    for (size_t i = m_declaredLightCount; i < m_placedLights.size(); i++)
+      emitters.push_back(std::move(m_placedLights[i]));
+  }
+  m_placedLights.resize(m_declaredLightCount);
   if (m_sharesDeclared) {
     m_placedLights = std::move(m_ownDeclared);
     m_ownDeclared.clear();
-  } else {
-    m_placedLights.resize(m_declaredLightCount);
   }
   m_declaredLightCount = m_placedLights.size();
-  for (auto &emitter : m_ownEmitters)
+  for (auto &emitter : emitters)
     m_placedLights.push_back(std::move(emitter));
-  m_ownEmitters.clear();
-  for (auto &ofPlacement : m_emitterLights) {
-    for (int32_t &index : ofPlacement)
-      index = index >= 0 ? index - m_emitterShift : index;
-  }
+  shiftEmitterIndices(-m_emitterShift);
   m_emitterShift = 0;
   m_sharesEmitters = false;
   m_sharesDeclared = false;

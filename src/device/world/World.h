@@ -164,13 +164,18 @@ class World : public Object
       std::vector<std::unique_ptr<PlacedLight>> emitters,
       size_t firstOwn,
       float sceneRadius);
+  // Only `declared` in place of the world's own declared lights; its own
+  // emitters stay (their indices follow the declared lights).
+  void shareDeclaredLights(
+      std::vector<std::unique_ptr<PlacedLight>> declared, float sceneRadius);
   // Back to the world's own declared lights and emitters.
   void keepOwnEmitters();
   bool sharesEmitters() const
   {
     return m_sharesEmitters;
   }
-  // Whether shareLights() put other declared lights in place of its own.
+  // Whether shareLights() or shareDeclaredLights() put other declared
+  // lights in place of its own.
   bool sharesDeclaredLights() const
   {
     return m_sharesDeclared;
@@ -196,6 +201,8 @@ class World : public Object
   void placeVolumes();
   // The lights rays can reach and light selection, from m_placedLights.
   void indexLights(float sceneRadius);
+  // Moves every emitterLight() index by `shift`.
+  void shiftEmitterIndices(int32_t shift);
   // shareEmitters(), and shareLights() when `declared` is not NULL.
   void share(std::vector<std::unique_ptr<PlacedLight>> *declared,
       std::vector<std::unique_ptr<PlacedLight>> emitters,

@@ -172,5 +172,32 @@ TEST_F(SharedEmittersTest, SharedDeclaredLightsReplaceTheOwnOnes)
   EXPECT_EQ(world.emitterLight(0, 0), 1);
 }
 
+// World::shareDeclaredLights (composite mode): other declared lights, the
+// world's own emitter kept after them.
+TEST_F(SharedEmittersTest, SharedDeclaredLightsKeepTheOwnEmitters)
+{
+  World &world = committed(glowingWorld());
+  const PlacedLight *ownEmitter = world.lights()[1].get();
+  std::vector<std::unique_ptr<PlacedLight>> declared;
+  for (int i = 0; i < 2; i++) {
+    declared.push_back(world.ownDeclaredLights()[0].light->place(
+        world.ownDeclaredLights()[0].worldFromObject));
+  }
+  world.shareDeclaredLights(std::move(declared), 50.f);
+  EXPECT_FALSE(world.sharesEmitters());
+  EXPECT_TRUE(world.sharesDeclaredLights());
+  ASSERT_EQ(world.lights().size(), 3u);
+  EXPECT_EQ(world.declaredLightCount(), 2u);
+  EXPECT_EQ(world.lights()[2].get(), ownEmitter);
+  EXPECT_EQ(world.emitterLight(0, 0), 2);
+  EXPECT_EQ(world.ownEmitterCount(), 1u);
+
+  world.keepOwnEmitters();
+  EXPECT_FALSE(world.sharesDeclaredLights());
+  ASSERT_EQ(world.lights().size(), 2u);
+  EXPECT_EQ(world.lights()[1].get(), ownEmitter);
+  EXPECT_EQ(world.emitterLight(0, 0), 1);
+}
+
 } // namespace
 } // namespace prism
