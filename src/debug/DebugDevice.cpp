@@ -4,6 +4,7 @@
 
 #include "anari/frontend/type_utility.h"
 
+#include <atomic>
 #include <cstdio>
 #include <cstring>
 
@@ -48,22 +49,47 @@ bool DebugDevice::wrap(
   dropWrapped();
   m_wrappedLibrary = std::move(library);
   m_wrapped = device;
+  m_ownsWrapped = true;
   m_wrappedSpec = wrappedSpec;
   m_failure.clear();
+  readWrappedDefinitions(
+      m_wrappedLibrary->library().getDeviceExtensions(subtype.c_str()));
+  return true;
+}
+
+void DebugDevice::adopt(anari::DeviceImpl *device)
+{
+  dropWrapped();
+  m_wrapped = device;
+  m_ownsWrapped = false;
+  m_failure.clear();
+  // No library to ask: the device's own "extension" property (spec 5.1).
+  const char **extensions = nullptr;
+  if (!m_wrapped->getProperty((ANARIObject)m_wrapped,
+          "extension",
+          ANARI_STRING_LIST,
+          &extensions,
+          sizeof(extensions),
+          ANARI_WAIT))
+    extensions = nullptr;
+  readWrappedDefinitions(extensions);
+}
+
+void DebugDevice::readWrappedDefinitions(const char **extensions)
+{
   // The definitions the wrapped device implements are those checked.
-  const char **extensions =
-      m_wrappedLibrary->library().getDeviceExtensions(subtype.c_str());
   const char **renderers = m_wrapped->getObjectSubtypes(ANARI_RENDERER);
   m_catalog = std::make_unique<introspection::Catalog>(extensions, renderers);
   m_rules = std::make_unique<Rules>(*m_catalog, *m_wrapped);
-  return true;
 }
 
 void DebugDevice::dropWrapped()
 {
-  if (m_wrapped)
+  // A device the application handed over is the application's to release.
+  if (m_wrapped && m_ownsWrapped)
     m_wrapped->release((ANARIObject)m_wrapped);
   m_wrapped = nullptr;
+  m_ownsWrapped = true;
   m_rules.reset();
   m_catalog.reset();
   m_wrappedLibrary.reset();
@@ -248,12 +274,27 @@ void DebugDevice::setDeviceParameter(
     m_statusUserPtr = mem; // a VOID_POINTER value is `mem` itself
     return;
   }
+  if (n == "wrappedDevice" && type == ANARI_DEVICE) {
+    stageWrappedHandle(f, mem);
+    report(f);
+    return;
+  }
   if (n == "wrappedLibrary" || n == "wrappedDevice") {
-    if (type != ANARI_STRING)
-      f.error("type must be ANARI_STRING");
-    else
+    if (type != ANARI_STRING) {
+      f.error(
+          n == "wrappedLibrary"
+              ? "type must be ANARI_STRING"
+              : "type must be ANARI_STRING (a device subtype) or ANARI_DEVICE "
+                "(a device to wrap)");
+    } else {
       (n == "wrappedLibrary" ? m_pendingWrappedSpec : m_pendingSubtype) =
           (const char *)mem;
+    }
+    report(f);
+    return;
+  }
+  if (n == "traceDir" || n == "traceMode") {
+    stageTraceParameter(f, n, type, mem);
     report(f);
     return;
   }
@@ -282,10 +323,102 @@ void DebugDevice::setDeviceParameter(
       anari::isObject(type) ? (const void *)&translated : mem);
 }
 
+namespace {
+std::atomic<DebugDevice::DeviceCheck> g_deviceCheck{nullptr};
+} // namespace
+
+void DebugDevice::setDeviceCheck(DeviceCheck check)
+{
+  g_deviceCheck = check;
+}
+
+void DebugDevice::stageWrappedHandle(Findings &f, const void *mem)
+{
+  ANARIDevice handle = nullptr;
+  std::memcpy(&handle, mem, sizeof(handle));
+  char address[32];
+  std::snprintf(address, sizeof(address), "%p", (void *)handle);
+  const DeviceCheck check = g_deviceCheck.load();
+  if (!handle) {
+    f.error("the device handle is NULL");
+  } else if (handle == this_device()) {
+    f.error("the device handle is this debug device itself");
+  } else if (check && !check(handle)) {
+    f.error(std::string("device handle ") + address
+            + " is not a live device (released, or never created)");
+  } else {
+    m_pendingDevice = (anari::DeviceImpl *)handle;
+    m_pendingSubtype.clear();
+  }
+}
+
+void DebugDevice::stageTraceParameter(
+    Findings &f, const std::string &name, ANARIDataType type, const void *mem)
+{
+  if (type != ANARI_STRING) {
+    f.error("type must be ANARI_STRING");
+    return;
+  }
+  const std::string value = (const char *)mem;
+  if (name == "traceDir") {
+    m_pendingTraceDir = value;
+    return;
+  }
+  // The SDK's debug device writes C code for "code"; the layer writes its
+  // own trace (docs/debug-layer.md), which anari-replay replays.
+  if (value == "code") {
+    f.warning(
+        "C-code traces are not written; the layer writes its own trace, "
+        "which anari-replay replays",
+        ANARI_STATUS_INVALID_ARGUMENT);
+  } else if (value != "prism") {
+    f.warning("'" + value
+            + "' is not a trace mode (\"prism\", or \"code\" as the SDK "
+              "names it); the layer's trace is written",
+        ANARI_STATUS_INVALID_ARGUMENT);
+  }
+}
+
+void DebugDevice::openTraceInDirectory(Findings &f)
+{
+  if (m_pendingTraceDir.empty())
+    return;
+  const std::string directory = m_pendingTraceDir;
+  m_pendingTraceDir.clear();
+  if (tracing()) {
+    f.warning("a trace is being written already; 'traceDir' is ignored",
+        ANARI_STATUS_INVALID_OPERATION);
+    return;
+  }
+  const std::string file = directory + "/anari.trace";
+  auto writer = std::make_unique<trace::TraceWriter>(file);
+  if (!writer->ok()) {
+    f.error(
+        "cannot write the trace '" + file + "'", ANARI_STATUS_INVALID_ARGUMENT);
+    return;
+  }
+  m_trace = std::move(writer);
+  traceDeviceLine();
+}
+
 void DebugDevice::commitDevice()
 {
   Findings f("anariCommitParameters");
   f.about(nullptr);
+  if (m_pendingDevice) {
+    std::unique_lock lock(m_mutex);
+    if (m_objects.size() > 0) {
+      f.error(
+          "'wrappedDevice' can change only before the first object is "
+          "created; keeping the device wrapped now",
+          ANARI_STATUS_INVALID_OPERATION);
+    } else if (m_pendingDevice != m_wrapped) {
+      adopt(m_pendingDevice);
+    }
+    m_pendingDevice = nullptr;
+    m_pendingWrappedSpec.clear();
+    m_pendingSubtype.clear();
+  }
   const std::string spec =
       m_pendingWrappedSpec.empty() ? m_wrappedSpec : m_pendingWrappedSpec;
   const std::string subtype =
@@ -309,6 +442,7 @@ void DebugDevice::commitDevice()
   }
   m_pendingWrappedSpec.clear();
   m_pendingSubtype.clear();
+  openTraceInDirectory(f);
   report(f);
   trace("Commit device");
   m_wrapped->commitParameters((ANARIObject)m_wrapped);

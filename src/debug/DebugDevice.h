@@ -37,6 +37,11 @@ class DebugDevice : public anari::DeviceImpl
   {
     return m_failure;
   }
+  // How the front-end (ours; the SDK's has none) tells whether a device
+  // handle is live, so a released `wrappedDevice` handle is reported
+  // rather than used.
+  using DeviceCheck = int (*)(ANARIDevice);
+  static void setDeviceCheck(DeviceCheck check);
 
   ANARIArray1D newArray1D(const void *appMemory,
       ANARIMemoryDeleter deleter,
@@ -177,7 +182,22 @@ class DebugDevice : public anari::DeviceImpl
   }
 
   bool wrap(const std::string &wrappedSpec, const std::string &subtype);
+  // Wraps `device`, which the application created and keeps: the layer
+  // never releases it (VTK's way: the `wrappedDevice` handle).
+  void adopt(anari::DeviceImpl *device);
+  // Checks the catalog of what the wrapped device implements.
+  void readWrappedDefinitions(const char **extensions);
   void dropWrapped();
+  // The `wrappedDevice` parameter given as ANARI_DEVICE: checked, kept
+  // until the commit.
+  void stageWrappedHandle(Findings &f, const void *mem);
+  // The `traceDir`/`traceMode` parameters (the ANARI-SDK debug device's).
+  void stageTraceParameter(Findings &f,
+      const std::string &name,
+      ANARIDataType type,
+      const void *mem);
+  // Starts the trace in `traceDir` (committed) if asked to.
+  void openTraceInDirectory(Findings &f);
   // Sends findings to the application (never under m_mutex's lock).
   void report(Findings &findings);
   void report(ANARIStatusSeverity severity,
@@ -281,10 +301,13 @@ class DebugDevice : public anari::DeviceImpl
   void commitDevice();
   void reportLeaks();
 
-  // The trace (TraceCalls.cpp), when ANARI_DEBUG_TRACE names a file: each
+  // The trace (TraceCalls.cpp), when ANARI_DEBUG_TRACE names a file or the
+  // `traceDir` parameter a folder: each
   // forwarded call as a line, objects named by creation number. Under the
   // lock, so lines come in the order calls were checked.
   void openTrace();
+  // The trace's first line: the device subtype and library wrapped.
+  void traceDeviceLine();
   bool tracing() const
   {
     return m_trace != nullptr;
@@ -314,10 +337,14 @@ class DebugDevice : public anari::DeviceImpl
   std::string m_subtype;
   std::string m_wrappedSpec;
   std::string m_pendingWrappedSpec;
-  std::string m_pendingSubtype; // the `wrappedDevice` parameter
+  std::string m_pendingSubtype;                // the `wrappedDevice` parameter
+  anari::DeviceImpl *m_pendingDevice{nullptr}; // ... as a handle
+  std::string m_pendingTraceDir;
   std::string m_failure;
   std::shared_ptr<WrappedLibrary> m_wrappedLibrary;
   anari::DeviceImpl *m_wrapped{nullptr};
+  // False for a device the application handed over (never released here).
+  bool m_ownsWrapped{true};
   std::unique_ptr<introspection::Catalog> m_catalog;
   std::unique_ptr<Rules> m_rules;
   int m_publicReferences{1};

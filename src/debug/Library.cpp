@@ -152,3 +152,12 @@ prism_debug_set_wrapped_library(ANARILibrary library, const char *spec)
   if (library && spec && *spec)
     ((prism::debug::Library *)library)->setWrappedLibrary(spec);
 }
+
+// Called by libanari when it loads the layer: how to tell a live device
+// handle (a `wrappedDevice` the application hands over) from a released
+// one. Another front-end has no such hook; the handle is then trusted.
+extern "C" __attribute__((visibility("default"))) void
+prism_debug_set_device_check(int (*isLiveDevice)(ANARIDevice))
+{
+  prism::debug::DebugDevice::setDeviceCheck(isLiveDevice);
+}

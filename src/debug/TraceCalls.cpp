@@ -29,8 +29,19 @@ void DebugDevice::openTrace()
     return;
   }
   m_trace = std::move(writer);
+  traceDeviceLine();
+}
+
+void DebugDevice::traceDeviceLine()
+{
   trace(
       "Device " + trace::quote(m_subtype) + " " + trace::quote(m_wrappedSpec));
+  // A replay cannot make the application's device: it replays on the
+  // library it is given (anari-replay --library).
+  if (!m_ownsWrapped)
+    trace(
+        "# the wrapped device is one the application created and handed "
+        "over ('wrappedDevice')");
 }
 
 uint64_t DebugDevice::trace(const std::string &line)

@@ -99,6 +99,11 @@ anari::LibraryImpl *openLibrary(
   return library;
 }
 
+int isLiveDevice(ANARIDevice device)
+{
+  return HandleRegistry::instance().hasDevice(device) ? 1 : 0;
+}
+
 } // namespace
 
 anari::LibraryImpl *loadLibrary(const char *name, StatusSink sink)
@@ -148,6 +153,12 @@ anari::LibraryImpl *loadLibrary(const char *name, StatusSink sink)
     if (!library)
       return nullptr;
   }
+  // The debug layer takes a device handle as a parameter value
+  // (`wrappedDevice`): it asks the registry whether one is still live.
+  using DeviceCheckHook = void (*)(int (*)(ANARIDevice));
+  if (auto hook = (DeviceCheckHook)anari::getSymbolAddress(
+          library->libraryHandle(), "prism_debug_set_device_check"))
+    hook(&isLiveDevice);
   HandleRegistry::instance().addLibrary(library, sink);
   return library;
 }

@@ -482,14 +482,9 @@ void DataParallelDevice::fingerprintWorld(
     }
   }
   d.worldLights =
-      uint32_t(world.declaredLightCount() + world.ownEmitterCount());
+      uint32_t(world.ownDeclaredLights().size() + world.ownEmitterCount());
   d.worldVolumes = uint32_t(world.volumes().size());
   d.worldContent = world.contentHash();
-}
-
-uint32_t DataParallelDevice::declaredLights(const World &world)
-{
-  return uint32_t(world.declaredLightCount());
 }
 
 FrameDescriptor DataParallelDevice::describe(
@@ -508,11 +503,6 @@ FrameDescriptor DataParallelDevice::describe(
     d.channelTypes[c] = frame->channelType(kChannelNames[c]);
   if (m_mode == RenderMode::Replicated && frame->world())
     fingerprintWorld(*frame->world(), d);
-  if (m_mode == RenderMode::PathTracer && frame->world()
-      && dynamic_cast<const PathTracer *>(frame->renderer())) {
-    d.declaredLights = declaredLights(*frame->world());
-    d.declaredLightsHash = frame->world()->declaredLightsHash();
-  }
   if (const Renderer *renderer = frame->renderer()) {
     const std::string &subtype = renderer->subtype();
     std::memcpy(d.renderer,
@@ -604,12 +594,35 @@ try {
       "anariRenderFrame: failed for an unknown reason");
 }
 
+uint64_t DataParallelDevice::shareWorldLights(
+    ANARIFrame handle, World &world, MPI_Comm communicator, bool withEmitters)
+{
+  const EmitterExchangeResult shared =
+      shareLights(world, communicator, withEmitters);
+  if (!shared.problem.empty()) {
+    reportStatus(handle,
+        ANARI_FRAME,
+        ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_OPERATION,
+        "anariRenderFrame: " + shared.problem);
+  }
+  return shared.bytesSent;
+}
+
 void DataParallelDevice::renderComposited(
     ANARIFrame handle, Frame &frame, FrameState &state, MPI_Comm communicator)
 {
   frame.share({.keepDepth = true, .omitBackground = true});
-  if (World *world = frame.world())
-    world->keepOwnEmitters(); // lit by its own process only
+  uint64_t lightBytes = 0;
+  if (World *world = frame.world()) {
+    // Lit by its own emitters, and by every process's declared lights for
+    // the path tracer (the only renderer that reads lights; every process
+    // runs the same one, so all take part alike).
+    if (dynamic_cast<const PathTracer *>(frame.renderer()))
+      lightBytes = shareWorldLights(handle, *world, communicator, false);
+    else
+      world->keepOwnEmitters();
+  }
   Device::renderFrame(handle);
   const FrameBuffers &local = frame.linearPixels();
   politeBarrier(communicator);
@@ -658,7 +671,7 @@ void DataParallelDevice::renderComposited(
   }
   std::lock_guard lock(m_stateMutex);
   state.assembled = std::move(assembled);
-  state.bytesSent = compositor.bytesSent();
+  state.bytesSent = compositor.bytesSent() + lightBytes;
 }
 
 void DataParallelDevice::renderReplicated(
@@ -754,18 +767,10 @@ void DataParallelDevice::renderPathTraced(
   frame.share({.lockstep = true});
   uint64_t bytesSent = 0;
   // Any process may shade any path, so each samples every process's
-  // emissive surfaces (sent again only when a world placed them anew).
-  if (World *world = frame.world()) {
-    const EmitterExchangeResult shared = shareEmitters(*world, communicator);
-    bytesSent += shared.bytesSent;
-    if (!shared.problem.empty()) {
-      reportStatus(handle,
-          ANARI_FRAME,
-          ANARI_SEVERITY_WARNING,
-          ANARI_STATUS_INVALID_OPERATION,
-          "anariRenderFrame: " + shared.problem);
-    }
-  }
+  // emissive surfaces and declared lights (sent again only when a world
+  // placed them anew).
+  if (World *world = frame.world())
+    bytesSent += shareWorldLights(handle, *world, communicator, true);
   // A world changed on some processes restarts their accumulation only:
   // every process must start from the same sample, or their paths would
   // differ and the lockstep break. One reduction of (first, ~last).

@@ -220,8 +220,12 @@ class DataParallelDevice : public prism::Device
   FrameDescriptor describe(Frame *frame, const FrameState &state) const;
   // Replicated mode: what must be the same in every process's world.
   static void fingerprintWorld(const World &world, FrameDescriptor &d);
-  // The lights `world` declares, not counting its emissive surfaces.
-  static uint32_t declaredLights(const World &world);
+  // shareLights() for the frame `handle` renders, its problem reported;
+  // returns the bytes sent.
+  uint64_t shareWorldLights(ANARIFrame handle,
+      World &world,
+      MPI_Comm communicator,
+      bool withEmitters);
   void renderComposited(ANARIFrame handle,
       Frame &frame,
       FrameState &state,

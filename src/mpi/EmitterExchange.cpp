@@ -1,4 +1,5 @@
 #include "EmitterExchange.h"
+#include "LightExchange.h"
 
 #include "light/EmissiveSurface.h"
 #include "world/World.h"
@@ -15,93 +16,17 @@ namespace {
 // What one process sends: its world's bounds (6 floats), its emitter
 // count, and for each emitter its radiance (3 floats), its triangle and
 // sphere counts, then each triangle's corners (9 floats) and each sphere's
-// center and radius (4 floats). Floats travel as their bits, so every
-// process rebuilds exactly the lights the sender placed.
-class Writer
+// center and radius (4 floats); then, only when the processes' declared
+// lights differ, whether its lights could be described (a count) and
+// their descriptions (LightExchange.h).
+void describeOwnEmitters(const World &world, bool withEmitters, ByteWriter &out)
 {
- public:
-  void add(float value)
-  {
-    append(&value, sizeof(value));
-  }
-  void add(uint32_t value)
-  {
-    append(&value, sizeof(value));
-  }
-  void add(const float3 &v)
-  {
-    add(v.x);
-    add(v.y);
-    add(v.z);
-  }
-  std::vector<unsigned char> bytes;
-
- private:
-  void append(const void *data, size_t size)
-  {
-    const auto *p = static_cast<const unsigned char *>(data);
-    bytes.insert(bytes.end(), p, p + size);
-  }
-};
-
-class Reader
-{
- public:
-  Reader(const unsigned char *data, size_t size) : m_data(data), m_size(size) {}
-  // False once a read went past the end (then values read are 0).
-  bool ok() const
-  {
-    return m_ok;
-  }
-  size_t left() const
-  {
-    return m_size - m_offset;
-  }
-  float readFloat()
-  {
-    float value = 0.f;
-    take(&value, sizeof(value));
-    return value;
-  }
-  uint32_t readCount()
-  {
-    uint32_t value = 0;
-    take(&value, sizeof(value));
-    return value;
-  }
-  float3 readFloat3()
-  {
-    float3 v;
-    v.x = readFloat();
-    v.y = readFloat();
-    v.z = readFloat();
-    return v;
-  }
-
- private:
-  void take(void *out, size_t size)
-  {
-    if (!m_ok || left() < size) {
-      m_ok = false;
-      return;
-    }
-    std::memcpy(out, m_data + m_offset, size);
-    m_offset += size;
-  }
-  const unsigned char *m_data;
-  size_t m_size;
-  size_t m_offset{0};
-  bool m_ok{true};
-};
-
-std::vector<unsigned char> describeOwnEmitters(const World &world)
-{
-  Writer out;
   const box3 bounds = world.bounds();
   out.add(bounds.lower);
   out.add(bounds.upper);
-  out.add(uint32_t(world.ownEmitterCount()));
-  for (size_t e = 0; e < world.ownEmitterCount(); e++) {
+  const size_t count = withEmitters ? world.ownEmitterCount() : 0;
+  out.add(uint32_t(count));
+  for (size_t e = 0; e < count; e++) {
     const EmissiveSurface &emitter = world.ownEmitter(e);
     const EmitterShape &shape = emitter.shape();
     out.add(emitter.radiance());
@@ -117,17 +42,14 @@ std::vector<unsigned char> describeOwnEmitters(const World &world)
       out.add(s.w);
     }
   }
-  return out.bytes;
 }
 
 // One process's part: its bounds and its emitters, appended to `lights`.
 // False (and nothing appended) when the bytes are not such a description.
-bool readEmitters(const unsigned char *data,
-    size_t size,
+bool readEmitters(ByteReader &in,
     box3 &bounds,
     std::vector<std::unique_ptr<PlacedLight>> &lights)
 {
-  Reader in(data, size);
   bounds.lower = in.readFloat3();
   bounds.upper = in.readFloat3();
   const uint32_t count = in.readCount();
@@ -155,16 +77,49 @@ bool readEmitters(const unsigned char *data,
     read.push_back(
         std::make_unique<EmissiveSurface>(std::move(shape), radiance));
   }
-  if (!in.ok() || in.left() != 0)
+  if (!in.ok())
     return false;
   for (auto &light : read)
     lights.push_back(std::move(light));
   return true;
 }
 
+// Whether every process declares the same lights (count and
+// World::declaredLightsHash()): then each keeps its own, as they are.
+bool sameDeclaredLights(const World &world, MPI_Comm communicator)
+{
+  const uint64_t count = world.ownDeclaredLights().size();
+  const uint64_t hash = world.declaredLightsHash();
+  uint64_t least[4] = {count, ~count, hash, ~hash};
+  MPI_Allreduce(MPI_IN_PLACE, least, 4, MPI_UINT64_T, MPI_MIN, communicator);
+  return least[0] == ~least[1] && least[2] == ~least[3];
+}
+
+// The declared lights of every process, each light once: a light whose
+// key a lower rank sent too is that rank's (declared on every process, it
+// is one light), the others in rank order, each process's in its order.
+std::vector<LightDescription> distinctLights(
+    std::vector<std::vector<LightDescription>> &ofRank)
+{
+  std::vector<LightDescription> lights;
+  std::vector<uint64_t> keys;
+  for (auto &fromRank : ofRank) {
+    const size_t earlier = keys.size();
+    for (LightDescription &light : fromRank) {
+      if (std::find(keys.begin(), keys.begin() + long(earlier), light.key)
+          != keys.begin() + long(earlier))
+        continue;
+      keys.push_back(light.key);
+      lights.push_back(std::move(light));
+    }
+  }
+  return lights;
+}
+
 } // namespace
 
-EmitterExchangeResult shareEmitters(World &world, MPI_Comm communicator)
+EmitterExchangeResult shareLights(
+    World &world, MPI_Comm communicator, bool withEmitters)
 {
   EmitterExchangeResult result;
   int rank = 0, ranks = 1;
@@ -172,12 +127,32 @@ EmitterExchangeResult shareEmitters(World &world, MPI_Comm communicator)
   MPI_Comm_size(communicator, &ranks);
   if (ranks == 1)
     return result;
-  int changed = world.sharesEmitters() ? 0 : 1;
+  if (!withEmitters && world.sharesEmitters())
+    world.keepOwnEmitters(); // shared for another kind of render
+  int changed =
+      (withEmitters ? world.sharesEmitters() : world.sharesDeclaredLights())
+          ? 0
+          : 1;
   MPI_Allreduce(MPI_IN_PLACE, &changed, 1, MPI_INT, MPI_MAX, communicator);
   if (!changed)
     return result;
+  const bool sendLights = !sameDeclaredLights(world, communicator);
+  if (!withEmitters && !sendLights) {
+    world.keepOwnEmitters();
+    return result;
+  }
 
-  std::vector<unsigned char> own = describeOwnEmitters(world);
+  ByteWriter out;
+  describeOwnEmitters(world, withEmitters, out);
+  std::string ownProblem;
+  if (sendLights) {
+    ByteWriter lights;
+    const bool described = writeDeclaredLights(world, lights, ownProblem);
+    out.add(uint32_t(described ? 1 : 0));
+    if (described)
+      out.append(lights.bytes.data(), lights.bytes.size());
+  }
+  const std::vector<unsigned char> &own = out.bytes;
   // A part too large for MPI's int counts is sent as nothing, and every
   // process then keeps its own emitters (all see the same sizes).
   int ownSize = own.size() <= size_t(INT_MAX) ? int(own.size()) : -1;
@@ -195,8 +170,8 @@ EmitterExchangeResult shareEmitters(World &world, MPI_Comm communicator)
   if (!fits) {
     world.keepOwnEmitters();
     result.problem =
-        "the emissive surfaces of the processes are too large to send (more "
-        "than 2 GiB); each process samples its own only";
+        "the emissive surfaces and lights of the processes are too large to "
+        "send (more than 2 GiB); each process samples its own only";
     return result;
   }
   std::vector<unsigned char> all(size_t(std::max<int64_t>(total, 1)));
@@ -212,17 +187,26 @@ EmitterExchangeResult shareEmitters(World &world, MPI_Comm communicator)
   result.bytesSent = uint64_t(ownSize) * uint64_t(ranks - 1);
 
   std::vector<std::unique_ptr<PlacedLight>> emitters;
+  std::vector<std::vector<LightDescription>> declared(
+      static_cast<size_t>(ranks));
   box3 together = emptyBox3();
   size_t firstOwn = 0;
   bool understood = true;
+  int undescribed = -1; // a rank whose lights could not be described
   for (int r = 0; r < ranks && understood; r++) {
     if (r == rank)
       firstOwn = emitters.size();
+    ByteReader in(all.data() + offsets[size_t(r)], size_t(sizes[size_t(r)]));
     box3 bounds;
-    understood = readEmitters(all.data() + offsets[size_t(r)],
-        size_t(sizes[size_t(r)]),
-        bounds,
-        emitters);
+    understood = readEmitters(in, bounds, emitters);
+    if (understood && sendLights) {
+      const uint32_t described = in.readCount();
+      if (described == 1)
+        understood = readDeclaredLights(in, declared[size_t(r)]);
+      else if (undescribed < 0)
+        undescribed = r;
+    }
+    understood = understood && in.ok() && in.left() == 0;
     together.lower.x = std::min(together.lower.x, bounds.lower.x);
     together.lower.y = std::min(together.lower.y, bounds.lower.y);
     together.lower.z = std::min(together.lower.z, bounds.lower.z);
@@ -234,12 +218,37 @@ EmitterExchangeResult shareEmitters(World &world, MPI_Comm communicator)
     // Every process read the same bytes, so all decide alike.
     world.keepOwnEmitters();
     result.problem =
-        "the emissive surfaces another process sent could not be read; each "
-        "process samples its own only";
+        "the emissive surfaces or lights another process sent could not be "
+        "read; each process samples its own only";
     return result;
   }
-  world.shareEmitters(
-      std::move(emitters), firstOwn, World::sceneRadius(together));
+  const float radius = World::sceneRadius(together);
+  if (!sendLights || undescribed >= 0) {
+    if (undescribed >= 0) {
+      result.problem =
+          "the processes declare different lights, and those of rank "
+          + std::to_string(undescribed) + " cannot be sent to the others ("
+          + (ownProblem.empty() ? std::string("see that process's report")
+                                : ownProblem)
+          + "); each process samples its own declared lights only";
+    }
+    if (withEmitters)
+      world.shareEmitters(std::move(emitters), firstOwn, radius);
+    else
+      world.keepOwnEmitters();
+    return result;
+  }
+  // Every process rebuilds the same lights from the same bytes.
+  std::vector<std::unique_ptr<PlacedLight>> lights;
+  for (const LightDescription &light : distinctLights(declared)) {
+    if (auto placed = placeDescribedLight(world.device(), light))
+      lights.push_back(std::move(placed));
+  }
+  if (withEmitters)
+    world.shareLights(std::move(lights), std::move(emitters), firstOwn, radius);
+  else
+    world.shareDeclaredLights(std::move(lights), radius);
+  result.lightsShared = true;
   return result;
 }
 

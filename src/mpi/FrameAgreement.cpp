@@ -165,21 +165,6 @@ std::string describeDisagreement(const std::vector<FrameDescriptor> &all)
         [](const FrameDescriptor &d) { return d.worldContent; },
         hexadecimal);
   }
-  const bool lightCountsDiffer = listDifferences(
-      message,
-      "lights (pathtracer mode needs the same on every process)",
-      all,
-      [](const FrameDescriptor &d) { return d.declaredLights; },
-      number);
-  if (!lightCountsDiffer) {
-    listDifferences(
-        message,
-        "lights' parameters (pathtracer mode needs the same on every "
-        "process; a hash of them)",
-        all,
-        [](const FrameDescriptor &d) { return d.declaredLightsHash; },
-        hexadecimal);
-  }
   return message;
 }
 

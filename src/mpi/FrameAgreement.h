@@ -48,12 +48,6 @@ struct FrameDescriptor
   uint32_t worldLights{0};
   uint32_t worldVolumes{0};
   uint64_t worldContent{0};
-  // How many lights the world declares (emissive surfaces aside) and a hash
-  // of them (World::declaredLightsHash()), set only when paths are traced
-  // across the processes (pathtracer mode): any process may shade a path,
-  // so all must sample the same lights.
-  uint32_t declaredLights{0};
-  uint64_t declaredLightsHash{0};
 };
 
 // Empty when every descriptor (one per rank, in rank order) is the same,

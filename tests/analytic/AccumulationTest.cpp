@@ -149,12 +149,7 @@ TEST_F(Accumulation, PathTracedImageIsTheSameForAnyThreadCount)
   const float position[3] = {1, -1, 3}, intensity = 10.f;
   anariSetParameter(m_device, light, "position", ANARI_FLOAT32_VEC3, position);
   anariSetParameter(m_device, light, "intensity", ANARI_FLOAT32, &intensity);
-  anariCommitParameters(m_device, light);
-  setArray(w,
-      "light",
-      anariNewArray1D(m_device, &light, nullptr, nullptr, ANARI_LIGHT, 1));
-  anariRelease(m_device, light);
-  anariCommitParameters(m_device, w);
+  setOnlyLight(w, light);
   const float eye[3] = {0, -5, 3}, direction[3] = {0, 5, -2.5f};
   ANARICamera c = perspective(eye, direction, 0.8f);
   ANARIRenderer r = renderer("pathtracer");
@@ -204,6 +199,98 @@ TEST_F(Accumulation, DepthOfFieldBlursWhatIsOutOfFocus)
   EXPECT_GE(edgeSharpness(50.f), 4);
   anariRelease(m_device, w);
   EXPECT_TRUE(problems().empty());
+}
+
+// hdAnari's convergence control: the frame's numSamples counts the samples
+// accumulated, and at the renderer's sampleLimit (4) a further
+// anariRenderFrame returns without tracing a ray (the path tracer's
+// raysTraced stays) and the image stays exactly what it was.
+TEST_F(Accumulation, SampleLimitStopsAccumulating)
+{
+  ANARIWorld w = halfPlane();
+  ANARILight light = anariNewLight(m_device, "directional");
+  setOnlyLight(w, light);
+  ANARICamera c = perspective(kEye, kDown, 1.f);
+  ANARIRenderer r = renderer("pathtracer");
+  const int32_t limit = 4;
+  anariSetParameter(m_device, r, "sampleLimit", ANARI_INT32, &limit);
+  anariCommitParameters(m_device, r);
+  ANARIFrame f = frame(w, c, r, 16);
+  auto samples = [&] {
+    int32_t value = -1;
+    anariGetProperty(m_device,
+        f,
+        "numSamples",
+        ANARI_INT32,
+        &value,
+        sizeof(value),
+        ANARI_WAIT);
+    return value;
+  };
+  auto raysTraced = [&] {
+    uint64_t value = 0;
+    anariGetProperty(m_device,
+        r,
+        "raysTraced",
+        ANARI_UINT64,
+        &value,
+        sizeof(value),
+        ANARI_WAIT);
+    return value;
+  };
+  EXPECT_EQ(samples(), 0);
+  uint64_t rays = raysTraced();
+  for (int32_t i = 1; i <= limit; i++) {
+    renderSamples(f, 1);
+    EXPECT_EQ(samples(), i);
+    EXPECT_GT(raysTraced(), rays) << "sample " << i;
+    rays = raysTraced();
+  }
+  EXPECT_FLOAT_EQ(refinement(f), 1.f);
+  const std::vector<float> converged = renderSamples(f, 0);
+  const std::vector<float> after = renderSamples(f, 3);
+  EXPECT_EQ(samples(), limit);
+  EXPECT_EQ(raysTraced(), rays);
+  EXPECT_EQ(after, converged);
+  // A change restarts, and the limit counts again from there.
+  const float eye[3] = {0.1f, 0, 5};
+  anariSetParameter(m_device, c, "position", ANARI_FLOAT32_VEC3, eye);
+  anariCommitParameters(m_device, c);
+  renderSamples(f, 1);
+  EXPECT_EQ(samples(), 1);
+  EXPECT_GT(raysTraced(), rays);
+  for (ANARIObject o :
+      {(ANARIObject)f, (ANARIObject)w, (ANARIObject)c, (ANARIObject)r})
+    anariRelease(m_device, o);
+  EXPECT_TRUE(problems().empty());
+}
+
+// A negative sampleLimit is reported and means no limit.
+TEST_F(Accumulation, NegativeSampleLimitIsReported)
+{
+  ANARIRenderer r = renderer("raycast");
+  const int32_t limit = -2;
+  anariSetParameter(m_device, r, "sampleLimit", ANARI_INT32, &limit);
+  anariCommitParameters(m_device, r);
+  ANARIWorld w = halfPlane();
+  ANARICamera c = orthographic(kEye, kDown, 2.5f);
+  ANARIFrame f = frame(w, c, r, 4);
+  renderSamples(f, 3);
+  int32_t samples = 0;
+  anariGetProperty(m_device,
+      f,
+      "numSamples",
+      ANARI_INT32,
+      &samples,
+      sizeof(samples),
+      ANARI_WAIT);
+  EXPECT_EQ(samples, 3);
+  EXPECT_TRUE(reported(ANARI_SEVERITY_WARNING,
+      ANARI_STATUS_INVALID_ARGUMENT,
+      "'sampleLimit' (-2) must be >= 0"));
+  for (ANARIObject o :
+      {(ANARIObject)f, (ANARIObject)w, (ANARIObject)c, (ANARIObject)r})
+    anariRelease(m_device, o);
 }
 
 } // namespace

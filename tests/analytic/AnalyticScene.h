@@ -49,6 +49,17 @@ class AnalyticTest : public PrismDeviceTest
     anariSetParameter(m_device, object, name, ANARI_ARRAY1D, &array);
     anariRelease(m_device, array);
   }
+  // Commits `light` and makes it the only light of `w` (released), then
+  // commits `w`.
+  void setOnlyLight(ANARIWorld w, ANARILight light)
+  {
+    anariCommitParameters(m_device, light);
+    setArray(w,
+        "light",
+        anariNewArray1D(m_device, &light, nullptr, nullptr, ANARI_LIGHT, 1));
+    anariRelease(m_device, light);
+    anariCommitParameters(m_device, w);
+  }
   ANARIGeometry geometry(const char *subtype,
       const std::vector<float> &positions /* xyz triples */)
   {

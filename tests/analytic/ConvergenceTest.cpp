@@ -26,12 +26,7 @@ class Convergence : public AnalyticTest
     anariSetParameter(m_device, light, "edge1", ANARI_FLOAT32_VEC3, edge1);
     anariSetParameter(m_device, light, "edge2", ANARI_FLOAT32_VEC3, edge2);
     anariSetParameter(m_device, light, "radiance", ANARI_FLOAT32, &L);
-    anariCommitParameters(m_device, light);
-    setArray(w,
-        "light",
-        anariNewArray1D(m_device, &light, nullptr, nullptr, ANARI_LIGHT, 1));
-    anariRelease(m_device, light);
-    anariCommitParameters(m_device, w);
+    setOnlyLight(w, light);
     return w;
   }
   std::vector<float> render(ANARIWorld w, bool denoise, int samples)

@@ -62,12 +62,7 @@ class MaterialExtensionsTest : public AnalyticTest
         m_device, light, "direction", ANARI_FLOAT32_VEC3, direction);
     anariSetParameter(
         m_device, light, "irradiance", ANARI_FLOAT32, &irradiance);
-    anariCommitParameters(m_device, light);
-    setArray(w,
-        "light",
-        anariNewArray1D(m_device, &light, nullptr, nullptr, ANARI_LIGHT, 1));
-    anariRelease(m_device, light);
-    anariCommitParameters(m_device, w);
+    setOnlyLight(w, light);
     return w;
   }
   // An orthographic view straight down on (x, 0), 0.5 wide.
@@ -269,12 +264,7 @@ class UnlitTest : public MaterialExtensionsTest
     anariSetParameter(m_device, light, "direction", ANARI_FLOAT32_VEC3, kDown);
     anariSetParameter(
         m_device, light, "irradiance", ANARI_FLOAT32, &irradiance);
-    anariCommitParameters(m_device, light);
-    setArray(w,
-        "light",
-        anariNewArray1D(m_device, &light, nullptr, nullptr, ANARI_LIGHT, 1));
-    anariRelease(m_device, light);
-    anariCommitParameters(m_device, w);
+    setOnlyLight(w, light);
     ANARIRenderer r = renderer("pathtracer");
     const float ambient = 1.f;
     const uint8_t on = denoise;

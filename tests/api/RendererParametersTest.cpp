@@ -100,4 +100,34 @@ TEST_F(RendererParameters, DeclaredDefaultsAreTheDefaults)
   EXPECT_TRUE(problems().empty());
 }
 
+// hdAnari finds its convergence control by introspection: every renderer
+// (default included) lists sampleLimit (INT32, default 0); the frame's
+// numSamples property is checked in unit::introspection.
+TEST_F(RendererParameters, ConvergenceControlsAreDeclared)
+{
+  auto **subtypes = anariGetObjectSubtypes(m_device, ANARI_RENDERER);
+  ASSERT_NE(subtypes, nullptr);
+  int renderers = 0;
+  for (auto **s = subtypes; *s; s++, renderers++) {
+    SCOPED_TRACE(*s);
+    bool listed = false;
+    auto *parameters = (const ANARIParameter *)anariGetObjectInfo(
+        m_device, ANARI_RENDERER, *s, "parameter", ANARI_PARAMETER_LIST);
+    for (auto *p = parameters; p && p->name; p++)
+      listed = listed || std::strcmp(p->name, "sampleLimit") == 0;
+    EXPECT_TRUE(listed);
+    auto *fallback = (const int32_t *)anariGetParameterInfo(m_device,
+        ANARI_RENDERER,
+        *s,
+        "sampleLimit",
+        ANARI_INT32,
+        "default",
+        ANARI_INT32);
+    ASSERT_NE(fallback, nullptr);
+    EXPECT_EQ(*fallback, 0);
+  }
+  EXPECT_GE(renderers, 5);
+  EXPECT_TRUE(problems().empty());
+}
+
 } // namespace

@@ -5,6 +5,9 @@
 // is the left eye), the test checks that too, beside its reference.
 #include "RenderTest.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace {
 
 constexpr float kPi = 3.14159265f;
@@ -265,6 +268,96 @@ TEST_F(StereoTopBottom, Raycast)
   expectSameImage(crop(both, 0, 0, 64, 64),
       render(world, stereo(1.f, "right"), renderer, 64, 64),
       "the bottom half against stereoMode right");
+}
+
+} // namespace
+
+namespace {
+
+// The columns and rows of `image` holding opaque pixels (under a
+// renderer with a transparent background, those something covers).
+struct Extent
+{
+  uint32_t columns{0}, rows{0};
+};
+Extent coveredExtent(const prism::image::Image &image)
+{
+  uint32_t left = image.width, right = 0, bottom = image.height, top = 0;
+  for (uint32_t y = 0; y < image.height; y++) {
+    for (uint32_t x = 0; x < image.width; x++) {
+      if (image.at(x, y).a < 0.5f)
+        continue;
+      left = std::min(left, x);
+      right = std::max(right, x);
+      bottom = std::min(bottom, y);
+      top = std::max(top, y);
+    }
+  }
+  if (left > right)
+    return {};
+  return {right - left + 1, top - bottom + 1};
+}
+
+// ANARI 1.2 gives 'aspect' no default: unset, the camera takes the frame's
+// width / height, so a sphere in a 400 x 200 frame is round (as many
+// pixels wide as high, within a pixel), not stretched to twice its width
+// as an aspect of 1 would. A sphere of radius 1 at distance 5 seen with
+// fovy 40 degrees spans tan(asin(1/5)) / tan(20 deg) of the 200 rows, 112.
+class UnsetAspect : public RenderTest
+{
+ protected:
+  ANARIWorld sphere()
+  {
+    ANARIGeometry spheres = newGeometry("sphere");
+    setArray(spheres,
+        "vertex.position",
+        ANARI_FLOAT32_VEC3,
+        std::vector<Vec3>{{0, 0, 0}});
+    setFloat(spheres, "radius", 1.f);
+    return newWorld({newSurface(spheres, newMatte(kWhite))});
+  }
+  // A committed camera of `subtype` at (0, 0, 5) looking down -z, its
+  // `size` parameter (fovy, height) set to `value`, 'aspect' unset.
+  ANARICamera unsetAspect(const char *subtype, const char *size, float value)
+  {
+    ANARICamera camera = keep(anariNewCamera(device(), subtype));
+    setVec3(camera, "position", {0, 0, 5});
+    setVec3(camera, "direction", {0, 0, -1});
+    setVec3(camera, "up", {0, 1, 0});
+    setFloat(camera, size, value);
+    anariCommitParameters(device(), camera);
+    return camera;
+  }
+  ANARIRenderer transparentRenderer()
+  {
+    ANARIRenderer renderer = newRenderer();
+    setVec4(renderer, "background", {0, 0, 0, 0});
+    anariCommitParameters(device(), renderer);
+    return renderer;
+  }
+};
+using UnsetAspectPerspective = UnsetAspect;
+TEST_F(UnsetAspectPerspective, Raycast)
+{
+  ANARICamera camera = unsetAspect("perspective", "fovy", 40.f * kPi / 180.f);
+  const Extent extent =
+      coveredExtent(render(sphere(), camera, transparentRenderer(), 400, 200));
+  const float expected =
+      std::tan(std::asin(0.2f)) / std::tan(20.f * kPi / 180.f) * 200.f;
+  EXPECT_NEAR(float(extent.rows), expected, 1.5f);
+  EXPECT_NEAR(float(extent.columns), float(extent.rows), 1.f);
+}
+
+// The orthographic camera 4 units high: the sphere of diameter 2 covers
+// half the 200 rows and, following the frame's aspect, 100 columns.
+using UnsetAspectOrthographic = UnsetAspect;
+TEST_F(UnsetAspectOrthographic, Raycast)
+{
+  ANARICamera camera = unsetAspect("orthographic", "height", 4.f);
+  const Extent extent =
+      coveredExtent(render(sphere(), camera, transparentRenderer(), 400, 200));
+  EXPECT_NEAR(float(extent.rows), 100.f, 1.f);
+  EXPECT_NEAR(float(extent.columns), 100.f, 1.f);
 }
 
 } // namespace

@@ -205,7 +205,24 @@ void Camera::readNearFar(float &near, float &far)
   }
 }
 
-Ray Camera::generateRay(float2 screen, float2 lensSample, float time) const
+void Camera::readAspect()
+{
+  m_aspect = 0.f;
+  if (!isSet("aspect"))
+    return;
+  const float aspect = read<float>("aspect", ANARI_FLOAT32, 0.f);
+  if (!(aspect > 0.f && std::isfinite(aspect))) {
+    report(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "'aspect' (%g) must be > 0; using the frame's width / height",
+        aspect);
+    return;
+  }
+  m_aspect = aspect;
+}
+
+Ray Camera::generateRay(
+    float2 screen, float2 lensSample, float time, float frameAspect) const
 {
   const float halfBaseline = 0.5f * m_interpupillaryDistance;
   float eyeShift = 0.f;
@@ -235,7 +252,7 @@ Ray Camera::generateRay(float2 screen, float2 lensSample, float time) const
   const float2 sensor{
       m_regionLower.x + screen.x * (m_regionUpper.x - m_regionLower.x),
       m_regionLower.y + screen.y * (m_regionUpper.y - m_regionLower.y)};
-  Ray ray = rayThroughSensor(sensor, eyeShift, lensSample);
+  Ray ray = rayThroughSensor(sensor, eyeShift, lensSample, frameAspect);
   ray.time = time;
   if (m_motion.isSet()) {
     // The camera frame moves as a whole; distances along the ray scale

@@ -31,8 +31,12 @@ class Camera : public MovingObject
 
   // The ray through `screen` ([0,1]^2 over the frame) and `lensSample`
   // (uniform in [0,1)^2, (0.5, 0.5) is the lens centre) at `time`, where
-  // the camera is then (KHR_CAMERA_MOTION_TRANSFORMATION).
-  Ray generateRay(float2 screen, float2 lensSample, float time = 0.5f) const;
+  // the camera is then (KHR_CAMERA_MOTION_TRANSFORMATION), for a frame of
+  // `frameAspect` (width / height), which an unset 'aspect' follows.
+  Ray generateRay(float2 screen,
+      float2 lensSample,
+      float time = 0.5f,
+      float frameAspect = 1.f) const;
   // The ray through the lens centre (a pinhole camera).
   Ray generateRay(float2 screen) const
   {
@@ -52,12 +56,13 @@ class Camera : public MovingObject
   // Whether rays depend on the lens sample (KHR_CAMERA_DEPTH_OF_FIELD).
   // A simple pinhole (no stereo, no lens, no clipping) lets renderers build
   // primary rays in bulk: direction(x, y) = normalize(corner + x*dx + y*dy)
-  // for screen (x, y) in [0,1]^2, all from `origin`. False otherwise.
+  // for screen (x, y) in [0,1]^2, all from `origin`, for a frame of
+  // `frameAspect` (as generateRay()). False otherwise.
   struct Pinhole
   {
     float3 origin, corner, dx, dy;
   };
-  virtual bool pinhole(Pinhole &) const
+  virtual bool pinhole(Pinhole &, float /*frameAspect*/) const
   {
     return false;
   }
@@ -74,9 +79,12 @@ class Camera : public MovingObject
 
   void commitParameters() override;
   // The ray through a point of the sensor for an eye displaced by
-  // `eyeShift` (world units along the eye baseline, 0 without stereo).
-  virtual Ray rayThroughSensor(
-      float2 sensor, float eyeShift, float2 lensSample) const = 0;
+  // `eyeShift` (world units along the eye baseline, 0 without stereo), in
+  // a frame of `frameAspect` (width / height).
+  virtual Ray rayThroughSensor(float2 sensor,
+      float eyeShift,
+      float2 lensSample,
+      float frameAspect) const = 0;
 
   // The thin-lens ray: a point of the disk of radius apertureRadius spanned
   // by lensU and lensV around `origin`, aimed at the pinhole ray's point at
@@ -92,6 +100,14 @@ class Camera : public MovingObject
   void clipAlongView(Ray &ray, float near, float far) const;
   // Reads and validates 'near' and 'far' (0 <= near < far).
   void readNearFar(float &near, float &far);
+  // Reads 'aspect' (perspective, orthographic), which has no default (ANARI
+  // 1.2): unset or invalid, the image follows the frame's width / height.
+  void readAspect();
+  // The width / height of one eye's image in a frame of `frameAspect`.
+  float eyeAspect(float frameAspect) const
+  {
+    return (m_aspect > 0.f ? m_aspect : frameAspect) * m_eyeAspectScale;
+  }
   // Whether the camera moves or is placed by motion.* keys; rays then need
   // generateRay() (no pinhole() fast path).
   bool hasMotion() const
@@ -111,6 +127,8 @@ class Camera : public MovingObject
   float m_interpupillaryDistance{0.0635f};
   // An eye's image is this fraction of the frame's width/height ratio.
   float m_eyeAspectScale{1.f};
+  // The given 'aspect'; 0 when the frame's ratio is used.
+  float m_aspect{0.f};
   float2 m_shutter{0.5f, 0.5f};
   RollingShutter m_rollingShutter{RollingShutter::kNone};
   float m_rollingShutterDuration{0.f};

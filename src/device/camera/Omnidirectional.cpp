@@ -22,7 +22,7 @@ void Omnidirectional::commitParameters()
 }
 
 Ray Omnidirectional::rayThroughSensor(
-    float2 sensor, float eyeShift, float2 lensSample) const
+    float2 sensor, float eyeShift, float2 lensSample, float) const
 {
   // Longitude grows towards 'right' as x grows, so the image reads like the
   // view from inside the sphere (not mirrored); x = 0 and 1 look backwards.

@@ -14,8 +14,10 @@ class Omnidirectional : public Camera
 
  protected:
   void commitParameters() override;
-  Ray rayThroughSensor(
-      float2 sensor, float eyeShift, float2 lensSample) const override;
+  Ray rayThroughSensor(float2 sensor,
+      float eyeShift,
+      float2 lensSample,
+      float frameAspect) const override;
 };
 
 } // namespace prism

@@ -18,24 +18,16 @@ void Orthographic::commitParameters()
         m_height);
     m_height = 1.f;
   }
-  float aspect = read<float>("aspect", ANARI_FLOAT32, 1.f);
-  if (!(aspect > 0.f && std::isfinite(aspect))) {
-    report(ANARI_SEVERITY_WARNING,
-        ANARI_STATUS_INVALID_ARGUMENT,
-        "'aspect' (%g) must be > 0; using 1",
-        aspect);
-    aspect = 1.f;
-  }
-  m_aspect = aspect * m_eyeAspectScale;
+  readAspect();
   readNearFar(m_near, m_far);
 }
 
 Ray Orthographic::rayThroughSensor(
-    float2 sensor, float eyeShift, float2 lensSample) const
+    float2 sensor, float eyeShift, float2 lensSample, float frameAspect) const
 {
+  const float aspect = eyeAspect(frameAspect);
   const float3 origin =
-      m_position
-      + m_right * ((sensor.x - 0.5f) * m_height * m_aspect + eyeShift)
+      m_position + m_right * ((sensor.x - 0.5f) * m_height * aspect + eyeShift)
       + m_up * ((sensor.y - 0.5f) * m_height);
   // The spec gives no orthographic lens; this one is telecentric: a lens
   // disk around each sensor ray, all of it focused at focusDistance.

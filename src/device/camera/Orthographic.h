@@ -12,12 +12,13 @@ class Orthographic : public Camera
 
  protected:
   void commitParameters() override;
-  Ray rayThroughSensor(
-      float2 sensor, float eyeShift, float2 lensSample) const override;
+  Ray rayThroughSensor(float2 sensor,
+      float eyeShift,
+      float2 lensSample,
+      float frameAspect) const override;
 
  private:
   float m_height{1.f}; // world-space height of the image
-  float m_aspect{1.f}; // of one eye's image
   float m_near{0.f};
   float m_far{std::numeric_limits<float>::infinity()};
 };

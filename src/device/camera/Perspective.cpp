@@ -19,23 +19,16 @@ void Perspective::commitParameters()
     fovy = kDefaultFovy;
   }
   m_halfHeight = std::tan(0.5f * fovy);
-  float aspect = read<float>("aspect", ANARI_FLOAT32, 1.f);
-  if (!(aspect > 0.f && std::isfinite(aspect))) {
-    report(ANARI_SEVERITY_WARNING,
-        ANARI_STATUS_INVALID_ARGUMENT,
-        "'aspect' (%g) must be > 0; using 1",
-        aspect);
-    aspect = 1.f;
-  }
-  m_aspect = aspect * m_eyeAspectScale;
+  readAspect();
   readNearFar(m_near, m_far);
 }
 
 Ray Perspective::rayThroughSensor(
-    float2 sensor, float eyeShift, float2 lensSample) const
+    float2 sensor, float eyeShift, float2 lensSample, float frameAspect) const
 {
+  const float aspect = eyeAspect(frameAspect);
   const float3 onPlane =
-      m_direction + m_right * ((2.f * sensor.x - 1.f) * m_halfHeight * m_aspect)
+      m_direction + m_right * ((2.f * sensor.x - 1.f) * m_halfHeight * aspect)
       + m_up * ((2.f * sensor.y - 1.f) * m_halfHeight);
   const float3 direction = normalize(onPlane);
   // Parallel eyes: the same view frustum, shifted along the baseline.
@@ -50,19 +43,20 @@ Ray Perspective::rayThroughSensor(
   return ray;
 }
 
-bool Perspective::pinhole(Pinhole &out) const
+bool Perspective::pinhole(Pinhole &out, float frameAspect) const
 {
   if (hasDepthOfField() || m_stereoMode != StereoMode::kNone || m_near != 0.f
       || !std::isinf(m_far) || hasMotion())
     return false;
+  const float aspect = eyeAspect(frameAspect);
   // The sensor point of screen (x, y) is regionLower + (x, y) * regionSize;
   // rayThroughSensor maps sensor s to direction + right*(2s.x-1)*h*a + ...
-  const float w = 2.f * m_halfHeight * m_aspect, h = 2.f * m_halfHeight;
+  const float w = 2.f * m_halfHeight * aspect, h = 2.f * m_halfHeight;
   const float2 size = m_regionUpper - m_regionLower;
   out.origin = m_position;
   out.corner =
       m_direction
-      + m_right * ((2.f * m_regionLower.x - 1.f) * m_halfHeight * m_aspect)
+      + m_right * ((2.f * m_regionLower.x - 1.f) * m_halfHeight * aspect)
       + m_up * ((2.f * m_regionLower.y - 1.f) * m_halfHeight);
   out.dx = m_right * (w * size.x);
   out.dy = m_up * (h * size.y);

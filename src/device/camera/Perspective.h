@@ -12,16 +12,17 @@ class Perspective : public Camera
   explicit Perspective(DeviceState &device);
 
  public:
-  bool pinhole(Pinhole &out) const override;
+  bool pinhole(Pinhole &out, float frameAspect) const override;
 
  protected:
   void commitParameters() override;
-  Ray rayThroughSensor(
-      float2 sensor, float eyeShift, float2 lensSample) const override;
+  Ray rayThroughSensor(float2 sensor,
+      float eyeShift,
+      float2 lensSample,
+      float frameAspect) const override;
 
  private:
   float m_halfHeight{0.57735f}; // tan(fovy / 2) at unit distance
-  float m_aspect{1.f};          // of one eye's image
   float m_near{0.f};
   float m_far{std::numeric_limits<float>::infinity()};
 };

@@ -15,6 +15,7 @@
 
 #include <unistd.h>
 #include <algorithm>
+#include <climits>
 #include <cstring>
 
 namespace prism {
@@ -127,6 +128,11 @@ void Frame::renderAsync()
   m_sampleIndex = nextSampleIndex();
   m_samplesDone = m_sampleIndex;
   m_accumulatedVersion = sceneVersion();
+  // At the renderer's sampleLimit the accumulation has converged: the
+  // render finishes at once, nothing traced, the image as it is.
+  const uint32_t limit = m_renderer->sampleLimit();
+  const bool converged = m_accumulation && limit > 0 && m_sampleIndex >= limit
+                         && !m_accumulated.color.empty();
   m_cancel = false;
   m_tilesDone = 0;
   m_start = std::chrono::steady_clock::now();
@@ -134,9 +140,10 @@ void Frame::renderAsync()
   // The callback is the one committed now: a commit may replace it while
   // the task is finishing.
   const Completion completion{m_completionCallback, m_completionUserPtr};
-  device().taskPool().run([this, completion] {
+  device().taskPool().run([this, completion, converged] {
     try {
-      render();
+      if (!converged)
+        render();
     } catch (const std::bad_alloc &) {
       dropRenderedPixels();
       report(ANARI_SEVERITY_ERROR,
@@ -478,6 +485,28 @@ ANARIDataType Frame::channelType(const std::string &channel) const
   return it == m_channels.end() ? ANARI_UNKNOWN : it->second.type;
 }
 
+bool Frame::samplesProperty(
+    ANARIDataType type, void *mem, uint64_t size, ANARIWaitMask mask)
+{
+  if ((type != ANARI_INT32 && type != ANARI_UINT32) || !mem
+      || size < sizeof(uint32_t))
+    return false;
+  if (mask & ANARI_WAIT)
+    waitUntilDone();
+  else if (!ready(ANARI_NO_WAIT))
+    return false; // the count changes under a render in flight
+  // Without accumulation the channels hold one sample once rendered.
+  const uint32_t samples =
+      m_accumulation ? m_samplesDone : (m_renders > 0 ? 1u : 0u);
+  if (type == ANARI_INT32) {
+    const int32_t value = int32_t(std::min<uint32_t>(samples, INT32_MAX));
+    std::memcpy(mem, &value, sizeof(value));
+  } else {
+    std::memcpy(mem, &samples, sizeof(samples));
+  }
+  return true;
+}
+
 uint32_t Frame::nextSampleIndex() const
 {
   return m_accumulation && sceneVersion() == m_accumulatedVersion
@@ -504,6 +533,8 @@ bool Frame::getProperty(const std::string &name,
     uint64_t size,
     ANARIWaitMask mask)
 {
+  if (name == "numSamples")
+    return samplesProperty(type, mem, size, mask);
   if (type != ANARI_FLOAT32 || !mem || size < sizeof(float))
     return false;
   float value;
@@ -514,7 +545,11 @@ bool Frame::getProperty(const std::string &name,
   } else if (name == "refinementProgress") {
     if (mask & ANARI_WAIT)
       waitUntilDone();
-    const uint32_t target = m_renderer ? m_renderer->convergedSampleCount() : 1;
+    // A sampleLimit is where the frame stops: progress is complete there.
+    const uint32_t limit = m_renderer ? m_renderer->sampleLimit() : 0;
+    const uint32_t target = limit > 0    ? limit
+                            : m_renderer ? m_renderer->convergedSampleCount()
+                                         : 1;
     value = m_accumulation ? std::min(
                 1.f, float(m_samplesDone) / float(std::max(target, 1u)))
                            : 1.f;

@@ -100,6 +100,9 @@ class Frame : public Object
   // average so far with accumulation); waits for the render in flight.
   const FrameBuffers &linearPixels();
 
+  // Besides the spec's duration and progress: "numSamples" (INT32 or
+  // UINT32), the samples per pixel the channels hold (accumulated so far;
+  // 1 after a render without accumulation), as hdAnari asks.
   bool getProperty(const std::string &name,
       ANARIDataType type,
       void *mem,
@@ -116,6 +119,8 @@ class Frame : public Object
     std::vector<unsigned char> pixels;
   };
   void render();
+  bool samplesProperty(
+      ANARIDataType type, void *mem, uint64_t size, ANARIWaitMask mask);
   // Folds one tile of this frame's sample into the accumulation
   // (KHR_FRAME_ACCUMULATION), then converts it to the channels' types.
   void accumulate(const Tile &tile);

@@ -807,7 +807,8 @@ constexpr ChannelEntry kChannels7[] = {{"channel.color", kCore},
 constexpr PropertyEntry kProperties7[] = {
     {"duration", ANARI_FLOAT32, true, kCore},
     {"renderProgress", ANARI_FLOAT32, false, kCore},
-    {"refinementProgress", ANARI_FLOAT32, false, kCore}};
+    {"refinementProgress", ANARI_FLOAT32, false, kCore},
+    {"numSamples", ANARI_INT32, false, kPrismRenderers}};
 constexpr int kContributors7[] = {kKhrDataParallelMpi,
     kKhrFrameAccumulation,
     kKhrFrameChannelAlbedo,
@@ -815,7 +816,8 @@ constexpr int kContributors7[] = {kKhrDataParallelMpi,
     kKhrFrameChannelNormal,
     kKhrFrameChannelObjectId,
     kKhrFrameChannelPrimitiveId,
-    kKhrFrameCompletionCallback};
+    kKhrFrameCompletionCallback,
+    kPrismRenderers};
 
 // ANARI_GEOMETRY "cone": ANARI_KHR_GEOMETRY_CONE
 constexpr ValueEntry kValues8_caps[] = {
@@ -2670,6 +2672,10 @@ constexpr float kDefault28_ambientRadiance[] = {0.f};
 constexpr float kDefault28_background[] = {0.f, 0.f, 0.f, 1.f};
 // denoise default: ANARI_BOOL
 alignas(4) constexpr int8_t kDefault28_denoise[] = {0, 0, 0, 0};
+// sampleLimit default: ANARI_INT32
+constexpr int32_t kDefault28_sampleLimit[] = {0};
+// sampleLimit minimum: ANARI_INT32
+constexpr int32_t kMinimum28_sampleLimit[] = {0};
 // aoSamples default: ANARI_INT32
 constexpr int32_t kDefault28_aoSamples[] = {1};
 // aoSamples minimum: ANARI_INT32
@@ -2714,6 +2720,15 @@ constexpr ParameterEntry kParameters28[] = {
         .description = "whether the rendered image should be denoised",
         .defaultValue = kDefault28_denoise,
         .extension = kKhrRendererDenoise},
+    {.name = "sampleLimit",
+        .types = {kTypeList40, 1},
+        .description =
+            "the most samples per pixel an accumulating frame gathers (0: no "
+            "limit); frames rendered beyond it return at once with the image "
+            "unchanged (hdAnari's convergence control)",
+        .defaultValue = kDefault28_sampleLimit,
+        .minimum = kMinimum28_sampleLimit,
+        .extension = kPrismRenderers},
     {.name = "aoSamples",
         .types = {kTypeList40, 1},
         .description = "occlusion rays per pixel per frame",
@@ -2742,6 +2757,10 @@ constexpr float kDefault29_ambientRadiance[] = {0.f};
 constexpr float kDefault29_background[] = {0.f, 0.f, 0.f, 1.f};
 // denoise default: ANARI_BOOL
 alignas(4) constexpr int8_t kDefault29_denoise[] = {0, 0, 0, 0};
+// sampleLimit default: ANARI_INT32
+constexpr int32_t kDefault29_sampleLimit[] = {0};
+// sampleLimit minimum: ANARI_INT32
+constexpr int32_t kMinimum29_sampleLimit[] = {0};
 // clang-format on
 constexpr ValueEntry kValues29_mode[] = {{"Ns", ANARI_UNKNOWN, kPrismRenderers},
     {"Ng", ANARI_UNKNOWN, kPrismRenderers},
@@ -2793,6 +2812,15 @@ constexpr ParameterEntry kParameters29[] = {
         .description = "whether the rendered image should be denoised",
         .defaultValue = kDefault29_denoise,
         .extension = kKhrRendererDenoise},
+    {.name = "sampleLimit",
+        .types = {kTypeList40, 1},
+        .description =
+            "the most samples per pixel an accumulating frame gathers (0: no "
+            "limit); frames rendered beyond it return at once with the image "
+            "unchanged (hdAnari's convergence control)",
+        .defaultValue = kDefault29_sampleLimit,
+        .minimum = kMinimum29_sampleLimit,
+        .extension = kPrismRenderers},
     {.name = "mode",
         .types = {kTypeList0, 1},
         .description =
@@ -2818,6 +2846,10 @@ constexpr float kDefault30_ambientRadiance[] = {0.f};
 constexpr float kDefault30_background[] = {0.f, 0.f, 0.f, 1.f};
 // denoise default: ANARI_BOOL
 alignas(4) constexpr int8_t kDefault30_denoise[] = {0, 0, 0, 0};
+// sampleLimit default: ANARI_INT32
+constexpr int32_t kDefault30_sampleLimit[] = {0};
+// sampleLimit minimum: ANARI_INT32
+constexpr int32_t kMinimum30_sampleLimit[] = {0};
 // maxPathLength default: ANARI_INT32
 constexpr int32_t kDefault30_maxPathLength[] = {8};
 // maxPathLength minimum: ANARI_INT32
@@ -2860,6 +2892,15 @@ constexpr ParameterEntry kParameters30[] = {
         .description = "whether the rendered image should be denoised",
         .defaultValue = kDefault30_denoise,
         .extension = kKhrRendererDenoise},
+    {.name = "sampleLimit",
+        .types = {kTypeList40, 1},
+        .description =
+            "the most samples per pixel an accumulating frame gathers (0: no "
+            "limit); frames rendered beyond it return at once with the image "
+            "unchanged (hdAnari's convergence control)",
+        .defaultValue = kDefault30_sampleLimit,
+        .minimum = kMinimum30_sampleLimit,
+        .extension = kPrismRenderers},
     {.name = "maxPathLength",
         .types = {kTypeList40, 1},
         .description = "the most surfaces a path meets (1: direct light only); "
@@ -2893,6 +2934,10 @@ constexpr float kDefault31_ambientRadiance[] = {0.f};
 constexpr float kDefault31_background[] = {0.f, 0.f, 0.f, 1.f};
 // denoise default: ANARI_BOOL
 alignas(4) constexpr int8_t kDefault31_denoise[] = {0, 0, 0, 0};
+// sampleLimit default: ANARI_INT32
+constexpr int32_t kDefault31_sampleLimit[] = {0};
+// sampleLimit minimum: ANARI_INT32
+constexpr int32_t kMinimum31_sampleLimit[] = {0};
 // eyeLightBlendRatio default: ANARI_FLOAT32
 constexpr float kDefault31_eyeLightBlendRatio[] = {0.5f};
 // eyeLightBlendRatio minimum: ANARI_FLOAT32
@@ -2905,6 +2950,12 @@ constexpr float kDefault31_volumeSamplingRate[] = {1.f};
 constexpr float kMinimum31_volumeSamplingRate[] = {0.001f};
 // volumeSamplingRate maximum: ANARI_FLOAT32
 constexpr float kMaximum31_volumeSamplingRate[] = {1000.f};
+// volumeSampleRateFactor default: ANARI_FLOAT32
+constexpr float kDefault31_volumeSampleRateFactor[] = {1.f};
+// volumeSampleRateFactor minimum: ANARI_FLOAT32
+constexpr float kMinimum31_volumeSampleRateFactor[] = {0.001f};
+// volumeSampleRateFactor maximum: ANARI_FLOAT32
+constexpr float kMaximum31_volumeSampleRateFactor[] = {1000.f};
 // volumeMajorantGrid default: ANARI_BOOL
 alignas(4) constexpr int8_t kDefault31_volumeMajorantGrid[] = {1, 0, 0, 0};
 // clang-format on
@@ -2941,6 +2992,15 @@ constexpr ParameterEntry kParameters31[] = {
         .description = "whether the rendered image should be denoised",
         .defaultValue = kDefault31_denoise,
         .extension = kKhrRendererDenoise},
+    {.name = "sampleLimit",
+        .types = {kTypeList40, 1},
+        .description =
+            "the most samples per pixel an accumulating frame gathers (0: no "
+            "limit); frames rendered beyond it return at once with the image "
+            "unchanged (hdAnari's convergence control)",
+        .defaultValue = kDefault31_sampleLimit,
+        .minimum = kMinimum31_sampleLimit,
+        .extension = kPrismRenderers},
     {.name = "eyeLightBlendRatio",
         .types = {kTypeList6, 1},
         .description = "how much the eye light's cosine darkens surfaces seen "
@@ -2957,6 +3017,14 @@ constexpr ParameterEntry kParameters31[] = {
         .defaultValue = kDefault31_volumeSamplingRate,
         .minimum = kMinimum31_volumeSamplingRate,
         .maximum = kMaximum31_volumeSamplingRate,
+        .extension = kPrismRenderers},
+    {.name = "volumeSampleRateFactor",
+        .types = {kTypeList6, 1},
+        .description = "the ANARI-SDK's name (EXP_VOLUME_SAMPLE_RATE) for "
+                       "volumeSamplingRate, which wins when both are set",
+        .defaultValue = kDefault31_volumeSampleRateFactor,
+        .minimum = kMinimum31_volumeSampleRateFactor,
+        .maximum = kMaximum31_volumeSampleRateFactor,
         .extension = kPrismRenderers},
     {.name = "volumeMajorantGrid",
         .types = {kTypeList16, 1},
@@ -3875,10 +3943,10 @@ const ObjectEntry kObjects[] = {
     {.type = ANARI_FRAME,
         .description = "frame object",
         .extension = kCore,
-        .contributors = {kContributors7, 8},
+        .contributors = {kContributors7, 9},
         .parameters = {kParameters7, 16},
         .channels = {kChannels7, 7},
-        .properties = {kProperties7, 3}},
+        .properties = {kProperties7, 4}},
     // ANARI_GEOMETRY "cone"
     {.type = ANARI_GEOMETRY,
         .subtype = "cone",
@@ -4024,14 +4092,14 @@ const ObjectEntry kObjects[] = {
                        "fraction of the hemisphere",
         .extension = kPrismRenderers,
         .contributors = {kContributors28, 4},
-        .parameters = {kParameters28, 8}},
+        .parameters = {kParameters28, 9}},
     // ANARI_RENDERER "debug"
     {.type = ANARI_RENDERER,
         .subtype = "debug",
         .description = "false-color views of geometry, ids and attributes",
         .extension = kPrismRenderers,
         .contributors = {kContributors29, 4},
-        .parameters = {kParameters29, 7}},
+        .parameters = {kParameters29, 8}},
     // ANARI_RENDERER "pathtracer"
     {.type = ANARI_RENDERER,
         .subtype = "pathtracer",
@@ -4040,7 +4108,7 @@ const ObjectEntry kObjects[] = {
                        "path per pixel per frame",
         .extension = kPrismRenderers,
         .contributors = {kContributors30, 4},
-        .parameters = {kParameters30, 8},
+        .parameters = {kParameters30, 9},
         .properties = {kProperties30, 1}},
     // ANARI_RENDERER "raycast"
     {.type = ANARI_RENDERER,
@@ -4050,7 +4118,7 @@ const ObjectEntry kObjects[] = {
                        "(empty space skipped): the fast preview",
         .extension = kPrismRenderers,
         .contributors = {kContributors31, 4},
-        .parameters = {kParameters31, 9}},
+        .parameters = {kParameters31, 11}},
     // ANARI_SURFACE
     {.type = ANARI_SURFACE,
         .description = "surface object",

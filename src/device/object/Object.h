@@ -110,6 +110,13 @@ class Object
       uint64_t size,
       ANARIWaitMask mask);
 
+  // The values the last commit read (a data-parallel device sends a light
+  // to other processes by them). Call on the thread that flushes commits.
+  const ParameterStore &committedParameters() const
+  {
+    return m_committed;
+  }
+
   // The names the last commit asked for, set or not (conformance checks:
   // everything an object reads must be declared to introspection).
   const std::set<std::string> &parametersRead() const

@@ -11,7 +11,8 @@ namespace prism {
 PrimaryRays::PrimaryRays(const RenderContext &context)
     : m_context(context), m_invWidth(1.f / float(context.width))
 {
-  m_isPinhole = context.camera->pinhole(m_pinhole);
+  m_isPinhole = context.camera->pinhole(
+      m_pinhole, float(context.width) / float(context.height));
 }
 
 void PrimaryRays::generate(uint32_t x0,
@@ -75,7 +76,10 @@ void PrimaryRays::generate(uint32_t x0,
                             : lensSample(x, y, sampleIndex);
     const float rayTime =
         m_context.camera->rayTime(screen, exposureSample(x, y, sampleIndex));
-    const Ray ray = m_context.camera->generateRay(screen, lens, rayTime);
+    const Ray ray = m_context.camera->generateRay(screen,
+        lens,
+        rayTime,
+        float(m_context.width) / float(m_context.height));
     packet.originX[i] = ray.origin.x;
     packet.originY[i] = ray.origin.y;
     packet.originZ[i] = ray.origin.z;

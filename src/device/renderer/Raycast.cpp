@@ -229,11 +229,21 @@ void Raycast::commitParameters()
   m_eyeLightBlendRatio = std::clamp(
       read<float>("eyeLightBlendRatio", ANARI_FLOAT32, 0.5f), 0.f, 1.f);
   m_volumeMajorantGrid = readBool("volumeMajorantGrid", true);
-  m_volumeSamplingRate = read<float>("volumeSamplingRate", ANARI_FLOAT32, 1.f);
+  // The SDK's experimental EXP_VOLUME_SAMPLE_RATE names the same factor
+  // volumeSampleRateFactor; prism's own name wins when both are set.
+  const float sdkRate =
+      read<float>("volumeSampleRateFactor", ANARI_FLOAT32, 1.f);
+  const char *rateName =
+      isSet("volumeSamplingRate") || !isSet("volumeSampleRateFactor")
+          ? "volumeSamplingRate"
+          : "volumeSampleRateFactor";
+  m_volumeSamplingRate =
+      read<float>("volumeSamplingRate", ANARI_FLOAT32, sdkRate);
   if (!(m_volumeSamplingRate >= 1e-3f && m_volumeSamplingRate <= 1e3f)) {
     report(ANARI_SEVERITY_WARNING,
         ANARI_STATUS_INVALID_ARGUMENT,
-        "'volumeSamplingRate' %g is outside [0.001, 1000]; it is clamped",
+        "'%s' %g is outside [0.001, 1000]; it is clamped",
+        rateName,
         double(m_volumeSamplingRate));
     m_volumeSamplingRate = std::isnan(m_volumeSamplingRate)
                                ? 1.f

@@ -29,6 +29,14 @@ void Renderer::commitParameters()
   m_ambientColor = read<float3>("ambientColor", ANARI_FLOAT32_VEC3, {1, 1, 1});
   m_ambientRadiance = read<float>("ambientRadiance", ANARI_FLOAT32, 0.f);
   m_denoise = readBool("denoise", false);
+  const int32_t sampleLimit = read<int32_t>("sampleLimit", ANARI_INT32, 0);
+  if (sampleLimit < 0) {
+    report(ANARI_SEVERITY_WARNING,
+        ANARI_STATUS_INVALID_ARGUMENT,
+        "'sampleLimit' (%d) must be >= 0; using 0 (no limit)",
+        sampleLimit);
+  }
+  m_sampleLimit = uint32_t(std::max(sampleLimit, 0));
   m_backgroundColor = {0, 0, 0, 1};
   m_backgroundImage.clear();
   m_backgroundWidth = m_backgroundHeight = 0;
@@ -161,7 +169,8 @@ Ray Renderer::cameraRay(
           : lensSample(x, y, context.sampleIndex);
   const float time = context.camera->rayTime(
       screen, exposureSample(x, y, context.sampleIndex));
-  return context.camera->generateRay(screen, lens, time);
+  return context.camera->generateRay(
+      screen, lens, time, float(context.width) / float(context.height));
 }
 
 rt::Hit Renderer::traceBeyond(

@@ -76,6 +76,12 @@ class Renderer : public Object
     return m_backgroundImage.empty();
   }
 
+  // The 'sampleLimit' (hdAnari's convergence control): how many samples
+  // per pixel an accumulating frame gathers at most; 0: no limit.
+  uint32_t sampleLimit() const
+  {
+    return m_sampleLimit;
+  }
   // Samples per pixel after which accumulating more changes little
   // (refinementProgress reaches 1 there).
   virtual uint32_t convergedSampleCount() const
@@ -121,6 +127,7 @@ class Renderer : public Object
       const PixelSample &sample);
 
   bool m_denoise{false};
+  uint32_t m_sampleLimit{0};
   float3 m_ambientColor{1, 1, 1};
   float m_ambientRadiance{0.f};
 

@@ -66,10 +66,12 @@ int segmentsAlong(const World &world,
   return count;
 }
 
-// Adds one step of length `length` with extinction `sigma` and colour
-// `color` (Appendix C); records the first sample with opacity.
+// Adds one step beginning at distance `begin`, of length `length`, with
+// extinction `sigma` and colour `color` (Appendix C); records the first
+// step with opacity, where it begins (the depth a slab entered at t
+// reports is t, whichever point of the step was sampled).
 void accumulate(VolumeMarch &march,
-    float t,
+    float begin,
     float length,
     float sigma,
     const float3 &color,
@@ -79,7 +81,7 @@ void accumulate(VolumeMarch &march,
     return;
   const float stepTransmittance = std::exp(-sigma * length);
   if (march.firstDepth == std::numeric_limits<float>::infinity()) {
-    march.firstDepth = t;
+    march.firstDepth = begin;
     march.objectId = placed.volume->id();
     march.instanceId = placed.instanceId;
     march.firstColor = color;
@@ -116,7 +118,8 @@ void marchSegment(
     float3 color;
     stepAt(k, t, length);
     if (volume.sample(s.origin + s.direction * t, sigma, color))
-      accumulate(march, t, length, sigma, color, *s.placed);
+      accumulate(
+          march, s.t0 + float(k) * s.step, length, sigma, color, *s.placed);
     return march.transmittance >= settings.stopTransmittance;
   };
   if (!settings.skipEmpty) {
@@ -145,7 +148,7 @@ void marchSegment(
           s.origin + s.direction * t, s.direction * s.step, n, sigmas, colors);
       for (int i = 0; i < n; i++) {
         accumulate(march,
-            t + float(i) * s.step,
+            s.t0 + float(k + i) * s.step,
             s.step,
             sigmas[i],
             colors[i],
@@ -218,7 +221,7 @@ void marchOverlap(const Segment *segments,
       }
     }
     if (densest)
-      accumulate(march, t, b - a, sigmaSum, weighted / sigmaSum, *densest);
+      accumulate(march, a, b - a, sigmaSum, weighted / sigmaSum, *densest);
     if (march.transmittance < settings.stopTransmittance)
       return;
   }

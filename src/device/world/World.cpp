@@ -132,14 +132,19 @@ void World::finalize()
   m_placedLights.clear();
   m_ownEmitters.clear();
   m_sharesEmitters = false;
-  m_firstOwnEmitter = 0;
+  m_emitterShift = 0;
+  m_ownDeclared.clear();
+  m_sharesDeclared = false;
+  m_ownDeclaredSources.clear();
   auto placeLights = [&](const std::vector<Object *> &lights,
                          const mat3x4 &transform) {
     for (Object *object : lights) {
       auto *light = dynamic_cast<const Light *>(object);
       if (light && light->isValid()) {
-        if (auto placed = light->place(transform))
+        if (auto placed = light->place(transform)) {
           m_placedLights.push_back(std::move(placed));
+          m_ownDeclaredSources.push_back({light, transform});
+        }
       }
     }
   };
@@ -212,6 +217,11 @@ void World::finalize()
   const bool single = m_placements.size() == 1 && m_placements[0].identity;
   m_traced = single ? &m_placements[0].group->scene() : m_scene.get();
   placeEmitters();
+  indexLights(sceneRadius(m_bounds));
+}
+
+void World::indexLights(float radius)
+{
   m_reachableLights.clear();
   for (size_t i = 0; i < m_placedLights.size(); i++) {
     const PlacedLight &light = *m_placedLights[i];
@@ -221,7 +231,7 @@ void World::finalize()
       m_reachableLights.push_back(reachable);
     }
   }
-  m_lightSelector.build(m_placedLights, sceneRadius(m_bounds));
+  m_lightSelector.build(m_placedLights, radius);
 }
 
 float World::sceneRadius(const box3 &bounds)
@@ -233,6 +243,22 @@ void World::shareEmitters(std::vector<std::unique_ptr<PlacedLight>> emitters,
     size_t firstOwn,
     float radius)
 {
+  share(nullptr, std::move(emitters), firstOwn, radius);
+}
+
+void World::shareLights(std::vector<std::unique_ptr<PlacedLight>> declared,
+    std::vector<std::unique_ptr<PlacedLight>> emitters,
+    size_t firstOwn,
+    float radius)
+{
+  share(&declared, std::move(emitters), firstOwn, radius);
+}
+
+void World::share(std::vector<std::unique_ptr<PlacedLight>> *declared,
+    std::vector<std::unique_ptr<PlacedLight>> emitters,
+    size_t firstOwn,
+    float radius)
+{
   keepOwnEmitters();
   const size_t own = m_placedLights.size() - m_declaredLightCount;
   if (firstOwn + own > emitters.size())
@@ -240,32 +266,76 @@ void World::shareEmitters(std::vector<std::unique_ptr<PlacedLight>> emitters,
   for (size_t i = m_declaredLightCount; i < m_placedLights.size(); i++)
     m_ownEmitters.push_back(std::move(m_placedLights[i]));
   m_placedLights.resize(m_declaredLightCount);
+  if (declared) {
+    m_ownDeclared = std::move(m_placedLights);
+    m_placedLights = std::move(*declared);
+    m_sharesDeclared = true;
+  }
+  // The own emitters' indices follow the declared lights, then the
+  // emitters of the processes before this one.
+  m_emitterShift = int32_t(m_placedLights.size())
+                   - int32_t(m_declaredLightCount) + int32_t(firstOwn);
+  m_declaredLightCount = m_placedLights.size();
   for (auto &emitter : emitters)
     m_placedLights.push_back(std::move(emitter));
+  shiftEmitterIndices(m_emitterShift);
+  m_sharesEmitters = true;
+  indexLights(radius);
+}
+
+void World::shiftEmitterIndices(int32_t shift)
+{
   for (auto &ofPlacement : m_emitterLights) {
     for (int32_t &index : ofPlacement)
-      index = index >= 0 ? index + int32_t(firstOwn) : index;
+      index = index >= 0 ? index + shift : index;
   }
-  m_firstOwnEmitter = firstOwn;
-  m_sharesEmitters = true;
-  m_lightSelector.build(m_placedLights, radius);
+}
+
+void World::shareDeclaredLights(
+    std::vector<std::unique_ptr<PlacedLight>> declared, float radius)
+{
+  keepOwnEmitters();
+  std::vector<std::unique_ptr<PlacedLight>> emitters;
+  for (size_t i = m_declaredLightCount; i < m_placedLights.size(); i++)
+    emitters.push_back(std::move(m_placedLights[i]));
+  m_placedLights.resize(m_declaredLightCount);
+  m_ownDeclared = std::move(m_placedLights);
+  m_placedLights = std::move(declared);
+  m_emitterShift =
+      int32_t(m_placedLights.size()) - int32_t(m_declaredLightCount);
+  m_declaredLightCount = m_placedLights.size();
+  for (auto &emitter : emitters)
+    m_placedLights.push_back(std::move(emitter));
+  shiftEmitterIndices(m_emitterShift);
+  m_sharesDeclared = true;
+  indexLights(radius);
 }
 
 void World::keepOwnEmitters()
 {
-  if (!m_sharesEmitters)
+  if (!m_sharesEmitters && !m_sharesDeclared)
     return;
-  m_placedLights.resize(m_declaredLightCount);
-  for (auto &emitter : m_ownEmitters)
-    m_placedLights.push_back(std::move(emitter));
-  m_ownEmitters.clear();
-  for (auto &ofPlacement : m_emitterLights) {
-    for (int32_t &index : ofPlacement)
-      index = index >= 0 ? index - int32_t(m_firstOwnEmitter) : index;
+  std::vector<std::unique_ptr<PlacedLight>> emitters;
+  if (m_sharesEmitters) {
+    emitters = std::move(m_ownEmitters);
+    m_ownEmitters.clear();
+  } else {
+    for (size_t i = m_declaredLightCount; i < m_placedLights.size(); i++)
+      emitters.push_back(std::move(m_placedLights[i]));
   }
-  m_firstOwnEmitter = 0;
+  m_placedLights.resize(m_declaredLightCount);
+  if (m_sharesDeclared) {
+    m_placedLights = std::move(m_ownDeclared);
+    m_ownDeclared.clear();
+  }
+  m_declaredLightCount = m_placedLights.size();
+  for (auto &emitter : emitters)
+    m_placedLights.push_back(std::move(emitter));
+  shiftEmitterIndices(-m_emitterShift);
+  m_emitterShift = 0;
   m_sharesEmitters = false;
-  m_lightSelector.build(m_placedLights, sceneRadius(m_bounds));
+  m_sharesDeclared = false;
+  indexLights(sceneRadius(m_bounds));
 }
 
 uint64_t World::declaredLightsHash() const

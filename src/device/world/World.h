@@ -4,6 +4,7 @@
 #pragma once
 
 #include "../light/EmissiveSurface.h"
+#include "../light/Light.h"
 #include "../light/LightSelector.h"
 #include "../light/PlacedLight.h"
 #include "../rt/RayQueue.h"
@@ -114,10 +115,23 @@ class World : public Object
     return m_lightSelector;
   }
   // How many lights() the world declares (its own and its instances'
-  // groups', at each placement): the first ones of lights().
+  // groups', at each placement; while sharing lights, every process's):
+  // the first ones of lights().
   size_t declaredLightCount() const
   {
     return m_declaredLightCount;
+  }
+  // A light this world declares itself, as placed: the light and where.
+  struct DeclaredLight
+  {
+    const Light *light;
+    mat3x4 worldFromObject;
+  };
+  // This world's own declared lights, in their order in lights() when not
+  // sharing (every valid light placed, at each placement).
+  const std::vector<DeclaredLight> &ownDeclaredLights() const
+  {
+    return m_ownDeclaredSources;
   }
   // The emissive surfaces this world placed itself (after the declared
   // ones in lights(), unless shared, below), in placement order.
@@ -143,10 +157,28 @@ class World : public Object
   void shareEmitters(std::vector<std::unique_ptr<PlacedLight>> emitters,
       size_t firstOwn,
       float sceneRadius);
+  // As shareEmitters(), and `declared` (every process's declared lights,
+  // the same on every process) stand in lights() for this world's own
+  // declared lights too.
+  void shareLights(std::vector<std::unique_ptr<PlacedLight>> declared,
+      std::vector<std::unique_ptr<PlacedLight>> emitters,
+      size_t firstOwn,
+      float sceneRadius);
+  // Only `declared` in place of the world's own declared lights; its own
+  // emitters stay (their indices follow the declared lights).
+  void shareDeclaredLights(
+      std::vector<std::unique_ptr<PlacedLight>> declared, float sceneRadius);
+  // Back to the world's own declared lights and emitters.
   void keepOwnEmitters();
   bool sharesEmitters() const
   {
     return m_sharesEmitters;
+  }
+  // Whether shareLights() or shareDeclaredLights() put other declared
+  // lights in place of its own.
+  bool sharesDeclaredLights() const
+  {
+    return m_sharesDeclared;
   }
   // What the light selector takes for the radius of a scene of `bounds`.
   static float sceneRadius(const box3 &bounds);
@@ -167,6 +199,15 @@ class World : public Object
   void placeEmitters();
   // Places the volumes of every placed group.
   void placeVolumes();
+  // The lights rays can reach and light selection, from m_placedLights.
+  void indexLights(float sceneRadius);
+  // Moves every emitterLight() index by `shift`.
+  void shiftEmitterIndices(int32_t shift);
+  // shareEmitters(), and shareLights() when `declared` is not NULL.
+  void share(std::vector<std::unique_ptr<PlacedLight>> *declared,
+      std::vector<std::unique_ptr<PlacedLight>> emitters,
+      size_t firstOwn,
+      float sceneRadius);
 
   std::vector<const Instance *> m_instances;
   Group *m_implicitGroup; // an internal object, never seen by the API
@@ -181,7 +222,12 @@ class World : public Object
   // they are among the shared ones.
   bool m_sharesEmitters{false};
   std::vector<std::unique_ptr<PlacedLight>> m_ownEmitters;
-  size_t m_firstOwnEmitter{0};
+  // How far emitterLight()'s indices moved while sharing.
+  int32_t m_emitterShift{0};
+  // While sharing declared lights: this world's own, out of lights().
+  bool m_sharesDeclared{false};
+  std::vector<std::unique_ptr<PlacedLight>> m_ownDeclared;
+  std::vector<DeclaredLight> m_ownDeclaredSources;
   std::vector<ReachableLight> m_reachableLights;
   std::vector<PlacedVolume> m_placedVolumes;
   std::unique_ptr<rt::Scene> m_scene;

@@ -682,7 +682,7 @@ TEST_F(CameraTest, PinholeBasisMatchesGenerateRay)
   setRegion(camera, {-0.2f, 0.1f}, {0.9f, 1.3f});
   commit(camera);
   Camera::Pinhole pinhole;
-  ASSERT_TRUE(camera.pinhole(pinhole));
+  ASSERT_TRUE(camera.pinhole(pinhole, 1.f));
   for (float x : {0.f, 0.37f, 1.f}) {
     for (float y : {0.f, 0.61f, 1.f}) {
       const float3 d =
@@ -695,7 +695,43 @@ TEST_F(CameraTest, PinholeBasisMatchesGenerateRay)
   // Stereo, depth of field and clipping need generateRay().
   setString(camera, "stereoMode", "left");
   commit(camera);
-  EXPECT_FALSE(camera.pinhole(pinhole));
+  EXPECT_FALSE(camera.pinhole(pinhole, 1.f));
+}
+
+// ANARI 1.2: 'aspect' has no default; unset (or invalid), the image takes
+// the frame's width / height, so a 2:1 frame is twice as wide in view as
+// it is high, and pinhole() agrees with generateRay().
+TEST_F(CameraTest, UnsetAspectFollowsTheFrame)
+{
+  Perspective camera(m_device);
+  setFloat(camera, "fovy", float(M_PI / 2.0)); // tan(fovy / 2) = 1
+  commit(camera);
+  const Ray right = camera.generateRay({1.f, 0.5f}, {0.5f, 0.5f}, 0.5f, 2.f);
+  expectNear(right.direction, normalize(float3{2, 0, -1}));
+  const Ray top = camera.generateRay({0.5f, 1.f}, {0.5f, 0.5f}, 0.5f, 2.f);
+  expectNear(top.direction, normalize(float3{0, 1, -1}));
+  Camera::Pinhole pinhole;
+  ASSERT_TRUE(camera.pinhole(pinhole, 2.f));
+  expectNear(normalize(pinhole.corner + pinhole.dx + pinhole.dy * 0.5f),
+      right.direction);
+  // A given aspect wins over the frame's.
+  setFloat(camera, "aspect", 1.f);
+  commit(camera);
+  expectNear(camera.generateRay({1.f, 0.5f}, {0.5f, 0.5f}, 0.5f, 2.f).direction,
+      normalize(float3{1, 0, -1}));
+
+  Orthographic ortho(m_device);
+  setFloat(ortho, "height", 2.f);
+  commit(ortho);
+  expectNear(ortho.generateRay({1.f, 0.5f}, {0.5f, 0.5f}, 0.5f, 2.f).origin,
+      {2, 0, 0});
+  m_expectWarnings = true;
+  setFloat(ortho, "aspect", -1.f); // reported; the frame's ratio stays
+  commit(ortho);
+  ASSERT_EQ(m_warnings.size(), 1u);
+  EXPECT_NE(m_warnings[0].find("'aspect' (-1) must be > 0"), std::string::npos);
+  expectNear(ortho.generateRay({1.f, 0.5f}, {0.5f, 0.5f}, 0.5f, 3.f).origin,
+      {3, 0, 0});
 }
 
 } // namespace

@@ -645,6 +645,15 @@ TEST_F(Introspection, Properties)
   ASSERT_NE(duration, nullptr);
   EXPECT_TRUE(duration->required);
   EXPECT_EQ(findProperty(ANARI_FRAME, nullptr, "nonsense"), nullptr);
+  // hdAnari's convergence count, where PRISM_RENDERERS is implemented.
+  EXPECT_EQ(findProperty(ANARI_FRAME, nullptr, "numSamples"), nullptr);
+  const char *prism[] = {"ANARI_PRISM_RENDERERS", nullptr};
+  const Catalog withPrism(prism, nullptr);
+  const PropertyDefinition *samples =
+      withPrism.findProperty(ANARI_FRAME, nullptr, "numSamples");
+  ASSERT_NE(samples, nullptr);
+  EXPECT_EQ(int(samples->type), ANARI_INT32);
+  EXPECT_FALSE(samples->required);
 }
 
 TEST_F(Introspection, ConcurrentReaders)

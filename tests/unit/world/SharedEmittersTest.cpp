@@ -1,9 +1,9 @@
-// World::shareEmitters and keepOwnEmitters, what the data-parallel device's
-// pathtracer mode uses so that every process samples every process's
-// emissive surfaces: the shared emitters follow the declared lights, the
-// world's own surfaces name their place among them, light selection is
-// rebuilt, and the world goes back to its own emitters on request or when
-// it places its lights anew.
+// World::shareEmitters, shareLights and keepOwnEmitters, what the
+// data-parallel device's pathtracer mode uses so that every process samples
+// every process's emissive surfaces and declared lights: the shared
+// emitters follow the declared lights, the world's own surfaces name their
+// place among them, light selection is rebuilt, and the world goes back to
+// its own lights on request or when it places its lights anew.
 #include "../ObjectTestFixture.h"
 #include "light/EmissiveSurface.h"
 #include "world/World.h"
@@ -129,6 +129,74 @@ TEST_F(SharedEmittersTest, PlacingTheLightsAnewEndsTheSharing)
   EXPECT_FALSE(again.sharesEmitters());
   EXPECT_EQ(again.lights().size(), 2u);
   EXPECT_EQ(again.emitterLight(0, 0), 1);
+}
+
+// World::shareLights: other processes' declared lights stand for the
+// world's own (two of them here, where it declares one), its own surface
+// names its place after them, rays can reach what can be reached, and
+// keepOwnEmitters brings back the world's own sun.
+TEST_F(SharedEmittersTest, SharedDeclaredLightsReplaceTheOwnOnes)
+{
+  World &world = committed(glowingWorld());
+  ASSERT_EQ(world.ownDeclaredLights().size(), 1u);
+  EXPECT_EQ(world.ownDeclaredLights()[0].light->subtype(), "directional");
+  const PlacedLight *ownSun = world.lights()[0].get();
+  std::vector<std::unique_ptr<PlacedLight>> declared;
+  declared.push_back(world.ownDeclaredLights()[0].light->place(
+      world.ownDeclaredLights()[0].worldFromObject));
+  declared.push_back(remoteEmitter()); // found by rays as geometry only
+  std::vector<std::unique_ptr<PlacedLight>> emitters;
+  const EmissiveSurface &own = world.ownEmitter(0);
+  emitters.push_back(remoteEmitter());
+  emitters.push_back(
+      std::make_unique<EmissiveSurface>(own.shape(), own.radiance()));
+  world.shareLights(std::move(declared), std::move(emitters), 1, 100.f);
+  EXPECT_TRUE(world.sharesEmitters());
+  EXPECT_TRUE(world.sharesDeclaredLights());
+  ASSERT_EQ(world.lights().size(), 4u);
+  EXPECT_EQ(world.declaredLightCount(), 2u);
+  EXPECT_EQ(world.ownDeclaredLights().size(), 1u);
+  EXPECT_EQ(world.ownEmitterCount(), 1u);
+  EXPECT_EQ(world.emitterLight(0, 0), 3);
+  EXPECT_NE(world.lights()[0].get(), ownSun);
+  float total = 0.f;
+  for (size_t i = 0; i < world.lights().size(); i++)
+    total += world.lightSelector().probability(i);
+  EXPECT_NEAR(total, 1.f, 1e-5f);
+
+  world.keepOwnEmitters();
+  EXPECT_FALSE(world.sharesDeclaredLights());
+  ASSERT_EQ(world.lights().size(), 2u);
+  EXPECT_EQ(world.declaredLightCount(), 1u);
+  EXPECT_EQ(world.lights()[0].get(), ownSun);
+  EXPECT_EQ(world.emitterLight(0, 0), 1);
+}
+
+// World::shareDeclaredLights (composite mode): other declared lights, the
+// world's own emitter kept after them.
+TEST_F(SharedEmittersTest, SharedDeclaredLightsKeepTheOwnEmitters)
+{
+  World &world = committed(glowingWorld());
+  const PlacedLight *ownEmitter = world.lights()[1].get();
+  std::vector<std::unique_ptr<PlacedLight>> declared;
+  for (int i = 0; i < 2; i++) {
+    declared.push_back(world.ownDeclaredLights()[0].light->place(
+        world.ownDeclaredLights()[0].worldFromObject));
+  }
+  world.shareDeclaredLights(std::move(declared), 50.f);
+  EXPECT_FALSE(world.sharesEmitters());
+  EXPECT_TRUE(world.sharesDeclaredLights());
+  ASSERT_EQ(world.lights().size(), 3u);
+  EXPECT_EQ(world.declaredLightCount(), 2u);
+  EXPECT_EQ(world.lights()[2].get(), ownEmitter);
+  EXPECT_EQ(world.emitterLight(0, 0), 2);
+  EXPECT_EQ(world.ownEmitterCount(), 1u);
+
+  world.keepOwnEmitters();
+  EXPECT_FALSE(world.sharesDeclaredLights());
+  ASSERT_EQ(world.lights().size(), 2u);
+  EXPECT_EQ(world.lights()[1].get(), ownEmitter);
+  EXPECT_EQ(world.emitterLight(0, 0), 1);
 }
 
 } // namespace
