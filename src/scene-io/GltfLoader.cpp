@@ -809,6 +809,17 @@ class GltfImporter
   bool m_baseColorFactor{false};
   bool m_singleSided{false};
   ANARIMaterial newMaterial(int index, bool vertexColors);
+  // newMaterial's parts, each setting what its glTF properties say.
+  void setBaseLayer(
+      ANARIMaterial material, const tinygltf::Material &m, bool vertexColors);
+  void setSurfaceFlags(ANARIMaterial material, const tinygltf::Material &m);
+  void setMaps(ANARIMaterial material, const tinygltf::Material &m);
+  void setSpecularAndClearcoat(
+      ANARIMaterial material, const tinygltf::Material &m);
+  void setTransmissionAndVolume(
+      ANARIMaterial material, const tinygltf::Material &m);
+  void setSheenAndIridescence(
+      ANARIMaterial material, const tinygltf::Material &m);
   void setScalar(ANARIMaterial material,
       const char *name,
       float factor,
@@ -1839,6 +1850,20 @@ ANARIMaterial GltfImporter::newMaterial(int index, bool vertexColors)
       index >= 0 && size_t(index) < m_model.materials.size()
           ? m_model.materials[size_t(index)]
           : kDefault;
+  setBaseLayer(material, m, vertexColors);
+  setSurfaceFlags(material, m);
+  setMaps(material, m);
+  setSpecularAndClearcoat(material, m);
+  setTransmissionAndVolume(material, m);
+  setSheenAndIridescence(material, m);
+  anariCommitParameters(m_device, material);
+  return material;
+}
+
+// Base color, metallic and roughness (or specular-glossiness converted).
+void GltfImporter::setBaseLayer(
+    ANARIMaterial material, const tinygltf::Material &m, bool vertexColors)
+{
   const tinygltf::PbrMetallicRoughness &pbr = m.pbrMetallicRoughness;
   if (const tinygltf::Value *specularGlossiness =
           extension(m.extensions, "KHR_materials_pbrSpecularGlossiness")) {
@@ -1866,6 +1891,12 @@ ANARIMaterial GltfImporter::newMaterial(int index, bool vertexColors)
         textureRef(pbr.metallicRoughnessTexture),
         1);
   }
+}
+
+// Unlit, double-sided and the alpha mode.
+void GltfImporter::setSurfaceFlags(
+    ANARIMaterial material, const tinygltf::Material &m)
+{
   if (extension(m.extensions, "KHR_materials_unlit")) {
     if (m_unlitMaterials) {
       const bool on = true;
@@ -1886,6 +1917,19 @@ ANARIMaterial GltfImporter::newMaterial(int index, bool vertexColors)
         "the device does not implement PRISM_MATERIAL_DOUBLE_SIDED; "
         "single-sided materials show their back faces");
   }
+  if (m.alphaMode == "MASK") {
+    scenes::setString(m_device, material, "alphaMode", "mask");
+    scenes::setFloat(m_device, material, "alphaCutoff", float(m.alphaCutoff));
+  } else if (m.alphaMode == "BLEND") {
+    scenes::setString(m_device, material, "alphaMode", "blend");
+  } else {
+    scenes::setString(m_device, material, "alphaMode", "opaque");
+  }
+}
+
+// The normal, occlusion and emissive maps.
+void GltfImporter::setMaps(ANARIMaterial material, const tinygltf::Material &m)
+{
   if (m.normalTexture.index >= 0) {
     ANARISampler normal = newSampler(textureRef(m.normalTexture),
         false,
@@ -1917,16 +1961,11 @@ ANARIMaterial GltfImporter::newMaterial(int index, bool vertexColors)
     for (int i = 0; i < 3; i++)
       emissive[i] = float(m.emissiveFactor[size_t(i)]) * emissiveStrength;
   setColor(material, "emissive", emissive, textureRef(m.emissiveTexture), true);
+}
 
-  if (m.alphaMode == "MASK") {
-    scenes::setString(m_device, material, "alphaMode", "mask");
-    scenes::setFloat(m_device, material, "alphaCutoff", float(m.alphaCutoff));
-  } else if (m.alphaMode == "BLEND") {
-    scenes::setString(m_device, material, "alphaMode", "blend");
-  } else {
-    scenes::setString(m_device, material, "alphaMode", "opaque");
-  }
-
+void GltfImporter::setSpecularAndClearcoat(
+    ANARIMaterial material, const tinygltf::Material &m)
+{
   // Without KHR_materials_specular glTF means specularFactor 1 and
   // specularColorFactor 1 (the dielectric's F0 comes from ior alone), where
   // ANARI's `specular` defaults to 0: no dielectric reflection at all.
@@ -1966,6 +2005,11 @@ ANARIMaterial GltfImporter::newMaterial(int index, bool vertexColors)
       }
     }
   }
+}
+
+void GltfImporter::setTransmissionAndVolume(
+    ANARIMaterial material, const tinygltf::Material &m)
+{
   // glTF's ior is 1.5 without KHR_materials_ior (ANARI's default too, set
   // anyway: it is what the file means). Every other extension's absence
   // means what ANARI's defaults mean (clearcoat, transmission, thickness,
@@ -1997,6 +2041,11 @@ ANARIMaterial GltfImporter::newMaterial(int index, bool vertexColors)
         "attenuationColor",
         vec3(e, "attenuationColor", {1.f, 1.f, 1.f}));
   }
+}
+
+void GltfImporter::setSheenAndIridescence(
+    ANARIMaterial material, const tinygltf::Material &m)
+{
   if (const tinygltf::Value *e =
           extension(m.extensions, "KHR_materials_sheen")) {
     setColor(material,
@@ -2037,8 +2086,6 @@ ANARIMaterial GltfImporter::newMaterial(int index, bool vertexColors)
       scenes::setFloat(m_device, material, "iridescenceThickness", hi);
     }
   }
-  anariCommitParameters(m_device, material);
-  return material;
 }
 
 namespace {
