@@ -226,6 +226,10 @@ class Checker
   void meshes();
   void nodes();
   void animations();
+  void texturesAndImages();
+  void accessors();
+  void bufferViews();
+  void skins();
 
   const GltfJson &m_document;
   const Json &m_root;
@@ -434,6 +438,17 @@ std::string Checker::run()
       [&](const Json &material, const std::string &w) {
         materialTextures(material, w);
       });
+  texturesAndImages();
+  accessors();
+  bufferViews();
+  skins();
+  animations();
+  return m_error;
+}
+
+// Textures' samplers and images, samplers' filters, images' buffer views.
+void Checker::texturesAndImages()
+{
   forEach(find(m_root, "textures"),
       "textures",
       [&](const Json &texture, const std::string &w) {
@@ -462,22 +477,26 @@ std::string Checker::run()
         for (const char *key : {"magFilter", "minFilter", "wrapS", "wrapT"})
           fitsInt(find(sampler, key), w + "." + key, true);
       });
-  const size_t bufferViews = count("bufferViews");
   forEach(find(m_root, "images"),
       "images",
       [&](const Json &image, const std::string &w) {
         index(find(image, "bufferView"),
             w + ".bufferView",
-            bufferViews,
+            count("bufferViews"),
             "buffer view",
             "buffer views");
       });
+}
+
+void Checker::accessors()
+{
+  const size_t views = count("bufferViews");
   forEach(find(m_root, "accessors"),
       "accessors",
       [&](const Json &accessor, const std::string &w) {
         index(find(accessor, "bufferView"),
             w + ".bufferView",
-            bufferViews,
+            views,
             "buffer view",
             "buffer views");
         fitsInt(find(accessor, "componentType"), w + ".componentType", true);
@@ -492,13 +511,18 @@ std::string Checker::run()
           const std::string where = w + ".sparse." + part;
           index(find(p, "bufferView"),
               where + ".bufferView",
-              bufferViews,
+              views,
               "buffer view",
               "buffer views");
           fitsInt(find(p, "byteOffset"), where + ".byteOffset", true);
           fitsInt(find(p, "componentType"), where + ".componentType", true);
         }
       });
+}
+
+// Every view inside its buffer.
+void Checker::bufferViews()
+{
   forEach(find(m_root, "bufferViews"),
       "bufferViews",
       [&](const Json &view, const std::string &w) {
@@ -530,6 +554,10 @@ std::string Checker::run()
                     + ") reaches past its buffer of "
                     + std::to_string(available) + " bytes";
       });
+}
+
+void Checker::skins()
+{
   forEach(find(m_root, "skins"), "skins", [&](const Json &skin, auto w) {
     indexList(
         find(skin, "joints"), w + ".joints", count("nodes"), "node", "nodes");
@@ -544,8 +572,6 @@ std::string Checker::run()
         "accessor",
         "accessors");
   });
-  animations();
-  return m_error;
 }
 
 uint32_t littleEndian32(const char *p)

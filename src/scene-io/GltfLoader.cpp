@@ -268,6 +268,57 @@ const unsigned char *viewBytes(const tinygltf::Model &model,
   return data.data() + view.byteOffset + byteOffset;
 }
 
+// Replaces the elements a sparse accessor lists with its values.
+template <typename T>
+bool applySparse(const tinygltf::Model &model,
+    const tinygltf::Accessor &a,
+    const std::string &name,
+    int components,
+    int componentSize,
+    std::vector<T> &out,
+    std::string &error)
+{
+  const size_t elementSize = size_t(components) * size_t(componentSize);
+  const auto &s = a.sparse;
+  const int indexSize =
+      tinygltf::GetComponentSizeInBytes(uint32_t(s.indices.componentType));
+  if (s.count < 0 || size_t(s.count) > a.count || indexSize <= 0
+      || s.indices.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) {
+    error = name + ": invalid sparse substitution";
+    return false;
+  }
+  const size_t count = size_t(s.count);
+  const unsigned char *indices = viewBytes(model,
+      s.indices.bufferView,
+      size_t(std::max(s.indices.byteOffset, 0)),
+      count * size_t(indexSize),
+      error);
+  const unsigned char *values = indices ? viewBytes(model,
+                                    s.values.bufferView,
+                                    size_t(std::max(s.values.byteOffset, 0)),
+                                    count * elementSize,
+                                    error)
+                                        : nullptr;
+  if (!values) {
+    error = name + " (sparse): " + error;
+    return false;
+  }
+  for (size_t k = 0; k < count; k++) {
+    const double target = decodeComponent(
+        indices + k * size_t(indexSize), s.indices.componentType, false);
+    if (!(target >= 0.0 && target < double(a.count))) {
+      error = name + ": sparse index out of range";
+      return false;
+    }
+    for (int c = 0; c < components; c++)
+      out[size_t(target) * size_t(components) + size_t(c)] = T(decodeComponent(
+          values + k * elementSize + size_t(c) * size_t(componentSize),
+          a.componentType,
+          a.normalized));
+  }
+  return true;
+}
+
 // Reads accessor `index` into `out` as T (float, or uint32_t for indices),
 // `components` per element, applying sparse substitution. The accessor must
 // have between minComponents and maxComponents components.
@@ -354,46 +405,9 @@ bool readAccessor(const tinygltf::Model &model,
             a.componentType,
             a.normalized));
   }
-  if (a.sparse.isSparse) {
-    const auto &s = a.sparse;
-    const int indexSize =
-        tinygltf::GetComponentSizeInBytes(uint32_t(s.indices.componentType));
-    if (s.count < 0 || size_t(s.count) > a.count || indexSize <= 0
-        || s.indices.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) {
-      error = name + ": invalid sparse substitution";
-      return false;
-    }
-    const size_t count = size_t(s.count);
-    const unsigned char *indices = viewBytes(model,
-        s.indices.bufferView,
-        size_t(std::max(s.indices.byteOffset, 0)),
-        count * size_t(indexSize),
-        error);
-    const unsigned char *values = indices ? viewBytes(model,
-                                      s.values.bufferView,
-                                      size_t(std::max(s.values.byteOffset, 0)),
-                                      count * elementSize,
-                                      error)
-                                          : nullptr;
-    if (!values) {
-      error = name + " (sparse): " + error;
-      return false;
-    }
-    for (size_t k = 0; k < count; k++) {
-      const double target = decodeComponent(
-          indices + k * size_t(indexSize), s.indices.componentType, false);
-      if (!(target >= 0.0 && target < double(a.count))) {
-        error = name + ": sparse index out of range";
-        return false;
-      }
-      for (int c = 0; c < components; c++)
-        out[size_t(target) * size_t(components) + size_t(c)] =
-            T(decodeComponent(
-                values + k * elementSize + size_t(c) * size_t(componentSize),
-                a.componentType,
-                a.normalized));
-    }
-  }
+  if (a.sparse.isSparse
+      && !applySparse(model, a, name, components, componentSize, out, error))
+    return false;
   for (const T &v : out)
     if constexpr (std::is_floating_point_v<T>)
       if (!std::isfinite(v)) {

@@ -89,6 +89,142 @@ const char *channelExtension(const ChannelRequest &request)
   return nullptr;
 }
 
+namespace {
+
+// Each converter turns `count` mapped pixels of `type` into `pixels`;
+// false when the channel came in a type it does not take.
+bool convertColor(ANARIDataType type,
+    const void *mapped,
+    size_t count,
+    std::vector<image::Rgba> &pixels)
+{
+  if (type == ANARI_FLOAT32_VEC4) {
+    std::memcpy(pixels.data(), mapped, count * sizeof(image::Rgba));
+    return true;
+  }
+  if (type != ANARI_UFIXED8_RGBA_SRGB && type != ANARI_UFIXED8_VEC4)
+    return false;
+  const auto *bytes = (const uint8_t *)mapped;
+  for (size_t i = 0; i < count; i++) {
+    for (int c = 0; c < 3; c++) {
+      const float v = bytes[4 * i + c] / 255.f;
+      pixels[i][c] =
+          type == ANARI_UFIXED8_RGBA_SRGB ? image::linearFromSrgb(v) : v;
+    }
+    pixels[i].a = bytes[4 * i + 3] / 255.f;
+  }
+  return true;
+}
+
+// Distances as they are (EXR, PFM), or for PNG near bright and far dim, the
+// range filling [0.15, 1] so the farthest surface stays distinct from the
+// background; nothing hit is 0 (and transparent where alpha exists).
+bool convertDepth(ANARIDataType type,
+    const void *mapped,
+    size_t count,
+    bool png,
+    std::vector<image::Rgba> &pixels)
+{
+  if (type != ANARI_FLOAT32)
+    return false;
+  const auto *depth = (const float *)mapped;
+  float nearest = std::numeric_limits<float>::infinity();
+  float farthest = -nearest;
+  for (size_t i = 0; i < count; i++)
+    if (std::isfinite(depth[i])) {
+      nearest = std::min(nearest, depth[i]);
+      farthest = std::max(farthest, depth[i]);
+    }
+  for (size_t i = 0; i < count; i++) {
+    const float d = depth[i];
+    if (!std::isfinite(d)) {
+      pixels[i] = {0.f, 0.f, 0.f, png ? 1.f : 0.f};
+    } else if (png) {
+      const float span = farthest - nearest;
+      const float t = span > 0.f ? (farthest - d) / span : 1.f;
+      const float v = 0.15f + 0.85f * t;
+      pixels[i] = {v, v, v, 1.f};
+    } else {
+      pixels[i] = {d, d, d, 1.f};
+    }
+  }
+  return true;
+}
+
+// Normals (PNG: n * 0.5 + 0.5) and albedo (float or 8-bit).
+bool convertVector(ANARIDataType type,
+    const void *mapped,
+    size_t count,
+    bool isNormal,
+    bool png,
+    std::vector<image::Rgba> &pixels)
+{
+  if (type == ANARI_FLOAT32_VEC3) {
+    const auto *v = (const float *)mapped;
+    for (size_t i = 0; i < count; i++) {
+      float rgb[3] = {v[3 * i], v[3 * i + 1], v[3 * i + 2]};
+      if (isNormal && png)
+        for (float &c : rgb)
+          c = c * 0.5f + 0.5f;
+      pixels[i] = {rgb[0], rgb[1], rgb[2], 1.f};
+    }
+    return true;
+  }
+  if (isNormal
+      || (type != ANARI_UFIXED8_VEC3 && type != ANARI_UFIXED8_RGB_SRGB))
+    return false;
+  const auto *bytes = (const uint8_t *)mapped;
+  for (size_t i = 0; i < count; i++) {
+    for (int c = 0; c < 3; c++) {
+      const float v = bytes[3 * i + c] / 255.f;
+      pixels[i][c] =
+          type == ANARI_UFIXED8_RGB_SRGB ? image::linearFromSrgb(v) : v;
+    }
+    pixels[i].a = 1.f;
+  }
+  return true;
+}
+
+bool convertIds(ANARIDataType type,
+    const void *mapped,
+    size_t count,
+    std::vector<image::Rgba> &pixels)
+{
+  if (type != ANARI_UINT32)
+    return false;
+  for (size_t i = 0; i < count; i++) {
+    uint32_t id;
+    std::memcpy(&id, (const unsigned char *)mapped + 4 * i, 4);
+    pixels[i] = idColor(id);
+  }
+  return true;
+}
+
+bool convert(const ChannelRequest &request,
+    ANARIDataType type,
+    const void *mapped,
+    size_t count,
+    std::vector<image::Rgba> &pixels)
+{
+  using Kind = ChannelRequest::Kind;
+  const bool png = endsWithPng(request.path);
+  switch (request.kind) {
+  case Kind::Color:
+    return convertColor(type, mapped, count, pixels);
+  case Kind::Depth:
+    return convertDepth(type, mapped, count, png, pixels);
+  case Kind::Normal:
+  case Kind::Albedo:
+    return convertVector(
+        type, mapped, count, request.kind == Kind::Normal, png, pixels);
+  case Kind::Id:
+    return convertIds(type, mapped, count, pixels);
+  }
+  return false;
+}
+
+} // namespace
+
 std::string readChannels(ANARIDevice device,
     ANARIFrame frame,
     const std::vector<ChannelRequest> &requests,
@@ -97,7 +233,6 @@ std::string readChannels(ANARIDevice device,
     std::vector<OutputImage> &images,
     std::vector<std::string> &warnings)
 {
-  using Kind = ChannelRequest::Kind;
   for (const ChannelRequest &request : requests) {
     uint32_t w = 0, h = 0;
     ANARIDataType type = ANARI_UNKNOWN;
@@ -115,110 +250,13 @@ std::string readChannels(ANARIDevice device,
                          + std::to_string(width) + "x" + std::to_string(height)
                          + " frame; '" + request.path
                          + "' gets what it delivered");
-    const size_t count = size_t(w) * h;
     OutputImage out{request.path, image::Image(w, h)};
-    std::vector<image::Rgba> &pixels = out.image.pixels;
-    const bool png = endsWithPng(request.path);
-    std::string error;
-    auto unexpected = [&]() {
-      error = request.channel + " came as " + typeName(type) + ", not "
-              + typeName(request.type) + "; '" + request.path + "' not written";
-    };
-
-    switch (request.kind) {
-    case Kind::Color:
-      if (type == ANARI_FLOAT32_VEC4) {
-        std::memcpy(pixels.data(), mapped, count * sizeof(image::Rgba));
-      } else if (type == ANARI_UFIXED8_RGBA_SRGB
-                 || type == ANARI_UFIXED8_VEC4) {
-        const auto *bytes = (const uint8_t *)mapped;
-        for (size_t i = 0; i < count; i++) {
-          for (int c = 0; c < 3; c++) {
-            const float v = bytes[4 * i + c] / 255.f;
-            pixels[i][c] =
-                type == ANARI_UFIXED8_RGBA_SRGB ? image::linearFromSrgb(v) : v;
-          }
-          pixels[i].a = bytes[4 * i + 3] / 255.f;
-        }
-      } else {
-        unexpected();
-      }
-      break;
-    case Kind::Depth: {
-      if (type != ANARI_FLOAT32) {
-        unexpected();
-        break;
-      }
-      const auto *depth = (const float *)mapped;
-      float nearest = std::numeric_limits<float>::infinity();
-      float farthest = -nearest;
-      for (size_t i = 0; i < count; i++)
-        if (std::isfinite(depth[i])) {
-          nearest = std::min(nearest, depth[i]);
-          farthest = std::max(farthest, depth[i]);
-        }
-      for (size_t i = 0; i < count; i++) {
-        const float d = depth[i];
-        if (!std::isfinite(d)) {
-          // Nothing hit: 0 (and transparent where alpha exists).
-          pixels[i] = {0.f, 0.f, 0.f, png ? 1.f : 0.f};
-        } else if (png) {
-          // Near is bright; the range fills [0.15, 1] so the farthest
-          // surface stays distinct from the background.
-          const float span = farthest - nearest;
-          const float t = span > 0.f ? (farthest - d) / span : 1.f;
-          const float v = 0.15f + 0.85f * t;
-          pixels[i] = {v, v, v, 1.f};
-        } else {
-          pixels[i] = {d, d, d, 1.f};
-        }
-      }
-      break;
-    }
-    case Kind::Normal:
-    case Kind::Albedo: {
-      const bool isNormal = request.kind == Kind::Normal;
-      if (type == ANARI_FLOAT32_VEC3) {
-        const auto *v = (const float *)mapped;
-        for (size_t i = 0; i < count; i++) {
-          float rgb[3] = {v[3 * i], v[3 * i + 1], v[3 * i + 2]};
-          if (isNormal && png)
-            for (float &c : rgb)
-              c = c * 0.5f + 0.5f;
-          pixels[i] = {rgb[0], rgb[1], rgb[2], 1.f};
-        }
-      } else if (!isNormal
-                 && (type == ANARI_UFIXED8_VEC3
-                     || type == ANARI_UFIXED8_RGB_SRGB)) {
-        const auto *bytes = (const uint8_t *)mapped;
-        for (size_t i = 0; i < count; i++) {
-          for (int c = 0; c < 3; c++) {
-            const float v = bytes[3 * i + c] / 255.f;
-            pixels[i][c] =
-                type == ANARI_UFIXED8_RGB_SRGB ? image::linearFromSrgb(v) : v;
-          }
-          pixels[i].a = 1.f;
-        }
-      } else {
-        unexpected();
-      }
-      break;
-    }
-    case Kind::Id:
-      if (type != ANARI_UINT32) {
-        unexpected();
-        break;
-      }
-      for (size_t i = 0; i < count; i++) {
-        uint32_t id;
-        std::memcpy(&id, (const unsigned char *)mapped + 4 * i, 4);
-        pixels[i] = idColor(id);
-      }
-      break;
-    }
+    const bool converted =
+        convert(request, type, mapped, size_t(w) * h, out.image.pixels);
     anariUnmapFrame(device, frame, request.channel.c_str());
-    if (!error.empty())
-      return error;
+    if (!converted)
+      return request.channel + " came as " + typeName(type) + ", not "
+             + typeName(request.type) + "; '" + request.path + "' not written";
     images.push_back(std::move(out));
   }
   return {};
