@@ -363,6 +363,7 @@ void Context::synchronize(const ParameterList &params)
     return;
   }
   runProceduralNodes();
+  m_graph.checkCycles();
   const ResolvedScene scene = resolveScene(m_graph, reporter(), expandPath);
   m_render->synchronize(scene, stoppedCallback(params, true));
   report(NSIErrInfo,
@@ -379,6 +380,7 @@ void Context::startRender(const ParameterList &params, bool synchronizing)
   }
   const RenderSession::Stopped stopped = stoppedCallback(params, synchronizing);
   runProceduralNodes();
+  m_graph.checkCycles();
   const ResolvedScene scene = resolveScene(m_graph, reporter(), expandPath);
   m_render = std::make_shared<RenderSession>(reporter(), stopped);
   // Interactive renders are progressive too (NSI says so).
