@@ -21,7 +21,7 @@ enum class ConnectionOrder {
 };
 
 // Nodes a connection's search may visit before it gives up.
-constexpr size_t kConnectionSearchBudget = 4096;
+constexpr size_t kConnectionSearchBudget = 1024;
 
 // Whether connecting `source` into `target` keeps the graph free of
 // cycles, reordering the nodes between them when it does.
