@@ -21,7 +21,8 @@ namespace {
 // the layer wrote.
 constexpr uint64_t kMaxPropertyBytes = 1 << 20;
 
-void printStatus(const void *,
+// `userPtr`: the replay's Options.
+void printStatus(const void *userPtr,
     ANARIDevice,
     ANARIObject,
     ANARIDataType,
@@ -29,7 +30,8 @@ void printStatus(const void *,
     ANARIStatusCode,
     const char *message)
 {
-  if (severity <= ANARI_SEVERITY_WARNING)
+  const auto *options = (const Options *)userPtr;
+  if (options->printMessages && severity <= ANARI_SEVERITY_WARNING)
     std::fprintf(stderr, "anari-replay: device: %s\n", message);
 }
 
@@ -91,7 +93,8 @@ void Replayer::collectStatus(const void *userPtr,
     self->m_replayedReports.push_back(
         trace::reportLine(severity, code, message));
   } else {
-    printStatus(userPtr, device, source, sourceType, severity, code, message);
+    printStatus(
+        &self->m_options, device, source, sourceType, severity, code, message);
   }
 }
 
@@ -227,7 +230,8 @@ bool Replayer::call(const Tokens &t)
   } else if (keyword == "Unset" && t.size() == 3) {
     anariUnsetParameter(m_device, o, t[2].text.c_str());
   } else if (keyword == "Render") {
-    anariRenderFrame(m_device, (ANARIFrame)o);
+    if (m_options.renderFrames)
+      anariRenderFrame(m_device, (ANARIFrame)o);
   } else if (keyword == "Ready" && t.size() == 3) {
     anariFrameReady(m_device,
         (ANARIFrame)o,
@@ -261,7 +265,7 @@ bool Replayer::startDevice(const Tokens &t)
     library = "debug";
     m_library = anariLoadLibrary(library.c_str(), collectStatus, this);
   } else {
-    m_library = anariLoadLibrary(library.c_str(), printStatus, nullptr);
+    m_library = anariLoadLibrary(library.c_str(), printStatus, &m_options);
   }
   if (!m_library)
     return fail("cannot load library '" + library + "'");
@@ -358,6 +362,10 @@ bool Replayer::arrayBytes(ANARIDataType arrayType,
   if (!limits::checkedBytes(
           items, dimensions, anari::sizeOf(elementType), bytes))
     return fail("the array's size overflows 64 bits");
+  if (m_options.maxArrayBytes && bytes > m_options.maxArrayBytes) {
+    return fail("an array of " + limits::byteSize(bytes) + ", more than the "
+                + limits::byteSize(m_options.maxArrayBytes) + " allowed");
+  }
   return true;
 }
 
@@ -706,10 +714,11 @@ bool Replayer::mapFrame(const Tokens &t)
     ++m_summary.framesSame;
   } else {
     ++m_summary.framesDifferent;
-    std::fprintf(stderr,
-        "anari-replay: %s '%s' differs from the recorded image\n",
-        t[1].text.c_str(),
-        t[2].text.c_str());
+    if (m_options.printMessages)
+      std::fprintf(stderr,
+          "anari-replay: %s '%s' differs from the recorded image\n",
+          t[1].text.c_str(),
+          t[2].text.c_str());
   }
   if (pixels && !m_options.frameDirectory.empty())
     writeFrame(t[1].text, t[2].text, pixels, w, h, pixelType);

@@ -23,6 +23,13 @@ struct Options
   // Replays through the debug layer wrapped around the library, with the
   // calls it refused, and compares its reports with the recorded ones.
   bool checkReports = false;
+  // What a fuzzer needs to keep each input cheap: `Render` lines skipped
+  // (frames map empty and count as different), arrays larger than
+  // `maxArrayBytes` refused (0: the machine's memory), nothing printed
+  // (device messages, frames that differ).
+  bool renderFrames = true;
+  uint64_t maxArrayBytes = 0;
+  bool printMessages = true;
 };
 
 struct Summary
