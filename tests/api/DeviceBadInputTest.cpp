@@ -312,7 +312,9 @@ TEST_F(DeviceBadInput, LargeManagedArrayIsNotZeroFilledAtCreation)
   ANARIArray1D array =
       anariNewArray1D(m_device, nullptr, nullptr, nullptr, ANARI_UINT8, kItems);
   ASSERT_NE(array, nullptr);
-  EXPECT_LT(residentBytes(), before + (kItems / 8));
+  // Half the array, a margin for sanitizers' shadow memory: zero-filling
+  // makes all of it resident.
+  EXPECT_LT(residentBytes(), before + kItems / 2);
   auto *bytes = (unsigned char *)anariMapArray(m_device, array);
   ASSERT_NE(bytes, nullptr);
   EXPECT_EQ(bytes[kItems - 1], 0); // zero, as a managed array starts
