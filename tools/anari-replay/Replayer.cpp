@@ -283,14 +283,14 @@ bool Replayer::startDevice(const Tokens &t)
   return true;
 }
 
-bool Replayer::object(const trace::Token &token, ANARIObject &out)
+bool Replayer::object(const trace::Token &token, ANARIObject &out, bool inArray)
 {
   auto it = m_objects.find(token.text);
   if (!isWord(token) || it == m_objects.end())
     return fail("unknown object '" + token.text + "'");
   // The layer checks handles (and reports a released one); a library
   // without it would use freed memory.
-  if (!m_options.checkReports && m_released.count(token.text))
+  if (!m_options.checkReports && !inArray && m_released.count(token.text))
     return fail("'" + token.text + "' used after its release");
   out = it->second;
   return true;
@@ -401,7 +401,7 @@ bool Replayer::contents(const Tokens &t,
     for (size_t i = at + 1; i < t.size() && t[i].kind != trace::Token::kClose;
          ++i) {
       ANARIObject handle = nullptr;
-      if (!object(t[i], handle))
+      if (!object(t[i], handle, true))
         return false;
       auto *p = (const unsigned char *)&handle;
       bytes.insert(bytes.end(), p, p + sizeof(handle));

@@ -81,7 +81,10 @@ class Replayer
       ANARIDataType type);
 
   // Operand helpers; each sets m_error and returns false on a bad operand.
-  bool object(const trace::Token &token, ANARIObject &out);
+  // `inArray`: an object array's element, which may name an object the
+  // application released (the array still holds it; the device checks).
+  bool object(
+      const trace::Token &token, ANARIObject &out, bool inArray = false);
   bool type(const trace::Token &token, ANARIDataType &out);
   bool number(const trace::Token &token, uint64_t &out);
   bool dimensions(const Tokens &t, size_t at, uint64_t items[3]);
