@@ -3,6 +3,7 @@
 #include "CycleFreeOrder.h"
 
 #include <algorithm>
+#include <iterator>
 
 namespace prism::nsi {
 
@@ -255,13 +256,12 @@ void Graph::disconnect(const std::string &from,
     return;
   if (to != kAll && !lookup(to, "NSIDisconnect"))
     return;
-  for (auto &entry : m_nodes) {
-    // Not a structured binding: clang before 16 cannot capture those in a
-    // lambda.
-    const std::string &handle = entry.first;
-    Node &node = entry.second;
-    if (!matches(to, handle))
-      continue;
+  // One target, or (.all) every node.
+  auto first = to == kAll ? m_nodes.begin() : m_nodes.find(to);
+  auto last = to == kAll ? m_nodes.end() : std::next(first);
+  for (auto entry = first; entry != last; ++entry) {
+    const std::string &handle = entry->first;
+    Node &node = entry->second;
     std::erase_if(node.inputs, [&](const Input &input) {
       if (!matches(from, input.from) || !matches(fromAttr, input.fromAttr)
           || !matches(toAttr, input.toAttr))
