@@ -27,7 +27,7 @@ PRISM_BUILD_DIR="$build" "$root/scripts/build.sh" \
   -DPRISM_BUILD_UNIT_TESTS=OFF
 
 ran=0
-for name in api loader nsi; do
+for name in api loader nsi trace; do
   fuzzer="$build/bin/fuzz_$name"
   corpus="$root/tests/fuzz/$name/corpus"
   [ -x "$fuzzer" ] || continue

@@ -8,6 +8,8 @@
 #include "object/UnknownObject.h"
 #include "renderer/wavefront/LocalTransport.h"
 
+#include "MachineLimits.h"
+
 #include "anari/frontend/type_utility.h"
 
 #include <algorithm>
@@ -377,6 +379,21 @@ ANARIArray Device::newArray(const void *appMemory,
         ANARI_STATUS_INVALID_ARGUMENT,
         std::string("anariNewArray") + char('0' + dimensions) + "D ("
             + anari::toString(elementType) + "): " + why);
+    return nullptr;
+  }
+  if (!appMemory && !limits::fitsInMemory(Array::bytesNeeded(shape))) {
+    std::string sizes = std::to_string(shape.size[0]);
+    for (int i = 1; i < dimensions; i++)
+      sizes += "x" + std::to_string(shape.size[i]);
+    reportStatus(nullptr,
+        ANARI_ARRAY,
+        ANARI_SEVERITY_ERROR,
+        ANARI_STATUS_OUT_OF_MEMORY,
+        std::string("anariNewArray") + char('0' + dimensions) + "D ("
+            + anari::toString(elementType) + "): a managed array of " + sizes
+            + " elements needs " + limits::byteSize(Array::bytesNeeded(shape))
+            + ", more than " + limits::memoryLimitText()
+            + "; it is not created");
     return nullptr;
   }
   try {

@@ -16,6 +16,8 @@
 #include "world/Surface.h"
 #include "world/World.h"
 
+#include "MachineLimits.h"
+
 #include "anari/frontend/type_utility.h"
 
 #include <algorithm>
@@ -116,21 +118,25 @@ void DataParallelDevice::setTimeout(ANARIDataType type, const void *mem)
 
 void DataParallelDevice::setThreads(ANARIDataType type, const void *mem)
 {
-  const int32_t threads = (type == ANARI_INT32 || type == ANARI_UINT32) && mem
-                              ? *(const int32_t *)mem
-                              : -1;
-  if (threads < 0) {
+  const bool isCount = (type == ANARI_INT32 || type == ANARI_UINT32) && mem;
+  int64_t threads = -1;
+  if (isCount && type == ANARI_INT32)
+    threads = *(const int32_t *)mem;
+  else if (isCount)
+    threads = *(const uint32_t *)mem;
+  const unsigned limit = limits::maxPoolThreads();
+  if (threads < 0 || threads > int64_t(limit)) {
     std::string message =
         "device: parameter 'numThreads' must be an INT32 or UINT32 count, 0"
-        " (every hardware thread) or more (got ";
-    message.append((type == ANARI_INT32 || type == ANARI_UINT32) && mem
-                       ? std::to_string(threads)
-                       : std::string(anari::toString(type)));
+        " (every hardware thread) up to "
+        + std::to_string(limit) + ", this machine's limit (got ";
+    message.append(
+        isCount ? std::to_string(threads) : std::string(anari::toString(type)));
     message.append("); it is ignored");
     reportBadDeviceParameter(message);
     return;
   }
-  taskPool().setThreads(threads);
+  taskPool().setThreads(int(threads));
 }
 
 ANARIFrame DataParallelDevice::newFrame()

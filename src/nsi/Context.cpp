@@ -316,11 +316,21 @@ void Context::finishRender(bool stop)
   if (!render)
     return;
   mutex.unlock();
+  RenderSession::Waited waited = RenderSession::Waited::kEnded;
   if (stop)
     render->stop();
   else
-    render->wait();
+    waited = render->wait();
   mutex.lock();
+  if (waited == RenderSession::Waited::kSuspended) {
+    report(NSIErrWarning,
+        "NSIRenderControl: 'wait' on a suspended render returns at once (it "
+        "would never end); 'resume' or 'stop' it");
+  } else if (waited == RenderSession::Waited::kOnRenderThread) {
+    report(NSIErrWarning,
+        "NSIRenderControl: 'wait' from the render's own callback returns at "
+        "once (the render ends after the callback)");
+  }
 }
 
 RenderSession::Stopped Context::stoppedCallback(
@@ -363,6 +373,7 @@ void Context::synchronize(const ParameterList &params)
     return;
   }
   runProceduralNodes();
+  m_graph.checkCycles();
   const ResolvedScene scene = resolveScene(m_graph, reporter(), expandPath);
   m_render->synchronize(scene, stoppedCallback(params, true));
   report(NSIErrInfo,
@@ -379,6 +390,7 @@ void Context::startRender(const ParameterList &params, bool synchronizing)
   }
   const RenderSession::Stopped stopped = stoppedCallback(params, synchronizing);
   runProceduralNodes();
+  m_graph.checkCycles();
   const ResolvedScene scene = resolveScene(m_graph, reporter(), expandPath);
   m_render = std::make_shared<RenderSession>(reporter(), stopped);
   // Interactive renders are progressive too (NSI says so).

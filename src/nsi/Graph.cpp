@@ -1,7 +1,9 @@
 #include "Graph.h"
 
+#include "CycleFreeOrder.h"
+
 #include <algorithm>
-#include <set>
+#include <iterator>
 
 namespace prism::nsi {
 
@@ -44,8 +46,8 @@ std::vector<const Input *> Node::inputsOf(const std::string &toAttr) const
 
 Graph::Graph(Report report) : m_report(std::move(report))
 {
-  m_nodes[NSI_SCENE_ROOT].type = "root";
-  m_nodes[NSI_SCENE_GLOBAL].type = "global";
+  create(NSI_SCENE_ROOT, "root");
+  create(NSI_SCENE_GLOBAL, "global");
 }
 
 const Node *Graph::find(const std::string &handle) const
@@ -80,7 +82,9 @@ void Graph::create(const std::string &handle, const std::string &type)
     }
     return;
   }
-  m_nodes[handle].type = type;
+  Node &node = m_nodes[handle];
+  node.type = type;
+  node.order = m_nextOrder--;
 }
 
 void Graph::removeNode(const std::string &handle)
@@ -113,22 +117,31 @@ void Graph::remove(const std::string &handle, bool recursive)
     m_report(NSIErrError, "NSIDelete: '" + handle + "' cannot be deleted");
     return;
   }
-  Node *node = lookup(handle, "NSIDelete");
-  if (!node)
+  if (!lookup(handle, "NSIDelete"))
     return;
-  std::vector<std::string> sources;
-  for (auto &input : node->inputs) {
-    if (input.strength <= 0)
-      sources.push_back(input.from);
-  }
-  removeNode(handle);
-  if (!recursive)
-    return;
-  // A source goes too once nothing else uses it (strong links protect it).
-  for (auto &source : sources) {
-    const Node *s = find(source);
-    if (s && s->outputs.empty() && !isBuiltIn(source))
-      remove(source, true);
+  // A worklist, not recursion: a recursive delete may run down a chain of
+  // any depth.
+  std::vector<std::string> todo{handle};
+  while (!todo.empty()) {
+    const std::string at = std::move(todo.back());
+    todo.pop_back();
+    const Node *node = find(at);
+    if (!node)
+      continue; // reached twice, already gone
+    std::vector<std::string> sources;
+    for (auto &input : node->inputs) {
+      if (input.strength <= 0)
+        sources.push_back(input.from);
+    }
+    removeNode(at);
+    if (!recursive)
+      return;
+    // A source goes too once nothing else uses it (strong links protect it).
+    for (auto &source : sources) {
+      const Node *s = find(source);
+      if (s && s->outputs.empty() && !isBuiltIn(source))
+        todo.push_back(source);
+    }
   }
 }
 
@@ -156,23 +169,29 @@ void Graph::deleteAttribute(const std::string &handle, const std::string &name)
     node->attributes.erase(name);
 }
 
-bool Graph::reaches(const std::string &start, const std::string &target) const
+Input *Graph::existingInput(const Node &source,
+    Node &target,
+    const std::string &from,
+    const std::string &fromAttr,
+    const std::string &to,
+    const std::string &toAttr)
 {
-  std::set<std::string> seen;
-  std::vector<std::string> todo{start};
-  while (!todo.empty()) {
-    const std::string at = todo.back();
-    todo.pop_back();
-    if (at == target)
-      return true;
-    if (!seen.insert(at).second)
-      continue;
-    if (const Node *node = find(at)) {
-      for (auto &output : node->outputs)
-        todo.push_back(output.to);
-    }
+  auto sameInput = [&](const Input &input) {
+    return input.from == from && input.fromAttr == fromAttr
+           && input.toAttr == toAttr;
+  };
+  // A node may have a million connections on one side (.root's objects,
+  // a shared material's outputs) and a few on the other.
+  if (source.outputs.size() < target.inputs.size()) {
+    const bool connected = std::any_of(
+        source.outputs.begin(), source.outputs.end(), [&](const Output &o) {
+          return o.to == to && o.fromAttr == fromAttr && o.toAttr == toAttr;
+        });
+    if (!connected)
+      return nullptr;
   }
-  return false;
+  auto it = std::find_if(target.inputs.begin(), target.inputs.end(), sameInput);
+  return it == target.inputs.end() ? nullptr : &*it;
 }
 
 void Graph::connect(const std::string &from,
@@ -187,23 +206,45 @@ void Graph::connect(const std::string &from,
   Node *target = lookup(to, "NSIConnect");
   if (!source || !target)
     return;
-  if (reaches(to, from)) {
-    m_report(NSIErrError,
-        "NSIConnect: '" + from + "' -> '" + to + "." + toAttr
-            + "' would close a cycle; ignored");
+  if (Input *input =
+          existingInput(*source, *target, from, fromAttr, to, toAttr)) {
+    input->priority = priority; // connecting again updates, never duplicates
+    input->strength = strength;
+    input->index = index;
     return;
   }
-  for (auto &input : target->inputs) {
-    if (input.from == from && input.fromAttr == fromAttr
-        && input.toAttr == toAttr) {
-      input.priority = priority; // connecting again updates, never duplicates
-      input.strength = strength;
-      input.index = index;
+  if (!m_unchecked) {
+    const ConnectionOrder order = orderForConnection(m_nodes, *source, *target);
+    if (order == ConnectionOrder::kCycle) {
+      m_report(NSIErrError,
+          "NSIConnect: '" + from + "' -> '" + to + "." + toAttr
+              + "' would close a cycle; ignored");
       return;
     }
+    m_unchecked = order == ConnectionOrder::kUnchecked;
   }
+  if (m_unchecked)
+    m_uncheckedTargets.push_back(to);
   target->inputs.push_back({from, fromAttr, toAttr, priority, strength, index});
   source->outputs.push_back({fromAttr, to, toAttr});
+}
+
+void Graph::checkCycles()
+{
+  if (!m_unchecked)
+    return;
+  m_unchecked = false;
+  // Newest first: a walk from the target of the connection that closed a
+  // cycle meets that very connection as the one going back.
+  const std::vector<std::string> startFirst(
+      m_uncheckedTargets.rbegin(), m_uncheckedTargets.rend());
+  m_uncheckedTargets.clear();
+  for (const CycleConnection &c : orderAll(m_nodes, m_nextOrder, startFirst)) {
+    m_report(NSIErrError,
+        "NSIConnect: '" + c.from + "' -> '" + c.to + "." + c.toAttr
+            + "' closed a cycle; removed when the render started");
+    disconnect(c.from, c.fromAttr, c.to, c.toAttr);
+  }
 }
 
 void Graph::disconnect(const std::string &from,
@@ -215,13 +256,12 @@ void Graph::disconnect(const std::string &from,
     return;
   if (to != kAll && !lookup(to, "NSIDisconnect"))
     return;
-  for (auto &entry : m_nodes) {
-    // Not a structured binding: clang before 16 cannot capture those in a
-    // lambda.
-    const std::string &handle = entry.first;
-    Node &node = entry.second;
-    if (!matches(to, handle))
-      continue;
+  // One target, or (.all) every node.
+  auto first = to == kAll ? m_nodes.begin() : m_nodes.find(to);
+  auto last = to == kAll ? m_nodes.end() : std::next(first);
+  for (auto entry = first; entry != last; ++entry) {
+    const std::string &handle = entry->first;
+    Node &node = entry->second;
     std::erase_if(node.inputs, [&](const Input &input) {
       if (!matches(from, input.from) || !matches(fromAttr, input.fromAttr)
           || !matches(toAttr, input.toAttr))

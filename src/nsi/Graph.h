@@ -5,6 +5,7 @@
 
 #include "Value.h"
 
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <optional>
@@ -43,6 +44,10 @@ struct Node
   std::map<std::string, Attribute> attributes;
   std::vector<Input> inputs;
   std::vector<Output> outputs;
+  // Place in an order every connection follows (a source lies below what it
+  // connects into), kept up to date by Graph::connect: see
+  // CycleFreeOrder.h.
+  int64_t order{0};
 
   const Value *attribute(const std::string &name) const;
   // The nodes connected into `toAttr`, in connection order.
@@ -75,6 +80,11 @@ class Graph
       const std::string &to,
       const std::string &toAttr);
 
+  // Checks the connections taken unchecked since the last call (a search
+  // for a cycle past its budget), removing and reporting any that closed
+  // one: called before the scene is resolved.
+  void checkCycles();
+
   const Node *find(const std::string &handle) const;
   const std::map<std::string, Node> &nodes() const
   {
@@ -83,11 +93,24 @@ class Graph
 
  private:
   Node *lookup(const std::string &handle, const char *call);
-  bool reaches(const std::string &start, const std::string &target) const;
   void removeNode(const std::string &handle);
+  // The connection from `source` to `target` made again (nullptr if new),
+  // searched where the two nodes have fewer connections.
+  Input *existingInput(const Node &source,
+      Node &target,
+      const std::string &from,
+      const std::string &fromAttr,
+      const std::string &to,
+      const std::string &toAttr);
 
   Report m_report;
   std::map<std::string, Node> m_nodes;
+  // New nodes go below every other: a scene made parents first, as scenes
+  // are, never needs reordering.
+  int64_t m_nextOrder{0};
+  // Connections were taken without a cycle check; orders may not climb.
+  bool m_unchecked{false};
+  std::vector<std::string> m_uncheckedTargets; // in connection order
 };
 
 } // namespace prism::nsi

@@ -78,6 +78,10 @@ std::string partialName(const std::string &file)
                       : file + ".partial";
 }
 
+// The session whose render thread this is (none elsewhere): its callbacks
+// may call wait() or stop(), which must not join the thread itself.
+thread_local const RenderSession *t_rendering = nullptr;
+
 } // namespace
 
 RenderSession::RenderSession(ReportFunction report, Stopped stopped)
@@ -197,35 +201,60 @@ void RenderSession::apply(const ResolvedScene &scene)
 
 void RenderSession::launch()
 {
+  std::lock_guard join(m_joinMutex); // NOTE: wait() may read m_thread
   m_stopRequested = false;
   m_running = true;
-  m_thread = std::thread([this] { renderAll(); });
+  m_thread = std::thread([this] {
+    t_rendering = this;
+    renderAll();
+  });
 }
 
-void RenderSession::wait()
+void RenderSession::join()
 {
   std::lock_guard lock(m_joinMutex);
   if (m_thread.joinable())
     m_thread.join();
 }
 
+RenderSession::Waited RenderSession::wait()
+{
+  if (t_rendering == this)
+    return Waited::kOnRenderThread;
+  {
+    // A suspended render ends only after a resume, which no one may send
+    // while this caller waits: return rather than hang.
+    std::unique_lock lock(m_suspendMutex);
+    m_suspendedOrEnded.wait(lock, [this] { return m_suspended || !m_running; });
+    if (m_running)
+      return Waited::kSuspended;
+  }
+  join();
+  return Waited::kEnded;
+}
+
 void RenderSession::stop()
 {
+  if (t_rendering == this) {
+    m_stopRequested = true; // the thread ends when its callback returns
+    return;
+  }
   {
     // Under the lock, so a thread about to wait for resume sees it.
     std::lock_guard lock(m_suspendMutex);
     m_stopRequested = true;
   }
   m_resumed.notify_all();
-  std::lock_guard lock(m_joinMutex);
-  if (m_thread.joinable())
-    m_thread.join();
+  join();
 }
 
 void RenderSession::suspend()
 {
-  std::lock_guard lock(m_suspendMutex);
-  m_suspended = true;
+  {
+    std::lock_guard lock(m_suspendMutex);
+    m_suspended = true;
+  }
+  m_suspendedOrEnded.notify_all();
 }
 
 void RenderSession::resume()
@@ -404,7 +433,11 @@ void RenderSession::renderAll()
     if (samples == 0)
       break;
   }
-  m_running = false;
+  {
+    std::lock_guard lock(m_suspendMutex);
+    m_running = false;
+  }
+  m_suspendedOrEnded.notify_all();
   if (m_stopped && !m_silent)
     m_stopped(completed ? NSIRenderCompleted : NSIRenderAborted);
 }

@@ -57,7 +57,15 @@ class RenderSession
   {
     return m_device != nullptr;
   }
-  void wait();
+  // What wait() did.
+  enum class Waited {
+    kEnded,          // the render ended (or none was running)
+    kSuspended,      // the render is suspended: waiting would never end
+    kOnRenderThread, // called from the render's own callback
+  };
+  // Joins the render, unless it is or becomes suspended or the caller is
+  // the render thread: those return at once instead of waiting forever.
+  Waited wait();
   // Stops the thread; the device and its objects stay for synchronize.
   void stop();
   // Stops and releases the device (reports made meanwhile still arrive).
@@ -98,6 +106,8 @@ class RenderSession
   void release();
   void apply(const ResolvedScene &scene);
   void launch();
+  // Joins the thread, if any (under m_joinMutex).
+  void join();
 
   ReportFunction m_report;
   Stopped m_stopped;
@@ -118,6 +128,8 @@ class RenderSession
   FrameDone m_frameDone;
   std::mutex m_suspendMutex;
   std::condition_variable m_resumed;
+  // Suspended, or the thread ended: what wait() waits for.
+  std::condition_variable m_suspendedOrEnded;
   bool m_suspended{false}; // guarded by m_suspendMutex
   std::thread m_thread;
   std::mutex m_joinMutex; // one thread joins (and releases) at a time

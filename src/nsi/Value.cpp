@@ -1,5 +1,7 @@
 #include "Value.h"
 
+#include "MachineLimits.h"
+
 #include <cstdio>
 #include <cstring>
 
@@ -123,12 +125,19 @@ bool valueFromParam(const NSIParam_t &param, Value &value, std::string &error)
   value.arraylength = param.arraylength;
   value.count = param.count;
   value.flags = param.flags;
-  const size_t items = param.count * value.valuesPerItem();
-  // Counts beyond what memory could hold are nonsense, not data to copy.
-  if (param.count > (size_t(1) << 40) || items > (size_t(1) << 40)) {
-    error = "parameter '" + std::string(param.name) + "' has an absurd count";
+  // Counts beyond what memory could hold are nonsense, not data to copy
+  // (their product may even wrap around to a small number).
+  const uint64_t counts[2] = {uint64_t(param.count), value.valuesPerItem()};
+  uint64_t bytes = 0;
+  if (!limits::checkedBytes(counts, 2, size, bytes)
+      || !limits::fitsInMemory(bytes)) {
+    error = "parameter '" + std::string(param.name) + "' has an absurd count ("
+            + std::to_string(param.count) + " of "
+            + std::to_string(value.valuesPerItem()) + " values, more than "
+            + limits::memoryLimitText() + ")";
     return false;
   }
+  const size_t items = param.count * value.valuesPerItem();
   if (items > 0 && !param.data) {
     error = "parameter '" + std::string(param.name) + "' has no data";
     return false;

@@ -1,5 +1,7 @@
 #include "NanoVdbFile.h"
 
+#include "MachineLimits.h"
+
 #include <sys/stat.h>
 
 #include <nanovdb/util/IO.h>
@@ -164,6 +166,10 @@ std::string readNanoVdbContents(
                  + " bytes on disk for a grid of "
                  + std::to_string(grid.gridBytes);
       } else {
+        // Inflated, the grid is allocated as claimed: it must fit.
+        if (!limits::fitsInMemory(grid.gridBytes))
+          return where + " would inflate to " + limits::byteSize(grid.gridBytes)
+                 + ", more than " + limits::memoryLimitText();
         // No codec inflates more than ~1000:1; a bigger claim is corrupt
         // (and would be allocated as claimed).
         if (grid.gridBytes / 2048 > grid.fileBytes)

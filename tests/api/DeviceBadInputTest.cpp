@@ -2,7 +2,10 @@
 // the device keeps rendering afterwards.
 #include "DeviceTestSupport.h"
 
+#include <cstdio>
 #include <cstring>
+
+#include <unistd.h>
 
 namespace {
 
@@ -261,6 +264,63 @@ TEST_F(DeviceBadInput, ZeroSizedAndInvalidArrays)
       ANARI_STATUS_INVALID_ARGUMENT,
       "array size is zero"));
   anariRelease(m_device, renderer);
+  expectStillRenders();
+}
+
+// Bytes of this process's memory that are resident (touched).
+uint64_t residentBytes()
+{
+  unsigned long long pages = 0, resident = 0;
+  if (FILE *statm = std::fopen("/proc/self/statm", "r")) {
+    if (std::fscanf(statm, "%llu %llu", &pages, &resident) != 2)
+      resident = 0;
+    std::fclose(statm);
+  }
+  return uint64_t(resident) * uint64_t(sysconf(_SC_PAGESIZE));
+}
+
+TEST_F(DeviceBadInput, ManagedArrayLargerThanMemoryIsRefused)
+{
+  const uint64_t memory =
+      uint64_t(sysconf(_SC_PHYS_PAGES)) * uint64_t(sysconf(_SC_PAGESIZE));
+  const uint64_t items = memory / sizeof(float[4]) + 1;
+  EXPECT_EQ(anariNewArray1D(
+                m_device, nullptr, nullptr, nullptr, ANARI_FLOAT32_VEC4, items),
+      nullptr);
+  EXPECT_TRUE(reported(ANARI_SEVERITY_ERROR,
+      ANARI_STATUS_OUT_OF_MEMORY,
+      "more than the machine's"));
+  // Mapped parameter arrays are managed arrays too.
+  uint64_t stride = 0;
+  ANARIRenderer renderer = anariNewRenderer(m_device, "default");
+  EXPECT_EQ(anariMapParameterArray1D(
+                m_device, renderer, "x", ANARI_FLOAT32_VEC4, items, &stride),
+      nullptr);
+  EXPECT_TRUE(reported(ANARI_SEVERITY_ERROR,
+      ANARI_STATUS_OUT_OF_MEMORY,
+      "more than the machine's"));
+  anariRelease(m_device, renderer);
+  expectStillRenders();
+}
+
+TEST_F(DeviceBadInput, LargeManagedArrayIsNotZeroFilledAtCreation)
+{
+  // 2^31 elements: memory the machine has, but which the device must not
+  // touch (zero-filling it took minutes) until the application writes it.
+  constexpr uint64_t kItems = 1ull << 31;
+  const uint64_t before = residentBytes();
+  ANARIArray1D array =
+      anariNewArray1D(m_device, nullptr, nullptr, nullptr, ANARI_UINT8, kItems);
+  ASSERT_NE(array, nullptr);
+  // Half the array, a margin for sanitizers' shadow memory: zero-filling
+  // makes all of it resident.
+  EXPECT_LT(residentBytes(), before + kItems / 2);
+  auto *bytes = (unsigned char *)anariMapArray(m_device, array);
+  ASSERT_NE(bytes, nullptr);
+  EXPECT_EQ(bytes[kItems - 1], 0); // zero, as a managed array starts
+  bytes[kItems - 1] = 7;
+  anariUnmapArray(m_device, array);
+  anariRelease(m_device, array);
   expectStillRenders();
 }
 

@@ -112,6 +112,15 @@ TEST(NanoVdbFile, CorruptSizesAreErrors)
   }
   std::vector<NanoVdbGridEntry> grids;
   EXPECT_NE(contentsOf(bytes + "x", grids), "") << "trailing bytes";
+  // A compressed grid is allocated at the size it claims: past the
+  // machine's memory, it is refused before NanoVDB allocates it.
+  std::string zipped = gridFileBytes(nanovdb::io::Codec::ZIP);
+  const uint64_t huge = uint64_t(1) << 50;
+  std::memcpy(zipped.data() + 16, &huge, sizeof(huge));
+  EXPECT_NE(contentsOf(zipped, grids)
+                .find("would inflate to 1.0 PiB, more than the machine's"),
+      std::string::npos)
+      << contentsOf(zipped, grids);
   EXPECT_NE(contentsOf("", grids).find("is empty"), std::string::npos);
 }
 

@@ -452,3 +452,103 @@ TEST_F(DebugLayerTest, TraceOfRefusedMapFrameAndCreationCallsReplays)
   EXPECT_TRUE(replaysWithoutTheLayer(path));
 #endif
 }
+
+#ifdef PRISM_ANARI_REPLAY
+namespace {
+
+// anari-replay on a trace written here (and its side file of `sideBytes`
+// bytes): its exit status (-1 for a signal: a crash), its output in
+// `output`.
+int replayCrafted(const std::string &name,
+    const std::string &text,
+    size_t sideBytes,
+    const char *options,
+    std::string &output)
+{
+  const std::string path = "untrusted-" + name + ".trace";
+  std::ofstream(path) << text;
+  std::ofstream side(path + ".bin", std::ios::binary);
+  side << std::string(sideBytes, '\x3f');
+  side.close();
+  const std::string out = path + ".out";
+  const std::string command = std::string(PRISM_ANARI_REPLAY) + " " + path + " "
+                              + options + " > " + out + " 2>&1";
+  const int status = std::system(command.c_str());
+  output = readFile(out);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+} // namespace
+
+// Sizes, counts and handles in a trace are checked before use: each of
+// these once overflowed the heap, threw out of main or let the layer read
+// past a buffer. Each is now one error (exit 1) naming the line.
+TEST(ReplayUntrustedTrace, SizesAndHandlesAreCheckedBeforeUse)
+{
+  const std::string device = "Device \"default\" \"prism\"\n";
+  struct Case
+  {
+    const char *name;
+    std::string text;
+    size_t sideBytes;
+    const char *options;
+    const char *said;
+  };
+  const Case cases[] = {
+      {"array-data-past-array",
+          device + "Array o1 ARRAY1D FLOAT32 [4 0 0] -\nArrayData o1 @0:4096\n",
+          4096,
+          "",
+          "line 3: ArrayData o1: 4096 bytes of data for an array of 16"},
+      {"parameter-array-past-array",
+          device
+              + "New o1 RENDERER \"default\"\n"
+                "ParameterArray o1 \"background\" ARRAY1D FLOAT32 [2 0 0] "
+                "@0:4096\n",
+          4096,
+          "",
+          "line 3: ParameterArray: 1024 items of data for 2 mapped"},
+      {"property-of-2-to-the-62",
+          device
+              + "Property device \"version\" INT32 4611686018427387904 WAIT\n",
+          0,
+          "",
+          "line 2: Property: a size of 4611686018427387904 bytes is more than"},
+      {"array-items-past-data",
+          device + "Array o1 ARRAY1D FLOAT32 [1000000 0 0] @0:16\n",
+          16,
+          "--check-reports",
+          "line 2: Array o1: its 4000000 bytes of items are more than its "
+          "data's 16"},
+      {"used-after-release",
+          device + "New o1 GEOMETRY \"sphere\"\nRelease o1\nCommit o1\n",
+          0,
+          "",
+          "line 4: 'o1' used after its release"},
+      {"negative-count",
+          device + "Array o1 ARRAY1D FLOAT32 [-1 0 0] -\n",
+          0,
+          "",
+          "line 2: a number expected, not '-1'"},
+      {"array-size-overflows",
+          device
+              + "Array o1 ARRAY2D FLOAT64_VEC4 [4294967296 4294967296 0] -\n",
+          0,
+          "",
+          "line 2: the array's size overflows 64 bits"},
+      {"second-device",
+          device + "Release device\n" + device + "New o1 GEOMETRY \"sphere\"\n",
+          0,
+          "",
+          "line 3: a second 'Device'"},
+  };
+  for (const Case &c : cases) {
+    std::string output;
+    EXPECT_EQ(replayCrafted(c.name, c.text, c.sideBytes, c.options, output), 1)
+        << c.name << ":\n"
+        << output;
+    EXPECT_NE(output.find(c.said), std::string::npos) << c.name << ":\n"
+                                                      << output;
+  }
+}
+#endif

@@ -1705,6 +1705,22 @@ void scenarioParameters()
       mpi.device, mpi.device, "numThreads", ANARI_INT32, &negativeThreads);
   check(oneErrorMentioning(status, {"numThreads", "-2"}),
       "a negative numThreads is reported");
+  // Counts past the machine's limit never reach TBB (2^30 crashed it).
+  const int32_t tooManyThreads = 1 << 30;
+  anariSetParameter(
+      mpi.device, mpi.device, "numThreads", ANARI_INT32, &tooManyThreads);
+  check(oneErrorMentioning(status, {"numThreads", "1073741824", "limit"}),
+      "numThreads 2^30 is refused, naming the limit");
+  const uint32_t millionThreads = 1000000;
+  anariSetParameter(
+      mpi.device, mpi.device, "numThreads", ANARI_UINT32, &millionThreads);
+  check(oneErrorMentioning(status, {"numThreads", "1000000", "limit"}),
+      "numThreads 10^6 is refused, naming the limit");
+  const uint32_t wrapsNegative = 0x80000000u;
+  anariSetParameter(
+      mpi.device, mpi.device, "numThreads", ANARI_UINT32, &wrapsNegative);
+  check(oneErrorMentioning(status, {"numThreads", "2147483648"}),
+      "a UINT32 numThreads of 2^31 is read as unsigned and refused");
   // One thread per process from here on (the image must not change).
   const int32_t oneThread = 1;
   anariSetParameter(

@@ -117,11 +117,23 @@ TEST_F(ApiError, BadParametersAreLeftOutOthersKept)
       {"nodata", nullptr, NSITypeInteger, 0, 2, 0},
       {"negative", values, NSITypeInteger, -2, 1, NSIParamIsArray},
       {"good", values, NSITypeInteger, 2, 1, NSIParamIsArray},
+      // 2^34 arrays of 2^30: a count whose product wraps around to 0.
+      {"wraps",
+          values,
+          NSITypeInteger,
+          1 << 30,
+          size_t(1) << 34,
+          NSIParamIsArray},
   };
-  NSISetAttribute(stream, "x", 5, params);
+  NSISetAttribute(stream, "x", 6, params);
   NSIEnd(stream);
   auto messages = m_messages.take();
-  ASSERT_EQ(messages.size(), 4u);
+  ASSERT_EQ(messages.size(), 5u);
+  EXPECT_NE(messages[4].text.find("'wraps' has an absurd count (17179869184 "
+                                  "of 1073741824 values, more than the "
+                                  "machine's"),
+      std::string::npos)
+      << messages[4].text;
   EXPECT_NE(messages[0].text.find("unknown type 77"), std::string::npos);
   EXPECT_NE(messages[1].text.find("without a name"), std::string::npos);
   EXPECT_NE(messages[2].text.find("'nodata' has no data"), std::string::npos);

@@ -5,6 +5,7 @@
 #include "NsiTestSupport.h"
 #include "RenderSession.h"
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -117,6 +118,42 @@ TEST_F(Session, SuspendedProgressiveRenderWaitsForResume)
   const prism::image::Image full = read(onceFile);
   EXPECT_LT(largestDifference(progressive, full), 1e-4f);
   EXPECT_GT(largestDifference(firstFrame, full), 1e-3f); // one frame is noisy
+}
+
+// wait() on a suspended render returns, saying so, instead of waiting for
+// a resume; once resumed, it waits for the end as before.
+TEST_F(Session, WaitReturnsOnASuspendedRender)
+{
+  RenderSession session(recorder(), nullptr);
+  session.setFrameDone([&session](uint64_t frames) {
+    if (frames == 1)
+      session.suspend();
+  });
+  ASSERT_TRUE(session.start("prism", ballScene(path("waited.exr"))));
+  EXPECT_EQ(session.wait(), RenderSession::Waited::kSuspended);
+  EXPECT_EQ(session.framesRendered(), 1u);
+  EXPECT_TRUE(session.running());
+  session.resume();
+  EXPECT_EQ(session.wait(), RenderSession::Waited::kEnded);
+  EXPECT_EQ(session.framesRendered(), uint64_t(kFrames));
+  EXPECT_FALSE(session.running());
+}
+
+// The render's own callbacks may wait and stop: neither joins the thread
+// it runs on.
+TEST_F(Session, CallbacksMayWaitAndStop)
+{
+  std::atomic<int> waitedOnRenderThread{0};
+  RenderSession session(recorder(), nullptr);
+  session.setFrameDone([&](uint64_t) {
+    waitedOnRenderThread +=
+        session.wait() == RenderSession::Waited::kOnRenderThread;
+    session.stop();
+  });
+  ASSERT_TRUE(session.start("prism", ballScene(path("callback.exr"))));
+  EXPECT_EQ(session.wait(), RenderSession::Waited::kEnded);
+  EXPECT_EQ(waitedOnRenderThread, 1);
+  EXPECT_EQ(session.framesRendered(), 1u); // stopped after the first frame
 }
 
 TEST_F(Session, StopEndsASuspendedRender)

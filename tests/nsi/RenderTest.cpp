@@ -12,6 +12,8 @@
 #include <functional>
 #include <map>
 #include <mutex>
+#include <random>
+#include <thread>
 
 namespace {
 
@@ -1080,6 +1082,59 @@ std::string synchronizeCounts(MessageRecorder &messages)
       ADD_FAILURE() << m.text;
   }
   return found;
+}
+
+// `wait` on a suspended render returns with a warning (it waited for a
+// resume that the waiting caller alone could send: it never returned), and
+// the render still stops. 100,000 frames: the render is surely running.
+TEST_F(Render, WaitOnASuspendedRenderReturns)
+{
+  NSIContext_t ctx = beginRender();
+  minimalScene(ctx, 8, 100000, path("suspended.png"));
+  StopRecord record;
+  renderControl(ctx, "start", &record);
+  renderControl(ctx, "suspend");
+  const std::string warning =
+      "2: NSIRenderControl: 'wait' on a suspended render returns at once";
+  renderControl(ctx, "wait");
+  EXPECT_EQ(m_messages.problems().rfind(warning, 0), 0u);
+  renderControl(ctx, "wait"); // again: the same
+  EXPECT_EQ(m_messages.problems().rfind(warning, 0), 0u);
+  renderControl(ctx, "stop");
+  ASSERT_EQ(record.calls.size(), 1u);
+  EXPECT_EQ(record.calls[0].second, int(NSIRenderAborted));
+  NSIEnd(ctx);
+  EXPECT_EQ(m_messages.problems(), "");
+}
+
+// Two threads send every render control action in a scrambled order: each
+// call returns, and the only errors are the refusals of a start or a
+// synchronize that met a render under way.
+TEST_F(Render, RenderControlFromTwoThreadsAlwaysReturns)
+{
+  NSIContext_t ctx = beginRender();
+  minimalScene(ctx, 8, 50, path("scrambled.png"));
+  const char *actions[] = {
+      "start", "wait", "synchronize", "suspend", "resume", "stop"};
+  auto send = [&](unsigned seed) {
+    std::mt19937 random(seed);
+    for (int i = 0; i < 60; ++i)
+      renderControl(ctx, actions[random() % 6]);
+  };
+  std::thread other(send, 1u);
+  send(2u);
+  other.join();
+  renderControl(ctx, "stop");
+  NSIEnd(ctx);
+  for (const auto &message : m_messages.take()) {
+    if (message.level < NSIErrError)
+      continue;
+    EXPECT_TRUE(message.text.find("'start' while a render is running")
+                    != std::string::npos
+                || message.text.find("'synchronize' while a render is starting")
+                       != std::string::npos)
+        << message.text;
+  }
 }
 
 TEST_F(Render, InteractiveEditsTouchOnlyTheirObjects)

@@ -1,11 +1,13 @@
 #include "Replayer.h"
 
 #include "ImageIO.h"
+#include "MachineLimits.h"
 
 #include "anari/frontend/type_utility.h"
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -15,7 +17,12 @@
 namespace prism::replay {
 namespace {
 
-void printStatus(const void *,
+// No property is larger than a few values: a trace asking more is not one
+// the layer wrote.
+constexpr uint64_t kMaxPropertyBytes = 1 << 20;
+
+// `userPtr`: the replay's Options.
+void printStatus(const void *userPtr,
     ANARIDevice,
     ANARIObject,
     ANARIDataType,
@@ -23,7 +30,8 @@ void printStatus(const void *,
     ANARIStatusCode,
     const char *message)
 {
-  if (severity <= ANARI_SEVERITY_WARNING)
+  const auto *options = (const Options *)userPtr;
+  if (options->printMessages && severity <= ANARI_SEVERITY_WARNING)
     std::fprintf(stderr, "anari-replay: device: %s\n", message);
 }
 
@@ -85,7 +93,8 @@ void Replayer::collectStatus(const void *userPtr,
     self->m_replayedReports.push_back(
         trace::reportLine(severity, code, message));
   } else {
-    printStatus(userPtr, device, source, sourceType, severity, code, message);
+    printStatus(
+        &self->m_options, device, source, sourceType, severity, code, message);
   }
 }
 
@@ -208,6 +217,8 @@ bool Replayer::call(const Tokens &t)
     m_device = nullptr;
     return true;
   }
+  if (keyword == "Release" || keyword == "Retain")
+    referenced(t[1].text, keyword == "Release" ? -1 : 1);
   if (keyword == "Commit") {
     anariCommitParameters(m_device, o);
   } else if (keyword == "Release") {
@@ -219,7 +230,8 @@ bool Replayer::call(const Tokens &t)
   } else if (keyword == "Unset" && t.size() == 3) {
     anariUnsetParameter(m_device, o, t[2].text.c_str());
   } else if (keyword == "Render") {
-    anariRenderFrame(m_device, (ANARIFrame)o);
+    if (m_options.renderFrames)
+      anariRenderFrame(m_device, (ANARIFrame)o);
   } else if (keyword == "Ready" && t.size() == 3) {
     anariFrameReady(m_device,
         (ANARIFrame)o,
@@ -240,7 +252,7 @@ bool Replayer::call(const Tokens &t)
 
 bool Replayer::startDevice(const Tokens &t)
 {
-  if (m_device)
+  if (m_deviceStarted)
     return fail("a second 'Device'");
   if (t.size() < 2 || t[1].kind != trace::Token::kString)
     return fail("Device: a subtype expected");
@@ -253,13 +265,14 @@ bool Replayer::startDevice(const Tokens &t)
     library = "debug";
     m_library = anariLoadLibrary(library.c_str(), collectStatus, this);
   } else {
-    m_library = anariLoadLibrary(library.c_str(), printStatus, nullptr);
+    m_library = anariLoadLibrary(library.c_str(), printStatus, &m_options);
   }
   if (!m_library)
     return fail("cannot load library '" + library + "'");
   m_device = anariNewDevice(m_library, t[1].text.c_str());
   if (!m_device)
     return fail("library '" + library + "' made no device");
+  m_deviceStarted = true;
   m_objects["device"] = (ANARIObject)m_device;
   m_objects["null"] = nullptr;
   // A handle the layer never made; NULL for a library without the layer
@@ -270,13 +283,36 @@ bool Replayer::startDevice(const Tokens &t)
   return true;
 }
 
-bool Replayer::object(const trace::Token &token, ANARIObject &out)
+bool Replayer::object(const trace::Token &token, ANARIObject &out, bool inArray)
 {
   auto it = m_objects.find(token.text);
   if (!isWord(token) || it == m_objects.end())
     return fail("unknown object '" + token.text + "'");
+  // The layer checks handles (and reports a released one); a library
+  // without it would use freed memory.
+  if (!m_options.checkReports && !inArray && m_released.count(token.text))
+    return fail("'" + token.text + "' used after its release");
   out = it->second;
   return true;
+}
+
+void Replayer::referenced(const std::string &name, int change)
+{
+  auto count = m_references.find(name);
+  if (count == m_references.end())
+    return; // the device, null, foreign or a refused creation
+  count->second += change;
+  if (count->second > 0)
+    return;
+  m_released[name] = true;
+  m_mappedArrays.erase(name);
+  const std::string prefix = name + " ";
+  for (auto it = m_mappedParameters.begin(); it != m_mappedParameters.end();) {
+    if (it->first.compare(0, prefix.size(), prefix) == 0)
+      it = m_mappedParameters.erase(it);
+    else
+      ++it;
+  }
 }
 
 bool Replayer::type(const trace::Token &token, ANARIDataType &out)
@@ -288,9 +324,13 @@ bool Replayer::type(const trace::Token &token, ANARIDataType &out)
 
 bool Replayer::number(const trace::Token &token, uint64_t &out)
 {
-  char *end = nullptr;
-  out = std::strtoull(token.text.c_str(), &end, 10);
-  if (isWord(token) && !token.text.empty() && end && !*end)
+  const bool digits = isWord(token) && !token.text.empty()
+                      && std::all_of(token.text.begin(),
+                          token.text.end(),
+                          [](char c) { return c >= '0' && c <= '9'; });
+  errno = 0;
+  out = digits ? std::strtoull(token.text.c_str(), nullptr, 10) : 0;
+  if (digits && errno != ERANGE)
     return true;
   return fail("a number expected, not '" + token.text + "'");
 }
@@ -304,6 +344,42 @@ bool Replayer::dimensions(const Tokens &t, size_t at, uint64_t items[3])
     if (!number(t[at + 1 + i], items[i]))
       return false;
   }
+  return true;
+}
+
+bool Replayer::arrayBytes(ANARIDataType arrayType,
+    ANARIDataType elementType,
+    const uint64_t items[3],
+    uint64_t &bytes)
+{
+  const int dimensions = arrayType == ANARI_ARRAY1D   ? 1
+                         : arrayType == ANARI_ARRAY2D ? 2
+                         : arrayType == ANARI_ARRAY3D ? 3
+                                                      : 0;
+  if (!dimensions)
+    return fail("an ARRAY1D, ARRAY2D or ARRAY3D expected, not "
+                + trace::typeName(arrayType));
+  if (!limits::checkedBytes(
+          items, dimensions, anari::sizeOf(elementType), bytes))
+    return fail("the array's size overflows 64 bits");
+  if (m_options.maxArrayBytes && bytes > m_options.maxArrayBytes) {
+    return fail("an array of " + limits::byteSize(bytes) + ", more than the "
+                + limits::byteSize(m_options.maxArrayBytes) + " allowed");
+  }
+  return true;
+}
+
+bool Replayer::keepArrayMemory(
+    std::vector<unsigned char> &bytes, const void *&memory)
+{
+  // Each line may name the same block of the side file again: what the
+  // replay holds must still fit the machine.
+  if (!limits::fitsInMemory(m_arrayMemoryBytes + bytes.size()))
+    return fail("the trace's shared arrays need more than "
+                + limits::memoryLimitText());
+  m_arrayMemoryBytes += bytes.size();
+  m_arrayMemory.push_back(std::move(bytes));
+  memory = m_arrayMemory.back().data();
   return true;
 }
 
@@ -325,7 +401,7 @@ bool Replayer::contents(const Tokens &t,
     for (size_t i = at + 1; i < t.size() && t[i].kind != trace::Token::kClose;
          ++i) {
       ANARIObject handle = nullptr;
-      if (!object(t[i], handle))
+      if (!object(t[i], handle, true))
         return false;
       auto *p = (const unsigned char *)&handle;
       bytes.insert(bytes.end(), p, p + sizeof(handle));
@@ -416,14 +492,21 @@ bool Replayer::newArray(const Tokens &t)
     return fail("Array: name, type, element type, [n1 n2 n3], data expected");
   std::vector<unsigned char> bytes;
   bool none = false;
+  uint64_t needed = 0;
   if (!type(t[2], arrayType) || !type(t[3], elementType)
-      || !dimensions(t, 4, items) || !contents(t, 9, elementType, bytes, none))
+      || !dimensions(t, 4, items)
+      || !arrayBytes(arrayType, elementType, items, needed)
+      || !contents(t, 9, elementType, bytes, none))
     return false;
-  const void *memory = nullptr;
-  if (!none) {
-    m_arrayMemory.push_back(std::move(bytes));
-    memory = m_arrayMemory.back().data();
+  // The device (and the layer) read the whole array from this memory.
+  if (!none && bytes.size() < needed) {
+    return fail("Array " + t[1].text + ": its " + std::to_string(needed)
+                + " bytes of items are more than its data's "
+                + std::to_string(bytes.size()));
   }
+  const void *memory = nullptr;
+  if (!none && !keepArrayMemory(bytes, memory))
+    return false;
   ANARIObject o = nullptr;
   if (arrayType == ANARI_ARRAY1D) {
     o = anariNewArray1D(
@@ -442,14 +525,22 @@ bool Replayer::newArray(const Tokens &t)
         items[2]);
   }
   name(t[1], o);
+  if (o)
+    m_arrayBytes[t[1].text] = needed;
   return true;
 }
 
 void Replayer::name(const trace::Token &token, ANARIObject o)
 {
   // `-`: a creation the layer refused, which made no object to name.
-  if (token.text != "-")
-    m_objects[token.text] = o;
+  if (token.text == "-")
+    return;
+  m_objects[token.text] = o;
+  m_released.erase(token.text);
+  if (o)
+    m_references[token.text] = 1;
+  else
+    m_references.erase(token.text);
 }
 
 bool Replayer::mapArray(const Tokens &t)
@@ -471,6 +562,14 @@ bool Replayer::arrayData(const Tokens &t)
   if (t.size() < 3 || !object(t[1], array)
       || !contents(t, 2, ANARI_UNKNOWN, bytes, none))
     return false;
+  auto shape = m_arrayBytes.find(t[1].text);
+  if (shape == m_arrayBytes.end() && !m_options.checkReports)
+    return fail("ArrayData: '" + t[1].text + "' is no array");
+  const uint64_t capacity = shape == m_arrayBytes.end() ? 0 : shape->second;
+  if (!none && bytes.size() > capacity) {
+    return fail("ArrayData " + t[1].text + ": " + std::to_string(bytes.size())
+                + " bytes of data for an array of " + std::to_string(capacity));
+  }
   // Mapped by its `MapArray` line, or (traces without one) now.
   void *memory = nullptr;
   auto mapped = m_mappedArrays.find(t[1].text);
@@ -540,14 +639,20 @@ bool Replayer::parameterArray(const Tokens &t)
       || !dimensions(t, 5, items)
       || (!mapOnly && !contents(t, 10, elementType, bytes, none)))
     return fail(m_error.empty() ? t[0].text + ": operands expected" : m_error);
+  uint64_t needed = 0;
+  if (!arrayBytes(arrayType, elementType, items, needed))
+    return false;
+  const uint64_t size = anari::sizeOf(elementType);
+  uint64_t mappedItems = size ? needed / size : 0;
   const char *name = t[2].text.c_str();
   const std::string key = t[1].text + " " + trace::quote(t[2].text);
   uint64_t stride = 0;
   void *memory = nullptr;
   auto mapped = m_mappedParameters.find(key);
   if (!mapOnly && mapped != m_mappedParameters.end()) {
-    memory = mapped->second.first;
-    stride = mapped->second.second;
+    memory = mapped->second.memory;
+    stride = mapped->second.stride;
+    mappedItems = mapped->second.items; // what the device made room for
     m_mappedParameters.erase(mapped);
   } else if (arrayType == ANARI_ARRAY1D) {
     memory = anariMapParameterArray1D(
@@ -562,12 +667,18 @@ bool Replayer::parameterArray(const Tokens &t)
   if (!memory)
     return true; // the device refused, as it did (or not) when recorded
   if (mapOnly) {
-    m_mappedParameters.emplace(key, std::make_pair(memory, stride));
+    m_mappedParameters.emplace(
+        key, MappedParameter{memory, stride, mappedItems});
     return true;
   }
-  const size_t size = anari::sizeOf(elementType);
-  const size_t step = stride ? stride : size;
-  for (size_t i = 0; size && (i + 1) * size <= bytes.size(); ++i)
+  if (size && bytes.size() / size > mappedItems) {
+    anariUnmapParameterArray(m_device, o, name);
+    return fail(t[0].text + ": " + std::to_string(bytes.size() / size)
+                + " items of data for " + std::to_string(mappedItems)
+                + " mapped");
+  }
+  const uint64_t step = stride ? stride : size;
+  for (uint64_t i = 0; size && (i + 1) * size <= bytes.size(); ++i)
     std::memcpy((char *)memory + i * step, bytes.data() + i * size, size);
   anariUnmapParameterArray(m_device, o, name);
   return true;
@@ -603,10 +714,11 @@ bool Replayer::mapFrame(const Tokens &t)
     ++m_summary.framesSame;
   } else {
     ++m_summary.framesDifferent;
-    std::fprintf(stderr,
-        "anari-replay: %s '%s' differs from the recorded image\n",
-        t[1].text.c_str(),
-        t[2].text.c_str());
+    if (m_options.printMessages)
+      std::fprintf(stderr,
+          "anari-replay: %s '%s' differs from the recorded image\n",
+          t[1].text.c_str(),
+          t[2].text.c_str());
   }
   if (pixels && !m_options.frameDirectory.empty())
     writeFrame(t[1].text, t[2].text, pixels, w, h, pixelType);
@@ -649,6 +761,11 @@ bool Replayer::property(const Tokens &t)
       || !number(t[4], size))
     return fail(
         m_error.empty() ? "Property: object, name, type, size" : m_error);
+  if (size > kMaxPropertyBytes) {
+    return fail("Property: a size of " + std::to_string(size)
+                + " bytes is more than any property's ("
+                + limits::byteSize(kMaxPropertyBytes) + ")");
+  }
   std::vector<unsigned char> memory(size_t(size) + 1);
   anariGetProperty(m_device,
       o,

@@ -23,6 +23,13 @@ struct Options
   // Replays through the debug layer wrapped around the library, with the
   // calls it refused, and compares its reports with the recorded ones.
   bool checkReports = false;
+  // What a fuzzer needs to keep each input cheap: `Render` lines skipped
+  // (frames map empty and count as different), arrays larger than
+  // `maxArrayBytes` refused (0: the machine's memory), nothing printed
+  // (device messages, frames that differ).
+  bool renderFrames = true;
+  uint64_t maxArrayBytes = 0;
+  bool printMessages = true;
 };
 
 struct Summary
@@ -74,10 +81,26 @@ class Replayer
       ANARIDataType type);
 
   // Operand helpers; each sets m_error and returns false on a bad operand.
-  bool object(const trace::Token &token, ANARIObject &out);
+  // `inArray`: an object array's element, which may name an object the
+  // application released (the array still holds it; the device checks).
+  bool object(
+      const trace::Token &token, ANARIObject &out, bool inArray = false);
   bool type(const trace::Token &token, ANARIDataType &out);
   bool number(const trace::Token &token, uint64_t &out);
   bool dimensions(const Tokens &t, size_t at, uint64_t items[3]);
+  // The bytes of an array of `arrayType` (ARRAY1D..3D) with `items` of
+  // `elementType`, checked for overflow.
+  bool arrayBytes(ANARIDataType arrayType,
+      ANARIDataType elementType,
+      const uint64_t items[3],
+      uint64_t &bytes);
+  // Keeps `bytes` as the memory of a shared array, within the machine's
+  // memory for all of them.
+  bool keepArrayMemory(std::vector<unsigned char> &bytes, const void *&memory);
+  // Counts the application's references to the object named `name`; at
+  // zero, its mappings are forgotten and (without checkReports, where the
+  // layer checks handles) the name is no longer usable.
+  void referenced(const std::string &name, int change);
   // Bytes of an operand at t[at] ("@offset:size", "-" or a list of object
   // names); `next` receives the index after it.
   bool contents(const Tokens &t,
@@ -104,6 +127,14 @@ class Replayer
   ANARILibrary m_library{nullptr};
   ANARIDevice m_device{nullptr};
   std::unordered_map<std::string, ANARIObject> m_objects;
+  bool m_deviceStarted{false};
+  // The application's references to each named object, and the names
+  // released (a handle the device has freed).
+  std::unordered_map<std::string, int64_t> m_references;
+  std::unordered_map<std::string, bool> m_released;
+  // Each array's size in bytes, by name: no data line writes past it.
+  std::unordered_map<std::string, uint64_t> m_arrayBytes;
+  uint64_t m_arrayMemoryBytes{0};
   // Memory of shared arrays, alive as long as the replay (the device may
   // read it until the array is gone).
   std::list<std::vector<unsigned char>> m_arrayMemory;
@@ -111,8 +142,13 @@ class Replayer
   // until the line that writes their data and unmaps them; parameter
   // arrays with the device's stride.
   std::unordered_map<std::string, void *> m_mappedArrays;
-  std::unordered_map<std::string, std::pair<void *, uint64_t>>
-      m_mappedParameters;
+  struct MappedParameter
+  {
+    void *memory;
+    uint64_t stride;
+    uint64_t items; // elements the device mapped
+  };
+  std::unordered_map<std::string, MappedParameter> m_mappedParameters;
   int m_framesWritten = 0;
   std::vector<std::string> m_recordedReports;
   std::mutex m_reportsMutex; // NOTE: status may come from any thread

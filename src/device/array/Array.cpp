@@ -2,9 +2,11 @@
 
 #include "../object/DeviceState.h"
 
+#include "MachineLimits.h"
 #include "anari/frontend/type_utility.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 
@@ -62,11 +64,30 @@ Array::Array(DeviceState &device,
 {
   if (!m_appMemory) {
     // Zeroed so object arrays start as NULL handles, never garbage.
-    m_managed.reset(new unsigned char[capacity() * m_elementSize]());
+    m_managed.reset((unsigned char *)std::calloc(capacity(), m_elementSize));
+    if (!m_managed)
+      throw std::bad_alloc();
   }
   m_regionEnd = capacity();
   if (m_isObjectArray)
     refreshObjectReferences();
+}
+
+void Array::FreeMemory::operator()(unsigned char *p) const
+{
+  std::free(p);
+}
+
+uint64_t Array::bytesNeeded(const Shape &shape)
+{
+  uint64_t bytes = 0;
+  // Object arrays also hold a reference and a staging slot per element.
+  const uint64_t perElement =
+      anari::sizeOf(shape.elementType)
+      + (anari::isObject(shape.elementType) ? 2 * sizeof(Object *) : 0);
+  if (!limits::checkedBytes(shape.size, shape.dimensions, perElement, bytes))
+    return std::numeric_limits<uint64_t>::max();
+  return bytes;
 }
 
 Array::~Array()
@@ -108,7 +129,10 @@ void Array::takePrivateCopy()
   if (!borrowsApplicationMemory())
     return;
   const size_t bytes = capacity() * m_elementSize;
-  std::unique_ptr<unsigned char[]> copy(new unsigned char[bytes]);
+  std::unique_ptr<unsigned char[], FreeMemory> copy(
+      (unsigned char *)std::malloc(bytes));
+  if (!copy)
+    throw std::bad_alloc();
   std::memcpy(copy.get(), m_appMemory, bytes);
   m_managed = std::move(copy);
   m_appMemory = nullptr;

@@ -31,6 +31,9 @@ class Array : public Object
 
   // Why an array of `shape` cannot be created, or NULL if it can.
   static const char *whyNotCreatable(const Shape &shape);
+  // The device's memory for a managed array of `shape` (UINT64_MAX when
+  // that overflows).
+  static uint64_t bytesNeeded(const Shape &shape);
 
   ANARIDataType elementType() const
   {
@@ -104,7 +107,13 @@ class Array : public Object
   const void *m_appMemory{nullptr};
   ANARIMemoryDeleter m_deleter{nullptr};
   const void *m_deleterUserPtr{nullptr};
-  std::unique_ptr<unsigned char[]> m_managed;
+  // From calloc: the system hands out zeroed pages as they are first
+  // touched, so a large managed array costs nothing until it is written.
+  struct FreeMemory
+  {
+    void operator()(unsigned char *p) const;
+  };
+  std::unique_ptr<unsigned char[], FreeMemory> m_managed;
   bool m_mapped{false};
   bool m_isObjectArray{false};
   uint64_t m_regionBegin{0};

@@ -8,12 +8,13 @@
 #include "../world/World.h"
 #include "PixelFormat.h"
 
+#include "MachineLimits.h"
+
 #include "anari/frontend/type_utility.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include <unistd.h>
 #include <algorithm>
 #include <climits>
 #include <cstring>
@@ -174,22 +175,16 @@ size_t Frame::bytesNeeded() const
 bool Frame::fitsInMemory()
 {
   const size_t needed = bytesNeeded();
-  const long pages = sysconf(_SC_PHYS_PAGES);
-  const long pageSize = sysconf(_SC_PAGESIZE);
-  if (pages <= 0 || pageSize <= 0)
+  if (limits::fitsInMemory(needed))
     return true;
-  const size_t available = size_t(pages) * size_t(pageSize);
-  if (needed <= available)
-    return true;
-  constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
   report(ANARI_SEVERITY_ERROR,
       ANARI_STATUS_OUT_OF_MEMORY,
-      "anariRenderFrame: a %ux%u frame needs %.1f GiB, more than this "
-      "machine's %.1f GiB of memory; the frame is not rendered",
+      "anariRenderFrame: a %ux%u frame needs %s, more than %s; the frame is "
+      "not rendered",
       m_width,
       m_height,
-      double(needed) / kGiB,
-      double(available) / kGiB);
+      limits::byteSize(needed).c_str(),
+      limits::memoryLimitText().c_str());
   return false;
 }
 

@@ -13,6 +13,7 @@
 #include <map>
 #include <mutex>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -1116,6 +1117,8 @@ class Interpreter
       return waitAll();
     case Op::LibraryQuery:
       return libraryQuery(p);
+    case Op::SharedThreads:
+      return sharedThreads(p);
     case Op::Count:
       return;
     }
@@ -2139,6 +2142,70 @@ class Interpreter
         violated("anariDeviceGetProcAddress found a function:", name);
       break;
     }
+  }
+
+  void sharedThreads(Payload &p)
+  {
+    Entry *world = entry(p.operand());
+    Entry *camera = entry(p.operand());
+    Entry *renderer = entry(p.operand());
+    const int frames = p.operand() % 4 + 1;
+    if (!world || !camera || !renderer || m_devices[world->device].released)
+      return;
+    ANARIDevice dev = deviceOf(*world);
+    const bool holdWorld = isLive(*world);
+    std::mutex sharedCalls; // calls naming world, camera or renderer
+    std::atomic<uint64_t> sum{0};
+    auto work = [&] {
+      if (holdWorld) {
+        std::lock_guard lock(sharedCalls);
+        call();
+        anariRetain(dev, world->handle);
+      }
+      for (int i = 0; i < frames; i++) {
+        call();
+        ANARIFrame frame = anariNewFrame(dev);
+        const uint32_t size[2] = {8, 8};
+        const ANARIDataType color = ANARI_FLOAT32_VEC4;
+        anariSetParameter(dev, frame, "size", ANARI_UINT32_VEC2, size);
+        anariSetParameter(dev, frame, "channel.color", ANARI_DATA_TYPE, &color);
+        {
+          std::lock_guard lock(sharedCalls);
+          anariSetParameter(dev, frame, "world", ANARI_WORLD, &world->handle);
+          anariSetParameter(
+              dev, frame, "camera", ANARI_CAMERA, &camera->handle);
+          anariSetParameter(
+              dev, frame, "renderer", ANARI_RENDERER, &renderer->handle);
+        }
+        anariCommitParameters(dev, frame);
+        anariRenderFrame(dev, frame);
+        anariFrameReady(dev, frame, ANARI_WAIT);
+        uint32_t width = 0, height = 0;
+        ANARIDataType type = ANARI_UNKNOWN;
+        auto *pixels = (const unsigned char *)anariMapFrame(
+            dev, frame, "channel.color", &width, &height, &type);
+        if (pixels) {
+          if (width > 8 || height > 8 || anari::sizeOf(type) != 16)
+            violated("anariMapFrame (SharedThreads): not the frame set up");
+          uint64_t frameSum = 0; // every byte readable (ASan)
+          for (size_t b = 0; b < size_t(width) * height * 16; b++)
+            frameSum += pixels[b];
+          sum += frameSum;
+          g_counters.framesMapped++;
+        }
+        anariUnmapFrame(dev, frame, "channel.color");
+        anariRelease(dev, frame);
+      }
+      if (holdWorld) {
+        std::lock_guard lock(sharedCalls);
+        call();
+        anariRelease(dev, world->handle);
+      }
+    };
+    std::thread other(work);
+    work();
+    other.join();
+    m_sink += sum;
   }
 
   void waitAll()

@@ -86,6 +86,14 @@ enum class Op : uint8_t {
   // [which][device][name]: device subtypes and extensions, modules, an
   // initialized device, extension functions.
   LibraryQuery,
+  // [world][camera][renderer][frames]: two threads at once each render
+  // frames % 4 + 1 8x8 frames of their own on the same world, camera and
+  // renderer entries (whatever they are), map and release them. Calls
+  // naming a shared entry are serialized, as KHR_DEVICE_SYNCHRONIZATION
+  // asks of the application; the rest overlap. Each thread holds a public
+  // reference to a live world while it works and drops it at its end,
+  // while the other's frames may still render it.
+  SharedThreads,
   Count
 };
 

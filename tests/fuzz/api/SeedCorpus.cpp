@@ -1021,6 +1021,24 @@ void writeCorruptions(Corpus &corpus)
 
 } // namespace
 
+void writeThreads(Corpus &corpus)
+{
+  // Two threads rendering frames of one scene's world, camera and renderer
+  // at once (SharedThreads), then again once the world was released.
+  Seed s;
+  const int first = s.scene(0, 0, 0, 0, 0, kSceneInstanced);
+  const Bytes shared = {uint8_t(first + Seed::kWorld),
+      uint8_t(first + Seed::kCamera),
+      uint8_t(first + Seed::kRenderer)};
+  Bytes threeFrames = shared, oneFrame = shared;
+  threeFrames.push_back(2);
+  oneFrame.push_back(0);
+  s.op(Op::SharedThreads, threeFrames);
+  s.release(first + Seed::kWorld);
+  s.op(Op::SharedThreads, oneFrame);
+  corpus.write("shared-threads", s.bytes());
+}
+
 int main(int argc, char **argv)
 {
   if (argc != 2) {
@@ -1033,6 +1051,7 @@ int main(int argc, char **argv)
   writeMaterialsAndSamplers(corpus);
   writeLightsCamerasInstances(corpus);
   writeCorruptions(corpus);
+  writeThreads(corpus);
   std::printf(
       "fuzz_api_seeds: %d seeds written to %s\n", corpus.written, argv[1]);
   return 0;
