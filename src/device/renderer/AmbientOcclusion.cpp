@@ -1,5 +1,7 @@
 #include "AmbientOcclusion.h"
 
+#include "../math/LocalFrame.h"
+#include "../math/SphereSampling.h"
 #include "SampleHash.h"
 #include "SampleSequence.h"
 #include "VolumeTracing.h"
@@ -12,19 +14,6 @@
 
 namespace prism {
 namespace {
-
-// A cosine-distributed direction around `n` (Malley's method).
-float3 cosineDirection(const float3 &n, float2 u)
-{
-  const float radius = std::sqrt(u.x);
-  const float phi = 2.f * float(M_PI) * u.y;
-  const float3 helper =
-      std::abs(n.x) > 0.9f ? float3{0, 1, 0} : float3{1, 0, 0};
-  const float3 t = normalize(cross(helper, n));
-  const float3 b = cross(n, t);
-  const float z = std::sqrt(std::max(0.f, 1.f - u.x));
-  return t * (radius * std::cos(phi)) + b * (radius * std::sin(phi)) + n * z;
-}
 
 // Surfaces seen through at most this many see-through layers per pixel.
 constexpr uint16_t kMaxLayers = 64;
@@ -153,11 +142,13 @@ void AmbientOcclusion::renderTile(const RenderContext &context,
       const float3 origin =
           surface.position
           + surface.geometricNormal * (1e-4f * std::max(1.f, hit.t));
+      // Cosine-distributed directions around the shading normal.
+      const LocalFrame hemisphere = LocalFrame::around(surface.shadingNormal);
       for (uint32_t k = 0; k < m_samples; k++) {
         const float2 u = sobolSample2D(context.sampleIndex * m_samples + k,
             sequenceSeed(pixel.x, pixel.y, 2));
         occlusion.push(origin,
-            cosineDirection(surface.shadingNormal, u),
+            hemisphere.toWorld(sampleCosineHemisphere(u)),
             0.f,
             m_distance,
             ray.time,

@@ -527,7 +527,7 @@ PathTracer::Scattering PathTracer::scatteringAt(
       shading.hasNormalMap ? normalMapped(
           surface, b.hit, unbent, shading.normalMap, towardsViewer)
                            : unbent;
-  const ShadingFrame frame = ShadingFrame::fromNormal(normal);
+  const LocalFrame frame = LocalFrame::around(normal);
   const Bsdf *bsdf = b.constantBsdf;
   if (!bsdf) {
     BsdfInputs inputs = shading.bsdf;
@@ -607,7 +607,7 @@ void PathTracer::scatter(Bounce &b,
   path.previousPdf = bs.pdf;
   path.previousDelta = bs.isDelta();
   path.ambientVisibility = b.shading->occlusion;
-  const float3 normal = scattering.frame.normal;
+  const float3 normal = scattering.frame.z;
   const float3 wi = normalize(scattering.frame.toWorld(bs.wi));
   // Crossing a volume boundary: entering it (against the unflipped
   // normal) enters its medium, leaving it returns to the one outside.
