@@ -85,8 +85,9 @@ void AmbientOcclusion::renderTile(const RenderContext &context,
       // A volume before the hit absorbs the ray with the probability it
       // absorbs light (delta tracking): frames accumulate its emission.
       if (!context.world->volumes().empty()) {
-        HashedStream random(sequenceSeed(pixel.x, pixel.y, 40 + layers[i])
-                            ^ mixBits(context.sampleIndex));
+        HashedStream random(
+            sequenceSeed(pixel.x, pixel.y, 40 + layers[i], context.seed)
+            ^ mixBits(context.sampleIndex));
         VolumeCollision collision;
         if (trackCollision(*context.world,
                 ray.origin,
@@ -116,7 +117,7 @@ void AmbientOcclusion::renderTile(const RenderContext &context,
       const float coverage = surface.material().coverage(base.w);
       if (coverage < 1.f
           && sobolSample2D(context.sampleIndex,
-                 sequenceSeed(pixel.x, pixel.y, 4 + layers[i]))
+                 sequenceSeed(pixel.x, pixel.y, 4 + layers[i], context.seed))
                      .x
                  >= coverage) {
         if (++layers[i] < kMaxLayers) {
@@ -146,7 +147,7 @@ void AmbientOcclusion::renderTile(const RenderContext &context,
       const LocalFrame hemisphere = LocalFrame::around(surface.shadingNormal);
       for (uint32_t k = 0; k < m_samples; k++) {
         const float2 u = sobolSample2D(context.sampleIndex * m_samples + k,
-            sequenceSeed(pixel.x, pixel.y, 2));
+            sequenceSeed(pixel.x, pixel.y, 2, context.seed));
         occlusion.push(origin,
             hemisphere.toWorld(sampleCosineHemisphere(u)),
             0.f,

@@ -160,7 +160,7 @@ void PathTracer::renderTile(const RenderContext &context,
       path = PathState{};
       path.x = tile.x0 + uint32_t(i % width);
       path.y = tile.y0 + uint32_t(i / width);
-      path.seed = sequenceSeed(path.x, path.y, 0);
+      path.seed = sequenceSeed(path.x, path.y, 0, context.seed);
       path.sampleIndex = context.sampleIndex;
       cameraRays[i] = cameraRay(context, path.x, path.y);
       path.time = cameraRays[i].time;

@@ -29,6 +29,7 @@ void Renderer::commitParameters()
   m_ambientColor = read<float3>("ambientColor", ANARI_FLOAT32_VEC3, {1, 1, 1});
   m_ambientRadiance = read<float>("ambientRadiance", ANARI_FLOAT32, 0.f);
   m_denoise = readBool("denoise", false);
+  m_seed = uint32_t(read<int32_t>("seed", ANARI_INT32, 0));
   m_backgroundColor = {0, 0, 0, 1};
   m_backgroundImage.clear();
   m_backgroundWidth = m_backgroundHeight = 0;
@@ -148,7 +149,7 @@ void Renderer::tracePrimary(const RenderContext &context,
 Ray Renderer::cameraRay(
     const RenderContext &context, uint32_t x, uint32_t y) const
 {
-  const float2 offset = pixelOffset(x, y, context.sampleIndex);
+  const float2 offset = pixelOffset(x, y, context.sampleIndex, context.seed);
   // Multiplying by the reciprocal, as the pinhole fast path does, keeps
   // both paths' rays identical.
   const float2 screen{(float(x) + offset.x) * (1.f / float(context.width)),
@@ -158,9 +159,9 @@ Ray Renderer::cameraRay(
   const float2 lens =
       context.sampleIndex == 0 || !context.camera->hasDepthOfField()
           ? float2{0.5f, 0.5f}
-          : lensSample(x, y, context.sampleIndex);
+          : lensSample(x, y, context.sampleIndex, context.seed);
   const float time = context.camera->rayTime(
-      screen, exposureSample(x, y, context.sampleIndex));
+      screen, exposureSample(x, y, context.sampleIndex, context.seed));
   return context.camera->generateRay(screen, lens, time);
 }
 
