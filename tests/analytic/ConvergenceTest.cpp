@@ -11,6 +11,25 @@
 
 namespace {
 
+// Pearson's correlation coefficient of pairs added one at a time.
+struct Correlation
+{
+  double sa = 0, sb = 0, sab = 0, saa = 0, sbb = 0;
+  int n = 0;
+
+  void add(double a, double b)
+  {
+    sa += a, sb += b, sab += a * b, saa += a * a, sbb += b * b, n++;
+  }
+  double value() const
+  {
+    const double cov = sab / n - sa / n * sb / n;
+    return cov
+           / std::sqrt(
+               (saa / n - sa / n * sa / n) * (sbb / n - sb / n * sb / n));
+  }
+};
+
 class Convergence : public AnalyticTest
 {
  protected:
@@ -112,18 +131,11 @@ TEST_F(Convergence, NeighbouringPixelsErrorsAreUncorrelated)
     return double(image[i]) - double(reference[i]);
   };
   for (const auto &[dx, dy] : {std::pair{1, 0}, std::pair{0, 1}}) {
-    double sa = 0, sb = 0, sab = 0, saa = 0, sbb = 0;
-    int n = 0;
-    for (int y = 0; y + dy < size; y++) {
-      for (int x = 0; x + dx < size; x++) {
-        const double a = error(x, y), b = error(x + dx, y + dy);
-        sa += a, sb += b, sab += a * b, saa += a * a, sbb += b * b, n++;
-      }
-    }
-    const double cov = sab / n - sa / n * sb / n;
-    const double corr =
-        cov
-        / std::sqrt((saa / n - sa / n * sa / n) * (sbb / n - sb / n * sb / n));
+    Correlation correlation;
+    for (int y = 0; y + dy < size; y++)
+      for (int x = 0; x + dx < size; x++)
+        correlation.add(error(x, y), error(x + dx, y + dy));
+    const double corr = correlation.value();
     std::printf("neighbour (%d, %d) error correlation %.3f\n", dx, dy, corr);
     EXPECT_LT(std::abs(corr), 0.15);
   }
@@ -142,17 +154,10 @@ TEST_F(Convergence, AnotherSeedIsAnIndependentEstimate)
   const std::vector<float> b = render(w, false, 8, 3);
   ASSERT_NE(a, b);
   EXPECT_EQ(render(w, false, 8, 2), a);
-  double sa = 0, sb = 0, sab = 0, saa = 0, sbb = 0;
-  int n = 0;
-  for (size_t i = 0; i < a.size(); i += 4) {
-    const double ea = double(a[i]) - reference[i];
-    const double eb = double(b[i]) - reference[i];
-    sa += ea, sb += eb, sab += ea * eb, saa += ea * ea, sbb += eb * eb, n++;
-  }
-  const double cov = sab / n - sa / n * sb / n;
-  const double corr =
-      cov
-      / std::sqrt((saa / n - sa / n * sa / n) * (sbb / n - sb / n * sb / n));
+  Correlation correlation;
+  for (size_t i = 0; i < a.size(); i += 4)
+    correlation.add(double(a[i]) - reference[i], double(b[i]) - reference[i]);
+  const double corr = correlation.value();
   std::printf("seeds 2 and 3: error correlation %.3f\n", corr);
   EXPECT_LT(std::abs(corr), 0.15);
   anariRelease(m_device, w);

@@ -2,6 +2,7 @@
 // screen-space slope, and the weights that keep filtering on one surface.
 #pragma once
 
+#include "../math/Luminance.h"
 #include "../math/Vec.h"
 #include "DenoiseInputs.h"
 #include "ExpNegative.h"
@@ -93,12 +94,6 @@ inline float geometryWeight(const Guide &p, const Guide &q, int dx, int dy)
   return normal
          * expNegative(depthExponent(
              q.depth, {y.depth + x.depth, y.tolerance + x.tolerance}));
-}
-
-// Rec. 709 luminance: the denoiser compares and estimates noise in it.
-inline float luminance(float3 c)
-{
-  return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
 }
 
 } // namespace prism::denoising

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "../math/LocalFrame.h"
+#include "../math/Luminance.h"
 #include "../math/SphereSampling.h"
 #include "../math/Vec.h"
 
@@ -126,11 +127,5 @@ inline Vec3<T> sampleSphericalTriangle(
 // piecewise smooth f.
 double integrateOverSphere(const std::function<double(double theta)> &f,
     std::vector<double> breakpoints);
-
-// Rec. 709 luminance of linear RGB, to weigh colors by brightness.
-inline float luminance(float3 rgb)
-{
-  return 0.2126f * rgb.x + 0.7152f * rgb.y + 0.0722f * rgb.z;
-}
 
 } // namespace prism::light
