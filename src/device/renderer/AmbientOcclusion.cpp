@@ -26,6 +26,7 @@ void AmbientOcclusion::commitParameters()
   const int32_t samples = read<int32_t>("aoSamples", ANARI_INT32, 1);
   m_samples = uint32_t(std::clamp(samples, 1, 1024));
   m_distance = read<float>("aoDistance", ANARI_FLOAT32, 1e20f);
+  m_seed = uint32_t(read<int32_t>("seed", ANARI_INT32, 0));
   if (!(m_distance > 0.f)) {
     report(ANARI_SEVERITY_WARNING,
         ANARI_STATUS_INVALID_ARGUMENT,

@@ -133,6 +133,7 @@ void PathTracer::commitParameters()
       std::clamp(read<int32_t>("maxPathLength", ANARI_INT32, 8), 1, 1024);
   m_ambient = m_ambientColor * std::max(m_ambientRadiance, 0.f);
   m_volumeMajorantGrid = readBool("volumeMajorantGrid", true);
+  m_seed = uint32_t(read<int32_t>("seed", ANARI_INT32, 0));
 }
 
 void PathTracer::renderTile(const RenderContext &context,

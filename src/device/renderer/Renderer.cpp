@@ -29,7 +29,6 @@ void Renderer::commitParameters()
   m_ambientColor = read<float3>("ambientColor", ANARI_FLOAT32_VEC3, {1, 1, 1});
   m_ambientRadiance = read<float>("ambientRadiance", ANARI_FLOAT32, 0.f);
   m_denoise = readBool("denoise", false);
-  m_seed = uint32_t(read<int32_t>("seed", ANARI_INT32, 0));
   m_backgroundColor = {0, 0, 0, 1};
   m_backgroundImage.clear();
   m_backgroundWidth = m_backgroundHeight = 0;

@@ -128,7 +128,7 @@ class Renderer : public Object
       const PixelSample &sample);
 
   bool m_denoise{false};
-  uint32_t m_seed{0};
+  uint32_t m_seed{0}; // read by the renderers that declare `seed`
   float3 m_ambientColor{1, 1, 1};
   float m_ambientRadiance{0.f};
 
