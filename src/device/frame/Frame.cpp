@@ -234,6 +234,7 @@ void Frame::render()
       m_height,
       m_sampleIndex,
       m_sharing.omitBackground};
+  context.seed = m_renderer->seed();
   m_renderer->beginFrame(context);
   // Each tile is rendered, folded into the accumulation and converted to
   // the channels' types while it is still in cache.

@@ -2686,6 +2686,8 @@ constexpr int32_t kMaximum28_aoSamples[] = {1024};
 constexpr float kDefault28_aoDistance[] = {1e+20f};
 // aoDistance minimum: ANARI_FLOAT32
 constexpr float kMinimum28_aoDistance[] = {0.f};
+// seed default: ANARI_INT32
+constexpr int32_t kDefault28_seed[] = {0};
 // clang-format on
 constexpr ParameterEntry kParameters28[] = {
     {.name = "name",
@@ -2741,6 +2743,15 @@ constexpr ParameterEntry kParameters28[] = {
         .description = "how far occluders count",
         .defaultValue = kDefault28_aoDistance,
         .minimum = kMinimum28_aoDistance,
+        .extension = kPrismRenderers},
+    {.name = "seed",
+        .types = {kTypeList40, 1},
+        .description =
+            "which scrambling of the sample sequences (pixel positions, lens, "
+            "shutter times and every random decision): images of different "
+            "seeds are independent estimates of the same image; 0 gives the "
+            "sequences of earlier versions",
+        .defaultValue = kDefault28_seed,
         .extension = kPrismRenderers}};
 constexpr int kContributors28[] = {kKhrRendererAmbientLight,
     kKhrRendererBackgroundColor,
@@ -2858,6 +2869,8 @@ constexpr int32_t kMinimum30_maxPathLength[] = {1};
 constexpr int32_t kMaximum30_maxPathLength[] = {1024};
 // volumeMajorantGrid default: ANARI_BOOL
 alignas(4) constexpr int8_t kDefault30_volumeMajorantGrid[] = {1, 0, 0, 0};
+// seed default: ANARI_INT32
+constexpr int32_t kDefault30_seed[] = {0};
 // clang-format on
 constexpr ParameterEntry kParameters30[] = {
     {.name = "name",
@@ -2916,6 +2929,15 @@ constexpr ParameterEntry kParameters30[] = {
             "volume's extinction (false: against the largest everywhere; the "
             "same image, slower: for comparisons)",
         .defaultValue = kDefault30_volumeMajorantGrid,
+        .extension = kPrismRenderers},
+    {.name = "seed",
+        .types = {kTypeList40, 1},
+        .description =
+            "which scrambling of the sample sequences (pixel positions, lens, "
+            "shutter times and every random decision): images of different "
+            "seeds are independent estimates of the same image; 0 gives the "
+            "sequences of earlier versions",
+        .defaultValue = kDefault30_seed,
         .extension = kPrismRenderers}};
 constexpr PropertyEntry kProperties30[] = {
     {"raysTraced", ANARI_UINT64, false, kPrismRenderers}};
@@ -4092,7 +4114,7 @@ const ObjectEntry kObjects[] = {
                        "fraction of the hemisphere",
         .extension = kPrismRenderers,
         .contributors = {kContributors28, 4},
-        .parameters = {kParameters28, 9}},
+        .parameters = {kParameters28, 10}},
     // ANARI_RENDERER "debug"
     {.type = ANARI_RENDERER,
         .subtype = "debug",
@@ -4108,7 +4130,7 @@ const ObjectEntry kObjects[] = {
                        "path per pixel per frame",
         .extension = kPrismRenderers,
         .contributors = {kContributors30, 4},
-        .parameters = {kParameters30, 9},
+        .parameters = {kParameters30, 10},
         .properties = {kProperties30, 1}},
     // ANARI_RENDERER "raycast"
     {.type = ANARI_RENDERER,

@@ -56,9 +56,9 @@ class PlacedDisk : public PlacedLight
  public:
   PlacedDisk(
       float3 towardsLight, float capHeight, float3 radiance, float3 irradiance)
-      : m_frame(frameAround(towardsLight)),
+      : m_frame(LocalFrame::around(towardsLight)),
         m_capHeight(capHeight),
-        m_pdf(capPdf(capHeight)),
+        m_pdf(uniformCapPdf(capHeight)),
         m_radiance(radiance),
         m_irradiance(irradiance)
   {}
@@ -66,7 +66,7 @@ class PlacedDisk : public PlacedLight
   LightSample sample(const float3 &, const float2 &u) const override
   {
     const float3 direction =
-        normalize(m_frame.toWorld(sampleCap(u, m_capHeight)));
+        normalize(m_frame.toWorld(sampleUniformCap(u, m_capHeight)));
     return {direction, kInfinity, m_radiance, m_pdf, false};
   }
   float3 radianceAlong(const float3 &,
@@ -92,8 +92,8 @@ class PlacedDisk : public PlacedLight
   }
 
  private:
-  Frame m_frame;     // z towards the light
-  float m_capHeight; // 1 - cos(angularDiameter / 2)
+  LocalFrame m_frame; // z towards the light
+  float m_capHeight;  // 1 - cos(angularDiameter / 2)
   float m_pdf;
   float3 m_radiance; // W/sr/m^2, color included
   float3 m_irradiance;

@@ -32,7 +32,7 @@ class PlacedHdri : public PlacedLight
       float3 color)
       : m_image(std::move(image)), m_color(color)
   {
-    const Frame frame = frameAround(up, forward);
+    const LocalFrame frame = LocalFrame::around(up, forward);
     m_up = frame.z;
     m_forward = frame.x;
     m_right = cross(m_forward, m_up);

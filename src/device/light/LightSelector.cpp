@@ -1,5 +1,7 @@
 #include "LightSelector.h"
 
+#include "../math/Luminance.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -8,11 +10,6 @@ namespace {
 
 // The share of every choice made uniformly among the lights.
 constexpr float kUniformShare = 0.1f;
-
-float luminance(const float3 &c)
-{
-  return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
-}
 
 } // namespace
 

@@ -67,14 +67,15 @@ class PlacedSphere : public PlacedLight
     float distanceToCenter = 0.f;
     if (!cone(point, capHeight, distanceToCenter))
       return {};
-    const Frame frame = frameAround((m_center - point) / distanceToCenter);
-    const float3 local = sampleCap(u, capHeight);
+    const LocalFrame frame =
+        LocalFrame::around((m_center - point) / distanceToCenter);
+    const float3 local = sampleUniformCap(u, capHeight);
     const float3 direction = normalize(frame.toWorld(local));
     LightSample s;
     s.direction = direction;
     s.distance = entryDistance(point, direction);
     s.radiance = m_radiance;
-    s.pdf = capPdf(capHeight);
+    s.pdf = uniformCapPdf(capHeight);
     return s;
   }
   float3 radianceAlong(const float3 &point,
@@ -93,7 +94,7 @@ class PlacedSphere : public PlacedLight
     if (!insideCap(direction, axis, capHeight))
       return {0.f, 0.f, 0.f};
     distance = entryDistance(point, direction);
-    pdf = capPdf(capHeight);
+    pdf = uniformCapPdf(capHeight);
     return m_radiance;
   }
   float3 power() const override

@@ -42,7 +42,7 @@ class PlacedQuad : public PlacedLight
         m_normal(cross(edge1, edge2)),
         m_area(length(m_normal)),
         // The spec's front side is edge2 x edge1; C0 lies along edge1.
-        m_frame(frameAround(cross(edge2, edge1) / m_area, edge1)),
+        m_frame(LocalFrame::around(cross(edge2, edge1) / m_area, edge1)),
         m_emission(std::move(emission))
   {}
 
@@ -213,7 +213,7 @@ class PlacedQuad : public PlacedLight
   float3 m_edge1, m_edge2;
   float3 m_normal; // edge1 x edge2, unnormalised
   float m_area;
-  Frame m_frame; // z the front normal, x along edge1
+  LocalFrame m_frame; // z the front normal, x along edge1
   Emission m_emission;
 };
 

@@ -15,7 +15,7 @@ constexpr float kMinCosine = 1e-6f;
 // The angular part shared by the disk and its zero-radius limit.
 struct RingEmission
 {
-  Frame frame; // z the axis, x the C0 half-plane
+  LocalFrame frame; // z the axis, x the C0 half-plane
   ConeFalloff falloff;
   std::shared_ptr<const IntensityDistribution> distribution;
   float3 intensity; // along the axis, W/sr, color included
@@ -97,7 +97,7 @@ class PlacedRingDisk : public PlacedLight
     const float inner2 = m_innerRadius * m_innerRadius;
     const float r = std::sqrt(inner2 + u.x * (m_radius * m_radius - inner2));
     const float phi = 2.f * kPi * u.y;
-    const Frame &frame = m_emission.frame;
+    const LocalFrame &frame = m_emission.frame;
     const float3 onDisk =
         m_center + frame.toWorld({r * std::cos(phi), r * std::sin(phi), 0.f});
     const float3 offset = onDisk - point;
@@ -230,7 +230,7 @@ std::unique_ptr<PlacedLight> Ring::place(const mat3x4 &worldFromObject) const
     // Radiance over the disk's area; nothing for radius 0 (spec).
     intensity = m_brightness.value * area;
   }
-  RingEmission emission{frameAround(axis, c0),
+  RingEmission emission{LocalFrame::around(axis, c0),
       m_falloff,
       m_distribution,
       m_color * intensity,

@@ -1,45 +1,9 @@
 #include "Sampling.h"
 
-#include "math/Trig.h"
-
 #include <algorithm>
 #include <cmath>
 
 namespace prism::light {
-
-Frame frameAround(float3 z)
-{
-  // Two vectors orthogonal to z and to each other, from the identity
-  // x = (1 - s zx^2 / (1 + s zz), ...) with s the sign of z.z, which has no
-  // singularity for either hemisphere.
-  const float sign = std::copysign(1.f, z.z);
-  const float a = -1.f / (sign + z.z);
-  const float b = z.x * z.y * a;
-  return {{1.f + sign * z.x * z.x * a, sign * b, -sign * z.x},
-      {b, sign + z.y * z.y * a, -z.y},
-      z};
-}
-
-Frame frameAround(float3 z, float3 hint)
-{
-  const float3 x = hint - z * dot(hint, z);
-  const float length2 = lengthSquared(x);
-  if (!(length2 > 1e-12f * max(lengthSquared(hint), 1e-30f)))
-    return frameAround(z);
-  const float3 xUnit = x / std::sqrt(length2);
-  return {xUnit, cross(z, xUnit), z};
-}
-
-float3 sampleCap(float2 u, float capHeight)
-{
-  // cos(theta) is uniform in [1 - capHeight, 1]; sin^2 from the cap height
-  // keeps tiny cones (the sun) from rounding to a single direction.
-  const float h = u.x * capHeight;
-  const float cosTheta = 1.f - h;
-  const float sinTheta = std::sqrt(max(0.f, h * (2.f - h)));
-  const float2 cs = cosSinTurn(u.y);
-  return {cs.x * sinTheta, cs.y * sinTheta, cosTheta};
-}
 
 double integrateOverSphere(const std::function<double(double theta)> &f,
     std::vector<double> breakpoints)

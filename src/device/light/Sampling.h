@@ -1,8 +1,12 @@
-// Geometry and sampling helpers the lights share: orthonormal frames, cone
-// and spherical-triangle sampling, and quadrature over the sphere of
-// directions. Angles in radians, solid angles in steradians.
+// Geometry and sampling helpers only lights need: caps of cones,
+// spherical-triangle sampling and quadrature over the sphere of directions
+// (frames and the warps they share with BSDFs are math/LocalFrame.h and
+// math/SphereSampling.h). Angles in radians, solid angles in steradians.
 #pragma once
 
+#include "../math/LocalFrame.h"
+#include "../math/Luminance.h"
+#include "../math/SphereSampling.h"
 #include "../math/Vec.h"
 
 #include <algorithm>
@@ -15,28 +19,6 @@ namespace prism::light {
 
 inline constexpr float kPi = 3.14159265358979323846f;
 inline constexpr double kPiDouble = 3.14159265358979323846;
-
-// Three orthonormal axes, `z` given; world = x * l.x + y * l.y + z * l.z.
-struct Frame
-{
-  float3 x, y, z;
-
-  float3 toWorld(float3 local) const
-  {
-    return x * local.x + y * local.y + z * local.z;
-  }
-  float3 toLocal(float3 world) const
-  {
-    return {dot(world, x), dot(world, y), dot(world, z)};
-  }
-};
-
-// A frame around the unit `z`, continuous except where z.z changes sign
-// (the branch-free construction of Duff et al. 2017).
-Frame frameAround(float3 z);
-// A frame around the unit `z` whose x axis is `hint` made orthogonal to z;
-// frameAround(z) when the hint is (nearly) parallel to z.
-Frame frameAround(float3 z, float3 hint);
 
 // The unit direction `d` (object space) in world space; `d` itself when a
 // singular transform collapses it.
@@ -68,20 +50,11 @@ inline float oneMinusDot(float3 a, float3 b)
 
 // Whether the unit `direction` lies in the cone around the unit `axis` of
 // cap height 1 - cos(halfAngle); the slack of a few float roundings of the
-// cone's chord keeps sampleCap()'s own rim directions inside.
+// cone's chord keeps sampleUniformCap()'s own rim directions inside.
 inline bool insideCap(float3 direction, float3 axis, float capHeight)
 {
   return oneMinusDot(direction, axis)
          <= capHeight + 4e-7f * std::sqrt(capHeight);
-}
-
-// A direction uniform in the cone around +z of the cap with
-// 1 - cos(halfAngle) = `capHeight` (local coordinates).
-float3 sampleCap(float2 u, float capHeight);
-// Its pdf per steradian inside the cone.
-inline float capPdf(float capHeight)
-{
-  return 1.f / (2.f * kPi * capHeight);
 }
 
 // Spherical triangles, in float (quad lights' sampling) or double (tests'
@@ -154,11 +127,5 @@ inline Vec3<T> sampleSphericalTriangle(
 // piecewise smooth f.
 double integrateOverSphere(const std::function<double(double theta)> &f,
     std::vector<double> breakpoints);
-
-// Rec. 709 luminance of linear RGB, to weigh colors by brightness.
-inline float luminance(float3 rgb)
-{
-  return 0.2126f * rgb.x + 0.7152f * rgb.y + 0.0722f * rgb.z;
-}
 
 } // namespace prism::light

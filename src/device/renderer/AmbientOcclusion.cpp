@@ -1,5 +1,7 @@
 #include "AmbientOcclusion.h"
 
+#include "../math/LocalFrame.h"
+#include "../math/SphereSampling.h"
 #include "SampleHash.h"
 #include "SampleSequence.h"
 #include "VolumeTracing.h"
@@ -13,19 +15,6 @@
 namespace prism {
 namespace {
 
-// A cosine-distributed direction around `n` (Malley's method).
-float3 cosineDirection(const float3 &n, float2 u)
-{
-  const float radius = std::sqrt(u.x);
-  const float phi = 2.f * float(M_PI) * u.y;
-  const float3 helper =
-      std::abs(n.x) > 0.9f ? float3{0, 1, 0} : float3{1, 0, 0};
-  const float3 t = normalize(cross(helper, n));
-  const float3 b = cross(n, t);
-  const float z = std::sqrt(std::max(0.f, 1.f - u.x));
-  return t * (radius * std::cos(phi)) + b * (radius * std::sin(phi)) + n * z;
-}
-
 // Surfaces seen through at most this many see-through layers per pixel.
 constexpr uint16_t kMaxLayers = 64;
 
@@ -37,6 +26,7 @@ void AmbientOcclusion::commitParameters()
   const int32_t samples = read<int32_t>("aoSamples", ANARI_INT32, 1);
   m_samples = uint32_t(std::clamp(samples, 1, 1024));
   m_distance = read<float>("aoDistance", ANARI_FLOAT32, 1e20f);
+  m_seed = uint32_t(read<int32_t>("seed", ANARI_INT32, 0));
   if (!(m_distance > 0.f)) {
     report(ANARI_SEVERITY_WARNING,
         ANARI_STATUS_INVALID_ARGUMENT,
@@ -96,8 +86,9 @@ void AmbientOcclusion::renderTile(const RenderContext &context,
       // A volume before the hit absorbs the ray with the probability it
       // absorbs light (delta tracking): frames accumulate its emission.
       if (!context.world->volumes().empty()) {
-        HashedStream random(sequenceSeed(pixel.x, pixel.y, 40 + layers[i])
-                            ^ mixBits(context.sampleIndex));
+        HashedStream random(
+            sequenceSeed(pixel.x, pixel.y, 40 + layers[i], context.seed)
+            ^ mixBits(context.sampleIndex));
         VolumeCollision collision;
         if (trackCollision(*context.world,
                 ray.origin,
@@ -127,7 +118,7 @@ void AmbientOcclusion::renderTile(const RenderContext &context,
       const float coverage = surface.material().coverage(base.w);
       if (coverage < 1.f
           && sobolSample2D(context.sampleIndex,
-                 sequenceSeed(pixel.x, pixel.y, 4 + layers[i]))
+                 sequenceSeed(pixel.x, pixel.y, 4 + layers[i], context.seed))
                      .x
                  >= coverage) {
         if (++layers[i] < kMaxLayers) {
@@ -153,11 +144,13 @@ void AmbientOcclusion::renderTile(const RenderContext &context,
       const float3 origin =
           surface.position
           + surface.geometricNormal * (1e-4f * std::max(1.f, hit.t));
+      // Cosine-distributed directions around the shading normal.
+      const LocalFrame hemisphere = LocalFrame::around(surface.shadingNormal);
       for (uint32_t k = 0; k < m_samples; k++) {
         const float2 u = sobolSample2D(context.sampleIndex * m_samples + k,
-            sequenceSeed(pixel.x, pixel.y, 2));
+            sequenceSeed(pixel.x, pixel.y, 2, context.seed));
         occlusion.push(origin,
-            cosineDirection(surface.shadingNormal, u),
+            hemisphere.toWorld(sampleCosineHemisphere(u)),
             0.f,
             m_distance,
             ray.time,

@@ -133,6 +133,7 @@ void PathTracer::commitParameters()
       std::clamp(read<int32_t>("maxPathLength", ANARI_INT32, 8), 1, 1024);
   m_ambient = m_ambientColor * std::max(m_ambientRadiance, 0.f);
   m_volumeMajorantGrid = readBool("volumeMajorantGrid", true);
+  m_seed = uint32_t(read<int32_t>("seed", ANARI_INT32, 0));
 }
 
 void PathTracer::renderTile(const RenderContext &context,
@@ -160,7 +161,7 @@ void PathTracer::renderTile(const RenderContext &context,
       path = PathState{};
       path.x = tile.x0 + uint32_t(i % width);
       path.y = tile.y0 + uint32_t(i / width);
-      path.seed = sequenceSeed(path.x, path.y, 0);
+      path.seed = sequenceSeed(path.x, path.y, 0, context.seed);
       path.sampleIndex = context.sampleIndex;
       cameraRays[i] = cameraRay(context, path.x, path.y);
       path.time = cameraRays[i].time;
@@ -527,7 +528,7 @@ PathTracer::Scattering PathTracer::scatteringAt(
       shading.hasNormalMap ? normalMapped(
           surface, b.hit, unbent, shading.normalMap, towardsViewer)
                            : unbent;
-  const ShadingFrame frame = ShadingFrame::fromNormal(normal);
+  const LocalFrame frame = LocalFrame::around(normal);
   const Bsdf *bsdf = b.constantBsdf;
   if (!bsdf) {
     BsdfInputs inputs = shading.bsdf;
@@ -607,7 +608,7 @@ void PathTracer::scatter(Bounce &b,
   path.previousPdf = bs.pdf;
   path.previousDelta = bs.isDelta();
   path.ambientVisibility = b.shading->occlusion;
-  const float3 normal = scattering.frame.normal;
+  const float3 normal = scattering.frame.z;
   const float3 wi = normalize(scattering.frame.toWorld(bs.wi));
   // Crossing a volume boundary: entering it (against the unflipped
   // normal) enters its medium, leaving it returns to the one outside.

@@ -108,7 +108,7 @@ class PathTracer : public Renderer
   // direction towards the viewer and how far new rays start off.
   struct Scattering
   {
-    ShadingFrame frame;
+    LocalFrame frame;
     const Bsdf &bsdf;
     float3 wo;
     float offset;

@@ -31,7 +31,7 @@ void PrimaryRays::generate(uint32_t x0,
     const float height = float(m_context.height);
     if (sampleIndex == 0) {
       // Every pixel's first sample is at the same offset (its centre).
-      const float2 offset = pixelOffset(x0, y, 0);
+      const float2 offset = pixelOffset(x0, y, 0, m_context.seed);
       for (int i = 0; i < rt::kPacketSize; i++) {
         const uint32_t x = x0 + uint32_t(std::min(i, count - 1));
         sx[i] = (float(x) + offset.x) * invWidth;
@@ -41,11 +41,11 @@ void PrimaryRays::generate(uint32_t x0,
     } else {
       for (int i = 0; i < rt::kPacketSize; i++) {
         const uint32_t x = x0 + uint32_t(std::min(i, count - 1));
-        const float2 offset = pixelOffset(x, y, sampleIndex);
+        const float2 offset = pixelOffset(x, y, sampleIndex, m_context.seed);
         sx[i] = (float(x) + offset.x) * invWidth;
         sy[i] = (float(y) + offset.y) / height;
         time[i] = m_context.camera->rayTime(
-            {sx[i], sy[i]}, exposureSample(x, y, sampleIndex));
+            {sx[i], sy[i]}, exposureSample(x, y, sampleIndex, m_context.seed));
       }
     }
     const Camera::Pinhole p = m_pinhole; // a copy the stores cannot alias
@@ -67,15 +67,15 @@ void PrimaryRays::generate(uint32_t x0,
   }
   for (int i = 0; i < rt::kPacketSize; i++) {
     const uint32_t x = x0 + uint32_t(std::min(i, count - 1));
-    const float2 offset = pixelOffset(x, y, sampleIndex);
+    const float2 offset = pixelOffset(x, y, sampleIndex, m_context.seed);
     const float2 screen{(float(x) + offset.x) * m_invWidth,
         (float(y) + offset.y) / float(m_context.height)};
     // The lens point: its own stream, decorrelated from the pixel offset.
     const float2 lens = sampleIndex == 0 || !m_context.camera->hasDepthOfField()
                             ? float2{0.5f, 0.5f}
-                            : lensSample(x, y, sampleIndex);
-    const float rayTime =
-        m_context.camera->rayTime(screen, exposureSample(x, y, sampleIndex));
+                            : lensSample(x, y, sampleIndex, m_context.seed);
+    const float rayTime = m_context.camera->rayTime(
+        screen, exposureSample(x, y, sampleIndex, m_context.seed));
     const Ray ray = m_context.camera->generateRay(screen,
         lens,
         rayTime,

@@ -156,7 +156,7 @@ void Renderer::tracePrimary(const RenderContext &context,
 Ray Renderer::cameraRay(
     const RenderContext &context, uint32_t x, uint32_t y) const
 {
-  const float2 offset = pixelOffset(x, y, context.sampleIndex);
+  const float2 offset = pixelOffset(x, y, context.sampleIndex, context.seed);
   // Multiplying by the reciprocal, as the pinhole fast path does, keeps
   // both paths' rays identical.
   const float2 screen{(float(x) + offset.x) * (1.f / float(context.width)),
@@ -166,9 +166,9 @@ Ray Renderer::cameraRay(
   const float2 lens =
       context.sampleIndex == 0 || !context.camera->hasDepthOfField()
           ? float2{0.5f, 0.5f}
-          : lensSample(x, y, context.sampleIndex);
+          : lensSample(x, y, context.sampleIndex, context.seed);
   const float time = context.camera->rayTime(
-      screen, exposureSample(x, y, context.sampleIndex));
+      screen, exposureSample(x, y, context.sampleIndex, context.seed));
   return context.camera->generateRay(
       screen, lens, time, float(context.width) / float(context.height));
 }

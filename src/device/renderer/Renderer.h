@@ -37,6 +37,8 @@ struct RenderContext
   // the result (a background under each process's pixels would hide
   // everything behind its volumes and see-through surfaces).
   bool transparentBackground{false};
+  // The renderer's `seed`: which scrambling of the sample sequences.
+  uint32_t seed{0};
 };
 
 class Renderer : public Object
@@ -57,6 +59,11 @@ class Renderer : public Object
   bool denoise() const
   {
     return m_denoise;
+  }
+  // Chooses independent sample sequences (RenderContext::seed).
+  uint32_t seed() const
+  {
+    return m_seed;
   }
 
   // The background seen at pixel (x, y) of a width x height frame.
@@ -128,6 +135,7 @@ class Renderer : public Object
 
   bool m_denoise{false};
   uint32_t m_sampleLimit{0};
+  uint32_t m_seed{0}; // read by the renderers that declare `seed`
   float3 m_ambientColor{1, 1, 1};
   float m_ambientRadiance{0.f};
 

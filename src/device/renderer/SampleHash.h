@@ -52,8 +52,10 @@ inline float2 hashedSample2D(
 // Where in its exposure sample n of pixel (x, y) falls, in [0, 1): the
 // middle for the first sample, then a van der Corput sequence rotated per
 // pixel, so n samples cover the exposure evenly (error ~1/n, not
-// ~1/sqrt(n), for motion blur) without pixels sharing times.
-inline float exposureSample(uint32_t x, uint32_t y, uint32_t sample)
+// ~1/sqrt(n), for motion blur) without pixels sharing times; the
+// renderer's seed chooses the rotations.
+inline float exposureSample(
+    uint32_t x, uint32_t y, uint32_t sample, uint32_t rendererSeed)
 {
   if (sample == 0)
     return 0.5f;
@@ -64,7 +66,7 @@ inline float exposureSample(uint32_t x, uint32_t y, uint32_t sample)
   bits = ((bits & 0x33333333u) << 2) | ((bits & 0xccccccccu) >> 2);
   bits = ((bits & 0x55555555u) << 1) | ((bits & 0xaaaaaaaau) >> 1);
   const float radicalInverse = float(bits >> 8) * (1.f / 16777216.f);
-  const float rotation = hashedSample2D(x, y, 0, 3).x;
+  const float rotation = hashedSample2D(x, y, rendererSeed, 3).x;
   const float u = radicalInverse + rotation;
   return u >= 1.f ? u - 1.f : u;
 }

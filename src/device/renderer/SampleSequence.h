@@ -101,28 +101,37 @@ inline float sobolSampleY(uint32_t index, uint32_t seed)
   return float(y >> 8) * (1.f / 16777216.f);
 }
 
-// The seed of decision `dimension` of pixel (x, y): the same for every
-// sample of the pixel, so its samples form one scrambled sequence.
-inline uint32_t sequenceSeed(uint32_t x, uint32_t y, uint32_t dimension)
+// The seed of decision `dimension` of pixel (x, y) in the sequences the
+// renderer's `seed` chooses: the same for every sample of the pixel, so
+// its samples form one scrambled sequence. Another renderer seed scrambles
+// every sequence independently; 0 keeps the ones images were always made
+// with.
+inline uint32_t sequenceSeed(
+    uint32_t x, uint32_t y, uint32_t dimension, uint32_t rendererSeed)
 {
-  return mixBits(
-      x * 0x9e3779b9u ^ mixBits(y ^ mixBits(dimension + 0x632be5abu)));
+  uint32_t decision = mixBits(dimension + 0x632be5abu);
+  if (rendererSeed != 0)
+    decision = mixBits(decision ^ mixBits(rendererSeed ^ 0x5bd1e995u));
+  return mixBits(x * 0x9e3779b9u ^ mixBits(y ^ decision));
 }
 
 // Where in pixel (x, y) sample `sample` looks, in [0,1)^2: the pixel centre
 // for the first sample so single-sample images stay exact, then the
 // pixel's sequence.
-inline float2 pixelOffset(uint32_t x, uint32_t y, uint32_t sample)
+inline float2 pixelOffset(
+    uint32_t x, uint32_t y, uint32_t sample, uint32_t rendererSeed)
 {
   return sample == 0 ? float2{0.5f, 0.5f}
-                     : sobolSample2D(sample, sequenceSeed(x, y, 0xffff0000u));
+                     : sobolSample2D(
+                         sample, sequenceSeed(x, y, 0xffff0000u, rendererSeed));
 }
 
 // The point on the lens (depth of field) sample `sample` of pixel (x, y)
 // passes through, in [0,1)^2.
-inline float2 lensSample(uint32_t x, uint32_t y, uint32_t sample)
+inline float2 lensSample(
+    uint32_t x, uint32_t y, uint32_t sample, uint32_t rendererSeed)
 {
-  return sobolSample2D(sample, sequenceSeed(x, y, 0xffff0001u));
+  return sobolSample2D(sample, sequenceSeed(x, y, 0xffff0001u, rendererSeed));
 }
 
 } // namespace prism

@@ -84,7 +84,7 @@ double pdfIntegral(const PlacedLight &light,
     float capHeight,
     int n = 1000)
 {
-  const light::Frame frame = light::frameAround(axis);
+  const LocalFrame frame = LocalFrame::around(axis);
   double sum = 0.0;
   for (int i = 0; i < n; i++) {
     // sin from the cap height keeps tiny cones resolved in float.

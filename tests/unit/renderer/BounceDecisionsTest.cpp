@@ -21,7 +21,7 @@ TEST(BounceDecisions, BatchesEqualEachPathDrawingAlone)
   rt::RayQueue rays;
   for (size_t i = 0; i < paths.size(); i++) {
     PathState &path = paths[i];
-    path.seed = sequenceSeed(uint32_t(i), uint32_t(3 * i), 0);
+    path.seed = sequenceSeed(uint32_t(i), uint32_t(3 * i), 0, 0);
     path.sampleIndex = uint32_t(i * i);
     path.bounce = uint16_t(i % 9);
   }

@@ -66,7 +66,8 @@ TEST(SampleSequence, SecondDimensionFollowsItsDirectionNumbers)
 TEST(SampleSequence, EveryPowerOfTwoPrefixIsStratified)
 {
   for (uint32_t pixel = 0; pixel < 32; pixel++) {
-    const uint32_t seed = sequenceSeed(pixel, 7 * pixel + 3, pixel % 5);
+    const uint32_t seed =
+        sequenceSeed(pixel, 7 * pixel + 3, pixel % 5, pixel % 3);
     for (int k = 0; k <= 10; k++)
       EXPECT_TRUE(isNet(seed, k)) << "seed " << seed << ", 2^" << k;
   }
@@ -74,13 +75,16 @@ TEST(SampleSequence, EveryPowerOfTwoPrefixIsStratified)
 
 TEST(SampleSequence, ScramblingDecorrelatesSeeds)
 {
-  // Same sample index, neighbouring pixels or dimensions: the points are
+  // Same sample index, neighbouring pixels, dimensions or renderer seeds:
+  // the points are
   // independent (their correlation over many indices is near zero), unlike
   // an unscrambled sequence where they would be equal.
   const int n = 4096;
   for (const auto &[a, b] :
-      {std::pair{sequenceSeed(10, 10, 0), sequenceSeed(11, 10, 0)},
-          std::pair{sequenceSeed(10, 10, 0), sequenceSeed(10, 10, 1)}}) {
+      {std::pair{sequenceSeed(10, 10, 0, 0), sequenceSeed(11, 10, 0, 0)},
+          std::pair{sequenceSeed(10, 10, 0, 0), sequenceSeed(10, 10, 1, 0)},
+          std::pair{sequenceSeed(10, 10, 0, 0), sequenceSeed(10, 10, 0, 1)},
+          std::pair{sequenceSeed(10, 10, 0, 1), sequenceSeed(10, 10, 0, 2)}}) {
     double sa = 0, sb = 0, sab = 0, saa = 0, sbb = 0;
     for (int i = 0; i < n; i++) {
       const double x = sobolSample2D(uint32_t(i), a).x;
@@ -95,14 +99,34 @@ TEST(SampleSequence, ScramblingDecorrelatesSeeds)
   }
 }
 
+TEST(SampleSequence, RendererSeedZeroKeepsTheSequences)
+{
+  // Seed 0 is the hash every image was made with before renderers had a
+  // seed: references stay valid. Other seeds give other sequences, no
+  // seed those of another decision (the ones a pixel offset draws).
+  for (uint32_t pixel = 0; pixel < 64; pixel++) {
+    const uint32_t x = pixel, y = 3 * pixel + 1, dimension = pixel % 7;
+    EXPECT_EQ(sequenceSeed(x, y, dimension, 0),
+        mixBits(
+            x * 0x9e3779b9u ^ mixBits(y ^ mixBits(dimension + 0x632be5abu))));
+    for (uint32_t seed = 1; seed < 8; seed++) {
+      EXPECT_NE(sequenceSeed(x, y, dimension, seed),
+          sequenceSeed(x, y, dimension, 0));
+      for (uint32_t other = 0; other < 8; other++)
+        EXPECT_NE(
+            sequenceSeed(x, y, dimension, seed), sequenceSeed(x, y, other, 0));
+    }
+  }
+}
+
 TEST(SampleSequence, ShuffledPrefixesDifferAcrossSeeds)
 {
   // Each pixel visits the sequence in its own order: the first sample of
   // two pixels is not the same point.
   int same = 0;
   for (uint32_t pixel = 0; pixel < 256; pixel++) {
-    const float2 a = sobolSample2D(0, sequenceSeed(pixel, 0, 0));
-    const float2 b = sobolSample2D(0, sequenceSeed(pixel + 1, 0, 0));
+    const float2 a = sobolSample2D(0, sequenceSeed(pixel, 0, 0, 0));
+    const float2 b = sobolSample2D(0, sequenceSeed(pixel + 1, 0, 0, 0));
     same += a == b;
   }
   EXPECT_EQ(same, 0);
@@ -115,7 +139,7 @@ TEST(SampleSequence, PointsAreUniform)
   std::vector<int> cells(256, 0);
   for (uint32_t pixel = 0; pixel < 256; pixel++)
     for (uint32_t i = 0; i < 256; i++) {
-      const float2 p = sobolSample2D(i, sequenceSeed(pixel, 1, 2));
+      const float2 p = sobolSample2D(i, sequenceSeed(pixel, 1, 2, 0));
       cells[uint32_t(p.y * 16) * 16 + uint32_t(p.x * 16)]++;
     }
   double chi2 = 0;

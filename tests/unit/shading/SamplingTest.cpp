@@ -1,6 +1,6 @@
-// Warps, MIS heuristics, the orthonormal basis and GGX visible normals:
-// each warp lands where it should with the density it claims (chi-square at
-// significance 0.001, quadrature to 0.5%).
+// MIS heuristics and GGX visible normals: the warp lands where it should
+// with the density it claims (quadrature to 0.5%); the warps and frames
+// shading shares with lights are tested in tests/unit/math.
 #include "shading/Microfacet.h"
 #include "shading/Sampling.h"
 
@@ -17,84 +17,7 @@ namespace {
 
 constexpr float kPi = std::numbers::pi_v<float>;
 
-float2 uniform2(uint32_t i)
-{
-  return RandomSequence({i, 0}, 0, 0).get2D(0);
-}
-
 } // namespace
-
-TEST(Sampling, ConcentricDiskIsUniformOnTheDisk)
-{
-  constexpr int kCount = 100000, kBins = 20;
-  std::vector<double> radial(kBins, 0.0), angular(kBins, 0.0);
-  for (int i = 0; i < kCount; i++) {
-    const float2 p = sampleConcentricDisk(uniform2(i));
-    const float r2 = p.x * p.x + p.y * p.y;
-    ASSERT_LE(r2, 1.f + 1e-6f);
-    // Uniform area: r^2 and the angle are uniform.
-    radial[min(int(r2 * kBins), kBins - 1)] += 1.0;
-    const float angle = std::atan2(p.y, p.x) + kPi;
-    angular[min(int(angle / (2.f * kPi) * kBins), kBins - 1)] += 1.0;
-  }
-  const std::vector<double> expected(kBins, double(kCount) / kBins);
-  EXPECT_TRUE(test::passesChiSquare(radial, expected));
-  EXPECT_TRUE(test::passesChiSquare(angular, expected));
-  EXPECT_EQ(sampleConcentricDisk({0.5f, 0.5f}), (float2{0.f, 0.f}));
-}
-
-TEST(Sampling, CosineHemisphere)
-{
-  constexpr int kCount = 100000, kBins = 20;
-  std::vector<double> counts(kBins, 0.0);
-  double meanZ = 0.0;
-  for (int i = 0; i < kCount; i++) {
-    const float3 w = sampleCosineHemisphere(uniform2(i));
-    ASSERT_NEAR(length(w), 1.f, 1e-5f);
-    ASSERT_GE(w.z, 0.f);
-    meanZ += w.z;
-    // Under a cosine density z^2 is uniform on [0, 1].
-    counts[min(int(w.z * w.z * kBins), kBins - 1)] += 1.0;
-  }
-  const std::vector<double> expected(kBins, double(kCount) / kBins);
-  EXPECT_TRUE(test::passesChiSquare(counts, expected));
-  EXPECT_NEAR(meanZ / kCount, 2.0 / 3.0, 3e-3);
-  EXPECT_FLOAT_EQ(cosineHemispherePdf(1.f), 1.f / kPi);
-  EXPECT_EQ(cosineHemispherePdf(-0.5f), 0.f);
-}
-
-TEST(Sampling, UniformSphereHemisphereAndCone)
-{
-  constexpr int kCount = 50000;
-  double sphereZ = 0.0, hemisphereZ = 0.0, coneZ = 0.0, tinyConeZ = 0.0;
-  const float cosMax = 0.8f, tinyCosMax = 0.99999f;
-  for (int i = 0; i < kCount; i++) {
-    const float2 u = uniform2(i);
-    const float3 s = sampleUniformSphere(u);
-    const float3 h = sampleUniformHemisphere(u);
-    const float3 c = sampleUniformCone(u, cosMax);
-    const float3 t = sampleUniformCone(u, tinyCosMax);
-    ASSERT_NEAR(length(s), 1.f, 1e-5f);
-    ASSERT_NEAR(length(c), 1.f, 1e-5f);
-    ASSERT_NEAR(length(t), 1.f, 1e-5f);
-    ASSERT_GE(h.z, 0.f);
-    ASSERT_GE(c.z, cosMax - 1e-6f);
-    ASSERT_GE(t.z, tinyCosMax - 1e-6f);
-    sphereZ += s.z;
-    hemisphereZ += h.z;
-    coneZ += c.z;
-    tinyConeZ += std::sqrt(t.x * t.x + t.y * t.y);
-  }
-  // z is uniform on each domain; in the tiny cone sin(theta) ~ sqrt(u) * max.
-  EXPECT_NEAR(sphereZ / kCount, 0.0, 1e-2);
-  EXPECT_NEAR(hemisphereZ / kCount, 0.5, 5e-3);
-  EXPECT_NEAR(coneZ / kCount, 0.5 * (1.0 + cosMax), 1e-3);
-  const double sinMax = std::sqrt(1.0 - double(tinyCosMax) * tinyCosMax);
-  EXPECT_NEAR(tinyConeZ / kCount / sinMax, 2.0 / 3.0, 1e-2);
-  EXPECT_FLOAT_EQ(uniformSpherePdf(), 0.25f / kPi);
-  EXPECT_FLOAT_EQ(uniformHemispherePdf(), 0.5f / kPi);
-  EXPECT_FLOAT_EQ(uniformConePdf(cosMax), 1.f / (2.f * kPi * 0.2f));
-}
 
 TEST(Sampling, MisHeuristics)
 {
@@ -110,41 +33,6 @@ TEST(Sampling, MisHeuristics)
   EXPECT_EQ(balanceHeuristic(1, 0.f, 1, 0.f), 0.f);
   // Huge pdfs must not overflow when squared.
   EXPECT_FLOAT_EQ(powerHeuristic(1, 1e30f, 1, 1e30f), 0.5f);
-}
-
-TEST(Sampling, OrthonormalBasis)
-{
-  std::vector<float3> normals = {{0, 0, 1},
-      {0, 0, -1},
-      {1, 0, 0},
-      {0, -1, 0},
-      normalize(float3{1e-8f, 0, -1})};
-  for (int i = 0; i < 2000; i++)
-    normals.push_back(sampleUniformSphere(uniform2(i)));
-  for (const float3 n : normals) {
-    float3 b1, b2;
-    orthonormalBasis(n, b1, b2);
-    ASSERT_NEAR(length(b1), 1.f, 1e-5f);
-    ASSERT_NEAR(length(b2), 1.f, 1e-5f);
-    ASSERT_NEAR(dot(b1, n), 0.f, 1e-5f);
-    ASSERT_NEAR(dot(b2, n), 0.f, 1e-5f);
-    ASSERT_NEAR(dot(b1, b2), 0.f, 1e-5f);
-    // Right-handed: b1 x b2 = n.
-    ASSERT_NEAR(length(cross(b1, b2) - n), 0.f, 1e-5f);
-
-    const ShadingFrame frame = ShadingFrame::fromNormal(n);
-    const float3 v = normalize(float3{0.3f, -0.5f, 0.8f});
-    ASSERT_NEAR(length(frame.toWorld(frame.toLocal(v)) - v), 0.f, 1e-5f);
-    ASSERT_NEAR(frame.toLocal(n).z, 1.f, 1e-5f);
-  }
-  const ShadingFrame frame =
-      ShadingFrame::fromNormalTangent({0, 0, 1}, {2, 0, 0.5f});
-  EXPECT_NEAR(length(frame.tangent - float3{1, 0, 0}), 0.f, 1e-6f);
-  EXPECT_NEAR(length(frame.bitangent - float3{0, 1, 0}), 0.f, 1e-6f);
-  // A tangent along the normal falls back to any basis.
-  const ShadingFrame fallback =
-      ShadingFrame::fromNormalTangent({0, 0, 1}, {0, 0, 3});
-  EXPECT_NEAR(dot(fallback.tangent, fallback.normal), 0.f, 1e-6f);
 }
 
 namespace {

@@ -31,6 +31,12 @@ class RandomSequence
   uint32_t m_set;
 };
 
+// The i-th of a set of independent uniform points on the unit square.
+inline float2 uniform2(uint32_t i)
+{
+  return RandomSequence({i, 0}, 0, 0).get2D(0);
+}
+
 } // namespace prism
 
 namespace prism::test {
