@@ -15,7 +15,7 @@ Parameter.__doc__ = ("A parameter a subtype declares: its name, the type names i
 
 
 def _decode(raw, type_):
-    if raw is None or isinstance(raw, str):
+    if raw is None or isinstance(raw, (str, bool, list)):
         return raw
     dtype = T.scalar_dtype(type_)
     if dtype is None:

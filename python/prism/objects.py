@@ -45,8 +45,16 @@ class Object:
             self._set_inferred(name, args[0])
         else:
             raise TypeError("setParameter(name, [type,] value)")
-        self._values[name] = args[-1]
+        self._remember(name, args[-1])
         return self
+
+    def _remember(self, name, value):
+        # For reading parameters back; an ndarray is not kept here, so it
+        # lives only as long as the device holds it.
+        if isinstance(value, np.ndarray):
+            self._values.pop(name, None)
+        else:
+            self._values[name] = value
 
     def set(self, **parameters):
         """Set several parameters by keyword: obj.set(radius=0.5)."""
@@ -73,7 +81,7 @@ class Object:
                              f"setParameterArray1D needs one dimension of "
                              f"elements, got shape {np.shape(values)}")
         self._native.setObject(name, T.ARRAY1D, array._native)
-        self._values[name] = values
+        self._remember(name, values)
         return self
 
     def getProperty(self, name, type_, wait=True):
@@ -159,7 +167,7 @@ class Object:
         elif type_ == T.BOOL:
             if not isinstance(value, (bool, np.bool_, numbers.Integral)):
                 raise TypeError(f"{where}: BOOL needs a bool, not {_describe_value(value)}")
-            self._native.setBytes(name, type_, np.array([1 if value else 0], np.int32))
+            self._native.setBytes(name, type_, np.array([1 if value else 0], np.uint8))
         else:
             self._native.setBytes(name, type_, _scalars(value, type_, where))
 
@@ -219,6 +227,13 @@ def _choose_type(value, declared):
         return None
     if isinstance(value, (bool, np.bool_)):
         return T.BOOL if (T.BOOL in declared or not declared) else None
+    if isinstance(value, np.ndarray) and value.ndim <= 2 and value.size <= 16:
+        # A small ndarray where a vector or matrix of its size is taken is
+        # that value (a 4x4 ndarray is a FLOAT32_MAT4), not an array.
+        vectors = [t for t in declared if T.scalar_dtype(t) is not None
+                   and T.COMPONENTS.get(t) == value.size]
+        if vectors:
+            return _choose_type(tuple(value.reshape(-1).tolist()), vectors)
     if _is_array_like(value):
         arrays = [t for t in declared if T.is_array(t)]
         if arrays or not declared:
@@ -261,7 +276,7 @@ def _decode_property(raw, type_):
     if raw is None or isinstance(raw, (str, list)):
         return raw
     if type_ == T.BOOL:
-        return bool(np.frombuffer(raw, np.int32)[0])
+        return bool(np.frombuffer(raw, np.uint8)[0])
     dtype = T.scalar_dtype(type_)
     values = np.frombuffer(raw, dtype).copy()
     return values[0].item() if values.size == 1 else values
@@ -276,7 +291,19 @@ class Array(Object):
 
     @property
     def shape(self):
+        """Elements per dimension, ANARI's order (first varies fastest)."""
         return tuple(self._native.shape)
+
+    def contents(self):
+        """A copy of the elements as the device holds them, as an ndarray
+        shaped like the one the array was made from."""
+        raw = self._native.contents()
+        dtype = T.scalar_dtype(self.elementType)
+        if dtype is None:  # objects: handles
+            return raw.view(np.uint64)
+        components = T.COMPONENTS[self.elementType]
+        shape = tuple(reversed(self.shape)) + ((components,) if components > 1 else ())
+        return raw.view(dtype).reshape(shape)
 
 
 def array_layout(elementType, data):

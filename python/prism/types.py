@@ -45,7 +45,7 @@ _SCALARS = {
     "FLOAT32": np.float32, "FLOAT64": np.float64, "FIXED8": np.int8,
     "UFIXED8": np.uint8, "FIXED16": np.int16, "UFIXED16": np.uint16,
     "FIXED32": np.int32, "UFIXED32": np.uint32, "FIXED64": np.int64,
-    "UFIXED64": np.uint64, "BOOL": np.int32, "DATA_TYPE": np.int32,
+    "UFIXED64": np.uint64, "BOOL": np.uint8, "DATA_TYPE": np.int32,
 }
 _DTYPE_NAMES = {np.dtype(v): k for k, v in reversed(list(_SCALARS.items()))
                 if not k.startswith(("FIXED", "UFIXED", "BOOL", "DATA"))}

@@ -137,6 +137,29 @@ std::shared_ptr<Array> newObjectArray(
       device.device(), handle, elementType, std::vector<uint64_t>{count});
 }
 
+// The array's elements as the device holds them (mapped, copied, unmapped),
+// as a uint8 ndarray.
+py::array_t<uint8_t> contents(Array &array)
+{
+  std::vector<unsigned char> bytes;
+  array.withHandle("contents", [&](ANARIDevice d, ANARIObject h) {
+    const auto handle = static_cast<ANARIArray>(h);
+    const void *memory = anariMapArray(d, handle);
+    uint64_t count = 1;
+    for (uint64_t n : array.shape())
+      count *= n;
+    if (memory) {
+      const auto *begin = static_cast<const unsigned char *>(memory);
+      bytes.assign(begin, begin + count * anari::sizeOf(array.elementType()));
+    }
+    anariUnmapArray(d, handle);
+  });
+  py::array_t<uint8_t> out(py::ssize_t(bytes.size()));
+  if (!bytes.empty())
+    std::memcpy(out.mutable_data(), bytes.data(), bytes.size());
+  return out;
+}
+
 } // namespace
 
 Array::Array(std::shared_ptr<DeviceState> device,
@@ -158,7 +181,8 @@ void bindArrays(py::module_ &m)
   py::class_<Array, Object, std::shared_ptr<Array>>(m, "Array")
       .def_property_readonly(
           "elementType", [](const Array &a) { return int(a.elementType()); })
-      .def_property_readonly("shape", &Array::shape);
+      .def_property_readonly("shape", &Array::shape)
+      .def("contents", &contents);
   m.def("newSharedArray",
       [](Device &device,
           int type,

@@ -94,7 +94,7 @@ py::object parameterInfo(Device &device,
   if (infoType == ANARI_STRING)
     return py::str(static_cast<const char *>(info));
   if (infoType == ANARI_BOOL)
-    return py::bool_(*static_cast<const int32_t *>(info) != 0);
+    return py::bool_(*static_cast<const uint8_t *>(info) != 0); // one byte
   if (infoType == ANARI_STRING_LIST)
     return strings(static_cast<const char *const *>(info));
   if (infoType == ANARI_DATA_TYPE_LIST) {
