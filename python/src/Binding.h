@@ -59,7 +59,7 @@ class Object
 
   ANARIObject handle() const
   {
-    return m_handle;
+    return m_handle.load();
   }
   ANARIDataType category() const
   {
@@ -75,7 +75,7 @@ class Object
   }
   bool isReleased() const
   {
-    return m_handle == nullptr;
+    return m_handle.load() == nullptr;
   }
   // "the perspective camera" / "the world", for messages.
   std::string describe() const;
@@ -97,7 +97,9 @@ class Object
 
  private:
   std::shared_ptr<DeviceState> m_device;
-  ANARIObject m_handle{nullptr};
+  // NOTE: atomic: release() on one Python thread may race a call on another
+  // (the device then reports the stale handle; nothing is released twice).
+  std::atomic<ANARIObject> m_handle{nullptr};
   ANARIDataType m_category{ANARI_UNKNOWN};
   std::string m_subtype;
 };
@@ -198,10 +200,11 @@ auto Object::withHandle(const char *what, Call &&call)
     if (device->released)
       throw ReleasedError("the device of " + describe() + " was released; "
                           + what + " needs a live device");
-    if (!m_handle)
+    ANARIObject handle = m_handle.load();
+    if (!handle)
       throw ReleasedError(
           describe() + " was released; " + what + " needs a live object");
-    return call(device->handle, m_handle);
+    return call(device->handle, handle);
   };
   beginCall();
   if constexpr (std::is_void_v<decltype(guarded())>) {

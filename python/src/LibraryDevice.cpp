@@ -153,7 +153,10 @@ std::string libraryDirectory()
   if (!dladdr(reinterpret_cast<void *>(&anariLoadLibrary), &info)
       || !info.dli_fname)
     return "";
-  return std::filesystem::path(info.dli_fname).parent_path().string();
+  std::error_code ignored;
+  return std::filesystem::weakly_canonical(info.dli_fname, ignored)
+      .parent_path()
+      .string();
 }
 
 } // namespace

@@ -23,12 +23,13 @@ Object::Object(std::shared_ptr<DeviceState> device,
 Object::~Object()
 {
   // The device's own handle belongs to DeviceState.
-  if (!m_handle || m_category == ANARI_DEVICE)
+  ANARIObject handle = m_handle.exchange(nullptr);
+  if (!handle || m_category == ANARI_DEVICE)
     return;
   withoutGil([&] {
     std::shared_lock lock(m_device->lock);
     if (!m_device->released)
-      anariRelease(m_device->handle, m_handle);
+      anariRelease(m_device->handle, handle);
   });
 }
 
@@ -121,11 +122,11 @@ void Object::commit()
 
 void Object::release()
 {
-  if (!m_handle)
+  if (!m_handle.load())
     return;
-  withHandle("release", [&](ANARIDevice d, ANARIObject h) {
-    anariRelease(d, h);
-    m_handle = nullptr;
+  withHandle("release", [&](ANARIDevice d, ANARIObject) {
+    if (ANARIObject handle = m_handle.exchange(nullptr))
+      anariRelease(d, handle);
   });
 }
 
