@@ -178,6 +178,19 @@ class Device(Object):
             self._declared[key] = table
         return table.get(name, [])
 
+    def _element_types(self, category, subtype, name):
+        """The element types the device declares for array parameter `name`."""
+        key = (category, subtype, name)
+        types = self._declared.get(key)
+        if types is None:
+            types = []
+            for declared in self._declared_types(category, subtype, name):
+                if _types.is_array(declared):
+                    types += _native.parameterInfo(self._native, category, subtype, name,
+                                                   declared, "elementType") or []
+            self._declared[key] = types
+        return types
+
     def _class_for(self, category, subtype, base):
         """A class per subtype whose docstring lists its parameters, so
         help(obj) shows them."""

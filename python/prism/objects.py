@@ -121,6 +121,16 @@ class Object:
 
     # Conversion --------------------------------------------------------------
 
+    def _new_array_for(self, name, value):
+        """An array for parameter `name` from an ndarray or list, of the
+        element type the device declares for it that fits the data best."""
+        if isinstance(value, (list, tuple)) and value and all(
+                isinstance(v, Object) for v in value):
+            return self._device.newArray(None, value)
+        given = value if isinstance(value, np.ndarray) else np.asarray(value)
+        allowed = self._device._element_types(self.category, self.subtype, name)
+        return self._device.newArray(_best_element_type(given, allowed), value)
+
     def _declared_types(self, name):
         return self._device._declared_types(self.category, self.subtype, name)
 
@@ -152,8 +162,8 @@ class Object:
                 type_ = value.category
             self._native.setObject(name, type_, value._native)
         elif T.is_object(type_):
-            if T.is_array(type_) and _is_array_like(value):
-                array = self._device.newArray(None, value)
+            if T.is_array(type_) and (_is_array_like(value) or _is_number_list(value)):
+                array = self._new_array_for(name, value)
                 self._native.setObject(name, array.category, array._native)
             else:
                 raise TypeError(f"{where}: {T.name_of(type_)} needs a prism "
@@ -170,6 +180,15 @@ class Object:
             self._native.setBytes(name, type_, np.array([1 if value else 0], np.uint8))
         else:
             self._native.setBytes(name, type_, _scalars(value, type_, where))
+
+
+def _is_number_list(value):
+    if not isinstance(value, (list, tuple)) or not value:
+        return False
+    try:
+        return np.asarray(value).dtype.kind in "biuf"
+    except (ValueError, TypeError):
+        return False
 
 
 def _is_array_like(value):
@@ -262,6 +281,8 @@ def _choose_type(value, declared):
             if (T.scalar_dtype(t).kind == "f") == (given.dtype.kind == "f"):
                 return t
         return fitting[0]
+    if _is_number_list(value) and any(T.is_array(t) for t in declared):
+        return T.ARRAY1D  # numbers for an array parameter: an array of them
     if declared:
         return None
     if count == 16:
@@ -306,6 +327,28 @@ class Array(Object):
         return raw.view(dtype).reshape(shape)
 
 
+def _best_element_type(given, allowed):
+    """Of the `allowed` element types, the one `given` fits best: its own
+    type, else the same scalar (uint8 -> UFIXED8), else the same kind
+    (float64 -> FLOAT32), else one it converts to; None: infer."""
+    if not allowed or given.dtype.kind not in "biuf":
+        return None
+    components = given.shape[-1] if given.ndim >= 2 and given.shape[-1] in (2, 3, 4) else 1
+    candidates = [t for t in allowed if T.COMPONENTS.get(t) == components
+                  and T.scalar_dtype(t) is not None
+                  and not T.name_of(t).endswith("_SRGB")]
+    own = T.element_type_for(given.dtype, components)
+    if own in candidates:
+        return own
+    for same in (lambda d: d == given.dtype,
+                 lambda d: d.kind == given.dtype.kind,
+                 lambda d: np.can_cast(given.dtype, d, "same_kind")):
+        for t in candidates:
+            if same(T.scalar_dtype(t)):
+                return t
+    return None
+
+
 def array_layout(elementType, data):
     """(element type, ndarray to share, ANARI sizes) for `data`, converting
     (copying) it only where it cannot be shared as it is."""
@@ -347,10 +390,14 @@ def array_layout(elementType, data):
             if given.min() < info.min or given.max() > info.max:
                 raise ValueError(f"values of {given.dtype} beyond the range of "
                                  f"{T.name_of(elementType)}")
-        logger.debug("array converted from %s to %s (a copy)", given.dtype, target)
+        if isinstance(data, np.ndarray):
+            logger.warning("performance: an ndarray of %s copied to %s for an "
+                           "array of %s (give %s to share it)", given.dtype, target,
+                           T.name_of(elementType), target)
         given = given.astype(target)
     if not (given.flags.c_contiguous and given.flags.aligned):
-        logger.debug("array copied to make it contiguous")
+        logger.warning("performance: a non-contiguous ndarray copied for an array "
+                       "of %s (np.ascontiguousarray shares it)", T.name_of(elementType))
         given = np.ascontiguousarray(given)
     # numpy's last axis varies fastest; ANARI's first size does.
     return elementType, given, [int(n) for n in reversed(sizes)]

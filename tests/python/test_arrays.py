@@ -129,3 +129,28 @@ def test_lists_of_objects_become_object_arrays(device):
 def test_lists_of_numbers_become_arrays(device):
     array = device.newArray(prism.UINT32_VEC3, [[0, 1, 2], [2, 1, 0]])
     assert np.array_equal(array.contents(), [[0, 1, 2], [2, 1, 0]])
+
+
+def test_parameters_pick_the_declared_element_type(device, prism_log):
+    """Lists and other dtypes become the element type the device declares
+    for the parameter: floats FLOAT32_VEC3, uint8 colors UFIXED8_VEC4."""
+    listed, _ = triangle_scene(device, positions=[[-1, -1, 0], [1, -1, 0], [0, 1, 0]])
+    shared, _ = triangle_scene(device)
+    listed.render()
+    shared.render()
+    assert np.array_equal(listed.get(), shared.get())
+
+    colors8 = np.array([[255, 0, 0, 255], [0, 255, 0, 255], [0, 0, 255, 255]], np.uint8)
+    as_bytes, _ = triangle_scene(device, colors=colors8)
+    as_floats, _ = triangle_scene(device, colors=colors8.astype(np.float32) / 255)
+    as_bytes.render()
+    as_floats.render()
+    assert np.allclose(as_bytes.get(), as_floats.get(), atol=1e-6)
+    assert not any("performance" in r.getMessage() for r in prism_log.records)
+
+    as_doubles, _ = triangle_scene(device, positions=np.array(
+        [[-1, -1, 0], [1, -1, 0], [0, 1, 0]], np.float64))
+    as_doubles.render()
+    assert np.array_equal(as_doubles.get(), shared.get())
+    copies = [r for r in prism_log.records if "performance" in r.getMessage()]
+    assert len(copies) == 1 and "float64 copied to float32" in copies[0].getMessage()
