@@ -65,8 +65,13 @@ class Device(Object):
     """An ANARI device: makes objects, arrays and frames, and says what it
     implements (subtypes(), parameters())."""
 
+    # Objects reach their device through _device; the device is its own
+    # (a property, not an attribute: no reference cycle keeps it alive).
+    _device = property(lambda self: self)
+
     def __init__(self, native, library=None):
-        super().__init__(self, native)
+        object.__setattr__(self, "_native", native)
+        object.__setattr__(self, "_values", {})
         object.__setattr__(self, "_library", library)
         object.__setattr__(self, "_declared", {})
         object.__setattr__(self, "_classes", {})
@@ -164,7 +169,7 @@ class Device(Object):
         (ReleasedError) and are freed with it."""
         self._native.release()
 
-    def _declared_types(self, category, subtype, name):
+    def _declared_types_of(self, category, subtype, name):
         key = (category, subtype)
         table = self._declared.get(key)
         if table is None:
@@ -178,13 +183,13 @@ class Device(Object):
             self._declared[key] = table
         return table.get(name, [])
 
-    def _element_types(self, category, subtype, name):
+    def _element_types_of(self, category, subtype, name):
         """The element types the device declares for array parameter `name`."""
         key = (category, subtype, name)
         types = self._declared.get(key)
         if types is None:
             types = []
-            for declared in self._declared_types(category, subtype, name):
+            for declared in self._declared_types_of(category, subtype, name):
                 if _types.is_array(declared):
                     types += _native.parameterInfo(self._native, category, subtype, name,
                                                    declared, "elementType") or []

@@ -26,8 +26,6 @@ class Object:
     (camera.position = (0, 0, 3)); set(...) sets several; commitParameters()
     makes them take effect."""
 
-    _native_type = _native.Object
-
     def __init__(self, device, native):
         object.__setattr__(self, "_device", device)
         object.__setattr__(self, "_native", native)
@@ -128,11 +126,11 @@ class Object:
                 isinstance(v, Object) for v in value):
             return self._device.newArray(None, value)
         given = value if isinstance(value, np.ndarray) else np.asarray(value)
-        allowed = self._device._element_types(self.category, self.subtype, name)
+        allowed = self._device._element_types_of(self.category, self.subtype, name)
         return self._device.newArray(_best_element_type(given, allowed), value)
 
     def _declared_types(self, name):
-        return self._device._declared_types(self.category, self.subtype, name)
+        return self._device._declared_types_of(self.category, self.subtype, name)
 
     def _set_inferred(self, name, value):
         declared = self._declared_types(name)

@@ -60,3 +60,15 @@ def test_leak_report_is_seen_when_objects_are_kept(prism_log):
     assert len(leaks) == 1 and "object(s) the application did not release" in leaks[0]
     assert logging.DEBUG in [r.levelno for r in prism_log.records
                              if "device released with" in r.getMessage()]
+
+
+def test_a_dropped_device_is_freed_at_once_with_its_objects(prism_log):
+    import weakref
+    device = prism.newDevice()
+    frame, objects = triangle_scene(device)
+    frame.render()
+    device_ref, frame_ref = weakref.ref(device), weakref.ref(frame)
+    del device, frame, objects  # no garbage collection needed: no cycles
+    assert device_ref() is None and frame_ref() is None
+    # The last object took the device with it, and nothing was left over.
+    assert not any("device released with" in r.getMessage() for r in prism_log.records)
