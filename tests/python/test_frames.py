@@ -2,6 +2,7 @@
 ANARI's row order, upright images, accumulation, asynchronous rendering, the
 GIL released while rendering, and several Python threads at once."""
 
+import logging
 import threading
 
 import numpy as np
@@ -162,3 +163,16 @@ def test_threads_create_objects_and_render_at_once(device):
         t.join()
     assert not failures
     assert results == [True] * 20
+
+
+def test_other_devices_renderer_parameters_get_one_warning_each(device, prism_log):
+    frame, objects = triangle_scene(device, renderer="pathtracer")
+    renderer = objects["renderer"]
+    renderer.set(ambientSamples=4, maxRayDepth=3)
+    renderer.commitParameters()
+    frame.render()
+    frame.render()
+    for name in ["ambientSamples", "maxRayDepth"]:
+        warnings = [r for r in prism_log.records
+                    if name in r.getMessage() and r.levelno == logging.WARNING]
+        assert len(warnings) == 1, name
