@@ -8,7 +8,8 @@ if(CLANG_FORMAT)
     ${PROJECT_SOURCE_DIR}/tests/*.h ${PROJECT_SOURCE_DIR}/tests/*.cpp
     ${PROJECT_SOURCE_DIR}/tests/*.c ${PROJECT_SOURCE_DIR}/tools/*.cpp
     ${PROJECT_SOURCE_DIR}/tools/*.h ${PROJECT_SOURCE_DIR}/bench/*.cpp
-    ${PROJECT_SOURCE_DIR}/scenes/*.h ${PROJECT_SOURCE_DIR}/scenes/*.cpp)
+    ${PROJECT_SOURCE_DIR}/scenes/*.h ${PROJECT_SOURCE_DIR}/scenes/*.cpp
+    ${PROJECT_SOURCE_DIR}/python/*.h ${PROJECT_SOURCE_DIR}/python/*.cpp)
   add_custom_target(format
     COMMAND ${CLANG_FORMAT} -i ${PRISM_FORMATTED_SOURCES}
     COMMENT "clang-format on ${PROJECT_NAME} sources")

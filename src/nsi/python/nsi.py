@@ -16,8 +16,9 @@ int and bool -> integer, float -> double, str -> string; a list or tuple
 takes the type of its first element and passes every element. Arg (and
 FloatArg, ColorArg ...) gives the type, array length, flags or count
 explicitly. libnsi is found through the PRISM_NSI_LIBRARY environment
-variable (a path), else next to this file's installation, else by the
-system's library search.
+variable (a path), else (as prism.nsi, inside the prism package) beside
+the libanari the package uses, else next to this file's installation, else
+by the system's library search.
 """
 
 import ctypes
@@ -36,6 +37,12 @@ def _load_library():
     explicit = os.environ.get("PRISM_NSI_LIBRARY")
     if explicit:
         return ctypes.CDLL(explicit)
+    # As prism.nsi: libnsi sits beside the libanari the package loaded.
+    if __package__ == "prism":
+        from . import _native
+        beside = os.path.join(_native.library_directory(), "libnsi.so.0")
+        if os.path.exists(beside):
+            return ctypes.CDLL(beside)
     # Installed as <prefix>/python/nsi.py beside <prefix>/<libdir>/libnsi.so.
     prefix = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     candidates = []
