@@ -189,6 +189,7 @@ void bindObjects(py::module_ &m);
 void bindArrays(py::module_ &m);
 void bindFrames(py::module_ &m);
 void bindIntrospection(py::module_ &m);
+void bindScenes(py::module_ &m);
 
 template <typename Call>
 auto Object::withHandle(const char *what, Call &&call)

@@ -35,4 +35,5 @@ PYBIND11_MODULE(_native, m)
   bindArrays(m);
   bindFrames(m);
   bindIntrospection(m);
+  bindScenes(m);
 }

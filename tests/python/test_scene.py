@@ -1,0 +1,95 @@
+"""prism.load_scene: scene files and demos through the loaders prism-render
+uses, lit and framed by the same rules, in a few lines."""
+
+import os
+
+import numpy as np
+import pytest
+
+import prism
+
+DATA = os.path.join(os.path.dirname(__file__), "..", "cli", "data")
+
+
+def render(device, scene, renderer="pathtracer", size=(32, 32), spp=4):
+    frame = device.newFrame()
+    frame.size = size
+    frame.world = scene.world
+    frame.camera = scene.camera
+    frame.renderer = device.newRenderer(renderer)
+    frame.setParameter("channel.color", prism.DATA_TYPE, prism.FLOAT32_VEC4)
+    frame.commitParameters()
+    frame.render(spp=spp)
+    return frame.get("channel.color")[..., :3]
+
+
+@pytest.fixture
+def device():
+    d = prism.newDevice()
+    yield d
+    d.release()
+
+
+def test_a_lightless_file_is_lit_by_the_studio(device):
+    scene = prism.load_scene(device, os.path.join(DATA, "lightless-box.gltf"))
+    assert scene.lighting == "a neutral studio environment"
+    assert scene.world.category == prism.WORLD
+    lower, upper = scene.bounds
+    assert all(lo < hi for lo, hi in zip(lower, upper))
+    image = render(device, scene)
+    # The studio behind the box and on it: nothing black.
+    assert image.mean() > 0.1
+    assert image[0, 0].mean() > 0.1
+
+
+def test_environment_none_leaves_it_unlit(device):
+    scene = prism.load_scene(device, os.path.join(DATA, "lightless-box.gltf"),
+                             environment="none")
+    assert scene.lighting == ""
+    assert render(device, scene).max() == 0.0
+
+
+def test_the_framed_camera_fills_the_frame(device):
+    # A unit sphere framed for a square frame: its silhouette reaches
+    # within a few pixels of the top and bottom rows (kFill, 92 %).
+    scene = prism.load_scene(device, os.path.join(DATA, "sphere.obj"),
+                             environment="none")
+    assert not scene.view["from_scene"]
+    frame = device.newFrame()
+    frame.size = (64, 64)
+    frame.world = scene.world
+    frame.camera = scene.camera
+    frame.renderer = device.newRenderer("raycast")
+    frame.setParameter("channel.color", prism.DATA_TYPE, prism.FLOAT32_VEC4)
+    frame.commitParameters()
+    frame.render()
+    covered = np.nonzero(frame.get("channel.color")[..., :3].max(axis=(1, 2)) > 0.01)[0]
+    assert covered.min() <= 4 and covered.max() >= 59
+    assert covered.min() >= 1 and covered.max() <= 62
+
+
+def test_gltf_options_reach_the_loader(device):
+    path = os.path.join(DATA, "variants.gltf")
+    blue = prism.load_scene(device, path, variant="blue", environment="none")
+    image = render(device, blue, renderer="raycast", spp=1)
+    assert image[16, 16, 2] > 0.99 and image[16, 16, 0] == 0.0
+    with pytest.raises(ValueError, match="the file's variants are green, blue"):
+        prism.load_scene(device, path, variant="purple")
+
+
+def test_demo_scenes_keep_their_own_lights_and_camera(device):
+    scene = prism.load_scene(device, "demo:cornell-box")
+    assert scene.lighting == ""
+    assert scene.view["from_scene"]
+    assert render(device, scene).mean() > 0.05
+
+
+def test_what_cannot_be_loaded_is_a_value_error(device):
+    with pytest.raises(ValueError, match="No such file or directory"):
+        prism.load_scene(device, "/nonexistent/model.glb")
+    with pytest.raises(ValueError, match="unknown scene file type"):
+        prism.load_scene(device, __file__)
+    with pytest.raises(ValueError, match="unknown demo scene"):
+        prism.load_scene(device, "demo:nothing")
+    with pytest.raises(ValueError, match="aspect"):
+        prism.load_scene(device, "demo:cornell-box", aspect=0.0)
