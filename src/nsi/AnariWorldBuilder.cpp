@@ -253,6 +253,10 @@ void setLightParameters(
         shader.normalizeArea ? "intensity" : "radiance",
         shader.intensity);
   }
+  // PRISM_LIGHT_DECAY: set only when it is not the inverse square, so
+  // devices without it see nothing new for physical lights.
+  if ((kind == Kind::Point || kind == Kind::Spot) && shader.decay != 2.f)
+    setFloat(device, light, "decay", shader.decay);
   setVec3(device, light, "color", shader.color);
   const bool visible = item.visibleToCamera;
   anariSetParameter(device, light, "visible", ANARI_BOOL, &visible);

@@ -52,6 +52,7 @@ void lightBrightness(const Node &node, ShaderDescription &d)
   d.intensity =
       number(node, "intensity", 1.f) * std::exp2(number(node, "exposure", 0.f));
   d.normalizeArea = number(node, "normalize_area", 1.f) != 0.f;
+  d.decay = number(node, "decayRate", 2.f);
 }
 
 } // namespace

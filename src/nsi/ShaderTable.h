@@ -43,6 +43,9 @@ struct ShaderDescription
   float power{0.f};
   float intensity{1.f};
   bool normalizeArea{true};
+  // Point and spot lights: intensity / distance^decay (3Delight's
+  // decayRate: 0 none, 1 linear, 2 quadratic, the physical default).
+  float decay{2.f};
   std::string image;                     // environmentLight's map
   float coneAngle{40}, penumbraAngle{0}; // spotLight, degrees
 

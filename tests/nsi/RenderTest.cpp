@@ -917,40 +917,46 @@ SetAttribute "shape" "transformationmatrices" "doublematrix" 4 [
   EXPECT_EQ(value(image, 16, 16), 0.f) << "nothing at the origin";
 }
 
-TEST_F(Render, ParticleLights)
-{
-  // A white floor seen from 10 above, lit only by one particle 3 above it:
-  // a spot pointing down (cone 20 degrees: a disk of radius 3 tan 10 =
-  // 0.53), or a point light.
-  // The stream is not line based: the camera's attributes may end in
-  // statements, here hanging it under a transform looking down.
-  const std::string camera = R"(Disconnect "cam" "" ".root" "objects"
+// Streams of the particle light tests: a camera 10 above the origin looking
+// down, and a white floor lit only by one particle 3 above it carrying a
+// light `shader` (with its `attributes`), its normal `normal`.
+const char *kCameraLookingDown = R"(Disconnect "cam" "" ".root" "objects"
 Create "up" "transform" Connect "up" "" ".root" "objects"
 SetAttribute "up" "transformationmatrix" "doublematrix" 1 [ 1 0 0 0  0 0 -1 0  0 1 0 0  0 10 0 1 ]
 Connect "cam" "" "up" "objects")";
-  auto render =
-      [&](const char *shader, const char *name, const char *normal = "0 -1 0") {
-        const std::string geometry =
-            std::string(
-                R"(Create "shape" "mesh" Connect "shape" "" ".root" "objects"
+
+std::string particleLightOverFloor(const std::string &shader,
+    const std::string &attributes,
+    const std::string &normal)
+{
+  return R"(Create "shape" "mesh" Connect "shape" "" ".root" "objects"
 SetAttribute "shape" "nvertices" "int" 1 4 "P" "point" 4 [ -5 0 5  5 0 5  5 0 -5  -5 0 -5 ]
 Create "bulb" "particles" Connect "bulb" "" ".root" "objects"
-SetAttribute "bulb" "P" "point" 1 [ 0 3 0 ] "width" "float" 1 0.01 "N" "normal" 1 [ )")
-            + normal + R"( ]
+SetAttribute "bulb" "P" "point" 1 [ 0 3 0 ] "width" "float" 1 0.01 "N" "normal" 1 [ )"
+         + normal + R"( ]
 Create "bulb_shader" "shader" SetAttribute "bulb_shader" "shaderfilename" "string" 1 ")"
-            + shader + R"(" "coneAngle" "float" 1 20 "intensity" "float" 1 10
+         + shader + R"(" "intensity" "float" 1 10 )" + attributes + R"(
 Create "bulb_attr" "attributes" Connect "bulb_shader" "" "bulb_attr" "surfaceshader"
 Connect "bulb_attr" "" "bulb" "geometryattributes")";
-        NSIContext_t ctx = beginRender();
-        Image image = renderWhite(ctx,
-            geometry,
-            camera,
-            R"("resolution" "int[2]" 1 [ 32 32 ] "oversampling" "int" 1 4)",
-            path(name),
-            Sky::None);
-        NSIEnd(ctx);
-        return image;
-      };
+}
+
+TEST_F(Render, ParticleLights)
+{
+  // The floor under a spot pointing down (cone 20 degrees: a disk of
+  // radius 3 tan 10 = 0.53), or a point light.
+  auto render = [&](const char *shader,
+                    const char *name,
+                    const char *normal = "0 -1 0") {
+    NSIContext_t ctx = beginRender();
+    Image image = renderWhite(ctx,
+        particleLightOverFloor(shader, R"("coneAngle" "float" 1 20)", normal),
+        kCameraLookingDown,
+        R"("resolution" "int[2]" 1 [ 32 32 ] "oversampling" "int" 1 4)",
+        path(name),
+        Sky::None);
+    NSIEnd(ctx);
+    return image;
+  };
   const Image spot = render("spotLight", "spot.exr");
   const Image point = render("pointLight", "point.exr");
   // An area light on a particle with N is a ring facing N: the floor is lit
@@ -967,6 +973,32 @@ Connect "bulb_attr" "" "bulb" "geometryattributes")";
   EXPECT_EQ(value(spot, 22, 16), 0.f);
   EXPECT_GT(value(point, 16, 22), 0.1f);
   EXPECT_GT(value(point, 22, 16), 0.1f);
+}
+
+TEST_F(Render, PointLightDecayRate)
+{
+  // A point light 3 above a white floor seen from 10 above: right below it,
+  // 3Delight's decayRate 0 (none), 1 (linear) and 2 (quadratic, the
+  // default) light the floor as I, I / 3 and I / 9 (PRISM_LIGHT_DECAY).
+  auto render = [&](const std::string &decay, const char *name) {
+    NSIContext_t ctx = beginRender();
+    Image image = renderWhite(ctx,
+        particleLightOverFloor("pointLight", decay, "0 -1 0"),
+        kCameraLookingDown,
+        R"("resolution" "int[2]" 1 [ 32 32 ] "oversampling" "int" 1 4)",
+        path(name),
+        Sky::None);
+    NSIEnd(ctx);
+    return image;
+  };
+  const Image quadratic = render("", "decay-default.exr");
+  const Image none = render(R"("decayRate" "int" 1 0)", "decay-0.exr");
+  const Image linear = render(R"("decayRate" "int" 1 1)", "decay-1.exr");
+  EXPECT_EQ(m_messages.problems(), "");
+  const float below = value(quadratic, 16, 16);
+  ASSERT_GT(below, 0.f);
+  EXPECT_NEAR(value(none, 16, 16) / below, 9.f, 0.05f);
+  EXPECT_NEAR(value(linear, 16, 16) / below, 3.f, 0.02f);
 }
 
 TEST_F(Render, UniformEnvironmentIsSeenUnlessHidden)

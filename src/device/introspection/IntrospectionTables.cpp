@@ -83,10 +83,11 @@ enum : int {
   kKhrSpatialFieldStructuredRegularFilterCubic = 60,
   kKhrSpatialFieldUnstructured = 61,
   kKhrVolumeTransferFunction1d = 62,
-  kPrismMaterialBaseColorFactor = 63,
-  kPrismMaterialDoubleSided = 64,
-  kPrismMaterialUnlit = 65,
-  kPrismRenderers = 66,
+  kPrismLightDecay = 63,
+  kPrismMaterialBaseColorFactor = 64,
+  kPrismMaterialDoubleSided = 65,
+  kPrismMaterialUnlit = 66,
+  kPrismRenderers = 67,
 };
 
 // Type lists, ANARI_UNKNOWN-terminated.
@@ -2035,6 +2036,12 @@ constexpr float kDefault21_intensity[] = {1.f};
 constexpr float kDefault21_radius[] = {0.f};
 // visible default: ANARI_BOOL
 alignas(4) constexpr int8_t kDefault21_visible[] = {1, 0, 0, 0};
+// decay default: ANARI_FLOAT32
+constexpr float kDefault21_decay[] = {2.f};
+// decay minimum: ANARI_FLOAT32
+constexpr float kMinimum21_decay[] = {0.f};
+// decay maximum: ANARI_FLOAT32
+constexpr float kMaximum21_decay[] = {4.f};
 // clang-format on
 constexpr ParameterEntry kParameters21[] = {
     {.name = "name",
@@ -2078,8 +2085,17 @@ constexpr ParameterEntry kParameters21[] = {
         .types = {kTypeList16, 1},
         .description = "whether the light can be directly seen",
         .defaultValue = kDefault21_visible,
-        .extension = kKhrLightPrimaryVisibility}};
-constexpr int kContributors21[] = {kKhrLightPrimaryVisibility};
+        .extension = kKhrLightPrimaryVisibility},
+    {.name = "decay",
+        .types = {kTypeList6, 1},
+        .description = "the exponent of the distance the intensity is divided "
+                       "by (2: inverse square)",
+        .defaultValue = kDefault21_decay,
+        .minimum = kMinimum21_decay,
+        .maximum = kMaximum21_decay,
+        .extension = kPrismLightDecay}};
+constexpr int kContributors21[] = {
+    kKhrLightPrimaryVisibility, kPrismLightDecay};
 
 // ANARI_LIGHT "quad": ANARI_KHR_LIGHT_QUAD
 // clang-format off
@@ -2291,6 +2307,12 @@ constexpr float kDefault24_falloffAngle[] = {0.1f};
 constexpr float kDefault24_intensity[] = {1.f};
 // visible default: ANARI_BOOL
 alignas(4) constexpr int8_t kDefault24_visible[] = {1, 0, 0, 0};
+// decay default: ANARI_FLOAT32
+constexpr float kDefault24_decay[] = {2.f};
+// decay minimum: ANARI_FLOAT32
+constexpr float kMinimum24_decay[] = {0.f};
+// decay maximum: ANARI_FLOAT32
+constexpr float kMaximum24_decay[] = {4.f};
 // clang-format on
 constexpr ParameterEntry kParameters24[] = {
     {.name = "name",
@@ -2340,8 +2362,17 @@ constexpr ParameterEntry kParameters24[] = {
         .types = {kTypeList16, 1},
         .description = "whether the light can be directly seen",
         .defaultValue = kDefault24_visible,
-        .extension = kKhrLightPrimaryVisibility}};
-constexpr int kContributors24[] = {kKhrLightPrimaryVisibility};
+        .extension = kKhrLightPrimaryVisibility},
+    {.name = "decay",
+        .types = {kTypeList6, 1},
+        .description = "the exponent of the distance the intensity is divided "
+                       "by (2: inverse square)",
+        .defaultValue = kDefault24_decay,
+        .minimum = kMinimum24_decay,
+        .maximum = kMaximum24_decay,
+        .extension = kPrismLightDecay}};
+constexpr int kContributors24[] = {
+    kKhrLightPrimaryVisibility, kPrismLightDecay};
 
 // ANARI_MATERIAL "matte": ANARI_KHR_MATERIAL_MATTE
 // clang-format off
@@ -3898,11 +3929,12 @@ const char *const kExtensions[] = {"ANARI_EXT_SAMPLER_COMPRESSED_FORMAT_ASTC",
     "ANARI_KHR_SPATIAL_FIELD_STRUCTURED_REGULAR_FILTER_CUBIC",
     "ANARI_KHR_SPATIAL_FIELD_UNSTRUCTURED",
     "ANARI_KHR_VOLUME_TRANSFER_FUNCTION1D",
+    "ANARI_PRISM_LIGHT_DECAY",
     "ANARI_PRISM_MATERIAL_BASE_COLOR_FACTOR",
     "ANARI_PRISM_MATERIAL_DOUBLE_SIDED",
     "ANARI_PRISM_MATERIAL_UNLIT",
     "ANARI_PRISM_RENDERERS"};
-const size_t kExtensionCount = 67;
+const size_t kExtensionCount = 68;
 
 const char *const kAttributes[] = {"color",
     "worldPosition",
@@ -4063,8 +4095,8 @@ const ObjectEntry kObjects[] = {
         .subtype = "point",
         .description = "point light object",
         .extension = kKhrLightPoint,
-        .contributors = {kContributors21, 1},
-        .parameters = {kParameters21, 8}},
+        .contributors = {kContributors21, 2},
+        .parameters = {kParameters21, 9}},
     // ANARI_LIGHT "quad"
     {.type = ANARI_LIGHT,
         .subtype = "quad",
@@ -4084,8 +4116,8 @@ const ObjectEntry kObjects[] = {
         .subtype = "spot",
         .description = "spot light object",
         .extension = kKhrLightSpot,
-        .contributors = {kContributors24, 1},
-        .parameters = {kParameters24, 9}},
+        .contributors = {kContributors24, 2},
+        .parameters = {kParameters24, 10}},
     // ANARI_MATERIAL "matte"
     {.type = ANARI_MATERIAL,
         .subtype = "matte",

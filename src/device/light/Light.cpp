@@ -77,6 +77,18 @@ float Light::readNonNegative(const char *name, float fallback)
   return fallback;
 }
 
+float Light::readDecay()
+{
+  const float decay = readNonNegative("decay", 2.f);
+  if (decay <= 4.f)
+    return decay;
+  report(ANARI_SEVERITY_WARNING,
+      ANARI_STATUS_INVALID_ARGUMENT,
+      "'decay' (%g) is above 4; 4 is used",
+      decay);
+  return 4.f;
+}
+
 float3 Light::readFinite(const char *name, float3 fallback)
 {
   const float3 value = read<float3>(name, ANARI_FLOAT32_VEC3, fallback);

@@ -59,6 +59,9 @@ class Light : public Object
   // A FLOAT32 that must be finite and >= 0; otherwise reported, the light
   // becomes invalid and `fallback` is returned.
   float readNonNegative(const char *name, float fallback);
+  // PRISM_LIGHT_DECAY's `decay` (default 2, the inverse square), clamped to
+  // [0, 4] with a warning.
+  float readDecay();
   // A FLOAT32_VEC3 that must be finite (positions, edges).
   float3 readFinite(const char *name, float3 fallback);
   // A FLOAT32_VEC3 that must be finite and of non-zero length; normalised.

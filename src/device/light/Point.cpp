@@ -16,8 +16,8 @@ enum Source { kIntensity, kPower, kRadiance };
 class PlacedPoint : public PlacedLight
 {
  public:
-  PlacedPoint(float3 position, float3 intensity)
-      : m_position(position), m_intensity(intensity)
+  PlacedPoint(float3 position, float3 intensity, float decay)
+      : m_position(position), m_intensity(intensity), m_decay(decay)
   {}
 
   LightSample sample(const float3 &point, const float2 &) const override
@@ -27,7 +27,11 @@ class PlacedPoint : public PlacedLight
     if (!(distance2 > 0.f))
       return {};
     const float distance = std::sqrt(distance2);
-    return {toLight / distance, distance, m_intensity / distance2, 1.f, true};
+    return {toLight / distance,
+        distance,
+        m_intensity * distanceFalloff(distance2, m_decay),
+        1.f,
+        true};
   }
   float3 radianceAlong(const float3 &,
       const float3 &,
@@ -50,6 +54,7 @@ class PlacedPoint : public PlacedLight
  private:
   float3 m_position;
   float3 m_intensity; // W/sr, color included
+  float m_decay;      // the falloff's exponent (2: inverse square)
 };
 
 // radius > 0: a sphere of uniform radiance, sampled uniformly in the cone of
@@ -57,8 +62,13 @@ class PlacedPoint : public PlacedLight
 class PlacedSphere : public PlacedLight
 {
  public:
-  PlacedSphere(float3 center, float radius, float3 radiance, float3 power)
-      : m_center(center), m_radius(radius), m_radiance(radiance), m_power(power)
+  PlacedSphere(
+      float3 center, float radius, float3 radiance, float3 power, float decay)
+      : m_center(center),
+        m_radius(radius),
+        m_radiance(radiance),
+        m_power(power),
+        m_decay(decay)
   {}
 
   LightSample sample(const float3 &point, const float2 &u) const override
@@ -74,7 +84,7 @@ class PlacedSphere : public PlacedLight
     LightSample s;
     s.direction = direction;
     s.distance = entryDistance(point, direction);
-    s.radiance = m_radiance;
+    s.radiance = m_radiance * decayScale(distanceToCenter);
     s.pdf = uniformCapPdf(capHeight);
     return s;
   }
@@ -95,7 +105,7 @@ class PlacedSphere : public PlacedLight
       return {0.f, 0.f, 0.f};
     distance = entryDistance(point, direction);
     pdf = uniformCapPdf(capHeight);
-    return m_radiance;
+    return m_radiance * decayScale(distanceToCenter);
   }
   float3 power() const override
   {
@@ -108,6 +118,13 @@ class PlacedSphere : public PlacedLight
   }
 
  private:
+  // A sphere's light falls with the inverse square by itself: another
+  // decay scales its radiance by d^(2 - decay), d from its centre.
+  float decayScale(float distanceToCenter) const
+  {
+    const float d2 = distanceToCenter * distanceToCenter;
+    return m_decay == 2.f ? 1.f : d2 * distanceFalloff(d2, m_decay);
+  }
   // The cone of directions from `point` that hit the sphere; false from
   // inside, where the outward-emitting surface is not seen.
   bool cone(const float3 &point, float &capHeight, float &distance) const
@@ -139,6 +156,7 @@ class PlacedSphere : public PlacedLight
   float m_radius;
   float3 m_radiance; // W/sr/m^2, color included
   float3 m_power;
+  float m_decay; // the falloff's exponent (2: inverse square)
 };
 
 } // namespace
@@ -151,6 +169,7 @@ void Point::commitParameters()
   m_position = readFinite("position", {0.f, 0.f, 0.f});
   m_radius = readNonNegative("radius", 0.f);
   m_brightness = readBrightness({"intensity", "power", "radiance"}, 1.f);
+  m_decay = readDecay();
 }
 
 void Point::finalize()
@@ -183,9 +202,9 @@ std::unique_ptr<PlacedLight> Point::place(const mat3x4 &worldFromObject) const
   if (m_radius > 0.f) {
     const float3 radiance = intensity / (kPi * m_radius * m_radius);
     placed = std::make_unique<PlacedSphere>(
-        position, m_radius, radiance, intensity * (4.f * kPi));
+        position, m_radius, radiance, intensity * (4.f * kPi), m_decay);
   } else {
-    placed = std::make_unique<PlacedPoint>(position, intensity);
+    placed = std::make_unique<PlacedPoint>(position, intensity, m_decay);
   }
   placeShared(*placed);
   return placed;

@@ -30,6 +30,7 @@ class Point : public Light
   float m_radius{0.f};
   Brightness m_brightness;
   float m_intensity{1.f};
+  float m_decay{2.f}; // PRISM_LIGHT_DECAY
 };
 
 } // namespace prism::light

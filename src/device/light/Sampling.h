@@ -17,6 +17,13 @@
 
 namespace prism::light {
 
+// What of a point light's intensity reaches distance sqrt(distance2):
+// 1 / d^decay (PRISM_LIGHT_DECAY; 2, the inverse square, exactly as 1/d^2).
+inline float distanceFalloff(float distance2, float decay)
+{
+  return decay == 2.f ? 1.f / distance2 : std::pow(distance2, -0.5f * decay);
+}
+
 inline constexpr float kPi = 3.14159265358979323846f;
 inline constexpr double kPiDouble = 3.14159265358979323846;
 

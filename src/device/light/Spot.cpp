@@ -15,12 +15,14 @@ class PlacedSpot : public PlacedLight
       float3 axis,
       const ConeFalloff &falloff,
       float3 intensity,
-      float3 power)
+      float3 power,
+      float decay)
       : m_position(position),
         m_axis(axis),
         m_falloff(falloff),
         m_intensity(intensity),
-        m_power(power)
+        m_power(power),
+        m_decay(decay)
   {}
 
   LightSample sample(const float3 &point, const float2 &) const override
@@ -32,8 +34,11 @@ class PlacedSpot : public PlacedLight
     const float distance = std::sqrt(distance2);
     const float3 direction = toLight / distance;
     const float profile = m_falloff(-dot(direction, m_axis));
-    return {
-        direction, distance, m_intensity * (profile / distance2), 1.f, true};
+    return {direction,
+        distance,
+        m_intensity * (profile * distanceFalloff(distance2, m_decay)),
+        1.f,
+        true};
   }
   float3 radianceAlong(const float3 &,
       const float3 &,
@@ -59,6 +64,7 @@ class PlacedSpot : public PlacedLight
   ConeFalloff m_falloff;
   float3 m_intensity; // on the axis, W/sr, color included
   float3 m_power;
+  float m_decay; // the falloff's exponent (2: inverse square)
 };
 
 } // namespace
@@ -72,6 +78,7 @@ void Spot::commitParameters()
   m_direction = readDirection("direction", {0.f, 0.f, -1.f});
   m_falloff = readConeFalloff();
   m_brightness = readBrightness({"intensity", "power"}, 1.f);
+  m_decay = readDecay();
 }
 
 void Spot::finalize()
@@ -95,8 +102,8 @@ std::unique_ptr<PlacedLight> Spot::place(const mat3x4 &worldFromObject) const
   const float3 axis = transformUnit(worldFromObject, m_direction);
   const float3 intensity = m_color * m_intensity;
   const float3 flux = intensity * m_solidAngle;
-  auto placed =
-      std::make_unique<PlacedSpot>(position, axis, m_falloff, intensity, flux);
+  auto placed = std::make_unique<PlacedSpot>(
+      position, axis, m_falloff, intensity, flux, m_decay);
   placeShared(*placed);
   return placed;
 }

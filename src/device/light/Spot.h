@@ -38,6 +38,7 @@ class Spot : public Light
   ConeFalloff m_falloff;
   Brightness m_brightness;
   float m_intensity{1.f};
+  float m_decay{2.f};      // PRISM_LIGHT_DECAY
   float m_solidAngle{0.f}; // integral of the profile over the sphere
 };
 

@@ -327,6 +327,43 @@ TEST_F(LightTest, PointIrradianceFallsWithInverseSquare)
   EXPECT_NEAR(placed->power().x, 4.f * kPi * 3.f, 1e-4f);
 }
 
+// PRISM_LIGHT_DECAY: the intensity reaches distance d as I / d^decay; 2
+// is the inverse square exactly, 0 keeps I at any distance, and a decay
+// above 4 is clamped to 4 with a warning.
+TEST_F(LightTest, PointAndSpotDecay)
+{
+  for (const char *subtype : {"point", "spot"}) {
+    for (float decay : {0.f, 1.f, 2.f, 3.f}) {
+      std::unique_ptr<Light> light;
+      if (std::string(subtype) == "point")
+        light = std::make_unique<light::Point>(m_device);
+      else
+        light = std::make_unique<light::Spot>(m_device);
+      setVec3(*light, "position", {0, 0, 0});
+      setFloat(*light, "intensity", 3.f);
+      if (std::string(subtype) == "spot")
+        setVec3(*light, "direction", {0, 0, -1});
+      setFloat(*light, "decay", decay);
+      commit(*light);
+      const auto placed = place(*light);
+      ASSERT_TRUE(placed) << subtype;
+      for (float d : {0.5f, 2.f, 10.f}) {
+        const LightSample s = placed->sample({0, 0, -d}, {0.3f, 0.7f});
+        const float expected = 3.f / std::pow(d, decay);
+        EXPECT_NEAR(s.radiance.x, expected, 1e-5f * expected)
+            << subtype << " decay " << decay << " at " << d;
+      }
+    }
+  }
+  light::Point clamped(m_device);
+  setFloat(clamped, "intensity", 1.f);
+  setFloat(clamped, "decay", 7.f);
+  commit(clamped);
+  EXPECT_TRUE(reported({"'decay' (7) is above 4"}));
+  const LightSample s = place(clamped)->sample({0, 0, -2.f}, {0.3f, 0.7f});
+  EXPECT_NEAR(s.radiance.x, 1.f / 16.f, 1e-6f);
+}
+
 TEST_F(LightTest, PointPowerIsIntensityOverFourPi)
 {
   light::Point light(m_device);
