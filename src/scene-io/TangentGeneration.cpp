@@ -142,7 +142,11 @@ std::vector<Vec4> generateTangents(const std::vector<Vec3> &positions,
     Vec3 tangent = it != sums.end() ? inPlane(it->second, n) : Vec3{0, 0, 0};
     if (length(tangent) == 0.f)
       tangent = anyPerpendicular(n);
-    out[c] = {tangent[0], tangent[1], tangent[2], face.preserving ? 1.f : -1.f};
+    // glTF's normal maps point +Y up the image, where its v decreases: w
+    // turns cross(N, T) that way, as MikkTSpace gives it on the v-up
+    // coordinates glTF exporters run it on (w is -1 where the mapping
+    // preserves orientation in glTF's own v-down coordinates).
+    out[c] = {tangent[0], tangent[1], tangent[2], face.preserving ? -1.f : 1.f};
   }
   return out;
 }

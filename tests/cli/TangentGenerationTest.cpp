@@ -1,4 +1,9 @@
 // Generated tangents (the MikkTSpace method) on meshes with known answers.
+// glTF's v runs down the image and a normal map's +Y up it, so the
+// bitangent cross(N, T) * w points along decreasing v: w is -1 where the
+// uv mapping keeps the surface's orientation, +1 where it mirrors it (as
+// the tangents glTF exporters write with MikkTSpace; see
+// cli::tangents::generated-match-mikktspace for a real file's).
 #include "TangentGeneration.h"
 
 #include <gtest/gtest.h>
@@ -49,16 +54,17 @@ void expectTangent(const Vec4 &t, const Vec4 &expected, const char *what)
 
 TEST(TangentGeneration, PlaneTangentsFollowIncreasingU)
 {
-  // u along +x, v along +y: the tangent is +x, right-handed.
+  // u along +x, v along +y: the tangent is +x, the bitangent -y (up the
+  // image).
   Grid g = grid(3, [](float x, float y) { return Vec2{x, y}; });
   for (const Vec4 &t :
       generateTangents(g.positions, g.normals, g.uvs, g.triangles))
-    expectTangent(t, {1, 0, 0, 1}, "plane");
+    expectTangent(t, {1, 0, 0, -1}, "plane");
   // u along +y, v along -x (rotated UVs): the tangent is +y.
   g = grid(3, [](float x, float y) { return Vec2{y, -x}; });
   for (const Vec4 &t :
       generateTangents(g.positions, g.normals, g.uvs, g.triangles))
-    expectTangent(t, {0, 1, 0, 1}, "rotated");
+    expectTangent(t, {0, 1, 0, -1}, "rotated");
 }
 
 TEST(TangentGeneration, MirroredIslandsSplitAtTheSeam)
@@ -74,9 +80,9 @@ TEST(TangentGeneration, MirroredIslandsSplitAtTheSeam)
     for (uint32_t v : tri)
       cx += g.positions[v][0] / 3.f;
     if (cx < 0.f)
-      expectTangent(tangents[c], {-1, 0, 0, -1}, "mirrored half");
+      expectTangent(tangents[c], {-1, 0, 0, 1}, "mirrored half");
     else
-      expectTangent(tangents[c], {1, 0, 0, 1}, "unmirrored half");
+      expectTangent(tangents[c], {1, 0, 0, -1}, "unmirrored half");
   }
 }
 
@@ -98,11 +104,11 @@ TEST(TangentGeneration, CurvedSurfaceTangentsAreUnitAndPerpendicular)
     const Vec3 &n = g.normals[g.triangles[c / 3][c % 3]];
     EXPECT_NEAR(t[0] * t[0] + t[1] * t[1] + t[2] * t[2], 1.f, 1e-5f);
     EXPECT_NEAR(t[0] * n[0] + t[1] * n[1] + t[2] * n[2], 0.f, 1e-5f);
-    EXPECT_EQ(t[3], 1.f);
+    EXPECT_EQ(t[3], -1.f);
     // Around the cylinder: the tangent is the circle's direction.
     const uint32_t v = g.triangles[c / 3][c % 3];
     const float a = std::atan2(g.positions[v][0], g.positions[v][2]);
-    expectTangent(t, {std::cos(a), 0.f, -std::sin(a), 1.f}, "cylinder");
+    expectTangent(t, {std::cos(a), 0.f, -std::sin(a), -1.f}, "cylinder");
     Vec4 &seen = perVertex[v];
     if (seen[3] != 0.f)
       expectTangent(t, seen, "shared vertex");

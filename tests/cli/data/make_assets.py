@@ -423,8 +423,9 @@ def normal_mapped_plane(tangents):
     runs u along +x on the left island and along -x on the right (mirrored),
     v down (-y) on both; the normal map reads TEXCOORD_1. `tangents`: None,
     'analytic' (what a correct generator must give: T along increasing u, w
-    such that cross(N, T) * w runs along increasing v) or 'unmirrored' (the
-    right island's tangent as if it were not mirrored)."""
+    such that cross(N, T) * w runs along decreasing v, up the image, where
+    glTF's normal maps point +Y; MikkTSpace as glTF exporters run it) or
+    'unmirrored' (the right island's tangent as if it were not mirrored)."""
     buf = Buffer()
     positions, uv0, uv1, tangent = [], [], [], []
     for island, (x0, x1) in enumerate(((-1.0, 0.0), (0.0, 1.0))):
@@ -434,9 +435,9 @@ def normal_mapped_plane(tangents):
             u = x + 1 if island == 0 else 1 - x
             uv1.append((u, (1 - y) / 2))
             if island == 0 or tangents == "unmirrored":
-                tangent.append((1.0, 0.0, 0.0, -1.0))
+                tangent.append((1.0, 0.0, 0.0, 1.0))
             else:
-                tangent.append((-1.0, 0.0, 0.0, 1.0))
+                tangent.append((-1.0, 0.0, 0.0, -1.0))
     attributes = {
         "POSITION": buf.accessor("f", FLOAT, "VEC3", positions, bounds=True),
         "NORMAL": buf.accessor("f", FLOAT, "VEC3", [(0.0, 0.0, 1.0)] * 8),
