@@ -26,8 +26,20 @@ class Frame(Object):
         if samples > 1:
             self._accumulate()
         for _ in range(samples):
-            self._native.render()
+            self._native.renderAsync()
+            self._wait_interruptibly()
         return self
+
+    def _wait_interruptibly(self):
+        # Short waits, so Ctrl-C (KeyboardInterrupt) gets through between
+        # them; the frame is then discarded and finished before re-raising.
+        try:
+            while not self._native.wait(0.1):
+                pass
+        except KeyboardInterrupt:
+            self._native.discard()
+            self._native.wait(-1.0)
+            raise
 
     def renderAsync(self):
         """Start rendering and return at once; ready()/wait() tell when done."""
