@@ -25,8 +25,18 @@ class Frame(Object):
             raise ValueError(f"spp must be at least 1, got {samples}")
         if samples > 1:
             self._accumulate()
-        for _ in range(samples):
-            self._native.render()
+        # Short waits, so Ctrl-C (KeyboardInterrupt) gets through between
+        # them, wherever in the loop it lands; the frame in flight is then
+        # discarded and finished before re-raising.
+        try:
+            for _ in range(samples):
+                self._native.renderAsync()
+                while not self._native.wait(0.1):
+                    pass
+        except KeyboardInterrupt:
+            self._native.discard()
+            self._native.wait(-1.0)
+            raise
         return self
 
     def renderAsync(self):

@@ -47,7 +47,7 @@ struct DeviceState
   ~DeviceState();
 };
 
-// Any ANARI object other than the device: its handle, category and subtype.
+// An ANARI object (the device is one too): its handle, category, subtype.
 class Object
 {
  public:

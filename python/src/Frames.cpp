@@ -4,6 +4,7 @@
 
 #include <anari/frontend/type_utility.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <thread>
@@ -26,13 +27,28 @@ bool wait(Frame &frame, double timeoutSeconds)
   return frame.withHandle("wait", [&](ANARIDevice d, ANARIObject h) {
     if (timeoutSeconds < 0)
       return anariFrameReady(d, static_cast<ANARIFrame>(h), ANARI_WAIT) != 0;
-    // ANARI waits forever or not at all; a deadline is polled.
-    const auto deadline = std::chrono::steady_clock::now()
-                          + std::chrono::duration<double>(timeoutSeconds);
+    // ANARI waits forever or not at all; a deadline is polled: yielding for
+    // the first 100 us (small frames finish by then), then sleeping from
+    // 20 us up to 1 ms between looks.
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point deadline =
+        Clock::now()
+        + std::chrono::duration_cast<Clock::duration>(
+            std::chrono::duration<double>(timeoutSeconds));
+    const Clock::time_point spinUntil =
+        Clock::now() + std::chrono::microseconds(100);
+    Clock::duration pause = std::chrono::microseconds(20);
     while (!anariFrameReady(d, static_cast<ANARIFrame>(h), ANARI_NO_WAIT)) {
-      if (std::chrono::steady_clock::now() >= deadline)
+      const Clock::time_point now = Clock::now();
+      if (now >= deadline)
         return false;
-      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      if (now < spinUntil) {
+        std::this_thread::yield();
+        continue;
+      }
+      std::this_thread::sleep_for(std::min(pause, deadline - now));
+      pause =
+          std::min<Clock::duration>(pause * 2, std::chrono::milliseconds(1));
     }
     return true;
   });

@@ -45,7 +45,7 @@ def test_volume_and_isosurface(tmp_path, script):
 
 @pytest.mark.skipif(not os.path.exists(os.path.join(
     prism.library_directory(), "libanari_library_prism_mpi.so")) or not shutil.which("mpirun"),
-    reason="prism_mpi is not built (no MPI)")
+    reason="prism_mpi is not built beside this libanari")
 def test_mpi_script_under_mpirun(tmp_path):
     pixels = run("mpi_spheres.py", tmp_path / "mpi.png", launcher=("mpirun", "-np", "2"))
     drawn = np.any(pixels > 20, axis=-1)

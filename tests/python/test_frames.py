@@ -176,3 +176,17 @@ def test_other_devices_renderer_parameters_get_one_warning_each(device, prism_lo
         warnings = [r for r in prism_log.records
                     if name in r.getMessage() and r.levelno == logging.WARNING]
         assert len(warnings) == 1, name
+
+
+def test_ctrl_c_interrupts_a_long_render(device):
+    import _thread
+    frame, _ = triangle_scene(device, renderer="pathtracer", size=(256, 256))
+    timer = threading.Timer(0.2, _thread.interrupt_main)  # as Ctrl-C does
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        frame.render(spp=100000)
+    timer.join()
+    assert frame.ready()  # discarded and finished, not left in flight
+    assert frame.getProperty("refinementProgress", prism.FLOAT32) < 1.0
+    frame.render()  # and usable again
+    assert frame.get().shape == (256, 256, 4)
