@@ -4,7 +4,8 @@
 usage: scripts/function-lengths.py [--top N] [--over LINES] [PATH ...]
 (default: src/ tools/ scenes/, top 10). A function is counted from the line
 of its name to its closing brace, lambdas inside it included. The scan reads
-braces, not C++: comments, strings and character literals are skipped, and a
+braces, not C++: comments, strings, character literals and preprocessor
+lines are skipped, and a
 block counts as a function when the text before its '{' ends in a
 parameter list (optionally followed by const, noexcept, override, an
 initializer list or a trailing return type) and is not a control statement.
@@ -64,6 +65,8 @@ def functions(path):
     """(name, first line, length in lines) of each function in `path`."""
     with open(path, encoding='utf-8', errors='replace') as f:
         text = strip_comments_and_literals(f.read())
+    # Preprocessor lines (macros with parentheses) are no function heads.
+    text = re.sub(r'(?m)^[ \t]*#.*$', lambda m: ' ' * len(m.group(0)), text)
     found = []
     stack = []  # per open brace: (is function, name, start line)
     head_start = 0  # where the text before the next '{' begins
