@@ -1715,6 +1715,66 @@ bool sameMapping(const TextureRef &a, const TextureRef &b)
          && a.scale[1] == b.scale[1];
 }
 
+// Texels of a texture (sRGB color decoded; glossiness is linear).
+struct TexelSource
+{
+  size_t width{0}, height{0};
+  std::vector<Vec4> texels;
+};
+
+struct BakedMetallicRoughness
+{
+  size_t width{0}, height{0};
+  std::vector<Vec4> baseColor;
+  std::vector<Vec4> metallicRoughness; // G roughness, B metallic
+};
+
+// The conversion is not linear, so it is baked texel by texel at the
+// larger texture's size (nearest texels of the smaller one); a null
+// texture is its factor alone.
+BakedMetallicRoughness bakeSpecularGlossiness(const Vec4 &diffuseFactor,
+    const Vec3 &specularFactor,
+    float glossinessFactor,
+    const TexelSource *diffuse,
+    const TexelSource *specular)
+{
+  BakedMetallicRoughness out;
+  out.width =
+      std::max(diffuse ? diffuse->width : 0, specular ? specular->width : 0);
+  out.height =
+      std::max(diffuse ? diffuse->height : 0, specular ? specular->height : 0);
+  auto at = [&](const TexelSource &source, size_t x, size_t y) {
+    const size_t sx = std::min(source.width - 1, x * source.width / out.width);
+    const size_t sy =
+        std::min(source.height - 1, y * source.height / out.height);
+    return source.texels[sy * source.width + sx];
+  };
+  out.baseColor.resize(out.width * out.height);
+  out.metallicRoughness.resize(out.width * out.height);
+  for (size_t y = 0; y < out.height; y++)
+    for (size_t x = 0; x < out.width; x++) {
+      Vec4 d = diffuseFactor;
+      if (diffuse) {
+        const Vec4 t = at(*diffuse, x, y);
+        for (int i = 0; i < 4; i++)
+          d[size_t(i)] *= t[size_t(i)];
+      }
+      Vec3 sp = specularFactor;
+      float gloss = glossinessFactor;
+      if (specular) {
+        const Vec4 t = at(*specular, x, y);
+        for (int i = 0; i < 3; i++)
+          sp[size_t(i)] *= t[size_t(i)];
+        gloss *= t[3];
+      }
+      const MetallicRoughness converted = fromSpecularGlossiness(d, sp, gloss);
+      out.baseColor[y * out.width + x] = converted.baseColor;
+      out.metallicRoughness[y * out.width + x] = {
+          0.f, converted.roughness, converted.metallic, 1.f};
+    }
+  return out;
+}
+
 } // namespace
 
 void GltfImporter::setSpecularGlossiness(
@@ -1730,13 +1790,7 @@ void GltfImporter::setSpecularGlossiness(
   const TextureRef specularRef =
       textureRef(&extension, "specularGlossinessTexture");
 
-  // Texels of each texture (sRGB color decoded; glossiness is linear).
-  struct Source
-  {
-    size_t width{0}, height{0};
-    std::vector<Vec4> texels;
-  };
-  auto load = [&](const TextureRef &ref, Source &source) {
+  auto load = [&](const TextureRef &ref, TexelSource &source) {
     if (!ref.valid() || size_t(ref.texture) >= m_model.textures.size())
       return false;
     const int image = m_model.textures[size_t(ref.texture)].source;
@@ -1750,7 +1804,7 @@ void GltfImporter::setSpecularGlossiness(
         t[size_t(i)] = image::linearFromSrgb(t[size_t(i)]);
     return true;
   };
-  Source diffuse, specular;
+  TexelSource diffuse, specular;
   const bool hasDiffuse = load(diffuseRef, diffuse);
   const bool hasSpecular = load(specularRef, specular);
 
@@ -1776,46 +1830,23 @@ void GltfImporter::setSpecularGlossiness(
     scenes::setFloat(m_device, material, "roughness", converted.roughness);
     return;
   }
-  // Textured: the conversion is not linear, so it is baked texel by texel
-  // into a base color image and a metallic-roughness image (G roughness,
-  // B metallic) at the larger texture's size, both read through the
-  // diffuse texture's mapping (else the specular-glossiness one's).
+  // Textured: baked into a base color image and a metallic-roughness image,
+  // both read through the diffuse texture's mapping (else the
+  // specular-glossiness one's).
   const TextureRef &mapping = hasDiffuse ? diffuseRef : specularRef;
   if (hasDiffuse && hasSpecular && !sameMapping(diffuseRef, specularRef))
     note(
         "KHR_materials_pbrSpecularGlossiness textures with different "
         "texture coordinates or transforms are converted through the "
         "diffuse texture's");
-  const size_t width = std::max(diffuse.width, specular.width);
-  const size_t height = std::max(diffuse.height, specular.height);
-  auto at = [](const Source &source, size_t x, size_t y, size_t w, size_t h) {
-    const size_t sx = std::min(source.width - 1, x * source.width / w);
-    const size_t sy = std::min(source.height - 1, y * source.height / h);
-    return source.texels[sy * source.width + sx];
-  };
-  std::vector<Vec4> baseTexels(width * height),
-      metallicRoughness(width * height);
-  for (size_t y = 0; y < height; y++)
-    for (size_t x = 0; x < width; x++) {
-      Vec4 d = diffuseFactor;
-      if (hasDiffuse) {
-        const Vec4 t = at(diffuse, x, y, width, height);
-        for (int i = 0; i < 4; i++)
-          d[size_t(i)] *= t[size_t(i)];
-      }
-      Vec3 sp = specularFactor;
-      float gloss = glossinessFactor;
-      if (hasSpecular) {
-        const Vec4 t = at(specular, x, y, width, height);
-        for (int i = 0; i < 3; i++)
-          sp[size_t(i)] *= t[size_t(i)];
-        gloss *= t[3];
-      }
-      const MetallicRoughness converted = fromSpecularGlossiness(d, sp, gloss);
-      baseTexels[y * width + x] = converted.baseColor;
-      metallicRoughness[y * width + x] = {
-          0.f, converted.roughness, converted.metallic, 1.f};
-    }
+  const BakedMetallicRoughness baked = bakeSpecularGlossiness(diffuseFactor,
+      specularFactor,
+      glossinessFactor,
+      hasDiffuse ? &diffuse : nullptr,
+      hasSpecular ? &specular : nullptr);
+  const size_t width = baked.width, height = baked.height;
+  const std::vector<Vec4> &baseTexels = baked.baseColor;
+  const std::vector<Vec4> &metallicRoughness = baked.metallicRoughness;
   ANARIArray2D baseImage = scenes::newArray2D(m_device,
       ANARI_FLOAT32_VEC4,
       baseTexels.data(),
