@@ -42,9 +42,16 @@ inline void drawEach(const uint32_t *index,
 
 // Built twice, for AVX2 (eight lanes) and for any x86-64 (four), chosen
 // when the library loads: the loops are plain integer arithmetic, which
-// the compiler vectorises.
-__attribute__((target_clones("avx2", "default"))) void drawDecision(
-    Coordinates wanted,
+// the compiler vectorises. Not under ThreadSanitizer: it instruments the
+// resolver that chooses, which runs while a program linking the core is
+// relocated, before the sanitizer's runtime starts (a crash at start).
+#if defined(__SANITIZE_THREAD__)
+#define PRISM_AVX2_AND_BASELINE
+#else
+#define PRISM_AVX2_AND_BASELINE \
+  __attribute__((target_clones("avx2", "default")))
+#endif
+PRISM_AVX2_AND_BASELINE void drawDecision(Coordinates wanted,
     const uint32_t *index,
     const uint32_t *pathSeed,
     const uint32_t *firstStream,
