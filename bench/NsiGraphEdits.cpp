@@ -1,9 +1,10 @@
 // NSI graph edits at scale: the time to build a transform chain of growing
 // depth (parents created first; leaves created first and connected from
 // the leaf up, the order the cycle check repairs most) and to hang a
-// growing number of meshes flat under .root, through libnsi's C API. The
-// time per node should not grow with the graph (each NSIConnect's cycle
-// check once walked everything its target reached).
+// growing number of meshes flat under .root (and to delete them one by
+// one), through libnsi's C API. The time per node should not grow with the
+// graph (each NSIConnect's cycle check once walked everything its target
+// reached; each delete scanned .root's inputs).
 #include <nsi.h>
 
 #include <chrono>
@@ -72,6 +73,13 @@ void flat(NSIContext_t ctx, int nodes)
   }
 }
 
+void flatThenDeleted(NSIContext_t ctx, int nodes)
+{
+  flat(ctx, nodes);
+  for (int i = 0; i < nodes; ++i)
+    NSIDelete(ctx, numbered("m", i).c_str(), 0, nullptr);
+}
+
 // Seconds to build with `build(ctx, size)` in a fresh context (its end,
 // which frees the graph, not counted).
 double secondsToBuild(
@@ -135,5 +143,6 @@ int main(int argc, char **argv)
       },
       depths);
   measure("meshes flat under .root", flat, widths);
+  measure("the same, then each deleted", flatThenDeleted, widths);
   return 0;
 }

@@ -3,7 +3,6 @@
 #include "CycleFreeOrder.h"
 
 #include <algorithm>
-#include <iterator>
 
 namespace prism::nsi {
 
@@ -41,6 +40,9 @@ std::vector<const Input *> Node::inputsOf(const std::string &toAttr) const
     if (input.toAttr == toAttr)
       out.push_back(&input);
   }
+  std::sort(out.begin(), out.end(), [](const Input *a, const Input *b) {
+    return a->sequence < b->sequence;
+  });
   return out;
 }
 
@@ -87,26 +89,33 @@ void Graph::create(const std::string &handle, const std::string &type)
   node.order = m_nextOrder--;
 }
 
+void Graph::unlink(Node &target, size_t at)
+{
+  Node &source = m_nodes.at(target.inputs[at].from);
+  // The source's output first: the last one moves into its place.
+  const size_t gap = target.inputs[at].output;
+  if (gap + 1 != source.outputs.size()) {
+    source.outputs[gap] = std::move(source.outputs.back());
+    const Output &moved = source.outputs[gap];
+    m_nodes.at(moved.to).inputs[moved.input].output = gap;
+  }
+  source.outputs.pop_back();
+  if (at + 1 != target.inputs.size()) {
+    target.inputs[at] = std::move(target.inputs.back());
+    const Input &moved = target.inputs[at];
+    m_nodes.at(moved.from).outputs[moved.output].input = at;
+  }
+  target.inputs.pop_back();
+}
+
 void Graph::removeNode(const std::string &handle)
 {
   Node &node = m_nodes.at(handle);
-  for (auto &input : node.inputs) {
-    auto source = m_nodes.find(input.from);
-    if (source == m_nodes.end())
-      continue;
-    std::erase_if(source->second.outputs, [&](const Output &o) {
-      return o.to == handle && o.toAttr == input.toAttr
-             && o.fromAttr == input.fromAttr;
-    });
-  }
-  for (auto &output : node.outputs) {
-    auto target = m_nodes.find(output.to);
-    if (target == m_nodes.end())
-      continue;
-    std::erase_if(target->second.inputs, [&](const Input &i) {
-      return i.from == handle && i.toAttr == output.toAttr
-             && i.fromAttr == output.fromAttr;
-    });
+  while (!node.inputs.empty())
+    unlink(node, node.inputs.size() - 1);
+  while (!node.outputs.empty()) {
+    const Output &output = node.outputs.back();
+    unlink(m_nodes.at(output.to), output.input);
   }
   m_nodes.erase(handle);
 }
@@ -183,12 +192,11 @@ Input *Graph::existingInput(const Node &source,
   // A node may have a million connections on one side (.root's objects,
   // a shared material's outputs) and a few on the other.
   if (source.outputs.size() < target.inputs.size()) {
-    const bool connected = std::any_of(
+    auto it = std::find_if(
         source.outputs.begin(), source.outputs.end(), [&](const Output &o) {
           return o.to == to && o.fromAttr == fromAttr && o.toAttr == toAttr;
         });
-    if (!connected)
-      return nullptr;
+    return it == source.outputs.end() ? nullptr : &target.inputs[it->input];
   }
   auto it = std::find_if(target.inputs.begin(), target.inputs.end(), sameInput);
   return it == target.inputs.end() ? nullptr : &*it;
@@ -225,8 +233,16 @@ void Graph::connect(const std::string &from,
   }
   if (m_unchecked)
     m_uncheckedTargets.push_back(to);
-  target->inputs.push_back({from, fromAttr, toAttr, priority, strength, index});
-  source->outputs.push_back({fromAttr, to, toAttr});
+  const size_t input = target->inputs.size(), output = source->outputs.size();
+  target->inputs.push_back({from,
+      fromAttr,
+      toAttr,
+      priority,
+      strength,
+      index,
+      m_nextSequence++,
+      output});
+  source->outputs.push_back({fromAttr, to, toAttr, input});
 }
 
 void Graph::checkCycles()
@@ -252,30 +268,38 @@ void Graph::disconnect(const std::string &from,
     const std::string &to,
     const std::string &toAttr)
 {
-  if (from != kAll && !lookup(from, "NSIDisconnect"))
+  Node *source = from == kAll ? nullptr : lookup(from, "NSIDisconnect");
+  if (from != kAll && !source)
     return;
-  if (to != kAll && !lookup(to, "NSIDisconnect"))
+  Node *target = to == kAll ? nullptr : lookup(to, "NSIDisconnect");
+  if (to != kAll && !target)
     return;
-  // One target, or (.all) every node.
-  auto first = to == kAll ? m_nodes.begin() : m_nodes.find(to);
-  auto last = to == kAll ? m_nodes.end() : std::next(first);
-  for (auto entry = first; entry != last; ++entry) {
-    const std::string &handle = entry->first;
-    Node &node = entry->second;
-    std::erase_if(node.inputs, [&](const Input &input) {
-      if (!matches(from, input.from) || !matches(fromAttr, input.fromAttr)
-          || !matches(toAttr, input.toAttr))
-        return false;
-      auto source = m_nodes.find(input.from);
-      if (source != m_nodes.end()) {
-        std::erase_if(source->second.outputs, [&](const Output &o) {
-          return o.to == handle && o.toAttr == input.toAttr
-                 && o.fromAttr == input.fromAttr;
-        });
-      }
-      return true;
-    });
+  // Whichever end is named and has fewer connections is searched. From the
+  // back: a removal moves the last connection, already looked at, into the
+  // gap.
+  if (source && (!target || source->outputs.size() < target->inputs.size())) {
+    for (size_t at = source->outputs.size(); at-- > 0;) {
+      const Output &output = source->outputs[at];
+      if (matches(to, output.to) && matches(fromAttr, output.fromAttr)
+          && matches(toAttr, output.toAttr))
+        unlink(m_nodes.at(output.to), output.input);
+    }
+    return;
   }
+  auto unlinkMatches = [&](Node &node) {
+    for (size_t at = node.inputs.size(); at-- > 0;) {
+      const Input &input = node.inputs[at];
+      if (matches(from, input.from) && matches(fromAttr, input.fromAttr)
+          && matches(toAttr, input.toAttr))
+        unlink(node, at);
+    }
+  };
+  if (target) {
+    unlinkMatches(*target);
+    return;
+  }
+  for (auto &entry : m_nodes)
+    unlinkMatches(entry.second);
 }
 
 } // namespace prism::nsi

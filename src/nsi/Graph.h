@@ -29,19 +29,25 @@ struct Input
   std::string from, fromAttr, toAttr;
   int priority{0};
   int strength{0};
-  int index{0}; // orders the models of an `instances` node
+  int index{0};         // orders the models of an `instances` node
+  uint64_t sequence{0}; // when it was first connected (inputsOf's order)
+  size_t output{0};     // its Output's place in the source's outputs
 };
 
 // A connection leaving one of a node's attributes.
 struct Output
 {
   std::string fromAttr, to, toAttr;
+  size_t input{0}; // its Input's place in the target's inputs
 };
 
 struct Node
 {
   std::string type;
   std::map<std::string, Attribute> attributes;
+  // In no order (a removal moves the last one into the gap, so removing a
+  // connection costs the same at a node with a million); each side knows
+  // where its other side is.
   std::vector<Input> inputs;
   std::vector<Output> outputs;
   // Place in an order every connection follows (a source lies below what it
@@ -94,6 +100,8 @@ class Graph
  private:
   Node *lookup(const std::string &handle, const char *call);
   void removeNode(const std::string &handle);
+  // Removes `target`'s input at `at` and its output at the source.
+  void unlink(Node &target, size_t at);
   // The connection from `source` to `target` made again (nullptr if new),
   // searched where the two nodes have fewer connections.
   Input *existingInput(const Node &source,
@@ -108,6 +116,7 @@ class Graph
   // New nodes go below every other: a scene made parents first, as scenes
   // are, never needs reordering.
   int64_t m_nextOrder{0};
+  uint64_t m_nextSequence{0};
   // Connections were taken without a cycle check; orders may not climb.
   bool m_unchecked{false};
   std::vector<std::string> m_uncheckedTargets; // in connection order
