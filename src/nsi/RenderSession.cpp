@@ -201,19 +201,28 @@ void RenderSession::apply(const ResolvedScene &scene)
 
 void RenderSession::launch()
 {
-  std::lock_guard join(m_joinMutex); // NOTE: wait() may read m_thread
-  m_stopRequested = false;
-  m_running = true;
+  // NOTE: wait() may read m_thread, and a stop() holds this lock from its
+  // request to its join, so a render launched meanwhile is not the one it
+  // joins with its request undone.
+  std::lock_guard join(m_joinMutex);
+  {
+    // A new render starts unsuspended, whatever the last one was.
+    std::lock_guard lock(m_suspendMutex);
+    m_stopRequested = false;
+    m_suspended = false;
+    m_running = true;
+    ++m_generation;
+  }
   m_thread = std::thread([this] {
     t_rendering = this;
     renderAll();
   });
 }
 
-void RenderSession::join()
+void RenderSession::join(uint64_t generation)
 {
   std::lock_guard lock(m_joinMutex);
-  if (m_thread.joinable())
+  if (m_generation == generation && m_thread.joinable())
     m_thread.join();
 }
 
@@ -221,6 +230,7 @@ RenderSession::Waited RenderSession::wait()
 {
   if (t_rendering == this)
     return Waited::kOnRenderThread;
+  uint64_t ended = 0;
   {
     // A suspended render ends only after a resume, which no one may send
     // while this caller waits: return rather than hang.
@@ -228,8 +238,10 @@ RenderSession::Waited RenderSession::wait()
     m_suspendedOrEnded.wait(lock, [this] { return m_suspended || !m_running; });
     if (m_running)
       return Waited::kSuspended;
+    ended = m_generation;
   }
-  join();
+  // The render seen ending, not one another thread started since.
+  join(ended);
   return Waited::kEnded;
 }
 
@@ -239,13 +251,17 @@ void RenderSession::stop()
     m_stopRequested = true; // the thread ends when its callback returns
     return;
   }
+  // From the request to the join, so no launch() in between undoes the
+  // request and leaves this joining a render that waits for a resume.
+  std::lock_guard joining(m_joinMutex);
   {
     // Under the lock, so a thread about to wait for resume sees it.
     std::lock_guard lock(m_suspendMutex);
     m_stopRequested = true;
   }
   m_resumed.notify_all();
-  join();
+  if (m_thread.joinable())
+    m_thread.join();
 }
 
 void RenderSession::suspend()

@@ -106,8 +106,9 @@ class RenderSession
   void release();
   void apply(const ResolvedScene &scene);
   void launch();
-  // Joins the thread, if any (under m_joinMutex).
-  void join();
+  // Joins the thread of render `generation` (under m_joinMutex); nothing
+  // when another has been launched since.
+  void join(uint64_t generation);
 
   ReportFunction m_report;
   Stopped m_stopped;
@@ -131,6 +132,8 @@ class RenderSession
   // Suspended, or the thread ended: what wait() waits for.
   std::condition_variable m_suspendedOrEnded;
   bool m_suspended{false}; // guarded by m_suspendMutex
+  // Launches so far: written under both mutexes, read under either.
+  uint64_t m_generation{0};
   std::thread m_thread;
   std::mutex m_joinMutex; // one thread joins (and releases) at a time
 };
