@@ -124,8 +124,17 @@ LoadResult loadRawVolume(ANARIDevice device,
     return result;
   }
   const auto &d = format.dimensions;
-  const uint64_t voxels = d[0] * d[1] * d[2];
-  const uint64_t expectedBytes = voxels * type->size;
+  // Counts a name or a caller gives may multiply past 64 bits, and a
+  // wrapped product could match a small file: refuse before it does.
+  uint64_t voxels = 0, expectedBytes = 0;
+  if (__builtin_mul_overflow(d[0], d[1], &voxels)
+      || __builtin_mul_overflow(voxels, d[2], &voxels)
+      || __builtin_mul_overflow(voxels, uint64_t(type->size), &expectedBytes)) {
+    result.error = "raw volume '" + path + "': " + std::to_string(d[0]) + "x"
+                   + std::to_string(d[1]) + "x" + std::to_string(d[2])
+                   + " voxels do not fit in 64 bits of bytes";
+    return result;
+  }
   std::error_code ec;
   const uint64_t fileBytes = std::filesystem::file_size(path, ec);
   if (ec) {

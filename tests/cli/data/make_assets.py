@@ -17,7 +17,8 @@ the outputs are committed, so this only reruns when the assets change):
   bad inputs            corrupt.gltf, truncated.glb, bad-accessor.gltf,
                         missing-buffer.gltf, cycle.gltf, bad-index.obj,
                         garbage.obj, tiny_4x4x4_uint8.raw,
-                        truncated_8x8x8_uint16.raw, volume.raw
+                        truncated_8x8x8_uint16.raw, volume.raw,
+                        overflow_999999999x999999999x999999999_uint8.raw
   glTF indices          mesh-index-2pow32.gltf (a node's mesh 2^32, which
                         tinygltf's int cast turned into mesh 0),
                         scene-past-end.gltf ("scene": 5 of 1),
@@ -1151,6 +1152,8 @@ def main():
     write("tiny_4x4x4_uint8.raw", bytes(range(64)))
     write("truncated_8x8x8_uint16.raw", bytes(1000))
     write("volume.raw", bytes(64))
+    # Voxel counts whose product overflows 64 bits.
+    write("overflow_999999999x999999999x999999999_uint8.raw", b"abcd")
 
 
 if __name__ == "__main__":
