@@ -18,8 +18,12 @@ def main():
     subprocess.run([render, *args, "--trace", trace,
                     "-o", os.path.join(workdir, "run.png")], check=True)
 
-    frames = os.path.join(workdir, "frames")
-    os.makedirs(frames, exist_ok=True)
+    # A folder that does not exist yet is made, nested.
+    frames = os.path.join(workdir, "frames", "nested")
+    if os.path.isdir(frames):
+        for name in os.listdir(frames):
+            os.remove(os.path.join(frames, name))
+        os.rmdir(frames)
     done = subprocess.run([replay, trace, "--write-frames", frames],
                           capture_output=True, text=True)
     print(done.stdout + done.stderr)
@@ -30,6 +34,15 @@ def main():
         sys.exit("the replay did not give the recorded images")
     if not any(name.endswith(".raw") for name in os.listdir(frames)):
         sys.exit("--write-frames wrote nothing")
+    # A folder that cannot be made (under a file) is an error, before the
+    # replay.
+    blocked = subprocess.run(
+        [replay, trace, "--write-frames",
+         os.path.join(workdir, "run.png", "frames")],
+        capture_output=True, text=True)
+    print(blocked.stdout + blocked.stderr)
+    if blocked.returncode != 1 or "cannot make the folder" not in blocked.stderr:
+        sys.exit("an unwritable --write-frames folder was not an error")
 
     # The same trace with its bulk data changed (every vertex moved) must
     # give another image, and say so.

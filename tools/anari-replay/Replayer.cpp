@@ -721,12 +721,12 @@ bool Replayer::mapFrame(const Tokens &t)
           t[2].text.c_str());
   }
   if (pixels && !m_options.frameDirectory.empty())
-    writeFrame(t[1].text, t[2].text, pixels, w, h, pixelType);
+    return writeFrame(t[1].text, t[2].text, pixels, w, h, pixelType);
   // The trace unmaps it on its own line.
   return true;
 }
 
-void Replayer::writeFrame(const std::string &frame,
+bool Replayer::writeFrame(const std::string &frame,
     const std::string &channel,
     const void *pixels,
     uint32_t width,
@@ -739,17 +739,20 @@ void Replayer::writeFrame(const std::string &frame,
       m_options.frameDirectory + "/" + prefix + frame + "-" + channel;
   // The channel's bytes as the device gave them, and colors as an image.
   const uint64_t bytes = uint64_t(width) * height * anari::sizeOf(type);
-  if (FILE *raw = std::fopen((base + ".raw").c_str(), "wb")) {
-    std::fwrite(pixels, 1, bytes, raw);
-    std::fclose(raw);
-  }
+  FILE *raw = std::fopen((base + ".raw").c_str(), "wb");
+  const bool wrote = raw && std::fwrite(pixels, 1, bytes, raw) == bytes;
+  if (raw && std::fclose(raw) != 0)
+    return fail("--write-frames: cannot write '" + base + ".raw'");
+  if (!wrote)
+    return fail("--write-frames: cannot write '" + base + ".raw'");
   if (type == ANARI_FLOAT32_VEC4) {
     image::Image out(width, height);
     std::memcpy(out.pixels.data(), pixels, bytes);
     auto written = image::write(base + ".exr", out);
     if (!written.ok())
-      std::fprintf(stderr, "anari-replay: %s\n", written.error.c_str());
+      return fail("--write-frames: " + written.error);
   }
+  return true;
 }
 
 bool Replayer::property(const Tokens &t)

@@ -73,7 +73,8 @@ class Replayer
   bool arrayData(const Tokens &t);
   bool mapFrame(const Tokens &t);
   bool property(const Tokens &t);
-  void writeFrame(const std::string &frame,
+  // False (and the replay fails) when the files cannot be written.
+  bool writeFrame(const std::string &frame,
       const std::string &channel,
       const void *pixels,
       uint32_t width,

@@ -4,6 +4,7 @@
 #include "Replayer.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 namespace {
@@ -15,7 +16,8 @@ const char *kUsage =
     "library the trace was recorded on). Every frame the trace mapped is\n"
     "compared with the recorded one; exit status 0 if all are the same bit\n"
     "for bit, 2 if any differs, 1 on an error. --write-frames writes each\n"
-    "mapped channel to DIR (.raw bytes; FLOAT32_VEC4 also as .exr).\n"
+    "mapped channel to DIR, made if need be (.raw bytes; FLOAT32_VEC4 also\n"
+    "as .exr); a file it cannot write is an error.\n"
     "--check-reports replays through the debug layer wrapped around NAME,\n"
     "with the calls the layer refused, and exits 3 unless the layer makes\n"
     "the same reports (warnings and errors) as recorded, in the same order.\n";
@@ -46,6 +48,19 @@ int main(int argc, char **argv)
   if (options.tracePath.empty()) {
     std::fputs(kUsage, stderr);
     return 1;
+  }
+  if (!options.frameDirectory.empty()) {
+    // Made now, so a folder that cannot be made fails before the replay.
+    std::error_code error;
+    std::filesystem::create_directories(options.frameDirectory, error);
+    if (!std::filesystem::is_directory(options.frameDirectory)) {
+      std::fprintf(stderr,
+          "anari-replay: --write-frames: cannot make the folder '%s'%s%s\n",
+          options.frameDirectory.c_str(),
+          error ? ": " : "",
+          error ? error.message().c_str() : "");
+      return 1;
+    }
   }
   prism::replay::Replayer replayer(options);
   if (!replayer.run()) {
