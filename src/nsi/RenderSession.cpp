@@ -3,6 +3,7 @@
 #include "AnariWorldBuilder.h"
 #include "ImageIO.h"
 #include "OutputChannels.h"
+#include "OutputFiles.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -184,6 +185,7 @@ void RenderSession::apply(const ResolvedScene &scene)
   m_world = world;
   m_options = scene.options;
   m_cameras = scene.cameras;
+  placeOutputFiles(m_cameras, m_report, m_warnedOutputs);
   m_hasMotion = scene.hasMotion;
   for (CameraItem &camera : m_cameras) {
     if (camera.motion.size() > 1 && !m_cameraMotion) {
@@ -306,7 +308,7 @@ void RenderSession::writeOutputs(const CameraItem &item,
   for (const FrameChannel *channel : channels)
     pictures[channel] = readFrameChannel(m_device, frame, *channel);
   for (const OutputItem &output : item.outputs) {
-    if (output.driverName == "idisplay" || output.driverName.empty())
+    if (output.driverName.empty() || isDisplayDriver(output.driverName))
       continue;
     if (output.fileName.empty()) {
       if (warn)

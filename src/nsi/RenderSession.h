@@ -20,6 +20,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <string>
 #include <thread>
 
@@ -111,6 +112,7 @@ class RenderSession
   void join(uint64_t generation);
 
   ReportFunction m_report;
+  std::set<std::string> m_warnedOutputs; // OutputFiles' warnings said
   Stopped m_stopped;
   ANARILibrary m_library{nullptr};
   ANARIDevice m_device{nullptr};

@@ -975,6 +975,40 @@ TEST_F(Render, ParticleLights)
   EXPECT_GT(value(point, 22, 16), 0.1f);
 }
 
+TEST_F(Render, UnwritableOutputPathsFallBackToTheCurrentFolder)
+{
+  // A stream exported elsewhere names its author's folder: the image is
+  // written under its file name in the current folder, with one warning
+  // before the render; a display driver is named in a warning too.
+  const std::filesystem::path here = std::filesystem::current_path();
+  std::filesystem::current_path(m_dir);
+  NSIContext_t ctx = beginRender();
+  minimalScene(ctx, 8, 1, "/nonexistent-prism-folder/shots/beauty.png");
+  NSICreate(ctx, "window", "outputdriver", 0, nullptr);
+  NSI::ArgumentList window;
+  window.addString("drivername", "idisplay")
+      .addString("imagefilename", "beauty");
+  NSISetAttribute(ctx, "window", window.size(), window.data());
+  NSIConnect(ctx, "window", "", "layer", "outputdrivers", 0, nullptr);
+  renderControl(ctx, "start");
+  renderControl(ctx, "wait");
+  NSIEnd(ctx);
+  std::filesystem::current_path(here);
+  const std::string problems = m_messages.problems();
+  EXPECT_NE(problems.find("cannot write "
+                          "'/nonexistent-prism-folder/shots/beauty.png' "
+                          "(folder '/nonexistent-prism-folder/shots' does not "
+                          "exist); the image goes to 'beauty.png' in the "
+                          "current folder instead"),
+      std::string::npos)
+      << problems;
+  EXPECT_NE(problems.find("output driver 'idisplay' of layer 'layer' shows "
+                          "images in a window"),
+      std::string::npos)
+      << problems;
+  EXPECT_TRUE(std::filesystem::is_regular_file(path("beauty.png")));
+}
+
 TEST_F(Render, PointLightDecayRate)
 {
   // A point light 3 above a white floor seen from 10 above: right below it,
