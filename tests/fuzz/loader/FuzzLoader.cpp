@@ -66,8 +66,11 @@ void setVec3(ANARIObject object, const char *name, const prism::scenes::Vec3 &v)
 void render(const LoadResult &loaded)
 {
   ANARIDevice d = g_session.device;
-  const CameraSetup camera =
-      frameCamera(loaded.scene.camera, loaded.scene.bounds, 1.f, Options{});
+  const CameraSetup camera = frameCamera(loaded.scene.camera,
+      loaded.scene.bounds,
+      1.f,
+      CameraOverrides{},
+      loaded.scene.outline);
   setVec3(g_session.camera, "position", camera.eye);
   setVec3(g_session.camera, "direction", camera.at - camera.eye);
   setVec3(g_session.camera, "up", camera.up);
