@@ -97,6 +97,8 @@ py::dict loadScene(
     r.aspect = get("aspect").cast<float>();
   if (!(r.aspect > 0.f && r.aspect < 1e6f))
     throw py::value_error("aspect must be a positive width / height");
+  if (!(r.environment.intensity >= 0.f && r.environment.intensity <= 1e6f))
+    throw py::value_error("environment_intensity must be from 0 to 1000000");
 
   Loaded loaded = device.withHandle("load_scene",
       [&](ANARIDevice d, ANARIObject) { return load(d, path, r); });

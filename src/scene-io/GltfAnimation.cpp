@@ -172,6 +172,11 @@ bool poseAtTime(tinygltf::Model &model,
     FloatAccessorReader read,
     std::string &error)
 {
+  // NaN would fall between no two keys (and past the last one's index).
+  if (!std::isfinite(time)) {
+    error = "the animation time " + std::to_string(time) + " is not finite";
+    return false;
+  }
   for (size_t a = 0; a < model.animations.size(); a++) {
     const tinygltf::Animation &animation = model.animations[a];
     for (size_t c = 0; c < animation.channels.size(); c++) {

@@ -124,6 +124,13 @@ TEST(GltfAnimation, MalformedChannelsAreRefused)
       << error;
   auto uneven = animated("translation", "LINEAR", {0.f, 1.f}, {1, 2, 3, 4});
   EXPECT_FALSE(poseAtTime(uneven, 0.0, readCanned, error));
+  // A time that is no number (Python's load_scene passes what it is given).
+  auto fine = animated("translation", "LINEAR", {0.f, 1.f}, {0, 0, 0, 1, 1, 1});
+  for (double bad : {std::nan(""), HUGE_VAL, -HUGE_VAL}) {
+    EXPECT_FALSE(poseAtTime(fine, bad, readCanned, error)) << bad;
+    EXPECT_NE(error.find("is not finite"), std::string::npos) << error;
+  }
+  EXPECT_EQ(poseAt(fine, 1e30), (std::vector<double>{1, 1, 1})); // clamped
 }
 
 } // namespace

@@ -91,5 +91,12 @@ def test_what_cannot_be_loaded_is_a_value_error(device):
         prism.load_scene(device, __file__)
     with pytest.raises(ValueError, match="unknown demo scene"):
         prism.load_scene(device, "demo:nothing")
-    with pytest.raises(ValueError, match="aspect"):
-        prism.load_scene(device, "demo:cornell-box", aspect=0.0)
+    for bad in (0.0, float("nan"), 1e30):
+        with pytest.raises(ValueError, match="aspect"):
+            prism.load_scene(device, "demo:cornell-box", aspect=bad)
+    for bad in (-1.0, float("nan"), 1e30):
+        with pytest.raises(ValueError, match="environment_intensity"):
+            prism.load_scene(device, "demo:cornell-box", environment_intensity=bad)
+    with pytest.raises(ValueError, match="is not finite"):
+        prism.load_scene(device, os.path.join(DATA, "animated-bar.gltf"),
+                         time=float("nan"))
