@@ -703,6 +703,8 @@ struct PrimitiveData
   bool drawn{false};
   // NORMAL and TEXCOORD_n as read, for tangent generation.
   std::map<std::string, std::vector<float>> kept;
+  // A skinned node's: each vertex's skin matrix (empty: not skinned).
+  std::vector<std::array<double, 16>> skins;
 
   // The attribute accessor `name` names, or -1.
   int attribute(const char *name) const;
@@ -786,8 +788,7 @@ class GltfImporter
   void setShape(
       const PrimitiveData &d, ANARIGeometry geometry, scenes::Bounds &bounds);
   // NORMAL, TANGENT and TEXCOORD_n (morphed, skinned), kept in `d.kept`.
-  bool setVertexAttributes(
-      int key, PrimitiveData &d, const Joints *joints, ANARIGeometry geometry);
+  bool setVertexAttributes(int key, PrimitiveData &d, ANARIGeometry geometry);
   void setTangents(const PrimitiveData &d,
       const tinygltf::Material *gm,
       ANARIGeometry geometry);
@@ -797,14 +798,12 @@ class GltfImporter
       bool &vertexColors);
   // The skin's joint matrices (joint world x inverse bind matrix).
   bool jointMatrices(int skin, std::vector<Mat4d> &joints);
-  // Poses `values` (`components` per vertex: positions 3, normals 3,
-  // tangents 4 whose w stays) by JOINTS_0 and WEIGHTS_0: each vertex by the
-  // weighted sum of its joints' matrices (directions by its linear part).
-  bool skin(const tinygltf::Primitive &primitive,
+  // Each vertex's skin matrix from JOINTS_0 and WEIGHTS_0: the weighted
+  // sum of its joints' matrices.
+  bool vertexSkins(const tinygltf::Primitive &primitive,
       const std::vector<Mat4d> &joints,
-      bool directions,
-      int components,
-      std::vector<float> &values,
+      size_t vertices,
+      std::vector<Mat4d> &skins,
       std::string &error);
   struct Skinned
   {
@@ -1146,11 +1145,10 @@ bool GltfImporter::jointMatrices(int skinIndex, std::vector<Mat4d> &joints)
   return true;
 }
 
-bool GltfImporter::skin(const tinygltf::Primitive &primitive,
+bool GltfImporter::vertexSkins(const tinygltf::Primitive &primitive,
     const std::vector<Mat4d> &joints,
-    bool directions,
-    int components,
-    std::vector<float> &values,
+    size_t vertices,
+    std::vector<Mat4d> &skins,
     std::string &error)
 {
   const auto jointsAttribute = primitive.attributes.find("JOINTS_0");
@@ -1170,13 +1168,13 @@ bool GltfImporter::skin(const tinygltf::Primitive &primitive,
     error = "JOINTS_0/WEIGHTS_0: " + error;
     return false;
   }
-  const size_t vertices = values.size() / size_t(components);
   if (influences.size() != 4 * vertices || weights.size() != 4 * vertices) {
     error = "JOINTS_0/WEIGHTS_0 have a different count than POSITION";
     return false;
   }
+  skins.assign(vertices, Mat4d{});
   for (size_t v = 0; v < vertices; v++) {
-    Mat4d m{};
+    Mat4d &m = skins[v];
     double total = 0.0;
     for (size_t k = 0; k < 4; k++) {
       const uint32_t joint = influences[4 * v + k];
@@ -1194,12 +1192,6 @@ bool GltfImporter::skin(const tinygltf::Primitive &primitive,
     }
     if (total == 0.0)
       m = identity();
-    float *x = &values[v * size_t(components)];
-    const double p[3] = {x[0], x[1], x[2]};
-    const double h = directions ? 0.0 : 1.0;
-    for (int r = 0; r < 3; r++)
-      x[r] = float(m[size_t(r)] * p[0] + m[size_t(4 + r)] * p[1]
-                   + m[size_t(8 + r)] * p[2] + m[size_t(12 + r)] * h);
   }
   return true;
 }
@@ -2177,6 +2169,25 @@ void arrangeTopology(int mode,
   }
 }
 
+// Poses `values` (`components` per vertex: positions 3, normals 3,
+// tangents 4 whose w stays) by each vertex's skin matrix; directions by its
+// linear part.
+void applySkin(const std::vector<Mat4d> &skins,
+    bool directions,
+    int components,
+    std::vector<float> &values)
+{
+  const double h = directions ? 0.0 : 1.0;
+  for (size_t v = 0; v < skins.size(); v++) {
+    const Mat4d &m = skins[v];
+    float *x = &values[v * size_t(components)];
+    const double p[3] = {x[0], x[1], x[2]};
+    for (int r = 0; r < 3; r++)
+      x[r] = float(m[size_t(r)] * p[0] + m[size_t(4 + r)] * p[1]
+                   + m[size_t(8 + r)] * p[2] + m[size_t(12 + r)] * h);
+  }
+}
+
 } // namespace
 
 std::vector<float> PrimitiveData::arranged(
@@ -2240,8 +2251,12 @@ bool GltfImporter::readPrimitive(
   if (d.vertexCount == 0)
     return true;
   if (!morph(key, *d.primitive, "POSITION", 3, d.positions, error)
-      || (joints && !skin(*d.primitive, *joints, false, 3, d.positions, error)))
+      || (joints
+          && !vertexSkins(
+              *d.primitive, *joints, d.vertexCount, d.skins, error)))
     return fail(d.where + " " + error);
+  if (!d.skins.empty())
+    applySkin(d.skins, false, 3, d.positions);
   sampleOutline(d.positions.data(), d.vertexCount, m_meshOutlines[key]);
 
   std::vector<uint32_t> indices;
@@ -2293,7 +2308,7 @@ void GltfImporter::setShape(
 }
 
 bool GltfImporter::setVertexAttributes(
-    int key, PrimitiveData &d, const Joints *joints, ANARIGeometry geometry)
+    int key, PrimitiveData &d, ANARIGeometry geometry)
 {
   // (glTF name, ANARI name, components)
   struct Optional
@@ -2327,10 +2342,10 @@ bool GltfImporter::setVertexAttributes(
     if (values.size() != d.vertexCount * size_t(components))
       return fail(
           d.where + " " + o.gltf + " has a different count than POSITION");
-    if (!morph(key, *d.primitive, o.gltf, components, values, error)
-        || (joints && o.direction
-            && !skin(*d.primitive, *joints, true, components, values, error)))
+    if (!morph(key, *d.primitive, o.gltf, components, values, error))
       return fail(d.where + " " + error);
+    if (o.direction && !d.skins.empty())
+      applySkin(d.skins, true, components, values);
     const ANARIDataType type = ANARIDataType(ANARI_FLOAT32 + components - 1);
     const std::vector<float> data = d.arranged(values, size_t(components));
     ANARIArray1D array = scenes::newArray1D(m_device,
@@ -2445,7 +2460,7 @@ bool GltfImporter::buildPrimitive(int key,
           ? &m_model.materials[size_t(materialIndex)]
           : nullptr;
   bool vertexColors = false;
-  if (!setVertexAttributes(key, d, joints, geometry)
+  if (!setVertexAttributes(key, d, geometry)
       || !setVertexColors(d, gm, geometry, vertexColors)) {
     anariRelease(m_device, geometry);
     return false;
