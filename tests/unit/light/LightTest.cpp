@@ -360,6 +360,14 @@ TEST_F(LightTest, PointAndSpotDecay)
   setFloat(clamped, "decay", 7.f);
   commit(clamped);
   EXPECT_TRUE(reported({"'decay' (7) is above 4"}));
+  // Not a number, or negative: reported, and the light is invalid.
+  for (float bad : {std::nanf(""), -1.f}) {
+    light::Point invalid(m_device);
+    setFloat(invalid, "decay", bad);
+    commit(invalid);
+    EXPECT_FALSE(invalid.place(kIdentityMat3x4)) << bad;
+  }
+  EXPECT_TRUE(reported({"'decay'", "must be finite and >= 0"}));
   const LightSample s = place(clamped)->sample({0, 0, -2.f}, {0.3f, 0.7f});
   EXPECT_NEAR(s.radiance.x, 1.f / 16.f, 1e-6f);
 }
