@@ -325,7 +325,7 @@ int RenderRun::makeRenderer()
   }
   if (m_options.denoise) {
     if (m_session.has("ANARI_KHR_RENDERER_DENOISE")) {
-      const int32_t on = 1;
+      const bool on = true;
       anariSetParameter(device, m_renderer, "denoise", ANARI_BOOL, &on);
     } else {
       console::warning(
@@ -423,7 +423,7 @@ int RenderRun::makeFrame()
         device, m_frame, r.channel.c_str(), ANARI_DATA_TYPE, &r.type);
   if (m_options.samplesPerPixel > 1) {
     if (m_session.has("ANARI_KHR_FRAME_ACCUMULATION")) {
-      const int32_t on = 1;
+      const bool on = true;
       anariSetParameter(device, m_frame, "accumulation", ANARI_BOOL, &on);
       m_frames = m_options.samplesPerPixel;
     } else {

@@ -1,34 +1,12 @@
 #include "Camera.h"
 
 #include "../array/Array.h"
+#include "../math/SphereSampling.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace prism {
-
-namespace {
-
-// Shirley-Chiu concentric map of [0,1)^2 onto the unit disk: keeps strata
-// compact and maps (0.5, 0.5) to the centre.
-float2 concentricDisk(float2 u)
-{
-  const float2 p{2.f * u.x - 1.f, 2.f * u.y - 1.f};
-  if (p.x == 0.f && p.y == 0.f)
-    return {0.f, 0.f};
-  constexpr float kQuarterPi = float(M_PI / 4.0);
-  float radius, angle;
-  if (std::abs(p.x) > std::abs(p.y)) {
-    radius = p.x;
-    angle = kQuarterPi * (p.y / p.x);
-  } else {
-    radius = p.y;
-    angle = 2.f * kQuarterPi - kQuarterPi * (p.x / p.y);
-  }
-  return {radius * std::cos(angle), radius * std::sin(angle)};
-}
-
-} // namespace
 
 Camera::Camera(DeviceState &device, const std::string &subtype)
     : MovingObject(device, ANARI_CAMERA, subtype)
@@ -277,7 +255,7 @@ Ray Camera::throughLens(float3 origin,
 {
   if (m_apertureRadius <= 0.f)
     return {origin, direction};
-  const float2 disk = concentricDisk(lensSample) * m_apertureRadius;
+  const float2 disk = sampleConcentricDisk(lensSample) * m_apertureRadius;
   const float3 lensPoint = origin + lensU * disk.x + lensV * disk.y;
   const float3 focusPoint = origin + direction * focusT;
   return {lensPoint, normalize(focusPoint - lensPoint)};
