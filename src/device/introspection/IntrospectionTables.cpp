@@ -2771,7 +2771,8 @@ constexpr ParameterEntry kParameters28[] = {
         .extension = kPrismRenderers},
     {.name = "aoDistance",
         .types = {kTypeList6, 1},
-        .description = "how far occluders count",
+        .description = "how far occluders count (0: none does, the image is "
+                       "the base color)",
         .defaultValue = kDefault28_aoDistance,
         .minimum = kMinimum28_aoDistance,
         .extension = kPrismRenderers},
@@ -2947,8 +2948,9 @@ constexpr ParameterEntry kParameters30[] = {
         .extension = kPrismRenderers},
     {.name = "maxPathLength",
         .types = {kTypeList40, 1},
-        .description = "the most surfaces a path meets (1: direct light only); "
-                       "values outside [1, 1024] are clamped",
+        .description =
+            "the most surfaces a path meets (1: direct light only); a value "
+            "outside [1, 1024] is reported and the default used",
         .defaultValue = kDefault30_maxPathLength,
         .minimum = kMinimum30_maxPathLength,
         .maximum = kMaximum30_maxPathLength,
@@ -3064,9 +3066,10 @@ constexpr ParameterEntry kParameters31[] = {
         .extension = kPrismRenderers},
     {.name = "volumeSamplingRate",
         .types = {kTypeList6, 1},
-        .description = "volume samples per data cell along a ray (the "
-                       "reference marcher's step is the cell size divided by "
-                       "this); values outside [0.001, 1000] are clamped",
+        .description =
+            "volume samples per data cell along a ray (the reference marcher's "
+            "step is the cell size divided by this); a value outside [0.001, "
+            "1000] is reported and the default used",
         .defaultValue = kDefault31_volumeSamplingRate,
         .minimum = kMinimum31_volumeSamplingRate,
         .maximum = kMaximum31_volumeSamplingRate,
