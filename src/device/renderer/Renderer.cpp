@@ -206,6 +206,10 @@ bool Renderer::getProperty(const std::string &name,
     uint64_t size,
     ANARIWaitMask mask)
 {
+  if (name == "ignoresLights" && type == ANARI_BOOL && mem && size >= 1) {
+    *(uint8_t *)mem = ignoresLights() ? 1 : 0;
+    return true;
+  }
   if (name == "extension" && type == ANARI_STRING_LIST && mem
       && size >= sizeof(const char **)) {
     const char **list = introspection::deviceExtensions();

@@ -373,6 +373,30 @@ TEST_F(Conformance, EveryParameterReadIsDeclared)
   }
 }
 
+// Every renderer declares and answers "ignoresLights": the ones that shade
+// by an eye light, occlusion or false colors say so (prism-render asks).
+TEST_F(Conformance, RenderersSayWhetherTheyIgnoreLights)
+{
+  const std::set<std::string> lightFree{"raycast", "ao", "debug"};
+  for (const char **s = introspection::objectSubtypes(ANARI_RENDERER); s && *s;
+       s++) {
+    EXPECT_NE(introspection::findProperty(ANARI_RENDERER, *s, "ignoresLights"),
+        nullptr)
+        << *s;
+    ANARIObject handle = create(ANARI_RENDERER, *s);
+    uint8_t ignores = 7;
+    ASSERT_TRUE(m_device.getProperty(handle,
+        "ignoresLights",
+        ANARI_BOOL,
+        &ignores,
+        sizeof(ignores),
+        ANARI_WAIT))
+        << *s;
+    EXPECT_EQ(ignores, lightFree.count(*s) ? 1 : 0) << *s;
+    m_device.release(handle);
+  }
+}
+
 TEST_F(Conformance, AdvertisedExtensionsAreKnownToTheApi)
 {
   // Each name must be one the API definitions define (no typos, no
