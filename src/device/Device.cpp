@@ -73,6 +73,11 @@ Device::Device(ANARILibrary library)
   m_statusCallback = m_defaultStatusCB;
   m_statusUserPtr = m_defaultStatusCBUserPtr;
   addPrismSubtypes(m_subtypes);
+  // Objects read their parameters' defaults and bounds from introspection;
+  // a device made without the library (tests of the core) needs it too.
+  // A no-op once the library (or the data-parallel one) has set it.
+  introspection::setImplementedExtensions(
+      kImplementedExtensions, kRendererSubtypes);
 }
 
 Device::~Device()

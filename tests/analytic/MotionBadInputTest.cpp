@@ -211,7 +211,9 @@ TEST_F(MotionBadInput, UnknownRollingShutterDirection)
   anariSetParameter(
       m_device, c, "rollingShutterDirection", ANARI_STRING, "sideways");
   EXPECT_NEAR(coveredCentreX(w, 0.5f, c), 0.f, 1e-3f);
-  EXPECT_TRUE(warned("unknown 'rollingShutterDirection' 'sideways'"));
+  EXPECT_TRUE(
+      warned("'rollingShutterDirection' (\"sideways\") must be one of: "
+             "none, left, right, down, up"));
 }
 
 TEST_F(MotionBadInput, VertexKeysOfDifferentSizesFallBackToVertexPosition)

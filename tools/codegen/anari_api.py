@@ -51,6 +51,19 @@ class Api:
         return out
 
 
+VENDORED_API = os.path.join("third_party", "anari-api")
+
+
+def api_dir_and_root(argv, usage):
+    """(API_DIR, REPO_ROOT) from `[API_DIR] REPO_ROOT`; API_DIR defaults to
+    the definitions vendored in the repository."""
+    if len(argv) == 2:
+        return os.path.join(argv[1], VENDORED_API), argv[1]
+    if len(argv) == 3:
+        return argv[1], argv[2]
+    raise SystemExit(usage)
+
+
 def handle_class_name(opaque_name):
     """ANARIArray1D -> Array1D (the C++ tag struct in anari::api)."""
     return opaque_name[len("ANARI"):]

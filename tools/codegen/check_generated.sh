@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Regenerates every generated file into a scratch tree and compares it with
-# the committed one. Exits 77 (skipped) when the API definitions are absent,
-# as in a user's clone.
+# the committed one, from the API definitions vendored in third_party/ (or
+# the directory given). Exits 77 (skipped) only without python3.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
-api=${1:-$root/../shared/anari-api}
+api=${1:-$root/third_party/anari-api}
 if [ ! -d "$api" ] || ! command -v python3 >/dev/null; then
   echo "skipped: no API definitions at $api (or no python3)"
   exit 77

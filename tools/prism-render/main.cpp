@@ -253,11 +253,24 @@ int RenderRun::loadScene()
   return lit;
 }
 
-// prism's renderers that ignore lights by design (docs/renderers.md): they
-// shade by an eye light or by occlusion alone.
-bool ignoresLights(const std::string &renderer)
+// Whether the device's renderer of that subtype says (its "ignoresLights"
+// property, docs/renderers.md) that it shades without lights; a device
+// that does not say is taken to use them.
+bool ignoresLights(ANARIDevice device, const std::string &renderer)
 {
-  return renderer == "raycast" || renderer == "ao" || renderer == "debug";
+  ANARIRenderer probe = anariNewRenderer(device, renderer.c_str());
+  if (!probe)
+    return false;
+  uint8_t ignores = 0; // ANARI_BOOL
+  const int found = anariGetProperty(device,
+      probe,
+      "ignoresLights",
+      ANARI_BOOL,
+      &ignores,
+      sizeof(ignores),
+      ANARI_WAIT);
+  anariRelease(device, probe);
+  return found && ignores;
 }
 
 // Files are lit the way glTF viewers light them (scene_io::lightingFor
@@ -271,7 +284,7 @@ int RenderRun::lightScene()
       m_options.environmentRotateDegrees,
       m_options.environmentGiven};
   const scene_io::Lighting lighting = scene_io::lightingFor(m_scene, choice);
-  const bool lightFree = ignoresLights(m_options.renderer);
+  const bool lightFree = ignoresLights(device, m_options.renderer);
   if (!lighting.add || (lightFree && !choice.given))
     return kContinue;
   if (!scenes::hasSubtype(device, ANARI_LIGHT, "hdri")) {

@@ -14,9 +14,9 @@ Camera::Camera(DeviceState &device, const std::string &subtype)
 
 void Camera::commitParameters()
 {
-  m_position = read<float3>("position", ANARI_FLOAT32_VEC3, {0, 0, 0});
-  float3 direction = read<float3>("direction", ANARI_FLOAT32_VEC3, {0, 0, -1});
-  float3 up = read<float3>("up", ANARI_FLOAT32_VEC3, {0, 1, 0});
+  m_position = param<float3>("position");
+  float3 direction = param<float3>("direction");
+  float3 up = param<float3>("up");
   struct Box2
   {
     float2 lower, upper;
@@ -61,7 +61,7 @@ void Camera::commitParameters()
     m_focusDistance = 1.f;
   }
 
-  const std::string stereoMode = readString("stereoMode", "none");
+  const std::string stereoMode = param<std::string>("stereoMode");
   m_stereoMode = StereoMode::kNone;
   if (stereoMode == "left")
     m_stereoMode = StereoMode::kLeft;
@@ -71,12 +71,6 @@ void Camera::commitParameters()
     m_stereoMode = StereoMode::kSideBySide;
   else if (stereoMode == "topBottom")
     m_stereoMode = StereoMode::kTopBottom;
-  else if (stereoMode != "none") {
-    report(ANARI_SEVERITY_WARNING,
-        ANARI_STATUS_INVALID_ARGUMENT,
-        "unknown 'stereoMode' '%s'; using 'none'",
-        stereoMode.c_str());
-  }
   // 'aspect' describes the whole frame, so each eye's half keeps square
   // pixels only with half (side by side) or twice (stacked) the ratio.
   m_eyeAspectScale = m_stereoMode == StereoMode::kSideBySide  ? 0.5f
@@ -111,7 +105,7 @@ void Camera::readShutter()
     m_shutter = {0.5f, 0.5f};
   }
 
-  const std::string rolling = readString("rollingShutterDirection", "none");
+  const std::string rolling = param<std::string>("rollingShutterDirection");
   m_rollingShutter = RollingShutter::kNone;
   if (rolling == "left")
     m_rollingShutter = RollingShutter::kLeft;
@@ -121,19 +115,7 @@ void Camera::readShutter()
     m_rollingShutter = RollingShutter::kDown;
   else if (rolling == "up")
     m_rollingShutter = RollingShutter::kUp;
-  else if (rolling != "none") {
-    report(ANARI_SEVERITY_WARNING,
-        ANARI_STATUS_INVALID_ARGUMENT,
-        "unknown 'rollingShutterDirection' '%s'; using 'none'",
-        rolling.c_str());
-  }
-  const float duration =
-      read<float>("rollingShutterDuration", ANARI_FLOAT32, 0.f);
-  if (std::isnan(duration)) {
-    report(ANARI_SEVERITY_WARNING,
-        ANARI_STATUS_INVALID_ARGUMENT,
-        "'rollingShutterDuration' is not a number; using 0");
-  }
+  const float duration = param<float>("rollingShutterDuration");
   // The spec clamps the open time per line to the shutter's length.
   m_rollingShutterDuration =
       std::isnan(duration)

@@ -11,14 +11,9 @@ Omnidirectional::Omnidirectional(DeviceState &device)
 void Omnidirectional::commitParameters()
 {
   Camera::commitParameters();
-  // 'equirectangular' is the only layout the spec defines.
-  const std::string layout = readString("layout", "equirectangular");
-  if (layout != "equirectangular") {
-    report(ANARI_SEVERITY_WARNING,
-        ANARI_STATUS_INVALID_ARGUMENT,
-        "unknown 'layout' '%s'; using 'equirectangular'",
-        layout.c_str());
-  }
+  // 'equirectangular' is the only layout the spec defines; param() reports
+  // any other.
+  param<std::string>("layout");
 }
 
 Ray Omnidirectional::rayThroughSensor(

@@ -2771,7 +2771,8 @@ constexpr ParameterEntry kParameters28[] = {
         .extension = kPrismRenderers},
     {.name = "aoDistance",
         .types = {kTypeList6, 1},
-        .description = "how far occluders count",
+        .description = "how far occluders count (0: none does, the image is "
+                       "the base color)",
         .defaultValue = kDefault28_aoDistance,
         .minimum = kMinimum28_aoDistance,
         .extension = kPrismRenderers},
@@ -2784,6 +2785,8 @@ constexpr ParameterEntry kParameters28[] = {
             "sequences of earlier versions",
         .defaultValue = kDefault28_seed,
         .extension = kPrismRenderers}};
+constexpr PropertyEntry kProperties28[] = {
+    {"ignoresLights", ANARI_BOOL, false, kPrismRenderers}};
 constexpr int kContributors28[] = {kKhrRendererAmbientLight,
     kKhrRendererBackgroundColor,
     kKhrRendererBackgroundImage,
@@ -2873,6 +2876,8 @@ constexpr ParameterEntry kParameters29[] = {
         .hasValues = true,
         .values = {kValues29_mode, 17},
         .extension = kPrismRenderers}};
+constexpr PropertyEntry kProperties29[] = {
+    {"ignoresLights", ANARI_BOOL, false, kPrismRenderers}};
 constexpr int kContributors29[] = {kKhrRendererAmbientLight,
     kKhrRendererBackgroundColor,
     kKhrRendererBackgroundImage,
@@ -2947,8 +2952,9 @@ constexpr ParameterEntry kParameters30[] = {
         .extension = kPrismRenderers},
     {.name = "maxPathLength",
         .types = {kTypeList40, 1},
-        .description = "the most surfaces a path meets (1: direct light only); "
-                       "values outside [1, 1024] are clamped",
+        .description =
+            "the most surfaces a path meets (1: direct light only); a value "
+            "outside [1, 1024] is reported and the default used",
         .defaultValue = kDefault30_maxPathLength,
         .minimum = kMinimum30_maxPathLength,
         .maximum = kMaximum30_maxPathLength,
@@ -2971,6 +2977,7 @@ constexpr ParameterEntry kParameters30[] = {
         .defaultValue = kDefault30_seed,
         .extension = kPrismRenderers}};
 constexpr PropertyEntry kProperties30[] = {
+    {"ignoresLights", ANARI_BOOL, false, kPrismRenderers},
     {"raysTraced", ANARI_UINT64, false, kPrismRenderers}};
 constexpr int kContributors30[] = {kKhrRendererAmbientLight,
     kKhrRendererBackgroundColor,
@@ -3064,9 +3071,10 @@ constexpr ParameterEntry kParameters31[] = {
         .extension = kPrismRenderers},
     {.name = "volumeSamplingRate",
         .types = {kTypeList6, 1},
-        .description = "volume samples per data cell along a ray (the "
-                       "reference marcher's step is the cell size divided by "
-                       "this); values outside [0.001, 1000] are clamped",
+        .description =
+            "volume samples per data cell along a ray (the reference marcher's "
+            "step is the cell size divided by this); a value outside [0.001, "
+            "1000] is reported and the default used",
         .defaultValue = kDefault31_volumeSamplingRate,
         .minimum = kMinimum31_volumeSamplingRate,
         .maximum = kMaximum31_volumeSamplingRate,
@@ -3086,6 +3094,8 @@ constexpr ParameterEntry kParameters31[] = {
                        "marcher exactly, every step sampled: for comparisons)",
         .defaultValue = kDefault31_volumeMajorantGrid,
         .extension = kPrismRenderers}};
+constexpr PropertyEntry kProperties31[] = {
+    {"ignoresLights", ANARI_BOOL, false, kPrismRenderers}};
 constexpr int kContributors31[] = {kKhrRendererAmbientLight,
     kKhrRendererBackgroundColor,
     kKhrRendererBackgroundImage,
@@ -4146,14 +4156,16 @@ const ObjectEntry kObjects[] = {
                        "fraction of the hemisphere",
         .extension = kPrismRenderers,
         .contributors = {kContributors28, 4},
-        .parameters = {kParameters28, 10}},
+        .parameters = {kParameters28, 10},
+        .properties = {kProperties28, 1}},
     // ANARI_RENDERER "debug"
     {.type = ANARI_RENDERER,
         .subtype = "debug",
         .description = "false-color views of geometry, ids and attributes",
         .extension = kPrismRenderers,
         .contributors = {kContributors29, 4},
-        .parameters = {kParameters29, 8}},
+        .parameters = {kParameters29, 8},
+        .properties = {kProperties29, 1}},
     // ANARI_RENDERER "pathtracer"
     {.type = ANARI_RENDERER,
         .subtype = "pathtracer",
@@ -4163,7 +4175,7 @@ const ObjectEntry kObjects[] = {
         .extension = kPrismRenderers,
         .contributors = {kContributors30, 4},
         .parameters = {kParameters30, 10},
-        .properties = {kProperties30, 1}},
+        .properties = {kProperties30, 2}},
     // ANARI_RENDERER "raycast"
     {.type = ANARI_RENDERER,
         .subtype = "raycast",
@@ -4172,7 +4184,8 @@ const ObjectEntry kObjects[] = {
                        "(empty space skipped): the fast preview",
         .extension = kPrismRenderers,
         .contributors = {kContributors31, 4},
-        .parameters = {kParameters31, 11}},
+        .parameters = {kParameters31, 11},
+        .properties = {kProperties31, 1}},
     // ANARI_SURFACE
     {.type = ANARI_SURFACE,
         .description = "surface object",

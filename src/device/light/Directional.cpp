@@ -106,8 +106,8 @@ Directional::Directional(DeviceState &device) : Light(device, "directional") {}
 void Directional::commitParameters()
 {
   Light::commitParameters();
-  m_direction = readDirection("direction", {0.f, 0.f, -1.f});
-  m_angularDiameter = readNonNegative("angularDiameter", 0.f);
+  m_direction = readDirection("direction");
+  m_angularDiameter = readNonNegative("angularDiameter");
   if (m_angularDiameter > kPi) {
     // A disk wider than a hemisphere has no meaning as a distant source.
     report(ANARI_SEVERITY_WARNING,
@@ -116,7 +116,7 @@ void Directional::commitParameters()
         m_angularDiameter);
     m_angularDiameter = kPi;
   }
-  m_brightness = readBrightness({"irradiance", "radiance"}, 1.f);
+  m_brightness = readBrightness({"irradiance", "radiance"});
 }
 
 void Directional::finalize()

@@ -106,22 +106,16 @@ Hdri::Hdri(DeviceState &device) : Light(device, "hdri") {}
 void Hdri::commitParameters()
 {
   Light::commitParameters();
-  m_up = readDirection("up", {0.f, 0.f, 1.f});
-  m_direction = readDirection("direction", {1.f, 0.f, 0.f});
+  m_up = readDirection("up");
+  m_direction = readDirection("direction");
   if (lengthSquared(cross(m_up, m_direction)) < 1e-12f) {
     report(ANARI_SEVERITY_WARNING,
         ANARI_STATUS_INVALID_ARGUMENT,
         "'direction' is parallel to 'up'; the image's center is placed at an "
         "arbitrary direction across 'up'");
   }
-  const std::string layout = readString("layout", "equirectangular");
-  if (layout != "equirectangular") {
-    report(ANARI_SEVERITY_WARNING,
-        ANARI_STATUS_INVALID_ARGUMENT,
-        "unknown 'layout' \"%s\"; using equirectangular",
-        layout.c_str());
-  }
-  m_scale = readNonNegative("scale", 1.f);
+  param<std::string>("layout"); // equirectangular, the one layout
+  m_scale = readNonNegative("scale");
 
   const bool set = isSet("radiance");
   m_radianceArray =

@@ -29,33 +29,27 @@ Light::Light(DeviceState &device, const std::string &subtype)
 void Light::commitParameters()
 {
   m_valid = true;
-  m_color = read<float3>("color", ANARI_FLOAT32_VEC3, {1.f, 1.f, 1.f});
-  if (!isFinite(m_color) || minComponent(m_color) < 0.f) {
-    invalidate("'color' (%g, %g, %g) must be finite and >= 0",
-        m_color.x,
-        m_color.y,
-        m_color.z);
-  }
-  m_visible = readBool("visible", true);
+  m_color = lightParam<float3>("color");
+  m_visible = param<bool>("visible");
 }
 
 Light::Brightness Light::readBrightness(
-    std::initializer_list<const char *> precedence, float fallback)
+    std::initializer_list<const char *> precedence)
 {
-  Brightness result{0, fallback};
+  Brightness result{0, 0.f};
   bool found = false;
   size_t index = 0;
   // Every name is read, so the ones the precedence overrides are not
-  // reported as unknown.
+  // reported as unknown; unset, the first one's default applies.
   for (const char *name : precedence) {
     const Parameter *p = readAny(name);
-    if (p && p->type() != ANARI_FLOAT32) {
-      wrongType(name, p->type(), {ANARI_FLOAT32});
-      p = nullptr;
-    }
-    if (p && !found) {
+    const bool set = p && p->type() == ANARI_FLOAT32;
+    const float value = lightParam<float>(name);
+    if (index == 0)
+      result.value = value;
+    if (set && !found) {
       found = true;
-      result = {index, p->as<float>()};
+      result = {index, value};
     }
     index++;
   }
@@ -68,39 +62,27 @@ Light::Brightness Light::readBrightness(
   return result;
 }
 
-float Light::readNonNegative(const char *name, float fallback)
+float Light::readNonNegative(const char *name)
 {
-  const float value = read<float>(name, ANARI_FLOAT32, fallback);
+  const float value = lightParam<float>(name);
   if (std::isfinite(value) && value >= 0.f)
     return value;
   invalidate("'%s' (%g) must be finite and >= 0", name, value);
-  return fallback;
+  return 0.f;
 }
 
-float Light::readDecay()
+float3 Light::readFinite(const char *name)
 {
-  const float decay = readNonNegative("decay", 2.f);
-  if (decay <= 4.f)
-    return decay;
-  report(ANARI_SEVERITY_WARNING,
-      ANARI_STATUS_INVALID_ARGUMENT,
-      "'decay' (%g) is above 4; 4 is used",
-      decay);
-  return 4.f;
-}
-
-float3 Light::readFinite(const char *name, float3 fallback)
-{
-  const float3 value = read<float3>(name, ANARI_FLOAT32_VEC3, fallback);
+  const float3 value = lightParam<float3>(name);
   if (isFinite(value))
     return value;
   invalidate("'%s' must be finite", name);
-  return fallback;
+  return {0.f, 0.f, 0.f};
 }
 
-float3 Light::readDirection(const char *name, float3 fallback)
+float3 Light::readDirection(const char *name)
 {
-  const float3 value = read<float3>(name, ANARI_FLOAT32_VEC3, fallback);
+  const float3 value = lightParam<float3>(name);
   const float length2 = lengthSquared(value);
   if (isFinite(value) && length2 > 0.f && std::isfinite(length2))
     return value / std::sqrt(length2);
@@ -109,13 +91,13 @@ float3 Light::readDirection(const char *name, float3 fallback)
       value.x,
       value.y,
       value.z);
-  return normalize(fallback);
+  return {0.f, 0.f, 1.f}; // unused: the light is invalid
 }
 
 light::ConeFalloff Light::readConeFalloff()
 {
   constexpr float kTwoPi = 2.f * light::kPi;
-  float openingAngle = readNonNegative("openingAngle", light::kPi);
+  float openingAngle = readNonNegative("openingAngle");
   if (openingAngle > kTwoPi) {
     report(ANARI_SEVERITY_WARNING,
         ANARI_STATUS_INVALID_ARGUMENT,
@@ -123,7 +105,7 @@ light::ConeFalloff Light::readConeFalloff()
         openingAngle);
     openingAngle = kTwoPi;
   }
-  float falloffAngle = readNonNegative("falloffAngle", 0.1f);
+  float falloffAngle = readNonNegative("falloffAngle");
   if (falloffAngle > 0.5f * openingAngle) {
     // The spec asks for less than half the opening angle; more would put
     // the core cone's edge past the axis.

@@ -54,18 +54,26 @@ class Light : public Object
     size_t source{0}; // index into the list
     float value{1.f};
   };
-  Brightness readBrightness(
-      std::initializer_list<const char *> precedence, float fallback);
+  Brightness readBrightness(std::initializer_list<const char *> precedence);
+  // A declared parameter (Object::param(): default and bounds from the
+  // definitions); a value the definition rejects is reported and makes the
+  // light invalid.
+  template <typename T>
+  T lightParam(const char *name)
+  {
+    T value;
+    std::string problem;
+    if (!checkedParam(name, value, problem))
+      invalidate("%s", problem.c_str());
+    return value;
+  }
   // A FLOAT32 that must be finite and >= 0; otherwise reported, the light
-  // becomes invalid and `fallback` is returned.
-  float readNonNegative(const char *name, float fallback);
-  // PRISM_LIGHT_DECAY's `decay` (default 2, the inverse square), clamped to
-  // [0, 4] with a warning.
-  float readDecay();
+  // becomes invalid and 0 is returned.
+  float readNonNegative(const char *name);
   // A FLOAT32_VEC3 that must be finite (positions, edges).
-  float3 readFinite(const char *name, float3 fallback);
+  float3 readFinite(const char *name);
   // A FLOAT32_VEC3 that must be finite and of non-zero length; normalised.
-  float3 readDirection(const char *name, float3 fallback);
+  float3 readDirection(const char *name);
   // openingAngle and falloffAngle (spot, ring), clamped to the ranges the
   // spec describes with a warning.
   light::ConeFalloff readConeFalloff();

@@ -166,10 +166,10 @@ Point::Point(DeviceState &device) : Light(device, "point") {}
 void Point::commitParameters()
 {
   Light::commitParameters();
-  m_position = readFinite("position", {0.f, 0.f, 0.f});
-  m_radius = readNonNegative("radius", 0.f);
-  m_brightness = readBrightness({"intensity", "power", "radiance"}, 1.f);
-  m_decay = readDecay();
+  m_position = readFinite("position");
+  m_radius = readNonNegative("radius");
+  m_brightness = readBrightness({"intensity", "power", "radiance"});
+  m_decay = lightParam<float>("decay");
 }
 
 void Point::finalize()

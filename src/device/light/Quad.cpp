@@ -224,25 +224,19 @@ Quad::Quad(DeviceState &device) : Light(device, "quad") {}
 void Quad::commitParameters()
 {
   Light::commitParameters();
-  m_position = readFinite("position", {0.f, 0.f, 0.f});
-  m_edge1 = readFinite("edge1", {1.f, 0.f, 0.f});
-  m_edge2 = readFinite("edge2", {0.f, 1.f, 0.f});
+  m_position = readFinite("position");
+  m_edge1 = readFinite("edge1");
+  m_edge2 = readFinite("edge2");
   if (lengthSquared(m_edge1) == 0.f || lengthSquared(m_edge2) == 0.f) {
     invalidate("'edge1' and 'edge2' must have non-zero length");
   } else if (!(lengthSquared(cross(m_edge1, m_edge2))
                  > 1e-12f * lengthSquared(m_edge1) * lengthSquared(m_edge2))) {
     invalidate("'edge1' and 'edge2' are parallel; the quad has no area");
   }
-  const std::string side = readString("side", "front");
+  const std::string side = param<std::string>("side");
   m_side = side == "back" ? Side::kBack
                           : (side == "both" ? Side::kBoth : Side::kFront);
-  if (side != "front" && side != "back" && side != "both") {
-    report(ANARI_SEVERITY_WARNING,
-        ANARI_STATUS_INVALID_ARGUMENT,
-        "unknown 'side' \"%s\"; using front",
-        side.c_str());
-  }
-  m_brightness = readBrightness({"intensity", "power", "radiance"}, 1.f);
+  m_brightness = readBrightness({"intensity", "power", "radiance"});
   m_distributionArray = readIntensityDistribution();
 }
 

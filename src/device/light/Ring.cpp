@@ -173,19 +173,19 @@ Ring::Ring(DeviceState &device) : Light(device, "ring") {}
 void Ring::commitParameters()
 {
   Light::commitParameters();
-  m_position = readFinite("position", {0.f, 0.f, 0.f});
-  m_direction = readDirection("direction", {0.f, 0.f, -1.f});
+  m_position = readFinite("position");
+  m_direction = readDirection("direction");
   m_falloff = readConeFalloff();
-  m_radius = readNonNegative("radius", 0.f);
-  m_innerRadius = readNonNegative("innerRadius", 0.f);
+  m_radius = readNonNegative("radius");
+  m_innerRadius = readNonNegative("innerRadius");
   if (m_innerRadius > 0.f && !(m_innerRadius < m_radius)) {
     invalidate("'innerRadius' (%g) must be smaller than 'radius' (%g)",
         m_innerRadius,
         m_radius);
   }
-  m_brightness = readBrightness({"intensity", "power", "radiance"}, 1.f);
+  m_brightness = readBrightness({"intensity", "power", "radiance"});
   m_distributionArray = readIntensityDistribution();
-  m_c0 = readDirection("c0", {1.f, 0.f, 0.f});
+  m_c0 = readDirection("c0");
   if (m_distributionArray && lengthSquared(cross(m_c0, m_direction)) < 1e-12f) {
     report(ANARI_SEVERITY_WARNING,
         ANARI_STATUS_INVALID_ARGUMENT,

@@ -74,11 +74,11 @@ Spot::Spot(DeviceState &device) : Light(device, "spot") {}
 void Spot::commitParameters()
 {
   Light::commitParameters();
-  m_position = readFinite("position", {0.f, 0.f, 0.f});
-  m_direction = readDirection("direction", {0.f, 0.f, -1.f});
+  m_position = readFinite("position");
+  m_direction = readDirection("direction");
   m_falloff = readConeFalloff();
-  m_brightness = readBrightness({"intensity", "power"}, 1.f);
-  m_decay = readDecay();
+  m_brightness = readBrightness({"intensity", "power"});
+  m_decay = lightParam<float>("decay");
 }
 
 void Spot::finalize()

@@ -1,5 +1,6 @@
 #include "Object.h"
 
+#include "DeclaredParameter.h"
 #include "FormatText.h"
 
 #include "../object/DeviceState.h"
@@ -8,6 +9,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 
 namespace prism {
 
@@ -193,6 +195,100 @@ void Object::refresh(uint64_t generation)
     applyCommit();
     finalize();
   }
+}
+
+const introspection::ParameterDefinition *Object::declaration(const char *name)
+{
+  const introspection::ParameterDefinition *definition =
+      introspection::findParameter(m_type, m_subtype.c_str(), name);
+  if (!definition && m_undeclaredReads.insert(name).second) {
+#ifndef NDEBUG
+    report(ANARI_SEVERITY_ERROR,
+        ANARI_STATUS_UNKNOWN_ERROR,
+        "reads parameter '%s', which introspection does not declare",
+        name);
+#endif
+  }
+  return definition;
+}
+
+bool Object::readDeclared(const char *name,
+    ANARIDataType type,
+    void *out,
+    size_t size,
+    std::string &problem)
+{
+  const introspection::ParameterDefinition *definition = declaration(name);
+  const void *fallback = definition && definition->defaultValue
+                                 && int(definition->valueType) == int(type)
+                             ? definition->defaultValue
+                             : nullptr;
+  auto useDefault = [&]() {
+    if (fallback)
+      std::memcpy(out, fallback, size);
+    else
+      std::memset(out, 0, size);
+  };
+  const Parameter *p = readAny(name);
+  if (!p) {
+    useDefault();
+    return true;
+  }
+  if (p->type() != type) {
+    wrongType(name, p->type(), {type});
+    useDefault();
+    return true;
+  }
+  std::memcpy(out, p->data(), size);
+  if (!definition)
+    return true;
+  const std::string why = boundsProblem(*definition, type, p->data());
+  if (why.empty())
+    return true;
+  problem =
+      "'" + std::string(name) + "' (" + valueText(type, p->data()) + ") " + why;
+  useDefault();
+  return false;
+}
+
+bool Object::readDeclaredString(
+    const char *name, std::string &out, std::string &problem)
+{
+  const introspection::ParameterDefinition *definition = declaration(name);
+  const char *fallback = definition && definition->defaultValue
+                                 && int(definition->valueType) == ANARI_STRING
+                             ? (const char *)definition->defaultValue
+                             : "";
+  const Parameter *p = readAny(name);
+  out = fallback;
+  if (!p)
+    return true;
+  if (p->type() != ANARI_STRING) {
+    wrongType(name, p->type(), {ANARI_STRING});
+    return true;
+  }
+  const std::string why =
+      definition ? valueProblem(*definition, p->string()) : std::string();
+  if (why.empty()) {
+    out = p->string();
+    return true;
+  }
+  problem = "'" + std::string(name) + "' (\"" + p->string() + "\") " + why;
+  return false;
+}
+
+void Object::reportRejected(const char *name, const std::string &problem)
+{
+  const introspection::ParameterDefinition *definition =
+      introspection::findParameter(m_type, m_subtype.c_str(), name);
+  std::string fallback = "zero";
+  if (definition && definition->defaultValue)
+    fallback = valueText(definition->valueType, definition->defaultValue);
+  report(ANARI_SEVERITY_WARNING,
+      ANARI_STATUS_INVALID_ARGUMENT,
+      "%s; using the default %s",
+      problem.c_str(),
+      fallback.c_str());
 }
 
 void Object::wrongType(const char *name,

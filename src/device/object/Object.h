@@ -3,6 +3,7 @@
 #pragma once
 
 #include "ContentHash.h"
+#include "DeclaredType.h"
 #include "ObjectRef.h"
 #include "Parameter.h"
 
@@ -11,9 +12,13 @@
 #include <mutex>
 #include <set>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace prism {
+namespace introspection {
+struct ParameterDefinition;
+}
 
 class DeviceState;
 
@@ -123,6 +128,13 @@ class Object
   {
     return m_readThisCommit;
   }
+  // The names param() was asked for that introspection does not declare
+  // for this object's type and subtype (a device bug; conformance tests
+  // require none, debug builds also report them).
+  const std::set<std::string> &undeclaredParametersRead() const
+  {
+    return m_undeclaredReads;
+  }
 
   // Drops every reference this object holds on others (device teardown).
   virtual void dropReferences();
@@ -166,6 +178,38 @@ class Object
     }
     return p->template as<T>();
   }
+  // Declared parameters: the definition of this object's type and subtype
+  // in the introspection tables gives the type T must be, the default, the
+  // bounds and the accepted values. Returns the value set, or the default
+  // when it is unset or set with another type (warned once, see
+  // wrongType()), out of bounds, not a number or not an accepted value
+  // (reported as a warning naming the range each commit).
+  template <typename T>
+  T param(const char *name)
+  {
+    T value;
+    std::string problem;
+    if (!checkedParam(name, value, problem))
+      reportRejected(name, problem);
+    return value;
+  }
+  // The same, not reporting a rejected value: false, with `problem`
+  // ("'decay' (7) must be in [0, 4]"), when the value set is rejected.
+  template <typename T>
+  bool checkedParam(const char *name, T &value, std::string &problem)
+  {
+    if constexpr (std::is_same_v<T, std::string>) {
+      return readDeclaredString(name, value, problem);
+    } else if constexpr (std::is_same_v<T, bool>) {
+      uint8_t byte = 0;
+      const bool accepted =
+          readDeclared(name, ANARI_BOOL, &byte, sizeof(byte), problem);
+      value = byte != 0;
+      return accepted;
+    } else {
+      return readDeclared(name, declaredType<T>(), &value, sizeof(T), problem);
+    }
+  }
   bool readBool(const char *name, bool fallback);
   std::string readString(const char *name, const std::string &fallback);
   // An object parameter of exactly one of `accepted` types, or NULL.
@@ -182,6 +226,8 @@ class Object
   // derived from it (pointers into it) stays valid whatever the
   // application releases or remaps meanwhile.
   void dependOn(Object *object);
+  // Warns that `name`'s value was rejected and its default used.
+  void reportRejected(const char *name, const std::string &problem);
   // Records that `name` was set with an unsupported type.
   void wrongType(const char *name,
       ANARIDataType given,
@@ -189,6 +235,17 @@ class Object
 
  private:
   void reportUnusedParameters();
+  // checkedParam() on the C bytes of `type` (`size` of them written to
+  // `out`).
+  bool readDeclared(const char *name,
+      ANARIDataType type,
+      void *out,
+      size_t size,
+      std::string &problem);
+  bool readDeclaredString(
+      const char *name, std::string &out, std::string &problem);
+  // The declaration of `name` for this object; nullptr (recorded) if none.
+  const introspection::ParameterDefinition *declaration(const char *name);
 
   DeviceState &m_device;
   const ANARIDataType m_type;
@@ -205,6 +262,7 @@ class Object
   bool m_hasPending{false};
   std::set<std::string> m_readThisCommit;
   std::set<std::string> m_warned;
+  std::set<std::string> m_undeclaredReads;
   struct Dependency
   {
     ObjectRef<Object> object;

@@ -23,16 +23,11 @@ constexpr uint16_t kMaxLayers = 64;
 void AmbientOcclusion::commitParameters()
 {
   Renderer::commitParameters();
-  const int32_t samples = read<int32_t>("aoSamples", ANARI_INT32, 1);
-  m_samples = uint32_t(std::clamp(samples, 1, 1024));
-  m_distance = read<float>("aoDistance", ANARI_FLOAT32, 1e20f);
-  m_seed = uint32_t(read<int32_t>("seed", ANARI_INT32, 0));
-  if (!(m_distance > 0.f)) {
-    report(ANARI_SEVERITY_WARNING,
-        ANARI_STATUS_INVALID_ARGUMENT,
-        "'aoDistance' must be positive; using 1e20");
-    m_distance = 1e20f;
-  }
+  m_samples = uint32_t(param<int32_t>("aoSamples"));
+  // 0 is accepted: no occlusion ray reaches beyond its own start, so
+  // nothing occludes and the image is the base color.
+  m_distance = param<float>("aoDistance");
+  m_seed = uint32_t(param<int32_t>("seed"));
 }
 
 void AmbientOcclusion::renderTile(const RenderContext &context,

@@ -15,6 +15,10 @@ class AmbientOcclusion : public Renderer
  public:
   explicit AmbientOcclusion(DeviceState &device) : Renderer(device, "ao") {}
 
+  bool ignoresLights() const override
+  {
+    return true; // occlusion alone
+  }
   uint32_t convergedSampleCount() const override
   {
     return std::max(1u, 256u / m_samples); // ~256 rays per pixel

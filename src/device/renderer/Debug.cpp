@@ -36,7 +36,7 @@ float3 heat(float t)
 void Debug::commitParameters()
 {
   Renderer::commitParameters();
-  const std::string mode = readString("mode", "Ns");
+  const std::string mode = param<std::string>("mode");
   m_attribute = attributeFromName(mode);
   if (mode == "primitiveId")
     m_mode = Mode::PrimitiveId;

@@ -29,6 +29,11 @@ class Debug : public Renderer
 
   explicit Debug(DeviceState &device) : Renderer(device, "debug") {}
 
+  bool ignoresLights() const override
+  {
+    return true; // false colors
+  }
+
  protected:
   void commitParameters() override;
   PixelSample shadeSample(const RenderContext &context,

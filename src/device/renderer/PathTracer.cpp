@@ -129,11 +129,10 @@ float3 exp3(const float3 &v)
 void PathTracer::commitParameters()
 {
   Renderer::commitParameters();
-  m_maxPathLength =
-      std::clamp(read<int32_t>("maxPathLength", ANARI_INT32, 8), 1, 1024);
+  m_maxPathLength = param<int32_t>("maxPathLength");
   m_ambient = m_ambientColor * std::max(m_ambientRadiance, 0.f);
-  m_volumeMajorantGrid = readBool("volumeMajorantGrid", true);
-  m_seed = uint32_t(read<int32_t>("seed", ANARI_INT32, 0));
+  m_volumeMajorantGrid = param<bool>("volumeMajorantGrid");
+  m_seed = uint32_t(param<int32_t>("seed"));
 }
 
 void PathTracer::renderTile(const RenderContext &context,

@@ -226,29 +226,15 @@ struct PacketShading
 void Raycast::commitParameters()
 {
   Renderer::commitParameters();
-  m_eyeLightBlendRatio = std::clamp(
-      read<float>("eyeLightBlendRatio", ANARI_FLOAT32, 0.5f), 0.f, 1.f);
-  m_volumeMajorantGrid = readBool("volumeMajorantGrid", true);
+  m_eyeLightBlendRatio = param<float>("eyeLightBlendRatio");
+  m_volumeMajorantGrid = param<bool>("volumeMajorantGrid");
   // The SDK's experimental EXP_VOLUME_SAMPLE_RATE names the same factor
   // volumeSampleRateFactor; prism's own name wins when both are set.
-  const float sdkRate =
-      read<float>("volumeSampleRateFactor", ANARI_FLOAT32, 1.f);
-  const char *rateName =
-      isSet("volumeSamplingRate") || !isSet("volumeSampleRateFactor")
-          ? "volumeSamplingRate"
-          : "volumeSampleRateFactor";
+  const float sdkRate = param<float>("volumeSampleRateFactor");
+  const float ownRate = param<float>("volumeSamplingRate");
   m_volumeSamplingRate =
-      read<float>("volumeSamplingRate", ANARI_FLOAT32, sdkRate);
-  if (!(m_volumeSamplingRate >= 1e-3f && m_volumeSamplingRate <= 1e3f)) {
-    report(ANARI_SEVERITY_WARNING,
-        ANARI_STATUS_INVALID_ARGUMENT,
-        "'%s' %g is outside [0.001, 1000]; it is clamped",
-        rateName,
-        double(m_volumeSamplingRate));
-    m_volumeSamplingRate = std::isnan(m_volumeSamplingRate)
-                               ? 1.f
-                               : std::clamp(m_volumeSamplingRate, 1e-3f, 1e3f);
-  }
+      isSet("volumeSamplingRate") || !isSet("volumeSampleRateFactor") ? ownRate
+                                                                      : sdkRate;
 }
 
 void Raycast::renderTile(const RenderContext &context,

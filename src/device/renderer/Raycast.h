@@ -16,6 +16,11 @@ class Raycast : public Renderer
       : Renderer(device, subtype)
   {}
 
+  bool ignoresLights() const override
+  {
+    return true; // eye-light shading
+  }
+
   // Traces whole packets and shades, in line, hits on surfaces whose color
   // is constant and whose first layer hides everything behind; every other
   // pixel goes through shadeSample(). Both give the same image.

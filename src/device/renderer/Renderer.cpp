@@ -26,17 +26,10 @@ void Renderer::commitParameters()
 {
   // KHR_RENDERER_AMBIENT_LIGHT: the path tracer lights with it; the other
   // renderers show geometry, not lighting, and take it without using it.
-  m_ambientColor = read<float3>("ambientColor", ANARI_FLOAT32_VEC3, {1, 1, 1});
-  m_ambientRadiance = read<float>("ambientRadiance", ANARI_FLOAT32, 0.f);
-  m_denoise = readBool("denoise", false);
-  const int32_t sampleLimit = read<int32_t>("sampleLimit", ANARI_INT32, 0);
-  if (sampleLimit < 0) {
-    report(ANARI_SEVERITY_WARNING,
-        ANARI_STATUS_INVALID_ARGUMENT,
-        "'sampleLimit' (%d) must be >= 0; using 0 (no limit)",
-        sampleLimit);
-  }
-  m_sampleLimit = uint32_t(std::max(sampleLimit, 0));
+  m_ambientColor = param<float3>("ambientColor");
+  m_ambientRadiance = param<float>("ambientRadiance");
+  m_denoise = param<bool>("denoise");
+  m_sampleLimit = uint32_t(param<int32_t>("sampleLimit"));
   m_backgroundColor = {0, 0, 0, 1};
   m_backgroundImage.clear();
   m_backgroundWidth = m_backgroundHeight = 0;
@@ -213,6 +206,10 @@ bool Renderer::getProperty(const std::string &name,
     uint64_t size,
     ANARIWaitMask mask)
 {
+  if (name == "ignoresLights" && type == ANARI_BOOL && mem && size >= 1) {
+    *(uint8_t *)mem = ignoresLights() ? 1 : 0;
+    return true;
+  }
   if (name == "extension" && type == ANARI_STRING_LIST && mem
       && size >= sizeof(const char **)) {
     const char **list = introspection::deviceExtensions();

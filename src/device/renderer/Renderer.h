@@ -96,6 +96,14 @@ class Renderer : public Object
     return 16;
   }
 
+  // Whether the renderer shades without the world's lights (and ambient
+  // light), by an eye light, occlusion or false colors; answered to
+  // applications as the "ignoresLights" property (BOOL).
+  virtual bool ignoresLights() const
+  {
+    return false;
+  }
+
   bool getProperty(const std::string &name,
       ANARIDataType type,
       void *mem,

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <set>
 #include <string>
@@ -227,6 +228,173 @@ TEST_F(Conformance, EveryParameterARendererReadsIsAdvertised)
   }
   EXPECT_GE(renderers, 5);
   EXPECT_TRUE(warnings().empty());
+}
+
+// The categories whose objects read every value parameter through
+// Object::param(), so the definitions' bounds and values are enforced.
+bool enforcesDefinitions(ANARIDataType type)
+{
+  return type == ANARI_RENDERER || type == ANARI_LIGHT;
+}
+
+// `bytes` of `type` (FLOAT32 or INT32 based) with every component moved
+// `step` beyond itself: below a minimum (step < 0) or above a maximum.
+std::vector<unsigned char> beyond(
+    ANARIDataType type, const void *bytes, int step)
+{
+  std::vector<unsigned char> out(
+      (const unsigned char *)bytes, (const unsigned char *)bytes + 128);
+  const bool isFloat =
+      int(type) >= ANARI_FLOAT32 && int(type) <= ANARI_FLOAT32_VEC4;
+  for (int i = 0; i < anari::componentsOf(type); i++) {
+    if (isFloat) {
+      float v;
+      std::memcpy(&v, out.data() + 4 * i, 4);
+      v += float(step) * (1.f + std::abs(v));
+      std::memcpy(out.data() + 4 * i, &v, 4);
+    } else {
+      int32_t v;
+      std::memcpy(&v, out.data() + 4 * i, 4);
+      v += step;
+      std::memcpy(out.data() + 4 * i, &v, 4);
+    }
+  }
+  return out;
+}
+
+bool hasBounds(ANARIDataType type)
+{
+  return (int(type) >= ANARI_FLOAT32 && int(type) <= ANARI_FLOAT32_VEC4)
+         || (int(type) >= ANARI_INT32 && int(type) <= ANARI_INT32_VEC4);
+}
+
+// Every parameter of every subtype, walked against its definition: its
+// default, minimum and maximum commit without a word about it; beyond the
+// bounds, an unlisted string or the wrong type is reported by name (with
+// the range) and the object commits on with its default.
+TEST_F(Conformance, EveryDefinitionHoldsForItsParameter)
+{
+  int checked = 0, rejected = 0;
+  for (ANARIDataType type : kSubtyped) {
+    for (const char **s = introspection::objectSubtypes(type); s && *s; s++) {
+      auto *params = (const ANARIParameter *)introspection::objectInfo(
+          type, *s, "parameter", ANARI_PARAMETER_LIST);
+      for (; params && params->name; params++) {
+        const ANARIDataType t = params->type;
+        const char *name = params->name;
+        if (anari::isObject(t) || std::strcmp(name, "name") == 0)
+          continue;
+        const auto *d = introspection::findParameter(type, *s, name);
+        ASSERT_NE(d, nullptr) << name;
+        const std::string where =
+            std::string(anari::toString(type)) + " '" + *s + "' " + name;
+        ANARIObject handle = create(type, *s);
+        m_device.commitParameters(handle);
+        m_device.flushCommits();
+        const size_t quiet = warnings().size(); // e.g. a required array
+        auto commitWith = [&](ANARIDataType as, const void *value) {
+          m_device.setParameter(handle, name, as, value);
+          m_device.commitParameters(handle);
+          m_device.flushCommits();
+        };
+        auto mentions = [&](const std::vector<std::string> &messages,
+                            const char *what) {
+          const std::string quoted = std::string("'") + name + "'";
+          for (const std::string &m : messages) {
+            if (m.find(quoted) != std::string::npos
+                && m.find(what) != std::string::npos)
+              return true;
+          }
+          return false;
+        };
+        const bool bounded = d->valueType == t && hasBounds(t);
+        for (const void *valid : {d->defaultValue,
+                 bounded ? d->minimum : nullptr,
+                 bounded ? d->maximum : nullptr}) {
+          if (!valid || d->valueType != t)
+            continue;
+          commitWith(t, valid);
+          EXPECT_FALSE(mentions(warnings(), "must be")) << where;
+          checked++;
+        }
+        if (!enforcesDefinitions(type)) {
+          m_device.release(handle);
+          continue;
+        }
+        if (bounded && d->minimum) {
+          commitWith(t, beyond(t, d->minimum, -1).data());
+          EXPECT_TRUE(mentions(warnings(), "must be")) << where << " < min";
+          rejected++;
+        }
+        if (bounded && d->maximum) {
+          commitWith(t, beyond(t, d->maximum, 1).data());
+          EXPECT_TRUE(mentions(warnings(), "must be")) << where << " > max";
+          rejected++;
+        }
+        if (t == ANARI_STRING && d->values && !d->attribute) {
+          commitWith(t, "no such value");
+          EXPECT_TRUE(mentions(warnings(), "must be one of")) << where;
+          rejected++;
+        }
+        const uint64_t zeros[16] = {};
+        if (!d->accepts(ANARI_FLOAT64_VEC2)) {
+          commitWith(ANARI_FLOAT64_VEC2, zeros);
+          EXPECT_TRUE(mentions(warnings(), "ANARI_FLOAT64_VEC2")) << where;
+        }
+        // Back to nothing set: the object commits on, silently.
+        m_device.unsetAllParameters(handle);
+        m_device.commitParameters(handle);
+        m_device.flushCommits();
+        EXPECT_EQ(warnings().size(), quiet) << where << " after the walk";
+        m_device.release(handle);
+      }
+    }
+  }
+  EXPECT_GT(checked, 100);
+  EXPECT_GT(rejected, 10);
+}
+
+// param() is only asked for declared names: every object of every subtype,
+// committed with nothing set, reads no parameter introspection lacks.
+TEST_F(Conformance, EveryParameterReadIsDeclared)
+{
+  for (ANARIDataType type : kSubtyped) {
+    for (const char **s = introspection::objectSubtypes(type); s && *s; s++) {
+      ANARIObject handle = create(type, *s);
+      m_device.commitParameters(handle);
+      m_device.flushCommits();
+      for (const std::string &name :
+          m_device.lookup(handle)->undeclaredParametersRead()) {
+        ADD_FAILURE() << anari::toString(type) << " '" << *s << "' reads '"
+                      << name << "', which is not declared";
+      }
+      m_device.release(handle);
+    }
+  }
+}
+
+// Every renderer declares and answers "ignoresLights": the ones that shade
+// by an eye light, occlusion or false colors say so (prism-render asks).
+TEST_F(Conformance, RenderersSayWhetherTheyIgnoreLights)
+{
+  const std::set<std::string> lightFree{"raycast", "ao", "debug"};
+  for (const char **s = introspection::objectSubtypes(ANARI_RENDERER); s && *s;
+       s++) {
+    EXPECT_NE(introspection::findProperty(ANARI_RENDERER, *s, "ignoresLights"),
+        nullptr)
+        << *s;
+    ANARIObject handle = create(ANARI_RENDERER, *s);
+    uint8_t ignores = 7;
+    ASSERT_TRUE(m_device.getProperty(handle,
+        "ignoresLights",
+        ANARI_BOOL,
+        &ignores,
+        sizeof(ignores),
+        ANARI_WAIT))
+        << *s;
+    EXPECT_EQ(ignores, lightFree.count(*s) ? 1 : 0) << *s;
+    m_device.release(handle);
+  }
 }
 
 TEST_F(Conformance, AdvertisedExtensionsAreKnownToTheApi)
