@@ -11,6 +11,16 @@ ANARIObject ForwardingDevice::innerHandle(ANARIObject object) const
   return handleIsDevice(object) ? (ANARIObject)m_inner : object;
 }
 
+bool ForwardingDevice::admits(ANARIObject, const char *)
+{
+  return true;
+}
+
+bool ForwardingDevice::forwards(ANARIObject object, const char *function)
+{
+  return m_inner && (handleIsDevice(object) || admits(object, function));
+}
+
 const char *ForwardingDevice::newFunctionName(ANARIDataType type)
 {
   switch (type) {
@@ -266,7 +276,7 @@ void *ForwardingDevice::mapParameterArrayOf(ANARIObject object,
     const uint64_t items[3],
     uint64_t *elementStride)
 {
-  if (!m_inner)
+  if (!forwards(object, mapParameterArrayFunctionName(arrayType)))
     return nullptr;
   object = innerHandle(object);
   if (arrayType == ANARI_ARRAY1D) {
@@ -292,54 +302,54 @@ ANARIObject ForwardingDevice::newObject(
 void ForwardingDevice::setParameter(
     ANARIObject object, const char *name, ANARIDataType type, const void *mem)
 {
-  if (m_inner)
+  if (forwards(object, "anariSetParameter"))
     m_inner->setParameter(innerHandle(object), name, type, mem);
 }
 
 void ForwardingDevice::unsetParameter(ANARIObject object, const char *name)
 {
-  if (m_inner)
+  if (forwards(object, "anariUnsetParameter"))
     m_inner->unsetParameter(innerHandle(object), name);
 }
 
 void ForwardingDevice::unsetAllParameters(ANARIObject object)
 {
-  if (m_inner)
+  if (forwards(object, "anariUnsetAllParameters"))
     m_inner->unsetAllParameters(innerHandle(object));
 }
 
 void ForwardingDevice::unmapParameterArray(ANARIObject object, const char *name)
 {
-  if (m_inner)
+  if (forwards(object, "anariUnmapParameterArray"))
     m_inner->unmapParameterArray(innerHandle(object), name);
 }
 
 void ForwardingDevice::commitParameters(ANARIObject object)
 {
-  if (m_inner)
+  if (forwards(object, "anariCommitParameters"))
     m_inner->commitParameters(innerHandle(object));
 }
 
 void ForwardingDevice::release(ANARIObject object)
 {
-  if (m_inner && !handleIsDevice(object))
+  if (!handleIsDevice(object) && forwards(object, "anariRelease"))
     m_inner->release(object);
 }
 
 void ForwardingDevice::retain(ANARIObject object)
 {
-  if (m_inner && !handleIsDevice(object))
+  if (!handleIsDevice(object) && forwards(object, "anariRetain"))
     m_inner->retain(object);
 }
 
 void *ForwardingDevice::mapArray(ANARIArray array)
 {
-  return m_inner ? m_inner->mapArray(array) : nullptr;
+  return forwards(array, "anariMapArray") ? m_inner->mapArray(array) : nullptr;
 }
 
 void ForwardingDevice::unmapArray(ANARIArray array)
 {
-  if (m_inner)
+  if (forwards(array, "anariUnmapArray"))
     m_inner->unmapArray(array);
 }
 
@@ -350,9 +360,9 @@ int ForwardingDevice::getProperty(ANARIObject object,
     uint64_t size,
     ANARIWaitMask mask)
 {
-  return m_inner ? m_inner->getProperty(
-             innerHandle(object), name, type, mem, size, mask)
-                 : 0;
+  if (!forwards(object, "anariGetProperty"))
+    return 0;
+  return m_inner->getProperty(innerHandle(object), name, type, mem, size, mask);
 }
 
 const char **ForwardingDevice::getObjectSubtypes(ANARIDataType objectType)
@@ -393,7 +403,7 @@ const void *ForwardingDevice::frameBufferMap(ANARIFrame frame,
     uint32_t *height,
     ANARIDataType *pixelType)
 {
-  if (m_inner)
+  if (forwards(frame, "anariMapFrame"))
     return m_inner->frameBufferMap(frame, channel, width, height, pixelType);
   *width = *height = 0;
   *pixelType = ANARI_UNKNOWN;
@@ -402,24 +412,25 @@ const void *ForwardingDevice::frameBufferMap(ANARIFrame frame,
 
 void ForwardingDevice::frameBufferUnmap(ANARIFrame frame, const char *channel)
 {
-  if (m_inner)
+  if (forwards(frame, "anariUnmapFrame"))
     m_inner->frameBufferUnmap(frame, channel);
 }
 
 void ForwardingDevice::renderFrame(ANARIFrame frame)
 {
-  if (m_inner)
+  if (forwards(frame, "anariRenderFrame"))
     m_inner->renderFrame(frame);
 }
 
 int ForwardingDevice::frameReady(ANARIFrame frame, ANARIWaitMask mask)
 {
-  return m_inner ? m_inner->frameReady(frame, mask) : 0;
+  return forwards(frame, "anariFrameReady") ? m_inner->frameReady(frame, mask)
+                                            : 0;
 }
 
 void ForwardingDevice::discardFrame(ANARIFrame frame)
 {
-  if (m_inner)
+  if (forwards(frame, "anariDiscardFrame"))
     m_inner->discardFrame(frame);
 }
 

@@ -70,7 +70,7 @@ class ForwardingDevice : public anari::DeviceImpl
       uint64_t numElements3,
       uint64_t *elementStride) final;
 
-  // Forwarded as they are.
+  // Forwarded as they are, if admits() lets them.
   void setParameter(ANARIObject object,
       const char *name,
       ANARIDataType type,
@@ -131,6 +131,10 @@ class ForwardingDevice : public anari::DeviceImpl
   // `object` as the inner device knows it: its own handle for this
   // device's, any other as it is.
   ANARIObject innerHandle(ANARIObject object) const;
+  // Whether the call `function` on `object` (never this device's own
+  // handle) may reach the inner device; a layer that checks handles
+  // reports those it refuses. Every forwarded call on an object asks.
+  virtual bool admits(ANARIObject object, const char *function);
 
   // anariNew* of every object but arrays (`subtype` is NULL for surfaces,
   // groups, worlds and frames).
@@ -151,6 +155,9 @@ class ForwardingDevice : public anari::DeviceImpl
       uint64_t *elementStride);
 
  private:
+  // An inner device, and admits() (or `object` is this device).
+  bool forwards(ANARIObject object, const char *function);
+
   anari::DeviceImpl *m_inner{nullptr};
 };
 

@@ -62,7 +62,7 @@ WrappedDevice::~WrappedDevice()
   inner()->release((ANARIObject)inner());
 }
 
-bool WrappedDevice::live(ANARIObject object, const char *call)
+bool WrappedDevice::admits(ANARIObject object, const char *call)
 {
   {
     std::lock_guard lock(m_mutex);
@@ -146,26 +146,8 @@ ANARIObject WrappedDevice::newObject(
       ForwardingDevice::newObject(objectType, subtype), ANARI_OBJECT);
 }
 
-// Calls on live handles //////////////////////////////////////////////////////
-
-void *WrappedDevice::mapParameterArrayOf(ANARIObject object,
-    const char *name,
-    ANARIDataType arrayType,
-    ANARIDataType elementType,
-    const uint64_t items[3],
-    uint64_t *elementStride)
-{
-  if (!live(object, mapParameterArrayFunctionName(arrayType)))
-    return nullptr;
-  return ForwardingDevice::mapParameterArrayOf(
-      object, name, arrayType, elementType, items, elementStride);
-}
-
-void WrappedDevice::unmapParameterArray(ANARIObject object, const char *name)
-{
-  if (live(object, "anariUnmapParameterArray"))
-    ForwardingDevice::unmapParameterArray(object, name);
-}
+// Calls on handles the application holds
+// //////////////////////////////////////////////////////
 
 void WrappedDevice::retain(ANARIObject object)
 {
@@ -177,13 +159,13 @@ void WrappedDevice::retain(ANARIObject object)
     if (it != m_handles.end())
       it->second.references++;
   }
-  if (live(object, "anariRetain"))
+  if (admits(object, "anariRetain"))
     inner()->retain(object);
 }
 
 void WrappedDevice::release(ANARIObject object)
 {
-  if (handleIsDevice(object) || !live(object, "anariRelease"))
+  if (handleIsDevice(object) || !admits(object, "anariRelease"))
     return;
   {
     // The application's last reference gone: so is what this device kept
@@ -198,60 +180,6 @@ void WrappedDevice::release(ANARIObject object)
   inner()->release(object);
 }
 
-void *WrappedDevice::mapArray(ANARIArray array)
-{
-  return live(array, "anariMapArray") ? inner()->mapArray(array) : nullptr;
-}
-
-void WrappedDevice::unmapArray(ANARIArray array)
-{
-  if (live(array, "anariUnmapArray"))
-    inner()->unmapArray(array);
-}
-
-int WrappedDevice::getProperty(ANARIObject object,
-    const char *name,
-    ANARIDataType type,
-    void *mem,
-    uint64_t size,
-    ANARIWaitMask mask)
-{
-  if (!handleIsDevice(object) && !live(object, "anariGetProperty"))
-    return 0;
-  return ForwardingDevice::getProperty(object, name, type, mem, size, mask);
-}
-
-const void *WrappedDevice::frameBufferMap(ANARIFrame frame,
-    const char *channel,
-    uint32_t *width,
-    uint32_t *height,
-    ANARIDataType *pixelType)
-{
-  if (!live(frame, "anariMapFrame")) {
-    *width = *height = 0;
-    *pixelType = ANARI_UNKNOWN;
-    return nullptr;
-  }
-  return inner()->frameBufferMap(frame, channel, width, height, pixelType);
-}
-
-void WrappedDevice::frameBufferUnmap(ANARIFrame frame, const char *channel)
-{
-  if (live(frame, "anariUnmapFrame"))
-    inner()->frameBufferUnmap(frame, channel);
-}
-
-int WrappedDevice::frameReady(ANARIFrame frame, ANARIWaitMask mask)
-{
-  return live(frame, "anariFrameReady") ? inner()->frameReady(frame, mask) : 0;
-}
-
-void WrappedDevice::discardFrame(ANARIFrame frame)
-{
-  if (live(frame, "anariDiscardFrame"))
-    inner()->discardFrame(frame);
-}
-
 // Parameters the wrapped device sees otherwise ///////////////////////////////
 
 void WrappedDevice::setParameter(
@@ -263,8 +191,8 @@ void WrappedDevice::setParameter(
   }
   const ANARIObject value =
       anari::isObject(type) && mem ? *(const ANARIObject *)mem : nullptr;
-  if (!live(object, "anariSetParameter")
-      || (value && !live(value, "anariSetParameter (its value)")))
+  if (!admits(object, "anariSetParameter")
+      || (value && !admits(value, "anariSetParameter (its value)")))
     return;
   if (!setKeptParameter(object, name ? name : "", type, mem))
     inner()->setParameter(object, name, type, mem);
@@ -359,7 +287,7 @@ void WrappedDevice::unsetParameter(ANARIObject object, const char *name)
     ForwardingDevice::unsetParameter(object, name);
     return;
   }
-  if (live(object, "anariUnsetParameter")
+  if (admits(object, "anariUnsetParameter")
       && !unsetKeptParameter(object, name ? name : ""))
     inner()->unsetParameter(object, name);
 }
@@ -401,7 +329,7 @@ void WrappedDevice::unsetAllParameters(ANARIObject object)
     ForwardingDevice::unsetAllParameters(object);
     return;
   }
-  if (!live(object, "anariUnsetAllParameters"))
+  if (!admits(object, "anariUnsetAllParameters"))
     return;
   inner()->unsetAllParameters(object);
   std::lock_guard lock(m_mutex);
@@ -432,7 +360,7 @@ void WrappedDevice::commitParameters(ANARIObject object)
     if (frame != m_frames.end())
       frame->second.committed = frame->second.staged;
   }
-  if (live(object, "anariCommitParameters"))
+  if (admits(object, "anariCommitParameters"))
     inner()->commitParameters(object);
 }
 
@@ -505,7 +433,7 @@ bool WrappedDevice::denoises(ANARIFrame)
 void WrappedDevice::renderAlone(ANARIFrame frame)
 {
   // The wrapped device reports what the frame lacks.
-  if (!live(frame, "anariRenderFrame"))
+  if (!admits(frame, "anariRenderFrame"))
     return;
   inner()->renderFrame(frame);
   inner()->frameReady(frame, ANARI_WAIT);

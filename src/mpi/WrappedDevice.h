@@ -44,7 +44,8 @@ class WrappedDevice : public ForwardingDevice, public LocalRenderer
     return m_library->name();
   }
 
-  // ForwardingDevice: on live handles only.
+  // ForwardingDevice: calls on live handles the application holds only
+  // (admits); these also keep what compositing needs.
   ANARIObject newObject(const char *objectType, const char *subtype) override;
   void setParameter(ANARIObject object,
       const char *name,
@@ -52,26 +53,9 @@ class WrappedDevice : public ForwardingDevice, public LocalRenderer
       const void *mem) override;
   void unsetParameter(ANARIObject object, const char *name) override;
   void unsetAllParameters(ANARIObject object) override;
-  void unmapParameterArray(ANARIObject object, const char *name) override;
   void commitParameters(ANARIObject object) override;
   void release(ANARIObject object) override;
   void retain(ANARIObject object) override;
-  void *mapArray(ANARIArray array) override;
-  void unmapArray(ANARIArray array) override;
-  int getProperty(ANARIObject object,
-      const char *name,
-      ANARIDataType type,
-      void *mem,
-      uint64_t size,
-      ANARIWaitMask mask) override;
-  const void *frameBufferMap(ANARIFrame frame,
-      const char *channel,
-      uint32_t *width,
-      uint32_t *height,
-      ANARIDataType *pixelType) override;
-  void frameBufferUnmap(ANARIFrame frame, const char *channel) override;
-  int frameReady(ANARIFrame frame, ANARIWaitMask mask) override;
-  void discardFrame(ANARIFrame frame) override;
 
   // LocalRenderer: composite mode only.
   anari::DeviceImpl &device() override;
@@ -90,6 +74,9 @@ class WrappedDevice : public ForwardingDevice, public LocalRenderer
       ANARIFrame frame, uint32_t width, uint32_t height) override;
 
  protected:
+  // Whether `object` is a live handle the application holds; if not,
+  // reports it for `function`.
+  bool admits(ANARIObject object, const char *function) override;
   ANARIObject newObjectOf(ANARIDataType type, const char *subtype) override;
   ANARIArray newArrayOf(ANARIDataType arrayType,
       const void *appMemory,
@@ -97,12 +84,6 @@ class WrappedDevice : public ForwardingDevice, public LocalRenderer
       const void *userData,
       ANARIDataType elementType,
       const uint64_t items[3]) override;
-  void *mapParameterArrayOf(ANARIObject object,
-      const char *name,
-      ANARIDataType arrayType,
-      ANARIDataType elementType,
-      const uint64_t items[3],
-      uint64_t *elementStride) override;
 
  private:
   WrappedDevice(std::shared_ptr<frontend::LoadedLibrary> library,
@@ -142,9 +123,6 @@ class WrappedDevice : public ForwardingDevice, public LocalRenderer
     int64_t references{1};
   };
 
-  // Whether `object` is a live handle the application holds; if not,
-  // reports it for `call`.
-  bool live(ANARIObject object, const char *call);
   ANARIObject created(ANARIObject handle, ANARIDataType type);
   void setLinearChannels(ANARIObject frame);
   void clearBackground(ANARIObject renderer);
