@@ -271,7 +271,9 @@ int DataParallelDevice::getProperty(ANARIObject object,
     return found;
   // A stale handle still takes part, so the other processes never wait on
   // this one.
-  const ANARIDataType objectType = local().typeOf(object);
+  // (Asking does not choose the local renderer.)
+  LocalRenderer &renderer = wrapOpen() ? *m_core : *m_local;
+  const ANARIDataType objectType = renderer.typeOf(object);
   if (objectType != ANARI_UNKNOWN && objectType != ANARI_WORLD)
     return found;
   try {

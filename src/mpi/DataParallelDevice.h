@@ -35,29 +35,36 @@ class DataParallelDevice : public ForwardingDevice
   explicit DataParallelDevice(ANARILibrary library);
   ~DataParallelDevice() override;
 
-  ANARIObject newObject(const char *objectType, const char *subtype) override;
-  void setParameter(ANARIObject object,
-      const char *name,
-      ANARIDataType type,
-      const void *mem) override;
-  void unsetParameter(ANARIObject object, const char *name) override;
-  void unsetAllParameters(ANARIObject object) override;
-  void commitParameters(ANARIObject object) override;
-  void release(ANARIObject object) override;
-  void retain(ANARIObject object) override;
-  int getProperty(ANARIObject object,
-      const char *name,
-      ANARIDataType type,
-      void *mem,
-      uint64_t size,
-      ANARIWaitMask mask) override;
+  // Collective: the render, the channels rank 0 assembled, and waiting
+  // world bounds (CollectiveFrames.cpp, DataParallelDevice.cpp).
+  void renderFrame(ANARIFrame frame) override;
   const void *frameBufferMap(ANARIFrame frame,
       const char *channel,
       uint32_t *width,
       uint32_t *height,
       ANARIDataType *pixelType) override;
   void frameBufferUnmap(ANARIFrame frame, const char *channel) override;
-  void renderFrame(ANARIFrame frame) override;
+  int getProperty(ANARIObject object,
+      const char *name,
+      ANARIDataType type,
+      void *mem,
+      uint64_t size,
+      ANARIWaitMask mask) override;
+
+  // This device's parameters, and the communicators of frames and worlds
+  // (DeviceParameters.cpp).
+  void setParameter(ANARIObject object,
+      const char *name,
+      ANARIDataType type,
+      const void *mem) override;
+  void commitParameters(ANARIObject object) override;
+  void unsetParameter(ANARIObject object, const char *name) override;
+  void unsetAllParameters(ANARIObject object) override;
+
+  // Lifetimes: the device's own, and the state kept for frames and worlds.
+  ANARIObject newObject(const char *objectType, const char *subtype) override;
+  void retain(ANARIObject object) override;
+  void release(ANARIObject object) override;
 
  protected:
   ANARIObject newObjectOf(ANARIDataType type, const char *subtype) override;

@@ -39,23 +39,18 @@ class WrappedDevice : public ForwardingDevice, public LocalRenderer
       std::string &error);
   ~WrappedDevice() override;
 
-  const std::string &libraryName() const
-  {
-    return m_library->name();
-  }
-
   // ForwardingDevice: calls on live handles the application holds only
   // (admits); these also keep what compositing needs.
   ANARIObject newObject(const char *objectType, const char *subtype) override;
+  void retain(ANARIObject object) override;
+  void release(ANARIObject object) override;
   void setParameter(ANARIObject object,
       const char *name,
       ANARIDataType type,
       const void *mem) override;
+  void commitParameters(ANARIObject object) override;
   void unsetParameter(ANARIObject object, const char *name) override;
   void unsetAllParameters(ANARIObject object) override;
-  void commitParameters(ANARIObject object) override;
-  void release(ANARIObject object) override;
-  void retain(ANARIObject object) override;
 
   // LocalRenderer: composite mode only.
   anari::DeviceImpl &device() override;
