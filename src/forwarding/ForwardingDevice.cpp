@@ -16,6 +16,8 @@ bool ForwardingDevice::admits(ANARIObject, const char *)
   return true;
 }
 
+void ForwardingDevice::beforeCreating(ANARIDataType) {}
+
 bool ForwardingDevice::forwards(ANARIObject object, const char *function)
 {
   return m_inner && (handleIsDevice(object) || admits(object, function));
@@ -78,6 +80,7 @@ ANARIArray1D ForwardingDevice::newArray1D(const void *appMemory,
     uint64_t numItems1)
 {
   const uint64_t items[3] = {numItems1, 0, 0};
+  beforeCreating(ANARI_ARRAY1D);
   return (ANARIArray1D)newArrayOf(
       ANARI_ARRAY1D, appMemory, deleter, userData, elementType, items);
 }
@@ -90,6 +93,7 @@ ANARIArray2D ForwardingDevice::newArray2D(const void *appMemory,
     uint64_t numItems2)
 {
   const uint64_t items[3] = {numItems1, numItems2, 0};
+  beforeCreating(ANARI_ARRAY2D);
   return (ANARIArray2D)newArrayOf(
       ANARI_ARRAY2D, appMemory, deleter, userData, elementType, items);
 }
@@ -103,72 +107,86 @@ ANARIArray3D ForwardingDevice::newArray3D(const void *appMemory,
     uint64_t numItems3)
 {
   const uint64_t items[3] = {numItems1, numItems2, numItems3};
+  beforeCreating(ANARI_ARRAY3D);
   return (ANARIArray3D)newArrayOf(
       ANARI_ARRAY3D, appMemory, deleter, userData, elementType, items);
 }
 
 ANARIGeometry ForwardingDevice::newGeometry(const char *subtype)
 {
+  beforeCreating(ANARI_GEOMETRY);
   return (ANARIGeometry)newObjectOf(ANARI_GEOMETRY, subtype);
 }
 
 ANARIMaterial ForwardingDevice::newMaterial(const char *subtype)
 {
+  beforeCreating(ANARI_MATERIAL);
   return (ANARIMaterial)newObjectOf(ANARI_MATERIAL, subtype);
 }
 
 ANARISampler ForwardingDevice::newSampler(const char *subtype)
 {
+  beforeCreating(ANARI_SAMPLER);
   return (ANARISampler)newObjectOf(ANARI_SAMPLER, subtype);
 }
 
 ANARISurface ForwardingDevice::newSurface()
 {
+  beforeCreating(ANARI_SURFACE);
   return (ANARISurface)newObjectOf(ANARI_SURFACE, nullptr);
 }
 
 ANARISpatialField ForwardingDevice::newSpatialField(const char *subtype)
 {
+  beforeCreating(ANARI_SPATIAL_FIELD);
   return (ANARISpatialField)newObjectOf(ANARI_SPATIAL_FIELD, subtype);
 }
 
 ANARIVolume ForwardingDevice::newVolume(const char *subtype)
 {
+  beforeCreating(ANARI_VOLUME);
   return (ANARIVolume)newObjectOf(ANARI_VOLUME, subtype);
 }
 
 ANARILight ForwardingDevice::newLight(const char *subtype)
 {
+  beforeCreating(ANARI_LIGHT);
   return (ANARILight)newObjectOf(ANARI_LIGHT, subtype);
 }
 
 ANARIGroup ForwardingDevice::newGroup()
 {
+  beforeCreating(ANARI_GROUP);
   return (ANARIGroup)newObjectOf(ANARI_GROUP, nullptr);
 }
 
 ANARIInstance ForwardingDevice::newInstance(const char *subtype)
 {
+  beforeCreating(ANARI_INSTANCE);
   return (ANARIInstance)newObjectOf(ANARI_INSTANCE, subtype);
 }
 
 ANARIWorld ForwardingDevice::newWorld()
 {
+  beforeCreating(ANARI_WORLD);
   return (ANARIWorld)newObjectOf(ANARI_WORLD, nullptr);
 }
 
 ANARICamera ForwardingDevice::newCamera(const char *subtype)
 {
+  beforeCreating(ANARI_CAMERA);
   return (ANARICamera)newObjectOf(ANARI_CAMERA, subtype);
 }
 
 ANARIRenderer ForwardingDevice::newRenderer(const char *subtype)
 {
+  beforeCreating(ANARI_RENDERER);
   return (ANARIRenderer)newObjectOf(ANARI_RENDERER, subtype);
 }
 
 ANARIFrame ForwardingDevice::newFrame()
 {
+  beforeCreating(ANARI_FRAME);
   return (ANARIFrame)newObjectOf(ANARI_FRAME, nullptr);
 }
 
@@ -296,6 +314,7 @@ void *ForwardingDevice::mapParameterArrayOf(ANARIObject object,
 ANARIObject ForwardingDevice::newObject(
     const char *objectType, const char *subtype)
 {
+  beforeCreating(ANARI_OBJECT);
   return m_inner ? m_inner->newObject(objectType, subtype) : nullptr;
 }
 

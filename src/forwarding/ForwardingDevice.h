@@ -136,6 +136,9 @@ class ForwardingDevice : public anari::DeviceImpl
   // reports those it refuses. Every forwarded call on an object asks.
   virtual bool admits(ANARIObject object, const char *function);
 
+  // Before every anariNew* (ANARI_OBJECT for anariNewObject) reaches the
+  // hooks below: a layer may choose its inner device here.
+  virtual void beforeCreating(ANARIDataType type);
   // anariNew* of every object but arrays (`subtype` is NULL for surfaces,
   // groups, worlds and frames).
   virtual ANARIObject newObjectOf(ANARIDataType type, const char *subtype);

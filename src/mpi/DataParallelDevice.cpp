@@ -150,7 +150,6 @@ void DataParallelDevice::chooseLocal()
 ANARIObject DataParallelDevice::newObjectOf(
     ANARIDataType type, const char *subtype)
 {
-  local();
   ANARIObject object = ForwardingDevice::newObjectOf(type, subtype);
   if (object && (type == ANARI_FRAME || type == ANARI_WORLD)) {
     std::lock_guard lock(m_stateMutex);
@@ -163,23 +162,9 @@ ANARIObject DataParallelDevice::newObjectOf(
   return object;
 }
 
-ANARIArray DataParallelDevice::newArrayOf(ANARIDataType arrayType,
-    const void *appMemory,
-    ANARIMemoryDeleter deleter,
-    const void *userData,
-    ANARIDataType elementType,
-    const uint64_t items[3])
+void DataParallelDevice::beforeCreating(ANARIDataType)
 {
   local();
-  return ForwardingDevice::newArrayOf(
-      arrayType, appMemory, deleter, userData, elementType, items);
-}
-
-ANARIObject DataParallelDevice::newObject(
-    const char *objectType, const char *subtype)
-{
-  local();
-  return ForwardingDevice::newObject(objectType, subtype);
 }
 
 void DataParallelDevice::retain(ANARIObject object)

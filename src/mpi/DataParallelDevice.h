@@ -62,18 +62,13 @@ class DataParallelDevice : public ForwardingDevice
   void unsetAllParameters(ANARIObject object) override;
 
   // Lifetimes: the device's own, and the state kept for frames and worlds.
-  ANARIObject newObject(const char *objectType, const char *subtype) override;
   void retain(ANARIObject object) override;
   void release(ANARIObject object) override;
 
  protected:
+  // The local renderer is chosen at the first object created.
+  void beforeCreating(ANARIDataType type) override;
   ANARIObject newObjectOf(ANARIDataType type, const char *subtype) override;
-  ANARIArray newArrayOf(ANARIDataType arrayType,
-      const void *appMemory,
-      ANARIMemoryDeleter deleter,
-      const void *userData,
-      ANARIDataType elementType,
-      const uint64_t items[3]) override;
 
  private:
   // The `mpiCommunicator` parameter of a frame or world: the MPI_Comm read
