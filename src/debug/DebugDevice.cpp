@@ -13,7 +13,7 @@ namespace prism::debug {
 DebugDevice::DebugDevice(ANARILibrary library,
     const std::string &wrappedSpec,
     const std::string &subtype)
-    : anari::DeviceImpl(library), m_subtype(subtype)
+    : ForwardingDevice(library), m_subtype(subtype)
 {
   m_statusCallback = m_defaultStatusCB;
   m_statusUserPtr = m_defaultStatusCBUserPtr;
@@ -48,7 +48,7 @@ bool DebugDevice::wrap(
   }
   dropWrapped();
   m_wrappedLibrary = std::move(library);
-  m_wrapped = device;
+  setInner(device);
   m_ownsWrapped = true;
   m_wrappedSpec = wrappedSpec;
   m_failure.clear();
@@ -60,12 +60,12 @@ bool DebugDevice::wrap(
 void DebugDevice::adopt(anari::DeviceImpl *device)
 {
   dropWrapped();
-  m_wrapped = device;
+  setInner(device);
   m_ownsWrapped = false;
   m_failure.clear();
   // No library to ask: the device's own "extension" property (spec 5.1).
   const char **extensions = nullptr;
-  if (!m_wrapped->getProperty((ANARIObject)m_wrapped,
+  if (!inner()->getProperty((ANARIObject)inner(),
           "extension",
           ANARI_STRING_LIST,
           &extensions,
@@ -78,17 +78,17 @@ void DebugDevice::adopt(anari::DeviceImpl *device)
 void DebugDevice::readWrappedDefinitions(const char **extensions)
 {
   // The definitions the wrapped device implements are those checked.
-  const char **renderers = m_wrapped->getObjectSubtypes(ANARI_RENDERER);
+  const char **renderers = inner()->getObjectSubtypes(ANARI_RENDERER);
   m_catalog = std::make_unique<introspection::Catalog>(extensions, renderers);
-  m_rules = std::make_unique<Rules>(*m_catalog, *m_wrapped);
+  m_rules = std::make_unique<Rules>(*m_catalog, *inner());
 }
 
 void DebugDevice::dropWrapped()
 {
   // A device the application handed over is the application's to release.
-  if (m_wrapped && m_ownsWrapped)
-    m_wrapped->release((ANARIObject)m_wrapped);
-  m_wrapped = nullptr;
+  if (inner() && m_ownsWrapped)
+    inner()->release((ANARIObject)inner());
+  setInner(nullptr);
   m_ownsWrapped = true;
   m_rules.reset();
   m_catalog.reset();
@@ -148,7 +148,7 @@ void DebugDevice::forwardStatus(const void *userPtr,
   ANARIObject translated = nullptr;
   if (source
       && (source == (ANARIObject)device
-          || source == (ANARIObject)self->m_wrapped)) {
+          || source == (ANARIObject)self->inner())) {
     translated = (ANARIObject)self->this_device();
   } else if (source) {
     std::lock_guard lock(self->m_mutex);
@@ -317,7 +317,7 @@ void DebugDevice::setDeviceParameter(
   report(f);
   if (!good)
     return;
-  m_wrapped->setParameter((ANARIObject)m_wrapped,
+  inner()->setParameter((ANARIObject)inner(),
       name,
       type,
       anari::isObject(type) ? (const void *)&translated : mem);
@@ -412,7 +412,7 @@ void DebugDevice::commitDevice()
           "'wrappedDevice' can change only before the first object is "
           "created; keeping the device wrapped now",
           ANARI_STATUS_INVALID_OPERATION);
-    } else if (m_pendingDevice != m_wrapped) {
+    } else if (m_pendingDevice != inner()) {
       adopt(m_pendingDevice);
     }
     m_pendingDevice = nullptr;
@@ -445,13 +445,13 @@ void DebugDevice::commitDevice()
   openTraceInDirectory(f);
   report(f);
   trace("Commit device");
-  m_wrapped->commitParameters((ANARIObject)m_wrapped);
+  inner()->commitParameters((ANARIObject)inner());
 }
 
 void (*DebugDevice::getProcAddress(const char *name))(void)
 {
   ++m_calls;
-  if (name && m_wrapped->getProcAddress(name)) {
+  if (name && inner()->getProcAddress(name)) {
     report(ANARI_SEVERITY_WARNING,
         ANARI_STATUS_UNSUPPORTED_DEVICE,
         std::string("anariDeviceGetProcAddress(device '") + name

@@ -12,7 +12,7 @@
 #include "WrappedLibrary.h"
 #include "trace/TraceWriter.h"
 
-#include "anari/backend/DeviceImpl.h"
+#include "ForwardingDevice.h"
 #include "introspection/Introspection.h"
 
 #include <atomic>
@@ -23,7 +23,7 @@
 
 namespace prism::debug {
 
-class DebugDevice : public anari::DeviceImpl
+class DebugDevice : public ForwardingDevice
 {
  public:
   // Wraps a new device of `subtype` from the library `wrappedSpec` names.
@@ -43,62 +43,12 @@ class DebugDevice : public anari::DeviceImpl
   using DeviceCheck = int (*)(ANARIDevice);
   static void setDeviceCheck(DeviceCheck check);
 
-  ANARIArray1D newArray1D(const void *appMemory,
-      ANARIMemoryDeleter deleter,
-      const void *userData,
-      ANARIDataType elementType,
-      uint64_t numItems1) override;
-  ANARIArray2D newArray2D(const void *appMemory,
-      ANARIMemoryDeleter deleter,
-      const void *userData,
-      ANARIDataType elementType,
-      uint64_t numItems1,
-      uint64_t numItems2) override;
-  ANARIArray3D newArray3D(const void *appMemory,
-      ANARIMemoryDeleter deleter,
-      const void *userData,
-      ANARIDataType elementType,
-      uint64_t numItems1,
-      uint64_t numItems2,
-      uint64_t numItems3) override;
-  ANARIGeometry newGeometry(const char *subtype) override;
-  ANARIMaterial newMaterial(const char *subtype) override;
-  ANARISampler newSampler(const char *subtype) override;
-  ANARISurface newSurface() override;
-  ANARISpatialField newSpatialField(const char *subtype) override;
-  ANARIVolume newVolume(const char *subtype) override;
-  ANARILight newLight(const char *subtype) override;
-  ANARIGroup newGroup() override;
-  ANARIInstance newInstance(const char *subtype) override;
-  ANARIWorld newWorld() override;
-  ANARICamera newCamera(const char *subtype) override;
-  ANARIRenderer newRenderer(const char *subtype) override;
-  ANARIFrame newFrame() override;
-
   void setParameter(ANARIObject object,
       const char *name,
       ANARIDataType type,
       const void *mem) override;
   void unsetParameter(ANARIObject object, const char *name) override;
   void unsetAllParameters(ANARIObject object) override;
-  void *mapParameterArray1D(ANARIObject object,
-      const char *name,
-      ANARIDataType elementType,
-      uint64_t numElements1,
-      uint64_t *elementStride) override;
-  void *mapParameterArray2D(ANARIObject object,
-      const char *name,
-      ANARIDataType elementType,
-      uint64_t numElements1,
-      uint64_t numElements2,
-      uint64_t *elementStride) override;
-  void *mapParameterArray3D(ANARIObject object,
-      const char *name,
-      ANARIDataType elementType,
-      uint64_t numElements1,
-      uint64_t numElements2,
-      uint64_t numElements3,
-      uint64_t *elementStride) override;
   void unmapParameterArray(ANARIObject object, const char *name) override;
   void commitParameters(ANARIObject object) override;
   void release(ANARIObject object) override;
@@ -135,6 +85,19 @@ class DebugDevice : public anari::DeviceImpl
   void discardFrame(ANARIFrame frame) override;
 
   ANARIObject newObject(const char *objectType, const char *subtype) override;
+  ANARIObject newObjectOf(ANARIDataType type, const char *subtype) override;
+  ANARIArray newArrayOf(ANARIDataType arrayType,
+      const void *appMemory,
+      ANARIMemoryDeleter deleter,
+      const void *userData,
+      ANARIDataType elementType,
+      const uint64_t items[3]) override;
+  void *mapParameterArrayOf(ANARIObject object,
+      const char *name,
+      ANARIDataType arrayType,
+      ANARIDataType elementType,
+      const uint64_t items[3],
+      uint64_t *elementStride) override;
   // Extension functions take the layer's handles, which the wrapped device's
   // own functions cannot read: none is handed out, and one the wrapped
   // device has is reported.
@@ -265,18 +228,20 @@ class DebugDevice : public anari::DeviceImpl
       const char *subtype,
       ANARIObject wrapped,
       Findings &findings);
-  template <typename NewObject>
-  ANARIObject newSubtyped(const char *function,
-      ANARIDataType type,
-      const char *subtype,
-      NewObject &&make);
-  ANARIArray newArray(const char *function,
+  // Reports why an array was not made (and traces it refused).
+  ANARIArray refuseArray(Findings &f,
       ANARIDataType arrayType,
-      const void *appMemory,
-      ANARIMemoryDeleter deleter,
-      const void *userData,
       ANARIDataType elementType,
       const uint64_t items[3]);
+  // What the layer keeps of a new array: its shape, the application's
+  // memory (for object arrays, the layer handles `copied` translated) and
+  // its trace line. Under the lock.
+  void recordArray(ANARIObject handle,
+      ANARIDataType arrayType,
+      ANARIDataType elementType,
+      const uint64_t items[3],
+      const void *appMemory,
+      std::vector<ANARIObject> copied);
   // The wrapped handles for `count` layer handles at `source` (NULL: all
   // NULL), checked; `copied` holds the handles of the last translation
   // (slots unchanged since keep their object, released or not) and
@@ -289,13 +254,6 @@ class DebugDevice : public anari::DeviceImpl
   // The same for an object array's current contents.
   std::vector<ANARIObject> translateObjectArray(
       Findings &f, ObjectRecord &array);
-  void *mapParameterArray(const char *function,
-      ANARIObject object,
-      const char *name,
-      ANARIDataType arrayType,
-      ANARIDataType elementType,
-      const uint64_t items[3],
-      uint64_t *elementStride);
   void setDeviceParameter(
       const char *name, ANARIDataType type, const void *mem);
   void commitDevice();
@@ -342,7 +300,6 @@ class DebugDevice : public anari::DeviceImpl
   std::string m_pendingTraceDir;
   std::string m_failure;
   std::shared_ptr<WrappedLibrary> m_wrappedLibrary;
-  anari::DeviceImpl *m_wrapped{nullptr};
   // False for a device the application handed over (never released here).
   bool m_ownsWrapped{true};
   std::unique_ptr<introspection::Catalog> m_catalog;

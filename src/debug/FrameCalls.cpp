@@ -32,7 +32,7 @@ int DebugDevice::getProperty(ANARIObject object,
                  std::string(" ").append(propertyOperands()))
                                               : std::string();
     };
-    ANARIObject target = isDevice(object) ? (ANARIObject)m_wrapped : nullptr;
+    ANARIObject target = isDevice(object) ? (ANARIObject)inner() : nullptr;
     if (!target) {
       target = checked(f, object, ANARI_OBJECT, name, [&](ObjectRecord &) {
         if (!name)
@@ -45,8 +45,7 @@ int DebugDevice::getProperty(ANARIObject object,
     if (!target || !name)
       return 0;
     const auto quiet = withheldAfter(f);
-    const int found =
-        m_wrapped->getProperty(target, name, type, mem, size, mask);
+    const int found = inner()->getProperty(target, name, type, mem, size, mask);
     if (found && anari::isObject(type) && mem && size >= sizeof(ANARIObject)) {
       // An object property names the wrapped device's object: give ours.
       ANARIObject wrapped = nullptr;
@@ -62,7 +61,7 @@ int DebugDevice::getProperty(ANARIObject object,
 const char **DebugDevice::getObjectSubtypes(ANARIDataType objectType)
 {
   return guarded("anariGetObjectSubtypes", (const char **)nullptr, [&] {
-    return m_wrapped->getObjectSubtypes(objectType);
+    return inner()->getObjectSubtypes(objectType);
   });
 }
 
@@ -72,7 +71,7 @@ const void *DebugDevice::getObjectInfo(ANARIDataType objectType,
     ANARIDataType infoType)
 {
   return guarded("anariGetObjectInfo", (const void *)nullptr, [&] {
-    return m_wrapped->getObjectInfo(
+    return inner()->getObjectInfo(
         objectType, objectSubtype, infoName, infoType);
   });
 }
@@ -85,7 +84,7 @@ const void *DebugDevice::getParameterInfo(ANARIDataType objectType,
     ANARIDataType infoType)
 {
   return guarded("anariGetParameterInfo", (const void *)nullptr, [&] {
-    return m_wrapped->getParameterInfo(objectType,
+    return inner()->getParameterInfo(objectType,
         objectSubtype,
         parameterName,
         parameterType,
@@ -142,7 +141,7 @@ const void *DebugDevice::frameBufferMap(ANARIFrame frame,
     if (!target)
       return nullptr;
     const auto quiet = withheldAfter(f);
-    const void *pixels = m_wrapped->frameBufferMap(
+    const void *pixels = inner()->frameBufferMap(
         (ANARIFrame)target, channel, width, height, pixelType);
     if (pixels && tracing() && width && height && pixelType) {
       // The pixels' hash, so a replay can tell it renders the same image.
@@ -176,7 +175,7 @@ void DebugDevice::frameBufferUnmap(ANARIFrame frame, const char *channel)
     });
     const auto quiet = withheldAfter(f);
     if (target)
-      m_wrapped->frameBufferUnmap((ANARIFrame)target, channel);
+      inner()->frameBufferUnmap((ANARIFrame)target, channel);
   });
 }
 
@@ -196,7 +195,7 @@ void DebugDevice::renderFrame(ANARIFrame frame)
     });
     const auto quiet = withheldAfter(f);
     if (target)
-      m_wrapped->renderFrame((ANARIFrame)target);
+      inner()->renderFrame((ANARIFrame)target);
   });
 }
 
@@ -218,7 +217,7 @@ int DebugDevice::frameReady(ANARIFrame frame, ANARIWaitMask mask)
     });
     const auto quiet = withheldAfter(f);
     const int ready =
-        target ? m_wrapped->frameReady((ANARIFrame)target, mask) : 0;
+        target ? inner()->frameReady((ANARIFrame)target, mask) : 0;
     if (ready) {
       std::lock_guard lock(m_mutex);
       if (ObjectRecord *record = m_objects.find(frame))
@@ -241,7 +240,7 @@ void DebugDevice::discardFrame(ANARIFrame frame)
     });
     const auto quiet = withheldAfter(f);
     if (target)
-      m_wrapped->discardFrame((ANARIFrame)target);
+      inner()->discardFrame((ANARIFrame)target);
   });
 }
 

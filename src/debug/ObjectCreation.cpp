@@ -37,14 +37,66 @@ bool isArrayElementType(ANARIDataType type)
          && anari::sizeOf(type) > 0;
 }
 
+// The element type and sizes of a new array, checked; false (with `f`
+// told why) if the array cannot be made.
+bool checkArrayShape(Findings &f,
+    ANARIDataType arrayType,
+    ANARIDataType elementType,
+    const uint64_t items[3])
+{
+  if (!isArrayElementType(elementType)) {
+    f.error(std::string("element type ") + anari::toString(elementType) + " ("
+            + std::to_string(int(elementType))
+            + ") cannot be an array element");
+    return false;
+  }
+  const int dimensions = arrayType == ANARI_ARRAY1D   ? 1
+                         : arrayType == ANARI_ARRAY2D ? 2
+                                                      : 3;
+  for (int i = 0; i < dimensions; ++i) {
+    if (items[i] == 0) {
+      f.error("the array has no elements (dimension " + std::to_string(i + 1)
+              + " is 0)");
+      return false;
+    }
+  }
+  uint64_t bytes = anari::sizeOf(elementType);
+  for (int i = 0; i < 3; ++i) {
+    if (items[i] && __builtin_mul_overflow(bytes, items[i], &bytes)) {
+      f.error("the array's size in bytes overflows 64 bits",
+          ANARI_STATUS_OUT_OF_MEMORY);
+      return false;
+    }
+  }
+  return true;
+}
+
+uint64_t elementCount(const uint64_t items[3])
+{
+  uint64_t count = 1;
+  for (int i = 0; i < 3; ++i)
+    count *= items[i] ? items[i] : 1;
+  return count;
+}
+
+// "[2 3 0]"
+std::string itemsOperand(const uint64_t items[3])
+{
+  // Appended, not concatenated: GCC 12 raises a false -Wrestrict.
+  return std::string("[")
+      .append(std::to_string(items[0]))
+      .append(" ")
+      .append(std::to_string(items[1]))
+      .append(" ")
+      .append(std::to_string(items[2]))
+      .append("]");
+}
+
 } // namespace
 
-template <typename NewObject>
-ANARIObject DebugDevice::newSubtyped(const char *function,
-    ANARIDataType type,
-    const char *subtype,
-    NewObject &&make)
+ANARIObject DebugDevice::newObjectOf(ANARIDataType type, const char *subtype)
 {
+  const char *function = newFunctionName(type);
   return guarded(function, ANARIObject(nullptr), [&]() -> ANARIObject {
     Findings f(function);
     if (type != ANARI_SURFACE && type != ANARI_GROUP && type != ANARI_WORLD
@@ -67,7 +119,7 @@ ANARIObject DebugDevice::newSubtyped(const char *function,
     ANARIObject wrapped = nullptr;
     {
       const auto quiet = withheldAfter(f);
-      wrapped = make();
+      wrapped = ForwardingDevice::newObjectOf(type, subtype);
     }
     ANARIObject handle = nullptr;
     {
@@ -76,10 +128,12 @@ ANARIObject DebugDevice::newSubtyped(const char *function,
       if (handle && tracing()) {
         ObjectRecord &record = *m_objects.find(handle);
         record.knownSubtype = known;
-        record.traceLine =
-            trace("New " + traceName(handle) + " " + trace::typeName(type)
-                  + (subtype ? " " + trace::quote(subtype) : std::string()));
-
+        // Appended, not concatenated: GCC 12 raises a false -Wrestrict.
+        std::string line = "New " + traceName(handle) + " ";
+        line.append(trace::typeName(type));
+        if (subtype)
+          line.append(" ").append(trace::quote(subtype));
+        record.traceLine = trace(line);
       } else if (handle) {
         m_objects.find(handle)->knownSubtype = known;
       }
@@ -89,109 +143,11 @@ ANARIObject DebugDevice::newSubtyped(const char *function,
   });
 }
 
-ANARIGeometry DebugDevice::newGeometry(const char *subtype)
-{
-  return (ANARIGeometry)newSubtyped(
-      "anariNewGeometry", ANARI_GEOMETRY, subtype, [&] {
-        return (ANARIObject)m_wrapped->newGeometry(subtype);
-      });
-}
-
-ANARIMaterial DebugDevice::newMaterial(const char *subtype)
-{
-  return (ANARIMaterial)newSubtyped(
-      "anariNewMaterial", ANARI_MATERIAL, subtype, [&] {
-        return (ANARIObject)m_wrapped->newMaterial(subtype);
-      });
-}
-
-ANARISampler DebugDevice::newSampler(const char *subtype)
-{
-  return (ANARISampler)newSubtyped(
-      "anariNewSampler", ANARI_SAMPLER, subtype, [&] {
-        return (ANARIObject)m_wrapped->newSampler(subtype);
-      });
-}
-
-ANARISurface DebugDevice::newSurface()
-{
-  return (ANARISurface)newSubtyped(
-      "anariNewSurface", ANARI_SURFACE, nullptr, [&] {
-        return (ANARIObject)m_wrapped->newSurface();
-      });
-}
-
-ANARISpatialField DebugDevice::newSpatialField(const char *subtype)
-{
-  return (ANARISpatialField)newSubtyped(
-      "anariNewSpatialField", ANARI_SPATIAL_FIELD, subtype, [&] {
-        return (ANARIObject)m_wrapped->newSpatialField(subtype);
-      });
-}
-
-ANARIVolume DebugDevice::newVolume(const char *subtype)
-{
-  return (ANARIVolume)newSubtyped("anariNewVolume", ANARI_VOLUME, subtype, [&] {
-    return (ANARIObject)m_wrapped->newVolume(subtype);
-  });
-}
-
-ANARILight DebugDevice::newLight(const char *subtype)
-{
-  return (ANARILight)newSubtyped("anariNewLight", ANARI_LIGHT, subtype, [&] {
-    return (ANARIObject)m_wrapped->newLight(subtype);
-  });
-}
-
-ANARIGroup DebugDevice::newGroup()
-{
-  return (ANARIGroup)newSubtyped("anariNewGroup", ANARI_GROUP, nullptr, [&] {
-    return (ANARIObject)m_wrapped->newGroup();
-  });
-}
-
-ANARIInstance DebugDevice::newInstance(const char *subtype)
-{
-  return (ANARIInstance)newSubtyped(
-      "anariNewInstance", ANARI_INSTANCE, subtype, [&] {
-        return (ANARIObject)m_wrapped->newInstance(subtype);
-      });
-}
-
-ANARIWorld DebugDevice::newWorld()
-{
-  return (ANARIWorld)newSubtyped("anariNewWorld", ANARI_WORLD, nullptr, [&] {
-    return (ANARIObject)m_wrapped->newWorld();
-  });
-}
-
-ANARICamera DebugDevice::newCamera(const char *subtype)
-{
-  return (ANARICamera)newSubtyped("anariNewCamera", ANARI_CAMERA, subtype, [&] {
-    return (ANARIObject)m_wrapped->newCamera(subtype);
-  });
-}
-
-ANARIRenderer DebugDevice::newRenderer(const char *subtype)
-{
-  return (ANARIRenderer)newSubtyped(
-      "anariNewRenderer", ANARI_RENDERER, subtype, [&] {
-        return (ANARIObject)m_wrapped->newRenderer(subtype);
-      });
-}
-
-ANARIFrame DebugDevice::newFrame()
-{
-  return (ANARIFrame)newSubtyped("anariNewFrame", ANARI_FRAME, nullptr, [&] {
-    return (ANARIObject)m_wrapped->newFrame();
-  });
-}
-
 ANARIObject DebugDevice::newObject(const char *objectType, const char *subtype)
 {
   return guarded("anariNewObject", ANARIObject(nullptr), [&] {
     Findings f("anariNewObject");
-    ANARIObject wrapped = m_wrapped->newObject(objectType, subtype);
+    ANARIObject wrapped = inner()->newObject(objectType, subtype);
     std::lock_guard lock(m_mutex);
     ANARIObject handle =
         wrapped ? created("anariNewObject", ANARI_OBJECT, subtype, wrapped, f)
@@ -208,68 +164,78 @@ ANARIObject DebugDevice::newObject(const char *objectType, const char *subtype)
 
 // Arrays /////////////////////////////////////////////////////////////////////
 
-ANARIArray DebugDevice::newArray(const char *function,
+ANARIArray DebugDevice::refuseArray(Findings &f,
     ANARIDataType arrayType,
+    ANARIDataType elementType,
+    const uint64_t items[3])
+{
+  {
+    // Refused: no object, so no name (`-`), and no data.
+    std::lock_guard lock(m_mutex);
+    if (tracing() && anari::isValidDataType(elementType)) {
+      trace("Refused Array - " + trace::typeName(arrayType) + " "
+            + trace::typeName(elementType) + " " + itemsOperand(items) + " -");
+    }
+  }
+  report(f);
+  return nullptr;
+}
+
+void DebugDevice::recordArray(ANARIObject handle,
+    ANARIDataType arrayType,
+    ANARIDataType elementType,
+    const uint64_t items[3],
+    const void *appMemory,
+    std::vector<ANARIObject> copied)
+{
+  ObjectRecord &record = *m_objects.find(handle);
+  record.elementType = elementType;
+  for (int i = 0; i < 3; ++i)
+    record.items[i] = items[i];
+  const bool objects = anari::isObject(elementType);
+  if (objects) {
+    record.objectArray = true;
+    record.appMemory = appMemory;
+    if (!record.appMemory)
+      record.ownedHandles.assign(record.itemCount(), nullptr);
+    record.copiedHandles = std::move(copied);
+  } else if (appMemory) {
+    record.hasLargestIndex = largestComponent(
+        appMemory, elementType, record.itemCount(), 0, record.largestIndex);
+  }
+  if (tracing()) {
+    record.traceLine = trace(
+        "Array " + traceName(handle) + " " + trace::typeName(arrayType) + " "
+        + trace::typeName(elementType) + " " + itemsOperand(items) + " "
+        + traceContents(elementType, appMemory, record.itemCount(), 0));
+  }
+}
+
+ANARIArray DebugDevice::newArrayOf(ANARIDataType arrayType,
     const void *appMemory,
     ANARIMemoryDeleter deleter,
     const void *userData,
     ANARIDataType elementType,
     const uint64_t items[3])
 {
-  // Refused: no object, so no name (`-`), and no data.
-  auto refuse = [&](Findings &f) -> ANARIArray {
-    {
-      std::lock_guard lock(m_mutex);
-      if (tracing() && anari::isValidDataType(elementType)) {
-        trace("Refused Array - " + trace::typeName(arrayType) + " "
-              + trace::typeName(elementType) + " [" + std::to_string(items[0])
-              + " " + std::to_string(items[1]) + " " + std::to_string(items[2])
-              + "] -");
-      }
-    }
-    report(f);
-    return nullptr;
-  };
+  const char *function = newFunctionName(arrayType);
   return guarded(function, ANARIArray(nullptr), [&]() -> ANARIArray {
     Findings f(function);
-    if (!isArrayElementType(elementType)) {
-      f.error(std::string("element type ") + anari::toString(elementType) + " ("
-              + std::to_string(int(elementType))
-              + ") cannot be an array element");
-      return refuse(f);
-    }
-    const int dimensions = arrayType == ANARI_ARRAY1D   ? 1
-                           : arrayType == ANARI_ARRAY2D ? 2
-                                                        : 3;
-    for (int i = 0; i < dimensions; ++i) {
-      if (items[i] == 0) {
-        f.error("the array has no elements (dimension " + std::to_string(i + 1)
-                + " is 0)");
-        return refuse(f);
-      }
-    }
-    uint64_t bytes = anari::sizeOf(elementType);
-    for (int i = 0; i < 3; ++i) {
-      if (items[i] && __builtin_mul_overflow(bytes, items[i], &bytes)) {
-        f.error("the array's size in bytes overflows 64 bits",
-            ANARI_STATUS_OUT_OF_MEMORY);
-        return refuse(f);
-      }
-    }
-    const bool objects = anari::isObject(elementType);
-    uint64_t count = 1;
-    for (int i = 0; i < 3; ++i)
-      count *= items[i] ? items[i] : 1;
+    if (!checkArrayShape(f, arrayType, elementType, items))
+      return refuseArray(f, arrayType, elementType, items);
+    const void *applicationMemory = appMemory;
     // Object arrays hold layer handles; the wrapped device reads a
     // translated copy that its deleter call frees.
-    ObjectArrayStorage *storage = nullptr;
     std::vector<ANARIObject> copied;
-    if (objects) {
-      storage = new ObjectArrayStorage;
+    if (anari::isObject(elementType)) {
+      auto *storage = new ObjectArrayStorage;
       {
         std::lock_guard lock(m_mutex);
-        storage->handles = translateHandles(
-            f, (const ANARIObject *)appMemory, count, elementType, copied);
+        storage->handles = translateHandles(f,
+            (const ANARIObject *)appMemory,
+            elementCount(items),
+            elementType,
+            copied);
       }
       storage->appDeleter = deleter;
       storage->appUserPtr = userData;
@@ -279,57 +245,22 @@ ANARIArray DebugDevice::newArray(const char *function,
       userData = storage;
     }
     ANARIObject wrapped = nullptr;
-    if (arrayType == ANARI_ARRAY1D) {
+    {
       const auto quiet = withheldAfter(f);
-      wrapped = m_wrapped->newArray1D(
-          appMemory, deleter, userData, elementType, items[0]);
-    } else if (arrayType == ANARI_ARRAY2D) {
-      const auto quiet = withheldAfter(f);
-      wrapped = m_wrapped->newArray2D(
-          appMemory, deleter, userData, elementType, items[0], items[1]);
-    } else {
-      const auto quiet = withheldAfter(f);
-      wrapped = m_wrapped->newArray3D(appMemory,
-          deleter,
-          userData,
-          elementType,
-          items[0],
-          items[1],
-          items[2]);
+      wrapped = ForwardingDevice::newArrayOf(
+          arrayType, appMemory, deleter, userData, elementType, items);
     }
     ANARIObject handle = nullptr;
     {
       std::lock_guard lock(m_mutex);
       handle = created(function, arrayType, nullptr, wrapped, f);
       if (handle) {
-        ObjectRecord &record = *m_objects.find(handle);
-        record.elementType = elementType;
-        for (int i = 0; i < 3; ++i)
-          record.items[i] = items[i];
-        if (objects) {
-          record.objectArray = true;
-          record.appMemory = storage->appMemory;
-          if (!record.appMemory)
-            record.ownedHandles.assign(count, nullptr);
-          record.copiedHandles = std::move(copied);
-        } else if (appMemory) {
-          record.hasLargestIndex = largestComponent(appMemory,
-              elementType,
-              record.itemCount(),
-              0,
-              record.largestIndex);
-        }
-        if (tracing()) {
-          record.traceLine = trace(
-              "Array " + traceName(handle) + " " + trace::typeName(arrayType)
-              + " " + trace::typeName(elementType) + " ["
-              + std::to_string(items[0]) + " " + std::to_string(items[1]) + " "
-              + std::to_string(items[2]) + "] "
-              + traceContents(elementType,
-                  objects ? storage->appMemory : appMemory,
-                  count,
-                  0));
-        }
+        recordArray(handle,
+            arrayType,
+            elementType,
+            items,
+            applicationMemory,
+            std::move(copied));
       }
     }
     report(f);
@@ -378,57 +309,6 @@ std::vector<ANARIObject> DebugDevice::translateObjectArray(
                                        : array.ownedHandles.data();
   return translateHandles(
       f, source, array.itemCount(), array.elementType, array.copiedHandles);
-}
-
-ANARIArray1D DebugDevice::newArray1D(const void *appMemory,
-    ANARIMemoryDeleter deleter,
-    const void *userData,
-    ANARIDataType elementType,
-    uint64_t numItems1)
-{
-  const uint64_t items[3] = {numItems1, 0, 0};
-  return (ANARIArray1D)newArray("anariNewArray1D",
-      ANARI_ARRAY1D,
-      appMemory,
-      deleter,
-      userData,
-      elementType,
-      items);
-}
-
-ANARIArray2D DebugDevice::newArray2D(const void *appMemory,
-    ANARIMemoryDeleter deleter,
-    const void *userData,
-    ANARIDataType elementType,
-    uint64_t numItems1,
-    uint64_t numItems2)
-{
-  const uint64_t items[3] = {numItems1, numItems2, 0};
-  return (ANARIArray2D)newArray("anariNewArray2D",
-      ANARI_ARRAY2D,
-      appMemory,
-      deleter,
-      userData,
-      elementType,
-      items);
-}
-
-ANARIArray3D DebugDevice::newArray3D(const void *appMemory,
-    ANARIMemoryDeleter deleter,
-    const void *userData,
-    ANARIDataType elementType,
-    uint64_t numItems1,
-    uint64_t numItems2,
-    uint64_t numItems3)
-{
-  const uint64_t items[3] = {numItems1, numItems2, numItems3};
-  return (ANARIArray3D)newArray("anariNewArray3D",
-      ANARI_ARRAY3D,
-      appMemory,
-      deleter,
-      userData,
-      elementType,
-      items);
 }
 
 } // namespace prism::debug

@@ -112,9 +112,9 @@ void DebugDevice::setParameter(
     if (!target || !forward)
       return;
     const auto quiet = withheldAfter(f);
-    m_wrapped->setParameter(target, name, type, forwarded);
+    inner()->setParameter(target, name, type, forwarded);
     if (withLayerAsUserData) {
-      m_wrapped->setParameter(
+      inner()->setParameter(
           target, "frameCompletionCallbackUserData", ANARI_VOID_POINTER, this);
     }
   });
@@ -125,7 +125,7 @@ void DebugDevice::unsetParameter(ANARIObject object, const char *name)
   guarded("anariUnsetParameter", [&] {
     if (isDevice(object)) {
       if (name)
-        m_wrapped->unsetParameter((ANARIObject)m_wrapped, name);
+        inner()->unsetParameter((ANARIObject)inner(), name);
       return;
     }
     Findings f("anariUnsetParameter");
@@ -151,7 +151,7 @@ void DebugDevice::unsetParameter(ANARIObject object, const char *name)
     });
     const auto quiet = withheldAfter(f);
     if (target)
-      m_wrapped->unsetParameter(target, name);
+      inner()->unsetParameter(target, name);
   });
 }
 
@@ -159,7 +159,7 @@ void DebugDevice::unsetAllParameters(ANARIObject object)
 {
   guarded("anariUnsetAllParameters", [&] {
     if (isDevice(object)) {
-      m_wrapped->unsetAllParameters((ANARIObject)m_wrapped);
+      inner()->unsetAllParameters((ANARIObject)inner());
       return;
     }
     Findings f("anariUnsetAllParameters");
@@ -178,12 +178,11 @@ void DebugDevice::unsetAllParameters(ANARIObject object)
         });
     const auto quiet = withheldAfter(f);
     if (target)
-      m_wrapped->unsetAllParameters(target);
+      inner()->unsetAllParameters(target);
   });
 }
 
-void *DebugDevice::mapParameterArray(const char *function,
-    ANARIObject object,
+void *DebugDevice::mapParameterArrayOf(ANARIObject object,
     const char *name,
     ANARIDataType arrayType,
     ANARIDataType elementType,
@@ -208,6 +207,7 @@ void *DebugDevice::mapParameterArray(const char *function,
         .append(std::to_string(items[2]))
         .append("]");
   };
+  const char *function = mapParameterArrayFunctionName(arrayType);
   return guarded(function, (void *)nullptr, [&]() -> void * {
     Findings f(function);
     f.refused = [&] {
@@ -238,17 +238,8 @@ void *DebugDevice::mapParameterArray(const char *function,
       return nullptr;
     const auto quiet = withheldAfter(f);
     uint64_t stride = 0;
-    void *memory = nullptr;
-    if (arrayType == ANARI_ARRAY1D) {
-      memory = m_wrapped->mapParameterArray1D(
-          target, name, elementType, items[0], &stride);
-    } else if (arrayType == ANARI_ARRAY2D) {
-      memory = m_wrapped->mapParameterArray2D(
-          target, name, elementType, items[0], items[1], &stride);
-    } else {
-      memory = m_wrapped->mapParameterArray3D(
-          target, name, elementType, items[0], items[1], items[2], &stride);
-    }
+    void *memory = ForwardingDevice::mapParameterArrayOf(
+        target, name, arrayType, elementType, items, &stride);
     if (elementStride)
       *elementStride = stride;
     if (!memory)
@@ -277,57 +268,6 @@ void *DebugDevice::mapParameterArray(const char *function,
     }
     return memory;
   });
-}
-
-void *DebugDevice::mapParameterArray1D(ANARIObject object,
-    const char *name,
-    ANARIDataType elementType,
-    uint64_t numElements1,
-    uint64_t *elementStride)
-{
-  const uint64_t items[3] = {numElements1, 0, 0};
-  return mapParameterArray("anariMapParameterArray1D",
-      object,
-      name,
-      ANARI_ARRAY1D,
-      elementType,
-      items,
-      elementStride);
-}
-
-void *DebugDevice::mapParameterArray2D(ANARIObject object,
-    const char *name,
-    ANARIDataType elementType,
-    uint64_t numElements1,
-    uint64_t numElements2,
-    uint64_t *elementStride)
-{
-  const uint64_t items[3] = {numElements1, numElements2, 0};
-  return mapParameterArray("anariMapParameterArray2D",
-      object,
-      name,
-      ANARI_ARRAY2D,
-      elementType,
-      items,
-      elementStride);
-}
-
-void *DebugDevice::mapParameterArray3D(ANARIObject object,
-    const char *name,
-    ANARIDataType elementType,
-    uint64_t numElements1,
-    uint64_t numElements2,
-    uint64_t numElements3,
-    uint64_t *elementStride)
-{
-  const uint64_t items[3] = {numElements1, numElements2, numElements3};
-  return mapParameterArray("anariMapParameterArray3D",
-      object,
-      name,
-      ANARI_ARRAY3D,
-      elementType,
-      items,
-      elementStride);
 }
 
 void DebugDevice::unmapParameterArray(ANARIObject object, const char *name)
@@ -370,7 +310,7 @@ void DebugDevice::unmapParameterArray(ANARIObject object, const char *name)
     });
     const auto quiet = withheldAfter(f);
     if (target)
-      m_wrapped->unmapParameterArray(target, name);
+      inner()->unmapParameterArray(target, name);
   });
 }
 
@@ -404,7 +344,7 @@ void DebugDevice::commitParameters(ANARIObject object)
         });
     const auto quiet = withheldAfter(f);
     if (target)
-      m_wrapped->commitParameters(target);
+      inner()->commitParameters(target);
   });
 }
 
@@ -438,7 +378,7 @@ void DebugDevice::release(ANARIObject object)
         });
     const auto quiet = withheldAfter(f);
     if (target)
-      m_wrapped->release(target);
+      inner()->release(target);
   });
 }
 
@@ -462,7 +402,7 @@ void DebugDevice::retain(ANARIObject object)
         });
     const auto quiet = withheldAfter(f);
     if (target)
-      m_wrapped->retain(target);
+      inner()->retain(target);
   });
 }
 
@@ -496,7 +436,7 @@ void *DebugDevice::mapArray(ANARIArray array)
     if (!target)
       return memory;
     const auto quiet = withheldAfter(f);
-    memory = m_wrapped->mapArray((ANARIArray)target);
+    memory = inner()->mapArray((ANARIArray)target);
     std::lock_guard lock(m_mutex);
     if (ObjectRecord *record = m_objects.find(array)) {
       record->mapped = memory != nullptr;
@@ -542,13 +482,13 @@ void DebugDevice::unmapArray(ANARIArray array)
     const auto quiet = withheldAfter(f);
     if (target && objectArray) {
       // The wrapped device's copy is written as an application would.
-      if (void *memory = m_wrapped->mapArray((ANARIArray)target)) {
+      if (void *memory = inner()->mapArray((ANARIArray)target)) {
         std::memcpy(
             memory, translated.data(), translated.size() * sizeof(ANARIObject));
       }
-      m_wrapped->unmapArray((ANARIArray)target);
+      inner()->unmapArray((ANARIArray)target);
     } else if (target) {
-      m_wrapped->unmapArray((ANARIArray)target);
+      inner()->unmapArray((ANARIArray)target);
     }
   });
 }

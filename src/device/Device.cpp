@@ -991,7 +991,16 @@ try {
 
 std::unique_ptr<RayTransport> Device::transportFor(const World &world)
 {
+  std::lock_guard lock(m_transportMutex);
+  if (m_transportSource)
+    return m_transportSource(world);
   return std::make_unique<LocalTransport>(world);
+}
+
+void Device::setTransportSource(TransportSource source)
+{
+  std::lock_guard lock(m_transportMutex);
+  m_transportSource = std::move(source);
 }
 
 void Device::frameStarted()

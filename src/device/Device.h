@@ -12,6 +12,7 @@
 #include "anari/backend/DeviceImpl.h"
 
 #include <condition_variable>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <string>
@@ -144,6 +145,12 @@ class Device : public anari::DeviceImpl, public DeviceState
     return m_rtContext;
   }
   std::unique_ptr<RayTransport> transportFor(const World &world) override;
+  // Where frames get their ray transport while `source` is set (a
+  // data-parallel device's, during its collective renders); an empty
+  // source: this process's world alone.
+  using TransportSource =
+      std::function<std::unique_ptr<RayTransport>(const World &)>;
+  void setTransportSource(TransportSource source);
   void frameStarted() override;
   void frameFinished() override;
 
@@ -203,6 +210,8 @@ class Device : public anari::DeviceImpl, public DeviceState
   rt::Context m_rtContext;
   TaskPool m_taskPool;
   uint64_t m_refreshGeneration{0}; // guarded by m_flushMutex
+  std::mutex m_transportMutex;
+  TransportSource m_transportSource; // guarded by m_transportMutex
   uint32_t m_publicRefs{1};
 
   mutable std::mutex m_statusMutex;

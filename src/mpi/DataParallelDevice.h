@@ -1,20 +1,19 @@
-// The prism_mpi device (KHR_DATA_PARALLEL_MPI): the prism device, with
-// anariRenderFrame, waiting world bounds queries and frame mapping made
-// collective over each frame's MPI communicator. Everything else (objects,
-// parameters, local rendering) is the prism device's, unchanged -- or, with
-// the device parameter `wrappedLibrary`, another library's device, to which
-// every object call is forwarded and whose frames are composited
-// (PassThrough.cpp).
+// The prism_mpi device (KHR_DATA_PARALLEL_MPI): a forwarding device over a
+// local renderer -- the prism core in this process (CoreRenderer) or,
+// with the device parameter `wrappedLibrary`, another library's device
+// (WrappedDevice) -- that makes anariRenderFrame, waiting world bounds
+// queries and frame mapping collective over each frame's MPI communicator.
+// Every other call reaches the local renderer's device unchanged.
 #pragma once
 
+#include "CoreRenderer.h"
 #include "FrameAgreement.h"
 #include "MpiSession.h"
 #include "RenderMode.h"
 #include "Rendezvous.h"
+#include "WrappedDevice.h"
 
-#include "Device.h"
-#include "LoadedLibrary.h"
-#include "math/Vec.h"
+#include "ForwardingDevice.h"
 
 #include <mpi.h>
 
@@ -22,112 +21,54 @@
 #include <map>
 #include <memory>
 #include <mutex>
-#include <optional>
 #include <string>
 #include <vector>
 
-namespace prism {
-class Frame;
-class World;
-} // namespace prism
-
 namespace prism::mpi {
 
-class DataParallelDevice : public prism::Device
+struct CompositedImage;
+class DepthCompositor;
+
+class DataParallelDevice : public ForwardingDevice
 {
  public:
   explicit DataParallelDevice(ANARILibrary library);
   ~DataParallelDevice() override;
 
-  ANARIArray1D newArray1D(const void *appMemory,
-      ANARIMemoryDeleter deleter,
-      const void *userData,
-      ANARIDataType elementType,
-      uint64_t numItems1) override;
-  ANARIArray2D newArray2D(const void *appMemory,
-      ANARIMemoryDeleter deleter,
-      const void *userData,
-      ANARIDataType elementType,
-      uint64_t numItems1,
-      uint64_t numItems2) override;
-  ANARIArray3D newArray3D(const void *appMemory,
-      ANARIMemoryDeleter deleter,
-      const void *userData,
-      ANARIDataType elementType,
-      uint64_t numItems1,
-      uint64_t numItems2,
-      uint64_t numItems3) override;
-  ANARIGeometry newGeometry(const char *subtype) override;
-  ANARIMaterial newMaterial(const char *subtype) override;
-  ANARISampler newSampler(const char *subtype) override;
-  ANARISurface newSurface() override;
-  ANARISpatialField newSpatialField(const char *subtype) override;
-  ANARIVolume newVolume(const char *subtype) override;
-  ANARILight newLight(const char *subtype) override;
-  ANARIGroup newGroup() override;
-  ANARIInstance newInstance(const char *subtype) override;
-  ANARIWorld newWorld() override;
-  ANARICamera newCamera(const char *subtype) override;
-  ANARIRenderer newRenderer(const char *subtype) override;
-  ANARIFrame newFrame() override;
-  ANARIObject newObject(const char *objectType, const char *subtype) override;
-  void setParameter(ANARIObject object,
-      const char *name,
-      ANARIDataType type,
-      const void *mem) override;
-  void unsetParameter(ANARIObject object, const char *name) override;
-  void unsetAllParameters(ANARIObject object) override;
-  void *mapParameterArray1D(ANARIObject object,
-      const char *name,
-      ANARIDataType elementType,
-      uint64_t numElements1,
-      uint64_t *elementStride) override;
-  void *mapParameterArray2D(ANARIObject object,
-      const char *name,
-      ANARIDataType elementType,
-      uint64_t numElements1,
-      uint64_t numElements2,
-      uint64_t *elementStride) override;
-  void *mapParameterArray3D(ANARIObject object,
-      const char *name,
-      ANARIDataType elementType,
-      uint64_t numElements1,
-      uint64_t numElements2,
-      uint64_t numElements3,
-      uint64_t *elementStride) override;
-  void unmapParameterArray(ANARIObject object, const char *name) override;
-  void commitParameters(ANARIObject object) override;
-  void release(ANARIObject object) override;
-  void retain(ANARIObject object) override;
-  void *mapArray(ANARIArray array) override;
-  void unmapArray(ANARIArray array) override;
-  int getProperty(ANARIObject object,
-      const char *name,
-      ANARIDataType type,
-      void *mem,
-      uint64_t size,
-      ANARIWaitMask mask) override;
-  const char **getObjectSubtypes(ANARIDataType objectType) override;
-  const void *getObjectInfo(ANARIDataType objectType,
-      const char *objectSubtype,
-      const char *infoName,
-      ANARIDataType infoType) override;
-  const void *getParameterInfo(ANARIDataType objectType,
-      const char *objectSubtype,
-      const char *parameterName,
-      ANARIDataType parameterType,
-      const char *infoName,
-      ANARIDataType infoType) override;
+  // Collective: the render, the channels rank 0 assembled, and waiting
+  // world bounds (CollectiveFrames.cpp, DataParallelDevice.cpp).
+  void renderFrame(ANARIFrame frame) override;
   const void *frameBufferMap(ANARIFrame frame,
       const char *channel,
       uint32_t *width,
       uint32_t *height,
       ANARIDataType *pixelType) override;
   void frameBufferUnmap(ANARIFrame frame, const char *channel) override;
-  void renderFrame(ANARIFrame frame) override;
-  int frameReady(ANARIFrame frame, ANARIWaitMask mask) override;
-  void discardFrame(ANARIFrame frame) override;
-  std::unique_ptr<RayTransport> transportFor(const World &world) override;
+  int getProperty(ANARIObject object,
+      const char *name,
+      ANARIDataType type,
+      void *mem,
+      uint64_t size,
+      ANARIWaitMask mask) override;
+
+  // This device's parameters, and the communicators of frames and worlds
+  // (DeviceParameters.cpp).
+  void setParameter(ANARIObject object,
+      const char *name,
+      ANARIDataType type,
+      const void *mem) override;
+  void commitParameters(ANARIObject object) override;
+  void unsetParameter(ANARIObject object, const char *name) override;
+  void unsetAllParameters(ANARIObject object) override;
+
+  // Lifetimes: the device's own, and the state kept for frames and worlds.
+  void retain(ANARIObject object) override;
+  void release(ANARIObject object) override;
+
+ protected:
+  // The local renderer is chosen at the first object created.
+  void beforeCreating(ANARIDataType type) override;
+  ANARIObject newObjectOf(ANARIDataType type, const char *subtype) override;
 
  private:
   // The `mpiCommunicator` parameter of a frame or world: the MPI_Comm read
@@ -143,22 +84,8 @@ class DataParallelDevice : public prism::Device
     ANARIDataType type{ANARI_UNKNOWN};
     std::vector<unsigned char> pixels;
   };
-  // What the application set on a frame of the wrapped device that the
-  // wrapped frame sees otherwise (it always renders linear color and depth).
-  struct WrappedFrameParameters
-  {
-    uint32_t width{0};
-    uint32_t height{0};
-    // The application's ANARIDataType of each of kChannelNames.
-    ANARIDataType channelTypes[kChannelCount]{};
-    ANARIObject renderer{nullptr};
-    bool world{false};
-    bool camera{false};
-  };
   struct FrameState
   {
-    WrappedFrameParameters staged;    // wrapped device only
-    WrappedFrameParameters committed; // wrapped device only
     uint64_t index{0};
     uint64_t renders{0};
     CommunicatorParameter communicator;
@@ -168,80 +95,87 @@ class DataParallelDevice : public prism::Device
     bool denoiseWarned{false};
     std::map<std::string, MappedChannel> assembled; // rank 0 only
   };
+  struct WorldState
+  {
+    CommunicatorParameter communicator;
+  };
+  // The application's references to its frames and worlds, whose state
+  // goes with the last.
+  struct Kept
+  {
+    int64_t references{1};
+  };
 
-  void reportBadDeviceParameter(const std::string &message);
-  // The wrapped device, chosen (loaded, or the built-in core: NULL) at the
-  // first call that creates an object; the choice never changes.
-  anari::DeviceImpl *wrapped();
-  // Whether `wrappedLibrary` may still change (no object was created yet).
+  // The inner devices' messages, as this device's.
+  static void forwardStatus(const void *userPtr,
+      ANARIDevice device,
+      ANARIObject source,
+      ANARIDataType sourceType,
+      ANARIStatusSeverity severity,
+      ANARIStatusCode code,
+      const char *message);
+  void report(ANARIObject source,
+      ANARIDataType sourceType,
+      ANARIStatusSeverity severity,
+      ANARIStatusCode code,
+      const std::string &message) const;
+  void reportBadDeviceParameter(const std::string &message) const;
+
+  // The local renderer, chosen (a loaded library, or the built-in core)
+  // at the first call that creates an object; the choice never changes.
+  LocalRenderer &local();
+  void chooseLocal();
   bool wrapOpen() const
   {
     return !m_wrapChosen.load();
   }
-  void chooseWrapped();
-  // Whether `object` is a live handle of the wrapped device the
-  // application holds; if not, reports it for `call`.
-  bool liveWrapped(ANARIObject object, const char *call);
+  // The device that answers for this device's own parameters and
+  // properties: the core's, whatever renders.
+  anari::DeviceImpl &coreDevice()
+  {
+    return m_core->device();
+  }
+  ANARIObject coreHandle()
+  {
+    return (ANARIObject)&m_core->device();
+  }
+
+  // Device parameters (DeviceParameters.cpp).
+  void setDeviceParameter(
+      const std::string &name, ANARIDataType type, const void *mem);
+  void unsetDeviceParameter(const std::string &name);
   void setWrapParameter(
       const std::string &name, ANARIDataType type, const void *mem);
   // A device parameter of the application that is not this device's own:
   // the wrapped device gets it too (kept until the device is chosen).
   void passDeviceParameter(
       const std::string &name, ANARIDataType type, const void *mem);
-  // Records a handle the wrapped device created, as `type`.
-  template <typename T>
-  T created(T handle, ANARIDataType type)
-  {
-    if (handle) {
-      std::lock_guard lock(m_stateMutex);
-      m_wrappedObjects[(ANARIObject)handle] = WrappedObject{type, 1};
-    }
-    return handle;
-  }
-  // Frame and renderer parameters the wrapped device sees otherwise;
-  // true when the call is done.
-  bool setWrappedParameter(ANARIObject object,
-      const std::string &name,
-      ANARIDataType type,
-      const void *mem);
-  bool unsetWrappedParameter(ANARIObject object, const std::string &name);
-  void unsetAllWrappedParameters(ANARIObject object);
-  void commitWrapped(ANARIObject object);
-  void releaseWrapped(ANARIObject object);
-  FrameDescriptor describeWrapped(const FrameState &state) const;
-  void renderWrapped(ANARIFrame handle);
-  void renderWrappedComposited(
-      ANARIFrame handle, FrameState &state, MPI_Comm communicator);
   void setMode(ANARIDataType type, const void *mem);
   void setTimeout(ANARIDataType type, const void *mem);
   void setThreads(ANARIDataType type, const void *mem);
   // The parameter entry of a frame or world; NULL for other objects.
   CommunicatorParameter *communicatorOf(ANARIObject object);
-  FrameDescriptor describe(Frame *frame, const FrameState &state) const;
-  // Replicated mode: what must be the same in every process's world.
-  static void fingerprintWorld(const World &world, FrameDescriptor &d);
-  // shareLights() for the frame `handle` renders, its problem reported;
-  // returns the bytes sent.
-  uint64_t shareWorldLights(ANARIFrame handle,
-      World &world,
-      MPI_Comm communicator,
-      bool withEmitters);
-  void renderComposited(ANARIFrame handle,
-      Frame &frame,
-      FrameState &state,
-      MPI_Comm communicator);
-  void renderReplicated(ANARIFrame handle,
-      Frame &frame,
-      FrameState &state,
-      MPI_Comm communicator);
+  bool setCommunicator(ANARIObject object, ANARIDataType type, const void *mem);
+
+  // Collective renders (CollectiveFrames.cpp).
+  void renderComposited(
+      ANARIFrame handle, FrameState &state, MPI_Comm communicator);
+  std::map<std::string, MappedChannel> assembleComposite(ANARIFrame handle,
+      const FrameState &state,
+      const CompositedImage &image,
+      const LinearImage &own,
+      DepthCompositor *compositor);
+  void renderReplicated(
+      ANARIFrame handle, FrameState &state, MPI_Comm communicator);
   // Whether `pathtracer` mode can trace this frame's paths across the
-  // processes (the path tracer, and MPI callable from the render thread);
-  // other renderers are composited.
-  bool tracesPathsAcross(ANARIFrame handle, const Frame &frame);
-  void renderPathTraced(ANARIFrame handle,
-      Frame &frame,
-      FrameState &state,
-      MPI_Comm communicator);
+  // processes (a renderer that traces wavefronts, and MPI callable from
+  // the render thread); other frames are composited.
+  bool tracesPathsAcross(ANARIFrame handle);
+  void renderPathTraced(
+      ANARIFrame handle, FrameState &state, MPI_Comm communicator);
+  // The mode frames render in: the device's, when the local renderer
+  // renders it (a wrapped library composites; said once).
+  RenderMode effectiveMode(ANARIFrame handle);
   // The frame properties this device adds (mpiBytesSent, mpiRank,
   // mpiSize); 0 when `name` is none of them.
   int getFrameProperty(ANARIObject object,
@@ -255,30 +189,31 @@ class DataParallelDevice : public prism::Device
   MpiSession m_session;
   Rendezvous m_rendezvous; // before m_session ends MPI
   RenderMode m_mode{RenderMode::PathTracer};
-  // During a `pathtracer` render: its communicator and byte count, for the
-  // transport the frame asks for (guarded by m_stateMutex).
-  struct PathTracing
-  {
-    MPI_Comm communicator;
-    uint64_t *bytesSent;
-  };
-  std::optional<PathTracing> m_pathTracing;
+  bool m_modeExplicit{false}; // `mode` set by parameter or environment
+  bool m_wrappedModeWarned{false};
   bool m_threadLevelWarned{false};
   double m_timeoutSeconds{0.0}; // <= 0: wait for every process forever
+  uint32_t m_publicReferences{1};
+
+  mutable std::mutex m_statusMutex;
+  ANARIStatusCallback m_statusCallback{nullptr};
+  const void *m_statusUserPtr{nullptr};
+
   uint64_t m_framesCreated{0};
   std::mutex m_stateMutex; // guards the maps below
   std::map<ANARIObject, FrameState> m_frames;
-  std::map<ANARIObject, CommunicatorParameter> m_worlds;
+  std::map<ANARIObject, WorldState> m_worlds;
+  std::map<ANARIObject, Kept> m_kept;
 
-  // wrappedLibrary / wrappedDevice (PassThrough.cpp).
+  // The local renderers: the core always (it answers for the device before
+  // the choice), a wrapped library's device when one is chosen.
+  std::unique_ptr<CoreRenderer> m_core;
+  std::unique_ptr<WrappedDevice> m_wrapped;
+  LocalRenderer *m_local{nullptr};
   std::string m_wrappedSpec; // empty: the built-in core
   std::string m_wrappedSubtype{"default"};
-  bool m_modeExplicit{false}; // `mode` set by parameter or environment
-  bool m_wrappedModeWarned{false};
   std::mutex m_wrapMutex; // guards the choice and the staged parameters
   std::atomic<bool> m_wrapChosen{false};
-  std::shared_ptr<frontend::LoadedLibrary> m_wrappedLibrary;
-  anari::DeviceImpl *m_wrappedDevice{nullptr};
   struct DeviceParameter
   {
     std::string name;
@@ -286,23 +221,6 @@ class DataParallelDevice : public prism::Device
     std::vector<unsigned char> value; // a string's characters and a NUL
   };
   std::vector<DeviceParameter> m_stagedDeviceParameters;
-  // Every handle the wrapped device gave the application (guarded by
-  // m_stateMutex), with its type and the application's references.
-  struct WrappedObject
-  {
-    ANARIDataType type{ANARI_OBJECT};
-    int64_t references{1};
-  };
-  std::map<ANARIObject, WrappedObject> m_wrappedObjects;
-  // A renderer of the wrapped device renders with a transparent background;
-  // rank 0 adds the application's under the composite.
-  struct WrappedRenderer
-  {
-    std::string subtype;
-    float4 stagedBackground{0.f, 0.f, 0.f, 1.f};
-    float4 background{0.f, 0.f, 0.f, 1.f}; // committed
-  };
-  std::map<ANARIObject, WrappedRenderer> m_wrappedRenderers;
 };
 
 } // namespace prism::mpi

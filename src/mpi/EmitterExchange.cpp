@@ -116,6 +116,154 @@ std::vector<LightDescription> distinctLights(
   return lights;
 }
 
+// This process's part: its emissive surfaces (or only its bounds) and, if
+// `sendLights`, its declared lights (with a flag: they could be described).
+std::vector<unsigned char> ownPart(const World &world,
+    bool withEmitters,
+    bool sendLights,
+    std::string &ownProblem)
+{
+  ByteWriter out;
+  describeOwnEmitters(world, withEmitters, out);
+  if (sendLights) {
+    ByteWriter lights;
+    const bool described = writeDeclaredLights(world, lights, ownProblem);
+    out.add(uint32_t(described ? 1 : 0));
+    if (described)
+      out.append(lights.bytes.data(), lights.bytes.size());
+  }
+  return std::move(out.bytes);
+}
+
+// Every process's part, in rank order.
+struct GatheredParts
+{
+  std::vector<unsigned char> all;
+  std::vector<int> sizes;
+  std::vector<int> offsets;
+  int ownSize{0};
+  bool fits{true}; // false: some part, or all of them, exceeds MPI's ints
+};
+
+GatheredParts gatherParts(
+    const std::vector<unsigned char> &own, MPI_Comm communicator, int ranks)
+{
+  GatheredParts g;
+  // A part too large for MPI's int counts is sent as nothing, and every
+  // process then keeps its own emitters (all see the same sizes).
+  g.ownSize = own.size() <= size_t(INT_MAX) ? int(own.size()) : -1;
+  g.sizes.assign(size_t(ranks), 0);
+  MPI_Allgather(
+      &g.ownSize, 1, MPI_INT, g.sizes.data(), 1, MPI_INT, communicator);
+  g.offsets.assign(size_t(ranks), 0);
+  int64_t total = 0;
+  for (int r = 0; r < ranks; r++) {
+    g.fits = g.fits && g.sizes[size_t(r)] >= 0;
+    g.offsets[size_t(r)] = int(std::min<int64_t>(total, INT_MAX));
+    total += std::max(g.sizes[size_t(r)], 0);
+  }
+  g.fits = g.fits && total <= INT_MAX;
+  if (!g.fits)
+    return g;
+  g.all.resize(size_t(std::max<int64_t>(total, 1)));
+  MPI_Allgatherv(own.data(),
+      g.ownSize,
+      MPI_BYTE,
+      g.all.data(),
+      g.sizes.data(),
+      g.offsets.data(),
+      MPI_BYTE,
+      communicator);
+  return g;
+}
+
+// What the parts say, read back on every process alike.
+struct ReadParts
+{
+  std::vector<std::unique_ptr<PlacedLight>> emitters;
+  std::vector<std::vector<LightDescription>> declared; // by rank
+  box3 together = emptyBox3(); // the bounds of every process's world
+  size_t firstOwn{0};          // this process's first emitter
+  bool understood{true};
+  int undescribed{-1}; // a rank whose lights could not be described
+};
+
+void extend(box3 &box, const box3 &other)
+{
+  box.lower.x = std::min(box.lower.x, other.lower.x);
+  box.lower.y = std::min(box.lower.y, other.lower.y);
+  box.lower.z = std::min(box.lower.z, other.lower.z);
+  box.upper.x = std::max(box.upper.x, other.upper.x);
+  box.upper.y = std::max(box.upper.y, other.upper.y);
+  box.upper.z = std::max(box.upper.z, other.upper.z);
+}
+
+ReadParts readParts(
+    const GatheredParts &g, int rank, int ranks, bool sendLights)
+{
+  ReadParts read;
+  read.declared.resize(size_t(ranks));
+  for (int r = 0; r < ranks && read.understood; r++) {
+    if (r == rank)
+      read.firstOwn = read.emitters.size();
+    ByteReader in(
+        g.all.data() + g.offsets[size_t(r)], size_t(g.sizes[size_t(r)]));
+    box3 bounds;
+    read.understood = readEmitters(in, bounds, read.emitters);
+    if (read.understood && sendLights) {
+      const uint32_t described = in.readCount();
+      if (described == 1)
+        read.understood = readDeclaredLights(in, read.declared[size_t(r)]);
+      else if (read.undescribed < 0)
+        read.undescribed = r;
+    }
+    read.understood = read.understood && in.ok() && in.left() == 0;
+    extend(read.together, bounds);
+  }
+  return read;
+}
+
+// Places what was read in `world`: every process's emitters (if
+// `withEmitters`) and, when every process's could be sent, the distinct
+// declared lights.
+void placeShared(World &world,
+    ReadParts &read,
+    bool withEmitters,
+    bool sendLights,
+    const std::string &ownProblem,
+    EmitterExchangeResult &result)
+{
+  const float radius = World::sceneRadius(read.together);
+  if (!sendLights || read.undescribed >= 0) {
+    if (read.undescribed >= 0) {
+      result.problem =
+          "the processes declare different lights, and those of rank "
+          + std::to_string(read.undescribed) + " cannot be sent to the others ("
+          + (ownProblem.empty() ? std::string("see that process's report")
+                                : ownProblem)
+          + "); each process samples its own declared lights only";
+    }
+    if (withEmitters)
+      world.shareEmitters(std::move(read.emitters), read.firstOwn, radius);
+    else
+      world.keepOwnEmitters();
+    return;
+  }
+  // Every process rebuilds the same lights from the same bytes.
+  std::vector<std::unique_ptr<PlacedLight>> lights;
+  for (const LightDescription &light : distinctLights(read.declared)) {
+    if (auto placed = placeDescribedLight(world.device(), light))
+      lights.push_back(std::move(placed));
+  }
+  if (withEmitters) {
+    world.shareLights(
+        std::move(lights), std::move(read.emitters), read.firstOwn, radius);
+  } else {
+    world.shareDeclaredLights(std::move(lights), radius);
+  }
+  result.lightsShared = true;
+}
+
 } // namespace
 
 EmitterExchangeResult shareLights(
@@ -141,80 +289,22 @@ EmitterExchangeResult shareLights(
     world.keepOwnEmitters();
     return result;
   }
-
-  ByteWriter out;
-  describeOwnEmitters(world, withEmitters, out);
   std::string ownProblem;
-  if (sendLights) {
-    ByteWriter lights;
-    const bool described = writeDeclaredLights(world, lights, ownProblem);
-    out.add(uint32_t(described ? 1 : 0));
-    if (described)
-      out.append(lights.bytes.data(), lights.bytes.size());
-  }
-  const std::vector<unsigned char> &own = out.bytes;
-  // A part too large for MPI's int counts is sent as nothing, and every
-  // process then keeps its own emitters (all see the same sizes).
-  int ownSize = own.size() <= size_t(INT_MAX) ? int(own.size()) : -1;
-  std::vector<int> sizes(size_t(ranks), 0);
-  MPI_Allgather(&ownSize, 1, MPI_INT, sizes.data(), 1, MPI_INT, communicator);
-  std::vector<int> offsets(size_t(ranks), 0);
-  int64_t total = 0;
-  bool fits = true;
-  for (int r = 0; r < ranks; r++) {
-    fits = fits && sizes[size_t(r)] >= 0;
-    offsets[size_t(r)] = int(std::min<int64_t>(total, INT_MAX));
-    total += std::max(sizes[size_t(r)], 0);
-  }
-  fits = fits && total <= INT_MAX;
-  if (!fits) {
+  const GatheredParts gathered =
+      gatherParts(ownPart(world, withEmitters, sendLights, ownProblem),
+          communicator,
+          ranks);
+  if (!gathered.fits) {
     world.keepOwnEmitters();
     result.problem =
         "the emissive surfaces and lights of the processes are too large to "
         "send (more than 2 GiB); each process samples its own only";
     return result;
   }
-  std::vector<unsigned char> all(size_t(std::max<int64_t>(total, 1)));
-  MPI_Allgatherv(own.data(),
-      ownSize,
-      MPI_BYTE,
-      all.data(),
-      sizes.data(),
-      offsets.data(),
-      MPI_BYTE,
-      communicator);
   result.exchanged = true;
-  result.bytesSent = uint64_t(ownSize) * uint64_t(ranks - 1);
-
-  std::vector<std::unique_ptr<PlacedLight>> emitters;
-  std::vector<std::vector<LightDescription>> declared(
-      static_cast<size_t>(ranks));
-  box3 together = emptyBox3();
-  size_t firstOwn = 0;
-  bool understood = true;
-  int undescribed = -1; // a rank whose lights could not be described
-  for (int r = 0; r < ranks && understood; r++) {
-    if (r == rank)
-      firstOwn = emitters.size();
-    ByteReader in(all.data() + offsets[size_t(r)], size_t(sizes[size_t(r)]));
-    box3 bounds;
-    understood = readEmitters(in, bounds, emitters);
-    if (understood && sendLights) {
-      const uint32_t described = in.readCount();
-      if (described == 1)
-        understood = readDeclaredLights(in, declared[size_t(r)]);
-      else if (undescribed < 0)
-        undescribed = r;
-    }
-    understood = understood && in.ok() && in.left() == 0;
-    together.lower.x = std::min(together.lower.x, bounds.lower.x);
-    together.lower.y = std::min(together.lower.y, bounds.lower.y);
-    together.lower.z = std::min(together.lower.z, bounds.lower.z);
-    together.upper.x = std::max(together.upper.x, bounds.upper.x);
-    together.upper.y = std::max(together.upper.y, bounds.upper.y);
-    together.upper.z = std::max(together.upper.z, bounds.upper.z);
-  }
-  if (!understood) {
+  result.bytesSent = uint64_t(gathered.ownSize) * uint64_t(ranks - 1);
+  ReadParts read = readParts(gathered, rank, ranks, sendLights);
+  if (!read.understood) {
     // Every process read the same bytes, so all decide alike.
     world.keepOwnEmitters();
     result.problem =
@@ -222,33 +312,7 @@ EmitterExchangeResult shareLights(
         "read; each process samples its own only";
     return result;
   }
-  const float radius = World::sceneRadius(together);
-  if (!sendLights || undescribed >= 0) {
-    if (undescribed >= 0) {
-      result.problem =
-          "the processes declare different lights, and those of rank "
-          + std::to_string(undescribed) + " cannot be sent to the others ("
-          + (ownProblem.empty() ? std::string("see that process's report")
-                                : ownProblem)
-          + "); each process samples its own declared lights only";
-    }
-    if (withEmitters)
-      world.shareEmitters(std::move(emitters), firstOwn, radius);
-    else
-      world.keepOwnEmitters();
-    return result;
-  }
-  // Every process rebuilds the same lights from the same bytes.
-  std::vector<std::unique_ptr<PlacedLight>> lights;
-  for (const LightDescription &light : distinctLights(declared)) {
-    if (auto placed = placeDescribedLight(world.device(), light))
-      lights.push_back(std::move(placed));
-  }
-  if (withEmitters)
-    world.shareLights(std::move(lights), std::move(emitters), firstOwn, radius);
-  else
-    world.shareDeclaredLights(std::move(lights), radius);
-  result.lightsShared = true;
+  placeShared(world, read, withEmitters, sendLights, ownProblem, result);
   return result;
 }
 

@@ -44,6 +44,10 @@ class PathTracer : public Renderer
   {
     return 256;
   }
+  bool tracesWavefronts() const override
+  {
+    return true;
+  }
   // Traces through context.transport.
   void renderTile(const RenderContext &context,
       const Tile &tile,

@@ -95,6 +95,13 @@ class Renderer : public Object
   {
     return 16;
   }
+  // Whether it traces paths in wavefronts through the frame's RayTransport
+  // (shades, shareBounce), lit by the world's lights: a data-parallel
+  // device can then trace its paths across processes.
+  virtual bool tracesWavefronts() const
+  {
+    return false;
+  }
 
   // Whether the renderer shades without the world's lights (and ambient
   // light), by an eye light, occlusion or false colors; answered to
