@@ -13,6 +13,9 @@ struct GlobalOptions
   // maximumraydepth.*: the renderer's maxPathLength, one more than the
   // deepest bounce count given; 0 when none is (the renderer's default).
   int maxPathLength{0};
+  // subdivision.level: how many times catmull-clark meshes without their
+  // own subdivision.level are refined (0: their cages render).
+  int subdivisionLevel{3};
 
   bool operator==(const GlobalOptions &) const = default;
 };

@@ -35,8 +35,12 @@ class Resolver
  public:
   Resolver(const Graph &graph,
       const ReportFunction &report,
-      const std::function<std::string(const std::string &)> &expandPath)
-      : m_graph(graph), m_report(report), m_expandPath(expandPath)
+      const std::function<std::string(const std::string &)> &expandPath,
+      int subdivisionLevel)
+      : m_graph(graph),
+        m_report(report),
+        m_expandPath(expandPath),
+        m_subdivisionLevel(subdivisionLevel)
   {}
 
   ResolvedScene run()
@@ -400,7 +404,7 @@ class Resolver
                  + "': 'P' moves, but only meshes have vertex motion; the "
                    "first sample is rendered");
       if (node.type == "mesh")
-        data = buildMesh(handle, node, m_report, m_times);
+        data = buildMesh(handle, node, m_report, m_times, m_subdivisionLevel);
       else if (node.type == "particles")
         data = buildParticles(handle, node, m_report);
       else if (node.type == "plane")
@@ -771,6 +775,7 @@ class Resolver
   std::set<std::string> m_failed;
   std::set<std::string> m_warned;
   std::vector<double> m_times;
+  int m_subdivisionLevel;
   size_t m_visits{0};
 };
 
@@ -780,8 +785,10 @@ ResolvedScene resolveScene(const Graph &graph,
     const ReportFunction &report,
     const std::function<std::string(const std::string &)> &expandPath)
 {
-  ResolvedScene scene = Resolver(graph, report, expandPath).run();
-  scene.options = readGlobalOptions(graph, report);
+  const GlobalOptions options = readGlobalOptions(graph, report);
+  ResolvedScene scene =
+      Resolver(graph, report, expandPath, options.subdivisionLevel).run();
+  scene.options = options;
   return scene;
 }
 

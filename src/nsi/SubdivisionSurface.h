@@ -1,0 +1,46 @@
+// Catmull-Clark subdivision of an NSI mesh through OpenSubdiv's Far API:
+// the cage is refined uniformly `level` times, its last level's vertices
+// moved onto the limit surface, and each quad split into two triangles.
+// Normals are the limit surface's unless the mesh gives `N`; `N`, `st` and
+// `Cs` are refined as face-varying data (welded where a point shares one
+// value), so seams in `st` stay seams.
+#pragma once
+
+#include "ResolvedScene.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace prism::nsi {
+
+// The refinement level when neither the mesh nor `.global` gives one.
+constexpr int kDefaultSubdivisionLevel = 3;
+// Past this level a face becomes 4^8 = 65536 quads; a typo, not a wish.
+constexpr int kMaxSubdivisionLevel = 8;
+
+struct SubdivisionCage
+{
+  std::vector<double> points; // xyz
+  // xyz at each shutter time (two or more), or empty when `points` stay.
+  std::vector<std::vector<double>> pointKeys;
+  std::vector<int> verticesPerFace;
+  std::vector<int> pointOfFaceVertex; // in face order
+  // Pairs of points joined by a creased edge, with one sharpness per pair
+  // (10 and above: infinitely sharp); corners likewise, one per point.
+  std::vector<int> creaseVertices;
+  std::vector<float> creaseSharpness;
+  std::vector<int> cornerVertices;
+  std::vector<float> cornerSharpness;
+  // Per face vertex, or empty.
+  std::vector<float> normals, texcoords, colors;
+  bool clockwise{false}; // NSI clockwisewinding
+};
+
+// Triangles of the refined surface, each tagged with its cage face (so
+// facesets still select them); nothing, with `error`, when OpenSubdiv
+// rejects the topology.
+std::optional<GeometryData> subdivideCatmullClark(
+    const SubdivisionCage &cage, int level, std::string &error);
+
+} // namespace prism::nsi
