@@ -25,7 +25,7 @@ std::optional<GeometryData> buildMesh(const std::string &handle,
     const Node &mesh,
     const ReportFunction &report,
     const std::vector<double> &times = {},
-    int subdivisionLevel = 3);
+    int subdivisionLevel = kDefaultSubdivisionLevel);
 
 // P and width (one per particle, or one for all; default 1).
 std::optional<GeometryData> buildParticles(const std::string &handle,

@@ -14,11 +14,6 @@
 
 namespace prism::nsi {
 
-// The refinement level when neither the mesh nor `.global` gives one.
-constexpr int kDefaultSubdivisionLevel = 3;
-// Past this level a face becomes 4^8 = 65536 quads; a typo, not a wish.
-constexpr int kMaxSubdivisionLevel = 8;
-
 struct SubdivisionCage
 {
   std::vector<double> points; // xyz
