@@ -315,8 +315,17 @@ std::optional<GeometryData> subdivided(const std::string &handle,
   cage.colors = cageData.colors;
   cage.clockwise = clockwise;
   readCreasesAndCorners(handle, mesh, in.points.size() / 3, report, cage);
+  const int allowed = refinementLevelWithin(cage.verticesPerFace, level);
+  if (allowed < level)
+    report(NSIErrWarning,
+        "mesh '" + handle + "': subdivision level " + std::to_string(level)
+            + " would make over " + std::to_string(kMaxRefinedQuads)
+            + " quads; level " + std::to_string(allowed) + " is rendered");
   std::string error;
-  auto data = subdivideCatmullClark(cage, level, error);
+  std::vector<std::string> warnings;
+  auto data = subdivideCatmullClark(cage, allowed, error, warnings);
+  for (const std::string &warning : warnings)
+    report(NSIErrWarning, "mesh '" + handle + "': OpenSubdiv: " + warning);
   if (!data)
     report(NSIErrWarning,
         "mesh '" + handle + "': " + error + "; the cage is rendered");

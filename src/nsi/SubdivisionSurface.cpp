@@ -5,6 +5,7 @@
 #include <opensubdiv/far/topologyDescriptor.h>
 #include <opensubdiv/far/topologyRefinerFactory.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -40,10 +41,18 @@ using Point = Primvar<3>;
 // OpenSubdiv reports through a process-wide callback; the last message of
 // this thread's refinement is kept for the caller's report.
 thread_local std::string t_lastError;
+thread_local std::vector<std::string> t_warnings;
 
 void keepError(Far::ErrorType, const char *message)
 {
   t_lastError = message ? message : "";
+}
+
+void keepWarning(const char *message)
+{
+  const std::string text = message ? message : "";
+  if (std::find(t_warnings.begin(), t_warnings.end(), text) == t_warnings.end())
+    t_warnings.push_back(text);
 }
 
 // One face-varying channel: the face vertices' values welded where a point
@@ -119,15 +128,36 @@ std::array<float, 3> normalized(const std::array<float, 3> &v)
   return {v[0] / length, v[1] / length, v[2] / length};
 }
 
+// False where an edge has more than two faces or a point's faces make no
+// single fan: OpenSubdiv's limit masks write past their buffers there (3.5).
+bool isManifold(const Far::TopologyRefiner &refiner)
+{
+  const auto &cage = refiner.GetLevel(0);
+  for (int v = 0; v < cage.GetNumVertices(); ++v) {
+    if (cage.IsVertexNonManifold(v))
+      return false;
+  }
+  return true;
+}
+
 // The last level's vertices on the limit surface, with the surface's normal
-// there (along du x dv: outward for counter-clockwise faces).
+// there (along du x dv: outward for counter-clockwise faces). `toLimit`
+// false: the refined vertices as they are, normals zero (each face's own
+// at its corners is used).
 void limitPositions(const Far::TopologyRefiner &refiner,
     const std::vector<double> &cagePoints,
+    bool toLimit,
     std::vector<Point> &positions,
     std::vector<Point> *normals)
 {
   const std::vector<Point> last =
       refineLevels(refiner, toPoints(cagePoints), -1);
+  if (!toLimit) {
+    positions = last;
+    if (normals)
+      normals->assign(last.size(), {});
+    return;
+  }
   positions.assign(last.size(), {});
   std::vector<Point> du(last.size()), dv(last.size());
   Far::PrimvarRefiner(refiner).Limit(last, positions, du, dv);
@@ -255,7 +285,8 @@ struct Emitter
     const int n = vertices.size();
     for (int k = 0; k < n; ++k) {
       std::array<float, 3> normal = normals[size_t(vertices[k])].v;
-      if (onSharpFeature(vertices[k])) {
+      const bool none = normal[0] == 0 && normal[1] == 0 && normal[2] == 0;
+      if (none || onSharpFeature(vertices[k])) {
         const auto &p = positions[size_t(vertices[k])].v;
         const auto &next = positions[size_t(vertices[(k + 1) % n])].v;
         const auto &prev = positions[size_t(vertices[(k + n - 1) % n])].v;
@@ -287,8 +318,23 @@ struct Emitter
 
 } // namespace
 
-std::optional<GeometryData> subdivideCatmullClark(
-    const SubdivisionCage &cage, int level, std::string &error)
+int refinementLevelWithin(const std::vector<int> &verticesPerFace, int level)
+{
+  size_t quads = 0; // after one refinement
+  for (int n : verticesPerFace)
+    quads += size_t(std::max(n, 0));
+  int allowed = 1;
+  while (allowed < level && quads * 4 <= kMaxRefinedQuads) {
+    quads *= 4;
+    ++allowed;
+  }
+  return std::min(allowed, level);
+}
+
+std::optional<GeometryData> subdivideCatmullClark(const SubdivisionCage &cage,
+    int level,
+    std::string &error,
+    std::vector<std::string> &warnings)
 {
   const auto &points = cage.pointOfFaceVertex;
   auto normals = weldPerPoint<3>(cage.normals, points);
@@ -308,15 +354,24 @@ std::optional<GeometryData> subdivideCatmullClark(
   const int colorChannel = addChannel(cage.colors, colors);
 
   t_lastError.clear();
+  t_warnings.clear();
   Far::SetErrorCallback(keepError);
+  Far::SetWarningCallback(keepWarning);
   const auto refiner = makeRefiner(cage, channels, level);
+  warnings = t_warnings;
   if (!refiner) {
     error = t_lastError.empty() ? "OpenSubdiv rejects the cage" : t_lastError;
     return std::nullopt;
   }
   std::vector<Point> positions, limitNormals;
+  const bool toLimit = isManifold(*refiner);
+  if (!toLimit)
+    warnings.push_back(
+        "non-manifold cage (an edge of three faces or more, or a point "
+        "joining separate fans): refined, not moved onto the limit surface");
   limitPositions(*refiner,
       cage.points,
+      toLimit,
       positions,
       normalChannel < 0 ? &limitNormals : nullptr);
   const auto refinedNormals = refinedChannel(*refiner, normals, normalChannel);
@@ -325,7 +380,7 @@ std::optional<GeometryData> subdivideCatmullClark(
   const auto refinedColors = refinedChannel(*refiner, colors, colorChannel);
   std::vector<std::vector<Point>> keys(cage.pointKeys.size());
   for (size_t k = 0; k < keys.size(); ++k)
-    limitPositions(*refiner, cage.pointKeys[k], keys[k], nullptr);
+    limitPositions(*refiner, cage.pointKeys[k], toLimit, keys[k], nullptr);
 
   GeometryData data;
   const auto &topology = refiner->GetLevel(refiner->GetMaxLevel());

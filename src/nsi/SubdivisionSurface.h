@@ -32,10 +32,22 @@ struct SubdivisionCage
   bool clockwise{false}; // NSI clockwisewinding
 };
 
+// The most quads a refined mesh may have (a million: some 100 MB of
+// vertices); a mesh that would pass it is refined fewer times.
+constexpr size_t kMaxRefinedQuads = size_t(1) << 20;
+
+// How many times `verticesPerFace` may be refined, at most `level`, to stay
+// within kMaxRefinedQuads (at least once: one refinement makes an n-gon n
+// quads).
+int refinementLevelWithin(const std::vector<int> &verticesPerFace, int level);
+
 // Triangles of the refined surface, each tagged with its cage face (so
 // facesets still select them); nothing, with `error`, when OpenSubdiv
-// rejects the topology.
-std::optional<GeometryData> subdivideCatmullClark(
-    const SubdivisionCage &cage, int level, std::string &error);
+// rejects the topology. What OpenSubdiv warns about (a crease on points
+// that share no edge...) is in `warnings`.
+std::optional<GeometryData> subdivideCatmullClark(const SubdivisionCage &cage,
+    int level,
+    std::string &error,
+    std::vector<std::string> &warnings);
 
 } // namespace prism::nsi

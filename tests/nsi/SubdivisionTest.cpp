@@ -3,6 +3,7 @@
 // 0.419753 = 34/81 of the way out (the regular vertex limit mask applied
 // to the cube's first refinement), creases and corners keep the cage.
 #include "GeometryBuilder.h"
+#include "SubdivisionSurface.h"
 
 #include <gtest/gtest.h>
 
@@ -282,6 +283,70 @@ TEST_F(Subdivision, LevelZeroSchemesAndBadCreasesFallBack)
   const GeometryData data = build(3);
   EXPECT_NE(m_messages.find("outside 'P'"), std::string::npos) << m_messages;
   EXPECT_EQ(data.triangles.size(), 6u * 4 * 6) << "the mesh's own level 1";
+}
+
+// Topology OpenSubdiv may dislike never crashes: each mesh renders
+// (refined, or its cage with a warning).
+TEST_F(Subdivision, OddTopologyNeverCrashes)
+{
+  auto mesh = [&](std::vector<int> counts, std::vector<int> indices) {
+    m_mesh.attributes.erase("P.indices");
+    set("nvertices", numbers(NSITypeInteger, counts));
+    set("P.indices", numbers(NSITypeInteger, indices));
+    m_messages.clear();
+    return build(2);
+  };
+  // A point repeated in one face; three faces on one edge; a lone triangle
+  // and a pentagon; a crease between points that share no edge.
+  EXPECT_FALSE(mesh({4}, {0, 1, 1, 2}).triangles.empty()) << m_messages;
+  EXPECT_FALSE(
+      mesh({4, 4, 4}, {0, 1, 3, 2, 0, 1, 5, 4, 0, 1, 7, 6}).triangles.empty())
+      << m_messages;
+  EXPECT_NE(m_messages.find("non-manifold cage"), std::string::npos);
+  EXPECT_FALSE(mesh({3, 5}, {0, 1, 3, 4, 5, 7, 6, 2}).triangles.empty())
+      << m_messages;
+  set("subdivision.creasevertices",
+      numbers(NSITypeInteger, std::vector<int>{0, 7}));
+  set("subdivision.creasesharpness",
+      numbers(NSITypeFloat, std::vector<float>{10}));
+  EXPECT_FALSE(mesh({4}, {0, 1, 3, 2}).triangles.empty()) << m_messages;
+  EXPECT_NE(m_messages.find("OpenSubdiv: Edge 0 specified to be sharp does "
+                            "not exist"),
+      std::string::npos)
+      << m_messages;
+  // NaN points stay NaN points: no crash, whatever is drawn.
+  set("P", numbers(NSITypePoint, std::vector<float>(24, NAN), 3));
+  mesh({4, 4}, {0, 1, 3, 2, 4, 5, 7, 6});
+}
+
+// A level that would make more than a million quads is lowered, warned.
+TEST_F(Subdivision, LevelsPastAMillionQuadsAreLowered)
+{
+  using prism::nsi::refinementLevelWithin;
+  // The cube's 6 faces: 24 quads after one refinement, 393,216 after
+  // eight, within 2^20.
+  EXPECT_EQ(refinementLevelWithin({4, 4, 4, 4, 4, 4}, 8), 8);
+  // 1000 quads: 4000 after one refinement, 1,024,000 after five; a sixth
+  // would pass 2^20.
+  EXPECT_EQ(refinementLevelWithin(std::vector<int>(1000, 4), 8), 5);
+  EXPECT_EQ(refinementLevelWithin(std::vector<int>(1000, 4), 2), 2);
+  // One refinement always (a huge cage still becomes quads).
+  EXPECT_EQ(refinementLevelWithin(std::vector<int>(1 << 20, 4), 3), 1);
+}
+
+TEST_F(Subdivision, ManyFacesAreRefinedFewerTimes)
+{
+  set("subdivision.level", numbers(NSITypeInteger, std::vector<int>{8}));
+  // 1000 cubes' faces at level 8 would be 4000 * 4^7 quads: level 5.
+  std::vector<int> indices;
+  for (int k = 0; k < 1000; ++k)
+    indices.insert(indices.end(), {0, 2, 3, 1});
+  m_mesh.attributes.erase("P.indices");
+  set("P.indices", numbers(NSITypeInteger, indices));
+  set("nvertices", numbers(NSITypeInteger, std::vector<int>(1000, 4)));
+  build(3);
+  EXPECT_NE(m_messages.find("level 5 is rendered"), std::string::npos)
+      << m_messages;
 }
 
 } // namespace
