@@ -285,6 +285,35 @@ TEST_F(Subdivision, LevelZeroSchemesAndBadCreasesFallBack)
   EXPECT_EQ(data.triangles.size(), 6u * 4 * 6) << "the mesh's own level 1";
 }
 
+// Moving points are refined at each shutter time: the limit surface of a
+// moved cage is the first one moved (the scheme is affine invariant).
+TEST_F(Subdivision, MovingPointsAreRefinedAtEachTime)
+{
+  const Value still = *m_mesh.attributes["P"].value;
+  std::vector<float> moved;
+  for (int i = 0; i < 8; ++i)
+    moved.insert(
+        moved.end(), {(i & 1) + 0.5f, (i & 2) / 2 - 0.5f, (i & 4) / 4 - 0.5f});
+  m_mesh.attributes["P"].value.reset();
+  m_mesh.attributes["P"].samples = {
+      {0.0, still}, {1.0, numbers(NSITypePoint, moved, 3)}};
+  auto data = buildMesh(
+      "cube",
+      m_mesh,
+      [this](int, const std::string &message) { m_messages += message; },
+      {0.0, 1.0},
+      2);
+  ASSERT_TRUE(data.has_value()) << m_messages;
+  EXPECT_EQ(m_messages, "");
+  ASSERT_EQ(data->positionKeys.size(), 2u);
+  ASSERT_EQ(data->positionKeys[1].size(), data->positions.size());
+  EXPECT_EQ(data->positionKeys[0], data->positions);
+  for (size_t i = 0; i < data->positions.size(); ++i)
+    EXPECT_NEAR(data->positionKeys[1][i] - data->positions[i],
+        i % 3 == 0 ? 1.f : 0.f,
+        1e-5f);
+}
+
 // Topology OpenSubdiv may dislike never crashes: each mesh renders
 // (refined, or its cage with a warning).
 TEST_F(Subdivision, OddTopologyNeverCrashes)
