@@ -148,10 +148,14 @@ void Context::connect(const std::string &from,
 {
   if (m_writer)
     return m_writer->statement("Connect", {from, fromAttr, to, toAttr}, params);
+  // The spec's use of a connection's value is a cross-hierarchy override
+  // (an attribute seen differently by rays from one object); ANARI has no
+  // per-ray-origin attributes, so the connection is kept without it.
   if (params.find("value"))
     report(NSIErrWarning,
-        "NSIConnect: 'value' overrides are not supported; connected without "
-        "it");
+        "NSIConnect '" + from + "' to '" + to + "'.'" + toAttr
+            + "': 'value' overrides are not supported; connected without "
+              "it");
   m_graph.connect(from,
       fromAttr,
       localRoot(to),

@@ -1,8 +1,10 @@
 #include "GeometryBuilder.h"
 
 #include "MeshPrimvars.h"
+#include "MeshSubdivision.h"
 #include "MotionSamples.h"
 #include "PolygonTriangulation.h"
+#include "SubdivisionSurface.h"
 
 #include <algorithm>
 #include <cmath>
@@ -96,9 +98,48 @@ Node withNumbers(const Node &node,
   return out;
 }
 
-} // namespace
+// A mesh's polygons as given, checked: P (at shutter open when it moves)
+// and its keys, P.indices, nvertices and how many loops make each face.
+struct MeshPolygons
+{
+  std::vector<double> points;
+  std::vector<std::vector<double>> pointKeys;
+  std::optional<std::vector<int64_t>> pointIndices;
+  std::vector<double> nvertices;
+  std::vector<size_t> loopsPerFace;
+  size_t faceVertexCount{0};
+};
 
-std::optional<GeometryData> buildMesh(const std::string &handle,
+// Loops per face: the outline, then `nholes` holes (default: none).
+std::vector<size_t> loopsPerFaceOf(const std::string &handle,
+    const Node &mesh,
+    size_t loopCount,
+    const ReportFunction &report)
+{
+  std::vector<size_t> loopsPerFace(loopCount, 1);
+  if (!mesh.attribute("nholes"))
+    return loopsPerFace;
+  const std::vector<double> holes = numbersOf(mesh, "nholes");
+  size_t loops = 0;
+  bool valid = true;
+  for (double h : holes) {
+    valid = valid && toIndex(h) >= 0;
+    loops += valid ? 1 + size_t(h) : 0;
+  }
+  if (valid && loops == loopCount) {
+    loopsPerFace.clear();
+    for (double h : holes)
+      loopsPerFace.push_back(1 + size_t(h));
+  } else {
+    report(NSIErrWarning,
+        "mesh '" + handle
+            + "': 'nholes' does not match 'nvertices'; every loop is a face");
+  }
+  return loopsPerFace;
+}
+
+// The mesh's polygons, or nothing (reported) when they cannot be rendered.
+std::optional<MeshPolygons> readPolygons(const std::string &handle,
     const Node &mesh,
     const ReportFunction &report,
     const std::vector<double> &times)
@@ -107,81 +148,80 @@ std::optional<GeometryData> buildMesh(const std::string &handle,
     report(NSIErrWarning, "mesh '" + handle + "': " + why + "; not rendered");
     return std::nullopt;
   };
+  MeshPolygons in;
   // Moving points are triangulated where they are at shutter open.
-  const auto pointKeys = keysOf(handle, mesh, "P", times, NSIErrError, report);
-  const std::vector<double> points =
-      pointKeys.empty() ? numbersOf(mesh, "P") : pointKeys.front();
-  const std::vector<double> nvertices = numbersOf(mesh, "nvertices");
-  if (points.empty() || points.size() % 3)
+  in.pointKeys = keysOf(handle, mesh, "P", times, NSIErrError, report);
+  in.points =
+      in.pointKeys.empty() ? numbersOf(mesh, "P") : in.pointKeys.front();
+  in.nvertices = numbersOf(mesh, "nvertices");
+  if (in.points.empty() || in.points.size() % 3)
     return fail("no 'P'");
-  const size_t pointCount = points.size() / 3;
-  auto pointIndices = indicesOf(mesh, "P");
-  size_t faceVertexCount = pointIndices ? pointIndices->size() : pointCount;
-  if (nvertices.empty())
+  const size_t pointCount = in.points.size() / 3;
+  in.pointIndices = indicesOf(mesh, "P");
+  in.faceVertexCount = in.pointIndices ? in.pointIndices->size() : pointCount;
+  if (in.nvertices.empty())
     return fail("no 'nvertices'");
   size_t total = 0;
-  for (double n : nvertices) {
+  for (double n : in.nvertices) {
     if (toIndex(n) < 0)
       return fail("'nvertices' holds " + shortNumber(n));
     total += size_t(n);
   }
   // One `nvertices` value with no others means one polygon.
-  if (total != faceVertexCount)
+  if (total != in.faceVertexCount)
     return fail("'nvertices' adds up to " + std::to_string(total)
-                + " but there are " + std::to_string(faceVertexCount)
+                + " but there are " + std::to_string(in.faceVertexCount)
                 + " face vertices");
-  if (pointIndices) {
-    for (int64_t i : *pointIndices) {
+  if (in.pointIndices) {
+    for (int64_t i : *in.pointIndices) {
       if (i < 0 || size_t(i) >= pointCount)
         return fail("'P.indices' holds " + std::to_string(i) + ", outside 'P'");
     }
   }
-  // Loops per face: the outline, then `nholes` holes (default: none).
-  std::vector<size_t> loopsPerFace(nvertices.size(), 1);
-  if (mesh.attribute("nholes")) {
-    const std::vector<double> holes = numbersOf(mesh, "nholes");
-    size_t loops = 0;
-    bool valid = true;
-    for (double h : holes) {
-      valid = valid && toIndex(h) >= 0;
-      loops += valid ? 1 + size_t(h) : 0;
-    }
-    if (valid && loops == nvertices.size()) {
-      loopsPerFace.clear();
-      for (double h : holes)
-        loopsPerFace.push_back(1 + size_t(h));
-    } else {
-      report(NSIErrWarning,
-          "mesh '" + handle
-              + "': 'nholes' does not match 'nvertices'; every loop is a face");
-    }
-  }
-  if (mesh.attribute("subdivision.scheme"))
-    report(NSIErrWarning,
-        "mesh '" + handle
-            + "': subdivision is not supported; the cage is rendered");
+  in.loopsPerFace = loopsPerFaceOf(handle, mesh, in.nvertices.size(), report);
+  return in;
+}
 
+MeshLayout layoutOf(const MeshPolygons &in)
+{
   MeshLayout layout;
-  layout.pointCount = pointCount;
-  if (pointIndices)
-    layout.pointIndices = *pointIndices;
-  layout.faceCount = loopsPerFace.size();
-  for (size_t face = 0, loop = 0; face < loopsPerFace.size(); ++face) {
-    for (size_t l = 0; l < loopsPerFace[face]; ++l, ++loop)
+  layout.pointCount = in.points.size() / 3;
+  if (in.pointIndices)
+    layout.pointIndices = *in.pointIndices;
+  layout.faceCount = in.loopsPerFace.size();
+  for (size_t face = 0, loop = 0; face < in.loopsPerFace.size(); ++face) {
+    for (size_t l = 0; l < in.loopsPerFace[face]; ++l, ++loop)
       layout.faceOfVertex.insert(layout.faceOfVertex.end(),
-          size_t(toIndex(nvertices[loop])),
+          size_t(toIndex(in.nvertices[loop])),
           uint32_t(face));
   }
+  return layout;
+}
 
-  const bool flip = mesh.attribute("clockwisewinding")
-                    && mesh.attribute("clockwisewinding")->number(0) != 0;
-  GeometryData data;
-  data.positions.reserve(faceVertexCount * 3);
-  for (size_t k = 0; k < faceVertexCount; ++k) {
-    const size_t p = pointIndices ? size_t((*pointIndices)[k]) : k;
+// xyz of `points` at each face vertex.
+std::vector<float> atFaceVertices(
+    const MeshPolygons &in, const std::vector<double> &points)
+{
+  std::vector<float> out;
+  out.reserve(in.faceVertexCount * 3);
+  for (size_t k = 0; k < in.faceVertexCount; ++k) {
+    const size_t p = in.pointIndices ? size_t((*in.pointIndices)[k]) : k;
     for (int c = 0; c < 3; ++c)
-      data.positions.push_back(float(points[3 * p + c]));
+      out.push_back(float(points[3 * p + c]));
   }
+  return out;
+}
+
+// Positions, their keys, N (and its keys), st and Cs per face vertex.
+GeometryData faceVertexData(const std::string &handle,
+    const Node &mesh,
+    const MeshPolygons &in,
+    const MeshLayout &layout,
+    const ReportFunction &report,
+    const std::vector<double> &times)
+{
+  GeometryData data;
+  data.positions = atFaceVertices(in, in.points);
   data.normals = faceVertexValues(handle, mesh, "N", 3, layout, report);
   // Keys per face vertex, as the still data; normals only when usable.
   const auto normalKeys =
@@ -199,27 +239,26 @@ std::optional<GeometryData> buildMesh(const std::string &handle,
     data.normalKeys.clear();
   if (!data.normalKeys.empty())
     data.normals = data.normalKeys.front();
-  for (const auto &key : pointKeys) {
-    std::vector<float> &positions = data.positionKeys.emplace_back();
-    positions.reserve(faceVertexCount * 3);
-    for (size_t k = 0; k < faceVertexCount; ++k) {
-      const size_t p = pointIndices ? size_t((*pointIndices)[k]) : k;
-      for (int c = 0; c < 3; ++c)
-        positions.push_back(float(key[3 * p + c]));
-    }
-  }
+  for (const auto &key : in.pointKeys)
+    data.positionKeys.push_back(atFaceVertices(in, key));
   // Moving normals on still points: the points are keys too, unchanged.
   if (data.positionKeys.empty() && !data.normalKeys.empty())
     data.positionKeys.assign(data.normalKeys.size(), data.positions);
   data.texcoords = faceVertexValues(handle, mesh, "st", 2, layout, report);
   data.colors = faceVertexValues(handle, mesh, "Cs", 3, layout, report);
+  return data;
+}
+
+// Each face (outline and holes) ear-clipped into data's triangles.
+void triangulateFaces(const MeshPolygons &in, bool flip, GeometryData &data)
+{
   size_t first = 0, loop = 0;
   uint32_t face = 0;
-  for (size_t loops : loopsPerFace) {
+  for (size_t loops : in.loopsPerFace) {
     // Corners are numbered through the face's loops, from `first`.
     std::vector<std::vector<Corner>> faceLoops;
     for (size_t l = 0; l < loops; ++l, ++loop) {
-      const size_t n = size_t(toIndex(nvertices[loop])); // checked above
+      const size_t n = size_t(toIndex(in.nvertices[loop])); // checked
       std::vector<Corner> corners;
       for (size_t k = first; k < first + n; ++k) {
         corners.push_back({data.positions[3 * k],
@@ -244,8 +283,86 @@ std::optional<GeometryData> buildMesh(const std::string &handle,
     }
     ++face;
   }
-  if (data.triangles.empty())
-    return fail("no polygon has three vertices");
+}
+
+// The cage with its face-vertex primvars refined; nothing (reported) when
+// OpenSubdiv refuses it, and the caller renders the cage.
+std::optional<GeometryData> subdivided(const std::string &handle,
+    const Node &mesh,
+    const MeshPolygons &in,
+    const GeometryData &cageData,
+    int level,
+    bool clockwise,
+    const ReportFunction &report)
+{
+  SubdivisionCage cage;
+  cage.points = in.points;
+  cage.pointKeys = in.pointKeys;
+  for (double n : in.nvertices) {
+    if (n < 3 || n > 1e6) {
+      report(NSIErrWarning,
+          "mesh '" + handle + "': a face of " + shortNumber(n)
+              + " vertices cannot be subdivided; the cage is rendered");
+      return std::nullopt;
+    }
+    cage.verticesPerFace.push_back(int(n));
+  }
+  for (size_t k = 0; k < in.faceVertexCount; ++k)
+    cage.pointOfFaceVertex.push_back(
+        int(in.pointIndices ? (*in.pointIndices)[k] : int64_t(k)));
+  cage.normals = cageData.normals;
+  cage.texcoords = cageData.texcoords;
+  cage.colors = cageData.colors;
+  cage.clockwise = clockwise;
+  readCreasesAndCorners(handle, mesh, in.points.size() / 3, report, cage);
+  const int allowed = refinementLevelWithin(cage.verticesPerFace, level);
+  if (allowed < level)
+    report(NSIErrWarning,
+        "mesh '" + handle + "': subdivision level " + std::to_string(level)
+            + " would make over " + std::to_string(kMaxRefinedQuads)
+            + " quads; level " + std::to_string(allowed) + " is rendered");
+  std::string error;
+  std::vector<std::string> warnings;
+  auto data = subdivideCatmullClark(cage, allowed, error, warnings);
+  for (const std::string &warning : warnings)
+    report(NSIErrWarning, "mesh '" + handle + "': OpenSubdiv: " + warning);
+  if (!data)
+    report(NSIErrWarning,
+        "mesh '" + handle + "': " + error + "; the cage is rendered");
+  return data;
+}
+
+} // namespace
+
+std::optional<GeometryData> buildMesh(const std::string &handle,
+    const Node &mesh,
+    const ReportFunction &report,
+    const std::vector<double> &times,
+    int subdivisionLevel)
+{
+  const auto polygons = readPolygons(handle, mesh, report, times);
+  if (!polygons)
+    return std::nullopt;
+  const MeshLayout layout = layoutOf(*polygons);
+  GeometryData data =
+      faceVertexData(handle, mesh, *polygons, layout, report, times);
+  const bool flip = mesh.attribute("clockwisewinding")
+                    && mesh.attribute("clockwisewinding")->number(0) != 0;
+  const bool hasHoles =
+      polygons->loopsPerFace.size() != polygons->nvertices.size();
+  const int level =
+      subdivisionLevelOf(handle, mesh, subdivisionLevel, hasHoles, report);
+  if (level > 0) {
+    if (auto refined =
+            subdivided(handle, mesh, *polygons, data, level, flip, report))
+      return refined;
+  }
+  triangulateFaces(*polygons, flip, data);
+  if (data.triangles.empty()) {
+    report(NSIErrWarning,
+        "mesh '" + handle + "': no polygon has three vertices; not rendered");
+    return std::nullopt;
+  }
   return data;
 }
 

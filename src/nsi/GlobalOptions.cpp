@@ -32,6 +32,14 @@ GlobalOptions readGlobalOptions(const Graph &graph,
   }
   if (deepest >= 0)
     options.maxPathLength = deepest + 1;
+  if (const Value *level = global->attribute("subdivision.level")) {
+    const double n = level->number(NAN);
+    if (n >= 0)
+      options.subdivisionLevel = int(std::min(n, 1023.0));
+    else
+      report(NSIErrWarning,
+          ".global: subdivision.level is not a level; 3 is used");
+  }
   return options;
 }
 

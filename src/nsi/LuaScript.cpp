@@ -116,69 +116,56 @@ bool intField(
   return ok;
 }
 
-// Reads the parameter table at `t` ({name=, data=, type=, arraylength=,
-// count=, flags=}).
-bool readParam(lua_State *L, int t, ParamData &out, std::string &error)
+// A parameter's `data` on the Lua stack: a table of elements, or one value.
+struct ParamElements
 {
-  t = lua_absindex(L, t);
-  if (lua_type(L, t) != LUA_TTABLE) {
-    error = std::string("a parameter is a ") + luaL_typename(L, t)
-            + ", not a table";
-    return false;
-  }
-  lua_pushliteral(L, "name");
-  lua_rawget(L, t);
-  if (lua_type(L, -1) != LUA_TSTRING) {
-    lua_pop(L, 1);
-    error = "a parameter has no string 'name'";
-    return false;
-  }
-  out.name = lua_tostring(L, -1);
-  lua_pop(L, 1);
-  int type = NSITypeInvalid, arraylength = 0, count = -1, flags = 0;
-  if (!intField(L, t, "type", type, error)
-      || !intField(L, t, "arraylength", arraylength, error)
-      || !intField(L, t, "count", count, error)
-      || !intField(L, t, "flags", flags, error)) {
-    error = "parameter '" + out.name + "': " + error;
-    return false;
-  }
+  lua_State *L;
+  int index;
+  bool isTable;
+  lua_Integer count;
 
-  lua_pushliteral(L, "data");
-  lua_rawget(L, t);
-  const int data = lua_gettop(L);
-  const bool isTable = lua_type(L, data) == LUA_TTABLE;
-  const lua_Integer n = isTable              ? lua_Integer(lua_rawlen(L, data))
-                        : lua_isnil(L, data) ? 0
-                                             : 1;
-  auto element = [&](lua_Integer i) {
+  // Pushes element i (1-based).
+  void push(lua_Integer i) const
+  {
     if (isTable)
-      lua_rawgeti(L, data, i);
+      lua_rawgeti(L, index, i);
     else
-      lua_pushvalue(L, data);
-  };
-  // Untyped: strings, integers, else floats, as the spec says.
-  if (type == NSITypeInvalid && n > 0) {
-    type = NSITypeInteger;
-    for (lua_Integer i = 1; i <= n; ++i) {
-      element(i);
-      const int kind = lua_type(L, -1);
-      if (kind == LUA_TSTRING)
-        type = NSITypeString;
-      else if (kind == LUA_TLIGHTUSERDATA)
-        type = NSITypePointer;
-      else if (kind == LUA_TNUMBER && !lua_isinteger(L, -1))
-        type = NSITypeFloat;
-      lua_pop(L, 1);
-      if (type == NSITypeString || type == NSITypePointer)
-        break;
-    }
+      lua_pushvalue(L, index);
   }
-  bool ok = n > 0;
+};
+
+// Untyped data: strings, integers, else floats, as the spec says.
+int inferType(const ParamElements &data)
+{
+  lua_State *L = data.L;
+  int type = NSITypeInteger;
+  for (lua_Integer i = 1; i <= data.count; ++i) {
+    data.push(i);
+    const int kind = lua_type(L, -1);
+    if (kind == LUA_TSTRING)
+      type = NSITypeString;
+    else if (kind == LUA_TLIGHTUSERDATA)
+      type = NSITypePointer;
+    else if (kind == LUA_TNUMBER && !lua_isinteger(L, -1))
+      type = NSITypeFloat;
+    lua_pop(L, 1);
+    if (type == NSITypeString || type == NSITypePointer)
+      break;
+  }
+  return type;
+}
+
+// Copies each element into `out` as `type` wants it; false (with `error`)
+// at the first that does not fit.
+bool readElements(
+    const ParamElements &data, int type, ParamData &out, std::string &error)
+{
+  lua_State *L = data.L;
+  bool ok = data.count > 0;
   if (!ok)
     error = "parameter '" + out.name + "' has no data";
-  for (lua_Integer i = 1; ok && i <= n; ++i) {
-    element(i);
+  for (lua_Integer i = 1; ok && i <= data.count; ++i) {
+    data.push(i);
     const int kind = lua_type(L, -1);
     if (type == NSITypeString) {
       ok = kind == LUA_TSTRING;
@@ -207,15 +194,19 @@ bool readParam(lua_State *L, int t, ParamData &out, std::string &error)
       error = "parameter '" + out.name + "': element " + std::to_string(i)
               + " does not fit its type";
   }
-  lua_pop(L, 1); // data
-  if (!ok)
-    return false;
-  if (type == NSITypeInt64) {
-    error = "parameter '" + out.name + "': 64-bit integers are not supported";
-    return false;
-  }
+  return ok;
+}
 
-  const size_t values = size_t(n);
+// out.param from the copied values: `count` items (-1: as many as the
+// values make), checked against them.
+bool finishParam(ParamData &out,
+    int type,
+    int arraylength,
+    int count,
+    int flags,
+    size_t values,
+    std::string &error)
+{
   const size_t perItem =
       Value::componentsOf(type) * size_t(arraylength > 0 ? arraylength : 1);
   if (count < 0) {
@@ -249,6 +240,54 @@ bool readParam(lua_State *L, int t, ParamData &out, std::string &error)
   else
     out.param.data = out.doubles.data();
   return true;
+}
+
+// Reads the parameter table at `t` ({name=, data=, type=, arraylength=,
+// count=, flags=}).
+bool readParam(lua_State *L, int t, ParamData &out, std::string &error)
+{
+  t = lua_absindex(L, t);
+  if (lua_type(L, t) != LUA_TTABLE) {
+    error = std::string("a parameter is a ") + luaL_typename(L, t)
+            + ", not a table";
+    return false;
+  }
+  lua_pushliteral(L, "name");
+  lua_rawget(L, t);
+  if (lua_type(L, -1) != LUA_TSTRING) {
+    lua_pop(L, 1);
+    error = "a parameter has no string 'name'";
+    return false;
+  }
+  out.name = lua_tostring(L, -1);
+  lua_pop(L, 1);
+  int type = NSITypeInvalid, arraylength = 0, count = -1, flags = 0;
+  if (!intField(L, t, "type", type, error)
+      || !intField(L, t, "arraylength", arraylength, error)
+      || !intField(L, t, "count", count, error)
+      || !intField(L, t, "flags", flags, error)) {
+    error = "parameter '" + out.name + "': " + error;
+    return false;
+  }
+
+  lua_pushliteral(L, "data");
+  lua_rawget(L, t);
+  ParamElements data{L, lua_gettop(L), lua_type(L, -1) == LUA_TTABLE, 0};
+  data.count = data.isTable ? lua_Integer(lua_rawlen(L, data.index))
+               : lua_isnil(L, data.index) ? 0
+                                          : 1;
+  if (type == NSITypeInvalid && data.count > 0)
+    type = inferType(data);
+  const bool ok = readElements(data, type, out, error);
+  lua_pop(L, 1); // data
+  if (!ok)
+    return false;
+  if (type == NSITypeInt64) {
+    error = "parameter '" + out.name + "': 64-bit integers are not supported";
+    return false;
+  }
+  return finishParam(
+      out, type, arraylength, count, flags, size_t(data.count), error);
 }
 
 // The arguments from `first` on: parameter tables, or one table of them.

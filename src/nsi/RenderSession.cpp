@@ -287,6 +287,12 @@ void RenderSession::resume()
 bool RenderSession::waitUntilResumed()
 {
   std::unique_lock lock(m_suspendMutex);
+  if (m_suspended && !m_stopRequested && m_parked) {
+    // Told outside the lock, so the callback may resume or stop.
+    lock.unlock();
+    m_parked(m_frames);
+    lock.lock();
+  }
   m_resumed.wait(lock, [this] { return !m_suspended || m_stopRequested; });
   return !m_stopRequested;
 }

@@ -92,6 +92,14 @@ class RenderSession
   {
     m_frameDone = std::move(frameDone);
   }
+  // Called on the render thread each time it stops before a frame because
+  // the render is suspended, with the frames rendered so far: from then
+  // until resume() or stop() no frame starts (so a caller can tell a
+  // suspended render from a slow one without waiting on a clock).
+  void setParked(FrameDone parked)
+  {
+    m_parked = std::move(parked);
+  }
 
  private:
   void renderAll();
@@ -129,6 +137,7 @@ class RenderSession
   bool m_progressive{false};
   std::atomic<uint64_t> m_frames{0};
   FrameDone m_frameDone;
+  FrameDone m_parked;
   std::mutex m_suspendMutex;
   std::condition_variable m_resumed;
   // Suspended, or the thread ended: what wait() waits for.

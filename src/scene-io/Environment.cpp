@@ -1,9 +1,9 @@
 #include "Environment.h"
 
+#include "EnvironmentStudio.h"
 #include "Objects.h"
 #include "TextureFile.h"
 
-#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -15,68 +15,6 @@ using scenes::Vec3;
 using scenes::operator+;
 using scenes::operator*;
 
-constexpr float kPi = std::numbers::pi_v<float>;
-
-// A soft-edged round light source in the studio: radiance inside
-// `radius` (radians) around (azimuth, elevation), fading over a tenth more.
-struct Softbox
-{
-  float azimuth, elevation, radius;
-  Vec3 radiance;
-};
-
-float smoothstep(float edge0, float edge1, float x)
-{
-  const float t = std::clamp((x - edge0) / (edge1 - edge0), 0.f, 1.f);
-  return t * t * (3.f - 2.f * t);
-}
-
-// Radiance of the studio towards (azimuth, elevation): a bright neutral sky
-// over a darker floor, a key light up front to one side and a weaker fill
-// behind, so shapes read and glossy surfaces show highlights. The average
-// over the sphere is about 1, so diffuse surfaces look near their albedo.
-Vec3 studioRadiance(float azimuth, float elevation)
-{
-  static const Softbox boxes[] = {
-      {0.7f, 0.75f, 0.28f, {7.f, 6.8f, 6.5f}},
-      {-2.1f, 0.45f, 0.35f, {2.f, 2.1f, 2.3f}},
-  };
-  const float e = std::sin(elevation);
-  const Vec3 horizon{1.f, 1.f, 1.f};
-  const Vec3 zenith{0.85f, 0.9f, 1.f};
-  const Vec3 floor{0.32f, 0.3f, 0.28f};
-  Vec3 radiance = e >= 0.f
-                      ? horizon * (1.f - std::sqrt(e)) + zenith * std::sqrt(e)
-                      : horizon * 0.6f * (1.f - smoothstep(0.f, 0.25f, -e))
-                            + floor * smoothstep(0.f, 0.25f, -e);
-  for (const Softbox &box : boxes) {
-    // Angle between the direction and the box's centre on the sphere.
-    const float cosAngle = std::sin(elevation) * std::sin(box.elevation)
-                           + std::cos(elevation) * std::cos(box.elevation)
-                                 * std::cos(azimuth - box.azimuth);
-    const float angle = std::acos(std::clamp(cosAngle, -1.f, 1.f));
-    const float inside =
-        1.f - smoothstep(box.radius * 0.9f, box.radius * 1.1f, angle);
-    radiance = radiance + box.radiance * inside;
-  }
-  return radiance;
-}
-
-// The studio as an equirectangular image, first row towards `up`.
-std::vector<Vec3> studioImage(size_t width, size_t height)
-{
-  std::vector<Vec3> texels(width * height);
-  for (size_t j = 0; j < height; j++) {
-    const float elevation = kPi * (0.5f - (float(j) + 0.5f) / float(height));
-    for (size_t i = 0; i < width; i++) {
-      const float azimuth =
-          2.f * kPi * ((float(i) + 0.5f) / float(width) - 0.5f);
-      texels[j * width + i] = studioRadiance(azimuth, elevation);
-    }
-  }
-  return texels;
-}
-
 // A direction across `up` for the image's centre column, turned by
 // `degrees` about `up`.
 Vec3 centreDirection(const Vec3 &up, float degrees)
@@ -86,7 +24,7 @@ Vec3 centreDirection(const Vec3 &up, float degrees)
   Vec3 forward = std::abs(u[2]) < 0.9f ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
   forward = scenes::normalize(forward + u * -scenes::dot(forward, u));
   const Vec3 side = scenes::cross(u, forward);
-  const float a = degrees * kPi / 180.f;
+  const float a = degrees * std::numbers::pi_v<float> / 180.f;
   return forward * std::cos(a) + side * std::sin(a);
 }
 
@@ -101,8 +39,8 @@ Environment makeEnvironment(
   std::vector<Vec3> texels;
   size_t width = 0, height = 0;
   if (choice.source == "studio") {
-    width = 256;
-    height = 128;
+    width = kStudioWidth;
+    height = kStudioHeight;
     texels = studioImage(width, height);
     out.description = "a neutral studio environment";
   } else {

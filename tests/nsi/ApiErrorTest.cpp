@@ -171,6 +171,29 @@ TEST_F(ApiError, ConnectionCyclesAreRefused)
   EXPECT_EQ(m_messages.problems(NSIErrError), "");
 }
 
+// A connection's `value` (the spec's cross-hierarchy override, section
+// 5.8) is a documented limit: the call is accepted, warned about once, and
+// the connection made without the value.
+TEST_F(ApiError, ConnectValueOverridesAreWarnedAndConnected)
+{
+  NSICreate(m_ctx, "ghost", "transform", 0, nullptr);
+  NSICreate(m_ctx, "mirror", "attributes", 0, nullptr);
+  NSI::ArgumentList args;
+  args.addInteger("value", 1).addInteger("priority", 2);
+  NSIConnect(
+      m_ctx, "mirror", "", "ghost", "visibility", args.size(), args.data());
+  const auto messages = m_messages.take();
+  ASSERT_EQ(messages.size(), 1u);
+  EXPECT_EQ(messages[0].level, NSIErrWarning);
+  EXPECT_NE(messages[0].text.find("'mirror' to 'ghost'.'visibility': 'value' "
+                                  "overrides are not supported"),
+      std::string::npos)
+      << messages[0].text;
+  // The connection stands: linking back would close a loop.
+  NSIConnect(m_ctx, "ghost", "", "mirror", "objects", 0, nullptr);
+  EXPECT_TRUE(reportedOnce(m_messages, {"cycle"}));
+}
+
 TEST_F(ApiError, NodeTypesAndBuiltIns)
 {
   NSICreate(m_ctx, "n", "transform", 0, nullptr);

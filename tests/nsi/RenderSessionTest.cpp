@@ -6,15 +6,13 @@
 #include "RenderSession.h"
 
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <thread>
+#include <future>
 
 namespace {
 
 using namespace prism::nsi;
-using namespace std::chrono_literals;
 
 constexpr int kFrames = 8;
 
@@ -92,11 +90,17 @@ TEST_F(Session, SuspendedProgressiveRenderWaitsForResume)
     if (frames == 1)
       session.suspend();
   });
+  // The render thread says when it stops at the suspension: from then on
+  // no frame can start until resume(), so counting frames now proves that
+  // none was issued while suspended (without sleeping and hoping).
+  std::promise<uint64_t> parked;
+  std::atomic<int> parkings{0};
+  session.setParked([&](uint64_t frames) {
+    if (parkings++ == 0)
+      parked.set_value(frames);
+  });
   ASSERT_TRUE(session.start("prism", ballScene(file), true));
-  for (int i = 0; i < 1000 && session.framesRendered() < 1; ++i)
-    std::this_thread::sleep_for(10ms);
-  ASSERT_EQ(session.framesRendered(), 1u);
-  std::this_thread::sleep_for(300ms);
+  EXPECT_EQ(parked.get_future().get(), 1u);
   EXPECT_EQ(session.framesRendered(), 1u); // no frame while suspended
   EXPECT_TRUE(session.running());
   ASSERT_TRUE(std::filesystem::exists(file)); // the first frame's output
@@ -161,8 +165,8 @@ TEST_F(Session, StopEndsASuspendedRender)
   RenderSession session(recorder(), nullptr);
   session.setFrameDone([&session](uint64_t) { session.suspend(); });
   ASSERT_TRUE(session.start("prism", ballScene(path("stopped.exr"))));
-  for (int i = 0; i < 1000 && session.framesRendered() < 1; ++i)
-    std::this_thread::sleep_for(10ms);
+  // Returns once the render is suspended after its first frame.
+  ASSERT_EQ(session.wait(), RenderSession::Waited::kSuspended);
   session.stop();
   EXPECT_FALSE(session.running());
   EXPECT_EQ(session.framesRendered(), 1u);

@@ -31,7 +31,9 @@ the outputs are committed, so this only reruns when the assets change):
                         the tool's studio by default, black with --env
                         none), lit-box.gltf (the box under a directional
                         light along -z), emissive-box.gltf (an emissive box,
-                        no lights), red-sky.hdr (8x4, radiance (1, 0, 0)
+                        no lights), emissive-label.gltf (a grey box with a
+                        green-emitting label, no lights),
+                        red-sky.hdr (8x4, radiance (1, 0, 0)
                         everywhere), glowing.obj/.mtl (a quad with Ke),
                         named-normals.obj (a quad whose faces name vn and
                         vt the file does not have)
@@ -1154,6 +1156,47 @@ def main():
     write("volume.raw", bytes(64))
     # Voxel counts whose product overflows 64 bits.
     write("overflow_999999999x999999999x999999999_uint8.raw", b"abcd")
+    write_emissive_label_assets()
+
+
+def emissive_label_scene():
+    """emissive-label.gltf: a grey box (no lights, nothing else emits) with
+    a small label on its +z face (0.4 x 0.2, 0.001 in front of it) whose
+    material is black and emits pure green (1 on g only). An emissive label
+    is no light to see the model by: the box must still be lit by the
+    default studio, and red in its pixels can only come from there."""
+    buf = Buffer()
+    box = cube_primitive(buf)
+    box["material"] = 0
+    label = {"attributes": {
+        "POSITION": buf.accessor("f", FLOAT, "VEC3",
+                                 [(-0.2, -0.1, 0.501), (0.2, -0.1, 0.501),
+                                  (0.2, 0.1, 0.501), (-0.2, 0.1, 0.501)],
+                                 bounds=True),
+        "NORMAL": buf.accessor("f", FLOAT, "VEC3", [(0.0, 0.0, 1.0)] * 4)},
+        "indices": buf.accessor("H", USHORT, "SCALAR", [0, 1, 2, 0, 2, 3]),
+        "material": 1}
+    gltf = {
+        "asset": {"version": "2.0",
+                  "generator": "prism tests/cli/data/make_assets.py"},
+        "scene": 0,
+        "scenes": [{"nodes": [0]}],
+        "nodes": [{"name": "labelled box", "mesh": 0}],
+        "meshes": [{"primitives": [box, label]}],
+        "materials": [
+            {"name": "grey", "pbrMetallicRoughness": {
+                "baseColorFactor": [0.7, 0.7, 0.7, 1.0],
+                "metallicFactor": 0.0, "roughnessFactor": 0.8}},
+            {"name": "label", "emissiveFactor": [0.0, 1.0, 0.0],
+             "pbrMetallicRoughness": {
+                 "baseColorFactor": [0.0, 0.0, 0.0, 1.0],
+                 "metallicFactor": 0.0, "roughnessFactor": 1.0}}],
+    }
+    return finish_gltf(gltf, buf)
+
+
+def write_emissive_label_assets():
+    write("emissive-label.gltf", emissive_label_scene())
 
 
 if __name__ == "__main__":
