@@ -128,6 +128,12 @@ class Material : public Object
   {
     m_doubleSided = readBool("doubleSided", true);
   }
+  // Keeps back faces whatever doubleSided says: a volume's back faces are
+  // where rays inside it leave, and culling them would trap those rays.
+  void keepBackFaces()
+  {
+    m_doubleSided = true;
+  }
 
   // MaterialInput::read() uses the protected parameter readers.
   template <typename T>

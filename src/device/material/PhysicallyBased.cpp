@@ -48,6 +48,13 @@ void PhysicallyBased::commitParameters()
   // The JSON (unlike the spec's table) also lets ior vary over the surface.
   input(in.ior, "ior");
   input(in.thickness, "thickness");
+  auto mayExceedZero = [](const MaterialInput<float> &input) {
+    return !input.isConstant() || input.constant() > 0.f;
+  };
+  // Transmission with a thickness bounds a medium (KHR_materials_volume):
+  // rays inside it must meet its back faces to get out.
+  if (mayExceedZero(in.transmission) && mayExceedZero(in.thickness))
+    keepBackFaces();
   in.attenuationDistance =
       read<float>("attenuationDistance", ANARI_FLOAT32, in.attenuationDistance);
   in.attenuationColor =

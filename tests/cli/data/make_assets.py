@@ -80,6 +80,10 @@ the outputs are committed, so this only reruns when the assets change):
                         LINES (magenta, x = 0.12) and a LINE_LOOP (a cyan
                         square whose closing edge is its left side), seen
                         by an orthographic camera over [-0.15, 0.15]^2
+  volume attenuation    attenuation-slabs.gltf: two smooth transmissive boxes 2
+                        deep along an orthographic view, attenuationColor
+                        (0.5, 0.25, 0.8) at attenuationDistance 1, the left
+                        of ior 1, the right of ior 1.5
   unsupported           draco-*.gltf (KHR_draco_mesh_compression), basisu-*.gltf
   extensions            (KHR_texture_basisu; the KTX2 image is only the magic
                         number), meshopt-*.gltf (EXT_meshopt_compression):
@@ -914,6 +918,52 @@ def points_lines_file():
     return finish_gltf(gltf, buf)
 
 
+# The attenuation slabs: attenuationColor, over attenuationDistance 1, and
+# the slabs' depth 2 along the view (world units, the node's z scale).
+SLAB_COLOR = (0.5, 0.25, 0.8)
+
+
+def attenuation_slabs():
+    """Two smooth transmissive boxes 2 deep along the view, KHR_materials_
+    volume with attenuationColor SLAB_COLOR at attenuationDistance 1: the
+    left of ior 1 (no interface at all: SLAB_COLOR^2 exactly), the right of
+    ior 1.5; an orthographic camera looks straight through both."""
+    buf = Buffer()
+    primitives = []
+    for material in (0, 1):
+        primitive = cube_primitive(buf)
+        primitive["material"] = material
+        primitives.append(primitive)
+
+    def glass(ior):
+        return {"pbrMetallicRoughness": {"metallicFactor": 0.0,
+                                         "roughnessFactor": 0.0},
+                "extensions": {
+                    "KHR_materials_transmission": {"transmissionFactor": 1.0},
+                    "KHR_materials_ior": {"ior": ior},
+                    "KHR_materials_volume": {
+                        "thicknessFactor": 1.0, "attenuationDistance": 1.0,
+                        "attenuationColor": list(SLAB_COLOR)}}}
+    gltf = {
+        "asset": {"version": "2.0", "generator": "prism tests/cli/data/make_assets.py"},
+        "extensionsUsed": ["KHR_materials_transmission", "KHR_materials_ior",
+                           "KHR_materials_volume"],
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1, 2]}],
+        "nodes": [{"mesh": 0, "translation": [-0.5, 0.0, 0.0],
+                   "scale": [0.9, 0.9, 2.0]},
+                  {"mesh": 1, "translation": [0.5, 0.0, 0.0],
+                   "scale": [0.9, 0.9, 2.0]},
+                  {"camera": 0, "translation": [0.0, 0.0, 5.0]}],
+        "meshes": [{"primitives": [primitives[0]]},
+                   {"primitives": [primitives[1]]}],
+        "materials": [glass(1.0), glass(1.5)],
+        "cameras": [{"type": "orthographic", "orthographic": {
+            "xmag": 1.0, "ymag": 0.5, "znear": 0.1, "zfar": 10.0}}],
+    }
+    return finish_gltf(gltf, buf)
+
+
 def plane_scene():
     buf = Buffer()
     quad, indices = quad_accessors(buf, half=2.0)
@@ -1103,6 +1153,7 @@ def main():
         write("expected-%s-32.pfm" % stem, files[1])
     write("single-sided.gltf", single_sided_file())
     write("points-lines.gltf", points_lines_file())
+    write("attenuation-slabs.gltf", attenuation_slabs())
     for extension, stem in (("KHR_draco_mesh_compression", "draco"),
                             ("KHR_texture_basisu", "basisu"),
                             ("EXT_meshopt_compression", "meshopt")):
