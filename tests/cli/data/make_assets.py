@@ -84,6 +84,10 @@ the outputs are committed, so this only reruns when the assets change):
                         deep along an orthographic view, attenuationColor
                         (0.5, 0.25, 0.8) at attenuationDistance 1, the left
                         of ior 1, the right of ior 1.5
+  negative scale        mirrored-quads.gltf: single-sided quads under a node of
+                        scale (-1, 1, 1), one facing the camera, one turned
+                        away, and a receiver behind a quad whose front
+                        faces it, under a directional light along -z
   unsupported           draco-*.gltf (KHR_draco_mesh_compression), basisu-*.gltf
   extensions            (KHR_texture_basisu; the KTX2 image is only the magic
                         number), meshopt-*.gltf (EXT_meshopt_compression):
@@ -964,6 +968,58 @@ def attenuation_slabs():
     return finish_gltf(gltf, buf)
 
 
+def mirrored_quads():
+    """Single-sided quads under a mirroring node (scale -1 in x), seen by an
+    orthographic camera at z = 3 over [-1, 1]^2 and lit by a directional
+    light along -z. Top row: a green quad whose front faces the camera
+    (x in [-0.9, -0.1]) and one whose back does (x in [0.1, 0.9], culled).
+    Bottom row (y in [-0.9, -0.1]): a white receiver at z = 0 and, over its
+    right half (x in [0.1, 0.9]) at z = 0.5, a black quad whose front faces
+    the receiver: the camera sees through its back, and so does the light."""
+    buf = Buffer()
+
+    def quad(x0, x1, y0, y1, z, facing_camera, material):
+        # Stored mirrored in x (the node's scale -1 puts it back), its
+        # corners counter-clockwise seen from +z in the mesh: clockwise in
+        # the world, the front under the node's negative determinant.
+        corners = [(-x1, y0), (-x0, y0), (-x0, y1), (-x1, y1)]
+        normal = (0.0, 0.0, 1.0 if facing_camera else -1.0)
+        order = [0, 1, 2, 0, 2, 3] if facing_camera else [0, 2, 1, 0, 3, 2]
+        return {"attributes": {
+            "POSITION": buf.accessor("f", FLOAT, "VEC3",
+                                     [(x, y, z) for x, y in corners],
+                                     bounds=True),
+            "NORMAL": buf.accessor("f", FLOAT, "VEC3", [normal] * 4)},
+            "indices": buf.accessor("H", USHORT, "SCALAR", order),
+            "material": material}
+    primitives = [quad(-0.9, -0.1, 0.1, 0.9, 0.0, True, 0),
+                  quad(0.1, 0.9, 0.1, 0.9, 0.0, False, 0),
+                  quad(-0.9, 0.9, -0.9, -0.1, 0.0, True, 1),
+                  quad(0.1, 0.9, -0.9, -0.1, 0.5, False, 2)]
+
+    def matte(r, g, b):
+        return {"pbrMetallicRoughness": {"baseColorFactor": [r, g, b, 1.0],
+                                         "metallicFactor": 0.0,
+                                         "roughnessFactor": 1.0}}
+    gltf = {
+        "asset": {"version": "2.0", "generator": "prism tests/cli/data/make_assets.py"},
+        "extensionsUsed": ["KHR_lights_punctual"],
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1, 2]}],
+        "nodes": [{"mesh": 0, "scale": [-1.0, 1.0, 1.0]},
+                  {"camera": 0, "translation": [0.0, 0.0, 3.0]},
+                  {"extensions": {"KHR_lights_punctual": {"light": 0}}}],
+        "meshes": [{"primitives": primitives}],
+        "materials": [matte(0.1, 0.8, 0.2), matte(0.8, 0.8, 0.8),
+                      matte(0.0, 0.0, 0.0)],
+        "cameras": [{"type": "orthographic", "orthographic": {
+            "xmag": 1.0, "ymag": 1.0, "znear": 0.1, "zfar": 10.0}}],
+        "extensions": {"KHR_lights_punctual": {"lights": [
+            {"type": "directional", "intensity": 3.0}]}},
+    }
+    return finish_gltf(gltf, buf)
+
+
 def plane_scene():
     buf = Buffer()
     quad, indices = quad_accessors(buf, half=2.0)
@@ -1154,6 +1210,7 @@ def main():
     write("single-sided.gltf", single_sided_file())
     write("points-lines.gltf", points_lines_file())
     write("attenuation-slabs.gltf", attenuation_slabs())
+    write("mirrored-quads.gltf", mirrored_quads())
     for extension, stem in (("KHR_draco_mesh_compression", "draco"),
                             ("KHR_texture_basisu", "basisu"),
                             ("EXT_meshopt_compression", "meshopt")):
