@@ -40,9 +40,12 @@ using scenes::operator*;
 constexpr size_t kMaxAccessorElements = size_t(1) << 28;
 constexpr size_t kMaxZeroAccessorElements = size_t(1) << 24;
 constexpr size_t kMaxNodeVisits = 10'000'000;
-// Radius of the spheres and curves glTF points and lines become, as a
-// fraction of the scene's diagonal (about 2 pixels across at 1000 pixels).
+// Radius of the curves glTF lines become, as a fraction of the scene's
+// diagonal (about 2 pixels across at 1000 pixels), and of the spheres its
+// points become: 3 times that, so that a point still covers most of a
+// pixel in a 128-pixel view (a line's length shows it at any width).
 constexpr float kPointAndLineRadius = 0.001f;
+constexpr float kPointOverLineRadius = 3.f;
 
 // ---- JSON values (tinygltf::Value asserts on wrong-kind lookups) ----------
 
@@ -2291,7 +2294,9 @@ void GltfImporter::setShape(
       ANARI_FLOAT32_VEC3,
       std::vector<Vec3>((const Vec3 *)placed.data(),
           (const Vec3 *)placed.data() + d.geometryVertices));
-  const float radius = d.points || d.lines ? m_objectRadius : 0.f;
+  const float radius = d.points  ? m_objectRadius * kPointOverLineRadius
+                       : d.lines ? m_objectRadius
+                                 : 0.f;
   if (d.points || d.lines)
     scenes::setFloat(m_device, geometry, "radius", radius);
   if (d.lines)

@@ -75,8 +75,9 @@ the outputs are committed, so this only reruns when the assets change):
   points and lines      points-lines.gltf: one mesh under a node scaled by 2
                         (positions halved) of POINTS (red, green and blue at
                         x = -0.1, 0, 0.1 and a white one far off at (5, 5):
-                        the scene's diagonal is 7.23, so spheres and curves
-                        get radius 0.00723), a LINE_STRIP (yellow, y = -0.1),
+                        the scene's diagonal is 7.23, so curves get radius
+                        0.00723 and spheres 3 times that), a LINE_STRIP
+                        (yellow, y = -0.1),
                         LINES (magenta, x = 0.12) and a LINE_LOOP (a cyan
                         square whose closing edge is its left side), seen
                         by an orthographic camera over [-0.15, 0.15]^2
