@@ -672,30 +672,42 @@ BsdfSample Bsdf::sampleInterior(const Context &c, float2 u, float uLobe) const
 
 BsdfSample Bsdf::sample(float3 woIn, float2 u, float uLobe) const
 {
-  if (m_lambertOnly) {
-    float sign = 1.f;
-    if (!viewerSide(woIn, sign))
-      return {};
-    // One lobe sampled exactly by its density: f cos / pdf = baseColor.
-    const float3 wi = sampleCosineHemisphere(u);
-    if (!(wi.z > 0.f) || maxComponent(m_baseColor) <= 0.f)
-      return {};
-    BsdfSample s;
-    s.wi = {wi.x, wi.y, wi.z * sign};
-    s.f = m_baseColor * kInvPi;
-    s.pdf = wi.z * kInvPi;
-    s.weight = m_baseColor;
-    s.relativeIor = 1.f;
-    s.flags = kBsdfReflection;
-    return s;
-  }
+  if (m_lambertOnly)
+    return sampleLambert(woIn, u);
   const Context c = prepare(woIn);
   if (!c.valid)
     return {};
   if (c.inside)
     return sampleInterior(c, u, uLobe);
-  const float3 wo = c.wo;
+  const int lobe = chooseLobe(c, uLobe);
+  float3 wi{0.f, 0.f, 1.f};
+  BsdfSample whole;
+  if (!sampleDirection(c, lobe, u, wi, whole))
+    return whole;
+  return sampleFromDirection(c, lobe, wi);
+}
 
+BsdfSample Bsdf::sampleLambert(float3 woIn, float2 u) const
+{
+  float sign = 1.f;
+  if (!viewerSide(woIn, sign))
+    return {};
+  // One lobe sampled exactly by its density: f cos / pdf = baseColor.
+  const float3 wi = sampleCosineHemisphere(u);
+  if (!(wi.z > 0.f) || maxComponent(m_baseColor) <= 0.f)
+    return {};
+  BsdfSample s;
+  s.wi = {wi.x, wi.y, wi.z * sign};
+  s.f = m_baseColor * kInvPi;
+  s.pdf = wi.z * kInvPi;
+  s.weight = m_baseColor;
+  s.relativeIor = 1.f;
+  s.flags = kBsdfReflection;
+  return s;
+}
+
+int Bsdf::chooseLobe(const Context &c, float uLobe) const
+{
   int lobe = kLobeCount - 1;
   float cumulative = 0.f;
   for (int k = 0; k < kLobeCount; k++) {
@@ -708,32 +720,40 @@ BsdfSample Bsdf::sample(float3 woIn, float2 u, float uLobe) const
   // Rounding can leave uLobe above the sum: take the last possible lobe.
   while (lobe > 0 && c.probability[lobe] == 0.f)
     lobe--;
-  const float probability = c.probability[lobe];
+  return lobe;
+}
 
-  float3 wi{0.f, 0.f, 1.f};
+// A direction from `lobe` into wi (our frame), to be evaluated over every
+// lobe; or false, with `whole` the whole sample: a delta lobe's, or none.
+bool Bsdf::sampleDirection(
+    const Context &c, int lobe, float2 u, float3 &wi, BsdfSample &whole) const
+{
+  const float3 wo = c.wo;
+  const float probability = c.probability[lobe];
   switch (lobe) {
   case kCoat: {
     const float3 woC = toCoat(c, wo);
     if (m_coatDelta) {
       const float3 mirrored = fromCoat(c, mirror(woC));
       if (!(mirrored.z > 0.f))
-        return {}; // the coat reflects it below the surface
+        return false; // the coat reflects it below the surface
       const float reflectance =
           m_clearcoat * fresnelSchlick(kCoatF0, 1.f, woC.z);
-      return deltaSample(mirrored,
+      whole = deltaSample(mirrored,
           c.sign,
           float3{reflectance, reflectance, reflectance},
           probability,
           1.f);
+      return false;
     }
     wi = fromCoat(c,
         reflectDirection(
             woC, sampleGgxVisibleNormal(woC, m_coatAlpha, m_coatAlpha, u)));
-    break;
+    return true;
   }
   case kSheen:
     wi = sampleUniformHemisphere(u);
-    break;
+    return true;
   case kSpecular: {
     if (m_specularDelta) {
       // The mirror direction has mu_i = mu_o: the sheen scaling evaluates
@@ -741,67 +761,79 @@ BsdfSample Bsdf::sample(float3 woIn, float2 u, float uLobe) const
       const float scale = (1.f - c.coatO)
                           * (1.f - coatAlbedo(toCoat(c, mirror(wo)).z))
                           * (1.f - c.sheenO);
-      return deltaSample(mirror(wo),
+      whole = deltaSample(mirror(wo),
           c.sign,
           specularFresnel(c.cosO) * scale,
           probability,
           1.f);
+      return false;
     }
     wi = reflectDirection(wo, sampleGgxVisibleNormal(wo, m_alpha, m_alpha, u));
-    break;
+    return true;
   }
   case kSpecularMulti:
   case kDiffuse:
     wi = sampleCosineHemisphere(u);
-    break;
-  case kTransmission: {
-    const float scale =
-        (1.f - c.coatO) * (1.f - c.sheenO) * m_transmissionWeight;
-    if (!m_volume) {
-      if (m_specularDelta) {
-        return deltaSample(-wo,
-            c.sign,
-            m_baseColor * (scale * (1.f - c.dielectricO)),
-            probability,
-            1.f);
-      }
-      const float3 wr =
-          reflectDirection(wo, sampleGgxVisibleNormal(wo, m_alpha, m_alpha, u));
-      wi = {wr.x, wr.y, -wr.z};
-      break;
-    }
-    if (m_specularDelta) {
-      float3 refracted;
-      if (!refractDirection(wo, {0.f, 0.f, 1.f}, 1.f / m_ior, refracted))
-        return {};
-      const float fresnel = maxComponent(dielectricFresnel(c.cosO));
-      // Entering the medium, radiance scales by 1 / ior^2.
-      return deltaSample(refracted,
-          c.sign,
-          m_baseColor * (scale * (1.f - fresnel) / (m_ior * m_ior)),
-          probability,
-          m_ior);
-    }
-    const float3 h = sampleGgxVisibleNormal(wo, m_alpha, m_alpha, u);
-    if (!refractDirection(wo, h, 1.f / m_ior, wi))
-      return {};
-    break;
-  }
+    return true;
+  case kTransmission:
+    return sampleTransmission(c, u, wi, whole);
   case kTransmissionMulti: {
     const float3 wr = sampleCosineHemisphere(u);
     wi = {wr.x, wr.y, -wr.z};
-    break;
+    return true;
   }
   default:
-    return {};
+    return false;
   }
+}
 
+// The transmission lobe's part of sampleDirection().
+bool Bsdf::sampleTransmission(
+    const Context &c, float2 u, float3 &wi, BsdfSample &whole) const
+{
+  const float3 wo = c.wo;
+  const float probability = c.probability[kTransmission];
+  const float scale = (1.f - c.coatO) * (1.f - c.sheenO) * m_transmissionWeight;
+  if (!m_volume) {
+    if (m_specularDelta) {
+      whole = deltaSample(-wo,
+          c.sign,
+          m_baseColor * (scale * (1.f - c.dielectricO)),
+          probability,
+          1.f);
+      return false;
+    }
+    const float3 wr =
+        reflectDirection(wo, sampleGgxVisibleNormal(wo, m_alpha, m_alpha, u));
+    wi = {wr.x, wr.y, -wr.z};
+    return true;
+  }
+  if (m_specularDelta) {
+    float3 refracted;
+    if (!refractDirection(wo, {0.f, 0.f, 1.f}, 1.f / m_ior, refracted))
+      return false;
+    const float fresnel = maxComponent(dielectricFresnel(c.cosO));
+    // Entering the medium, radiance scales by 1 / ior^2.
+    whole = deltaSample(refracted,
+        c.sign,
+        m_baseColor * (scale * (1.f - fresnel) / (m_ior * m_ior)),
+        probability,
+        m_ior);
+    return false;
+  }
+  const float3 h = sampleGgxVisibleNormal(wo, m_alpha, m_alpha, u);
+  return refractDirection(wo, h, 1.f / m_ior, wi);
+}
+
+// The sample of a non-delta lobe's direction wi (our frame): the mixture
+// density and the summed f over every non-delta lobe, the one-sample MIS
+// estimator, consistent with eval() and pdf() by construction.
+BsdfSample Bsdf::sampleFromDirection(
+    const Context &c, int lobe, float3 wi) const
+{
   const bool transmission = lobe == kTransmission || lobe == kTransmissionMulti;
   if (transmission ? wi.z >= 0.f : wi.z <= 0.f)
     return {};
-  // The mixture density and the summed f over every non-delta lobe: the
-  // one-sample MIS estimator, consistent with eval() and pdf() by
-  // construction.
   const float3 wiCaller{wi.x, wi.y, wi.z * c.sign};
   BsdfSample s;
   float3 f;

@@ -201,6 +201,16 @@ class Bsdf
   void evaluateInterior(
       const Context &c, float3 wi, float3 &f, float &pdf) const;
   BsdfSample sampleInterior(const Context &c, float2 u, float uLobe) const;
+  BsdfSample sampleLambert(float3 wo, float2 u) const;
+  int chooseLobe(const Context &c, float uLobe) const;
+  bool sampleDirection(const Context &c,
+      int lobe,
+      float2 u,
+      float3 &wi,
+      BsdfSample &whole) const;
+  bool sampleTransmission(
+      const Context &c, float2 u, float3 &wi, BsdfSample &whole) const;
+  BsdfSample sampleFromDirection(const Context &c, int lobe, float3 wi) const;
 
   struct Albedo
   {
