@@ -634,8 +634,9 @@ bool isImageWarning(const std::string &line)
 
 // ---- tangents -------------------------------------------------------------
 
-// The texture coordinate set a material's normal map (or clearcoat normal
-// map) reads, or -1 when it has none.
+// The texture coordinate set whose tangents a material needs: the one its
+// normal map (or clearcoat normal map) reads, else its anisotropy's
+// (KHR_materials_anisotropy: the texture's, or TEXCOORD_0); -1 for none.
 int normalMapTexCoord(const tinygltf::Material &m)
 {
   if (m.normalTexture.index >= 0)
@@ -643,7 +644,14 @@ int normalMapTexCoord(const tinygltf::Material &m)
   const TextureRef coat =
       textureRef(extension(m.extensions, "KHR_materials_clearcoat"),
           "clearcoatNormalTexture");
-  return coat.valid() ? coat.texCoord : -1;
+  if (coat.valid())
+    return coat.texCoord;
+  const tinygltf::Value *anisotropy =
+      extension(m.extensions, "KHR_materials_anisotropy");
+  if (!anisotropy)
+    return -1;
+  const TextureRef direction = textureRef(anisotropy, "anisotropyTexture");
+  return direction.valid() ? direction.texCoord : 0;
 }
 
 // MikkTSpace tangents for every triangle corner. Without NORMAL the
@@ -824,6 +832,7 @@ class GltfImporter
   bool m_unlitMaterials{false};
   bool m_baseColorFactor{false};
   bool m_singleSided{false};
+  bool m_anisotropy{false};
   ANARIMaterial newMaterial(int index, bool vertexColors);
   // newMaterial's parts, each setting what its glTF properties say.
   void setBaseLayer(
@@ -836,6 +845,7 @@ class GltfImporter
       ANARIMaterial material, const tinygltf::Material &m);
   void setSheenAndIridescence(
       ANARIMaterial material, const tinygltf::Material &m);
+  void setAnisotropy(ANARIMaterial material, const tinygltf::Material &m);
   void setScalar(ANARIMaterial material,
       const char *name,
       float factor,
@@ -1896,6 +1906,7 @@ ANARIMaterial GltfImporter::newMaterial(int index, bool vertexColors)
   setSpecularAndClearcoat(material, m);
   setTransmissionAndVolume(material, m);
   setSheenAndIridescence(material, m);
+  setAnisotropy(material, m);
   anariCommitParameters(m_device, material);
   return material;
 }
@@ -2125,6 +2136,43 @@ void GltfImporter::setSheenAndIridescence(
     } else {
       scenes::setFloat(m_device, material, "iridescenceThickness", hi);
     }
+  }
+}
+
+// KHR_materials_anisotropy (PRISM_MATERIAL_ANISOTROPY): strength, rotation
+// and the texture's direction (red and green to [-1, 1]) and strength
+// (blue).
+void GltfImporter::setAnisotropy(
+    ANARIMaterial material, const tinygltf::Material &m)
+{
+  const tinygltf::Value *e =
+      extension(m.extensions, "KHR_materials_anisotropy");
+  if (!e)
+    return;
+  if (!m_anisotropy) {
+    note(
+        "the device does not implement PRISM_MATERIAL_ANISOTROPY; "
+        "anisotropic (KHR_materials_anisotropy) materials are shaded "
+        "isotropic");
+    return;
+  }
+  scenes::setFloat(m_device,
+      material,
+      "anisotropyStrength",
+      float(number(e, "anisotropyStrength", 0.0)));
+  scenes::setFloat(m_device,
+      material,
+      "anisotropyRotation",
+      float(number(e, "anisotropyRotation", 0.0)));
+  const TextureRef texture = textureRef(e, "anisotropyTexture");
+  if (!texture.valid())
+    return;
+  OutputMap map = scaleMap({2.f, 2.f, 1.f, 1.f});
+  map.offset = {-1.f, -1.f, 0.f, 0.f};
+  if (ANARISampler sampler = newSampler(texture, false, map)) {
+    scenes::setObject(
+        m_device, material, "anisotropyDirection", ANARI_SAMPLER, sampler);
+    anariRelease(m_device, sampler);
   }
 }
 
@@ -2753,6 +2801,8 @@ LoadResult GltfImporter::load()
       scenes::hasExtension(m_device, "ANARI_PRISM_MATERIAL_BASE_COLOR_FACTOR");
   m_singleSided =
       scenes::hasExtension(m_device, "ANARI_PRISM_MATERIAL_DOUBLE_SIDED");
+  m_anisotropy =
+      scenes::hasExtension(m_device, "ANARI_PRISM_MATERIAL_ANISOTROPY");
   choosePointAndLineRadius();
   std::vector<ANARIObject> instances;
   for (const auto &[meshIndex, placements] : m_meshPlacements) {

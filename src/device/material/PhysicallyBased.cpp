@@ -65,6 +65,9 @@ void PhysicallyBased::commitParameters()
   in.iridescenceIor =
       read<float>("iridescenceIor", ANARI_FLOAT32, in.iridescenceIor);
   input(in.iridescenceThickness, "iridescenceThickness");
+  input(in.anisotropyStrength, "anisotropyStrength");
+  input(in.anisotropyRotation, "anisotropyRotation");
+  input(in.anisotropyDirection, "anisotropyDirection");
   m_readsAttributes =
       m_colorReadsAttributes || !in.metallic.isConstant()
       || !in.roughness.isConstant() || !in.normal.isConstant()
@@ -74,7 +77,10 @@ void PhysicallyBased::commitParameters()
       || !in.clearcoatNormal.isConstant() || !in.transmission.isConstant()
       || !in.ior.isConstant() || !in.thickness.isConstant()
       || !in.sheenColor.isConstant() || !in.sheenRoughness.isConstant()
-      || !in.iridescence.isConstant() || !in.iridescenceThickness.isConstant();
+      || !in.iridescence.isConstant() || !in.iridescenceThickness.isConstant()
+      || !in.anisotropyStrength.isConstant()
+      || !in.anisotropyRotation.isConstant()
+      || !in.anisotropyDirection.isConstant();
   m_inputs = std::move(in);
 }
 
@@ -108,6 +114,7 @@ MaterialShading PhysicallyBased::shade(const AttributeValues &attributes) const
   out.hasNormalMap =
       m_inputs.normal.source() != MaterialInput<float3>::Source::Constant;
   out.normalMap = values.normal;
+  out.anisotropyDirection = values.anisotropyDirection;
   if (values.transmission > 0.f && values.thickness > 0.f)
     out.attenuation = volumeAttenuationCoefficient(
         values.attenuationColor, values.attenuationDistance);
@@ -153,11 +160,25 @@ float3 PhysicallyBased::usableEmission(const float3 &emissive)
   return {usable(emissive.x), usable(emissive.y), usable(emissive.z)};
 }
 
+void PhysicallyBased::resolveAnisotropy(
+    const AttributeValues &attributes, float &strength, float2 &direction) const
+{
+  const Inputs &in = m_inputs;
+  const float3 texel = in.anisotropyDirection.evaluate(attributes);
+  strength = in.anisotropyStrength.evaluate(attributes) * texel.z;
+  const float rotation = in.anisotropyRotation.evaluate(attributes);
+  const float c = std::cos(rotation), s = std::sin(rotation);
+  direction = {c * texel.x - s * texel.y, s * texel.x + c * texel.y};
+}
+
 PhysicallyBased::Values PhysicallyBased::evaluate(
     const AttributeValues &attributes) const
 {
   const Inputs &in = m_inputs;
   const float4 base = baseColorAndOpacity(attributes);
+  float anisotropy = 0.f;
+  float2 anisotropyDirection{1.f, 0.f};
+  resolveAnisotropy(attributes, anisotropy, anisotropyDirection);
   return {xyz(base),
       base.w,
       in.metallic.evaluate(attributes),
@@ -179,7 +200,9 @@ PhysicallyBased::Values PhysicallyBased::evaluate(
       in.sheenRoughness.evaluate(attributes),
       in.iridescence.evaluate(attributes),
       in.iridescenceIor,
-      in.iridescenceThickness.evaluate(attributes)};
+      in.iridescenceThickness.evaluate(attributes),
+      anisotropy,
+      anisotropyDirection};
 }
 
 void PhysicallyBased::dropReferences()

@@ -2,6 +2,7 @@
 
 #include "AlbedoTables.h"
 #include "Fresnel.h"
+#include "GgxLobe.h"
 #include "Microfacet.h"
 #include "Sampling.h"
 
@@ -39,6 +40,11 @@ float mean(float3 v)
 float finiteOr(float value, float fallback)
 {
   return std::isfinite(value) ? value : fallback;
+}
+
+float2 finiteOr(float2 value, float2 fallback)
+{
+  return {finiteOr(value.x, fallback.x), finiteOr(value.y, fallback.y)};
 }
 
 float3 finiteOr(float3 value, float3 fallback)
@@ -82,7 +88,7 @@ struct Refraction
 };
 
 Refraction microfacetRefraction(
-    float3 wo, float3 wi, float etaO, float etaI, float alpha)
+    float3 wo, float3 wi, float etaO, float etaI, const GgxLobe &lobe)
 {
   Refraction r;
   // The generalised half vector, on the side of the normal.
@@ -102,11 +108,10 @@ Refraction microfacetRefraction(
   const float denominator2 = denominator * denominator;
   if (!(denominator2 > 1e-12f))
     return r;
-  const float d = ggxD(h, alpha);
-  r.btdf = cosOH * -cosIH / (wo.z * -wi.z) * etaO * etaO * d
-           * ggxG2(wo, wi, alpha) / denominator2;
-  r.pdf =
-      ggxG1(wo, alpha) * cosOH * d / wo.z * etaI * etaI * -cosIH / denominator2;
+  const float d = lobe.D(h);
+  r.btdf = cosOH * -cosIH / (wo.z * -wi.z) * etaO * etaO * d * lobe.G2(wo, wi)
+           / denominator2;
+  r.pdf = lobe.G1(wo) * cosOH * d / wo.z * etaI * etaI * -cosIH / denominator2;
   r.cosOH = cosOH;
   return r;
 }
@@ -159,7 +164,10 @@ Bsdf::Bsdf(const BsdfInputs &in)
   m_metallic = unitClamp(in.metallic, 0.f);
   m_roughness = unitClamp(in.roughness, 1.f);
   m_alpha = m_roughness * m_roughness;
-  m_specularDelta = m_alpha < kDeltaAlpha;
+  m_lobe = GgxLobe(m_roughness,
+      unitClamp(in.anisotropy, 0.f),
+      finiteOr(in.anisotropyDirection, float2{1.f, 0.f}));
+  m_specularDelta = m_alpha < kDeltaAlpha && !m_lobe.anisotropic();
 
   // KHR_materials_specular: f0 from the ior, tinted and clamped, then
   // weighted; f90 is the weight alone.
@@ -218,8 +226,9 @@ Bsdf::Bsdf(const BsdfInputs &in)
     return;
 
   // Multiple scattering: Kulla & Conty's lobe, coloured per metallic mix.
-  const GgxAlbedo average =
-      m_specularDelta ? mirrorAlbedo(1.f) : ggxAlbedo(1.f, m_roughness);
+  const GgxAlbedo average = m_specularDelta
+                                ? mirrorAlbedo(1.f)
+                                : ggxAlbedo(1.f, m_lobe.albedoRoughness());
   m_ggxAverage = average.average;
   const float3 dielectricAverageF =
       averageSchlick(m_dielectricF0, m_dielectricF90);
@@ -252,8 +261,9 @@ Bsdf::Bsdf(const BsdfInputs &in)
 
 Bsdf::Albedo Bsdf::specularAlbedo(float cosTheta) const
 {
-  const GgxAlbedo a = m_specularDelta ? mirrorAlbedo(cosTheta)
-                                      : ggxAlbedo(cosTheta, m_roughness);
+  const GgxAlbedo a = m_specularDelta
+                          ? mirrorAlbedo(cosTheta)
+                          : ggxAlbedo(cosTheta, m_lobe.albedoRoughness());
   return {a.total, a.schlick, a.meanCos};
 }
 
@@ -476,10 +486,10 @@ void Bsdf::evaluate(const Context &c, float3 wiIn, float3 &f, float &pdf) const
         coatScale * min(1.f - c.sheenO, 1.f - sheenLayerAlbedo(cosI));
     const Albedo specularI = specularAlbedo(cosI);
     if (!m_specularDelta) {
-      const float d = ggxD(h, m_alpha);
+      const float d = m_lobe.D(h);
       f += specularFresnel(cosOH)
-           * (scale * d * ggxG2(wo, wi, m_alpha) / (4.f * cosO * cosI));
-      pdf += c.probability[kSpecular] * ggxG1(wo, m_alpha) * d / (4.f * cosO);
+           * (scale * d * m_lobe.G2(wo, wi) / (4.f * cosO * cosI));
+      pdf += c.probability[kSpecular] * m_lobe.G1(wo) * d / (4.f * cosO);
       if (m_ggxAverage < 1.f) {
         // Kulla & Conty: (1 - E(mu_o)) (1 - E(mu_i)) / (pi (1 - E_avg))
         // integrates to exactly the energy single scattering lost.
@@ -517,20 +527,20 @@ void Bsdf::evaluate(const Context &c, float3 wiIn, float3 &f, float &pdf) const
     const float3 wr{wi.x, wi.y, -wi.z};
     const float cosR = wr.z;
     const float3 h = normalize(wo + wr);
-    const float d = ggxD(h, m_alpha);
-    float unit = d * ggxG2(wo, wr, m_alpha) / (4.f * cosO * cosR);
+    const float d = m_lobe.D(h);
+    float unit = d * m_lobe.G2(wo, wr) / (4.f * cosO * cosR);
     if (m_ggxAverage < 1.f) {
       unit += (1.f - c.specularO.total) * (1.f - specularAlbedo(cosR).total)
               * kInvPi / (1.f - m_ggxAverage);
     }
     f = m_baseColor * (scale * (1.f - c.dielectricO) * unit);
-    pdf = c.probability[kTransmission] * ggxG1(wo, m_alpha) * d / (4.f * cosO)
+    pdf = c.probability[kTransmission] * m_lobe.G1(wo) * d / (4.f * cosO)
           + c.probability[kTransmissionMulti] * cosR * kInvPi;
     return;
   }
   // Entering the volume: each microfacet splits F / 1 - F, tinted by
   // baseColor once on the way in (never on the way out).
-  const Refraction r = microfacetRefraction(wo, wi, 1.f, m_ior, m_alpha);
+  const Refraction r = microfacetRefraction(wo, wi, 1.f, m_ior, m_lobe);
   if (r.pdf == 0.f)
     return;
   const float fresnel = maxComponent(dielectricFresnel(r.cosOH));
@@ -549,12 +559,12 @@ void Bsdf::evaluateInterior(
   if (wi.z > 0.f) {
     const float3 h = normalize(wo + wi);
     const float3 fresnel = interfaceFresnel(dot(wo, h), m_ior);
-    const float d = ggxD(h, m_alpha);
-    f = fresnel * (d * ggxG2(wo, wi, m_alpha) / (4.f * c.cosO * wi.z));
-    pdf = maxComponent(fresnel) * ggxG1(wo, m_alpha) * d / (4.f * c.cosO);
+    const float d = m_lobe.D(h);
+    f = fresnel * (d * m_lobe.G2(wo, wi) / (4.f * c.cosO * wi.z));
+    pdf = maxComponent(fresnel) * m_lobe.G1(wo) * d / (4.f * c.cosO);
     return;
   }
-  const Refraction r = microfacetRefraction(wo, wi, m_ior, 1.f, m_alpha);
+  const Refraction r = microfacetRefraction(wo, wi, m_ior, 1.f, m_lobe);
   if (r.pdf == 0.f)
     return;
   const float transmitted =
@@ -645,7 +655,7 @@ BsdfSample Bsdf::sampleInterior(const Context &c, float2 u, float uLobe) const
         float3{1.f, 1.f, 1.f} * ((1.f - reflect) * m_ior * m_ior);
     return deltaSample(wi, c.sign, transmitted, 1.f - reflect, 1.f / m_ior);
   }
-  const float3 h = sampleGgxVisibleNormal(wo, m_alpha, m_alpha, u);
+  const float3 h = m_lobe.sampleVisibleNormal(wo, u);
   const float reflect = maxComponent(interfaceFresnel(dot(wo, h), m_ior));
   float3 wi;
   if (uLobe < reflect) {
@@ -768,7 +778,7 @@ bool Bsdf::sampleDirection(
           1.f);
       return false;
     }
-    wi = reflectDirection(wo, sampleGgxVisibleNormal(wo, m_alpha, m_alpha, u));
+    wi = reflectDirection(wo, m_lobe.sampleVisibleNormal(wo, u));
     return true;
   }
   case kSpecularMulti:
@@ -803,8 +813,7 @@ bool Bsdf::sampleTransmission(
           1.f);
       return false;
     }
-    const float3 wr =
-        reflectDirection(wo, sampleGgxVisibleNormal(wo, m_alpha, m_alpha, u));
+    const float3 wr = reflectDirection(wo, m_lobe.sampleVisibleNormal(wo, u));
     wi = {wr.x, wr.y, -wr.z};
     return true;
   }
@@ -821,7 +830,7 @@ bool Bsdf::sampleTransmission(
         m_ior);
     return false;
   }
-  const float3 h = sampleGgxVisibleNormal(wo, m_alpha, m_alpha, u);
+  const float3 h = m_lobe.sampleVisibleNormal(wo, u);
   return refractDirection(wo, h, 1.f / m_ior, wi);
 }
 

@@ -14,6 +14,7 @@
 //    transmission.
 #pragma once
 
+#include "GgxLobe.h"
 #include "math/Vec.h"
 
 #include <cmath>
@@ -50,6 +51,11 @@ struct BsdfInputs
   float iridescence{0.f};
   float iridescenceIor{1.3f};
   float iridescenceThickness{0.f}; // nanometres
+  // KHR_materials_anisotropy: the base layer's GGX lobe is widest along
+  // anisotropyDirection (local frame, the integrator turns the material's
+  // tangent-space direction into it) by strength `anisotropy` in [0, 1].
+  float anisotropy{0.f};
+  float2 anisotropyDirection{1.f, 0.f};
 };
 
 // matte (spec 5.11.1): Lambertian reflection of `color`.
@@ -68,7 +74,8 @@ inline BsdfInputs matteBsdfInputs(float3 color)
 // (the shading frame), emissive, occlusion (ambient light only),
 // attenuationColor/attenuationDistance (the medium behind a volume boundary:
 // volumeAttenuationCoefficient), clearcoatNormal (tangent space: the
-// integrator turns it into BsdfInputs::clearcoatNormal in the local frame).
+// integrator turns it into BsdfInputs::clearcoatNormal in the local frame),
+// the anisotropy's direction (tangent space, likewise).
 template <typename Values>
 BsdfInputs physicallyBasedBsdfInputs(const Values &values)
 {
@@ -88,6 +95,7 @@ BsdfInputs physicallyBasedBsdfInputs(const Values &values)
   inputs.iridescence = values.iridescence;
   inputs.iridescenceIor = values.iridescenceIor;
   inputs.iridescenceThickness = values.iridescenceThickness;
+  inputs.anisotropy = values.anisotropyStrength;
   return inputs;
 }
 
@@ -233,6 +241,7 @@ class Bsdf
   float3 m_baseColor{0.f, 0.f, 0.f};
   float m_metallic{0.f};
   float m_roughness{1.f}, m_alpha{1.f};
+  GgxLobe m_lobe; // the specular and transmission lobes' microfacets
   bool m_specularDelta{false};
   float3 m_dielectricF0{
       0.f, 0.f, 0.f}; // KHR_materials_specular's dielectric_f0

@@ -89,6 +89,10 @@ the outputs are committed, so this only reruns when the assets change):
                         scale (-1, 1, 1), one facing the camera, one turned
                         away, and a receiver behind a quad whose front
                         faces it, under a directional light along -z
+  anisotropy            anisotropic-plates.gltf: two brushed white metal plates
+                        (KHR_materials_anisotropy strength 0.8, the right
+                        turned by 90 degrees), each under a point light,
+                        seen from above
   unsupported           draco-*.gltf (KHR_draco_mesh_compression), basisu-*.gltf
   extensions            (KHR_texture_basisu; the KTX2 image is only the magic
                         number), meshopt-*.gltf (EXT_meshopt_compression):
@@ -1021,6 +1025,51 @@ def mirrored_quads():
     return finish_gltf(gltf, buf)
 
 
+def anisotropic_plates():
+    """Two white metal plates (roughness 0.3, KHR_materials_anisotropy
+    strength 0.8, TANGENT along +x) side by side at z = 0 over x in [-2, 0]
+    and [0, 2], y in [-1, 1]: the left's anisotropy along the tangent, the
+    right's turned by 90 degrees (anisotropyRotation). A point light 1 above
+    each plate's centre, an orthographic camera looking down -z."""
+    buf = Buffer()
+
+    def plate(x0, material):
+        corners = [(x0, -1.0), (x0 + 2.0, -1.0), (x0 + 2.0, 1.0), (x0, 1.0)]
+        return {"attributes": {
+            "POSITION": buf.accessor("f", FLOAT, "VEC3",
+                                     [(x, y, 0.0) for x, y in corners],
+                                     bounds=True),
+            "NORMAL": buf.accessor("f", FLOAT, "VEC3", [(0.0, 0.0, 1.0)] * 4),
+            "TANGENT": buf.accessor("f", FLOAT, "VEC4",
+                                    [(1.0, 0.0, 0.0, 1.0)] * 4)},
+            "indices": buf.accessor("H", USHORT, "SCALAR", [0, 1, 2, 0, 2, 3]),
+            "material": material}
+
+    def brushed(rotation):
+        return {"pbrMetallicRoughness": {"metallicFactor": 1.0,
+                                         "roughnessFactor": 0.3},
+                "extensions": {"KHR_materials_anisotropy": {
+                    "anisotropyStrength": 0.8,
+                    "anisotropyRotation": rotation}}}
+    lights = [{"extensions": {"KHR_lights_punctual": {"light": 0}},
+               "translation": [x, 0.0, 1.0]} for x in (-1.0, 1.0)]
+    gltf = {
+        "asset": {"version": "2.0", "generator": "prism tests/cli/data/make_assets.py"},
+        "extensionsUsed": ["KHR_materials_anisotropy", "KHR_lights_punctual"],
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1, 2, 3]}],
+        "nodes": [{"mesh": 0},
+                  {"camera": 0, "translation": [0.0, 0.0, 3.0]}] + lights,
+        "meshes": [{"primitives": [plate(-2.0, 0), plate(0.0, 1)]}],
+        "materials": [brushed(0.0), brushed(math.pi / 2)],
+        "cameras": [{"type": "orthographic", "orthographic": {
+            "xmag": 2.0, "ymag": 1.0, "znear": 0.1, "zfar": 10.0}}],
+        "extensions": {"KHR_lights_punctual": {"lights": [
+            {"type": "point", "intensity": 5.0}]}},
+    }
+    return finish_gltf(gltf, buf)
+
+
 def plane_scene():
     buf = Buffer()
     quad, indices = quad_accessors(buf, half=2.0)
@@ -1212,6 +1261,7 @@ def main():
     write("points-lines.gltf", points_lines_file())
     write("attenuation-slabs.gltf", attenuation_slabs())
     write("mirrored-quads.gltf", mirrored_quads())
+    write("anisotropic-plates.gltf", anisotropic_plates())
     for extension, stem in (("KHR_draco_mesh_compression", "draco"),
                             ("KHR_texture_basisu", "basisu"),
                             ("EXT_meshopt_compression", "meshopt")):
