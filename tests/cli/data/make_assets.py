@@ -89,6 +89,8 @@ the outputs are committed, so this only reruns when the assets change):
                         scale (-1, 1, 1), one facing the camera, one turned
                         away, and a receiver behind a quad whose front
                         faces it, under a directional light along -z
+  iridescent glass      iridescent-glass.gltf: a smooth single-sided glass box
+                        with an iridescent film, filling an orthographic view
   anisotropy            anisotropic-plates.gltf: two brushed white metal plates
                         (KHR_materials_anisotropy strength 0.8, the right
                         turned by 90 degrees), each under a point light,
@@ -1070,6 +1072,38 @@ def anisotropic_plates():
     return finish_gltf(gltf, buf)
 
 
+def iridescent_glass_box():
+    """A smooth single-sided box of clear glass with walls of thickness
+    0.005 (KHR_materials_volume) and an iridescent film (ior 1.67, 400 nm,
+    as IridescenceLamp's globe), straight in front of an orthographic
+    camera that it fills."""
+    buf = Buffer()
+    primitive = cube_primitive(buf)
+    primitive["material"] = 0
+    glass = {"pbrMetallicRoughness": {"metallicFactor": 0.0,
+                                      "roughnessFactor": 0.0},
+             "extensions": {
+                 "KHR_materials_transmission": {"transmissionFactor": 1.0},
+                 "KHR_materials_volume": {"thicknessFactor": 0.005},
+                 "KHR_materials_iridescence": {
+                     "iridescenceFactor": 1.0, "iridescenceIor": 1.67,
+                     "iridescenceThicknessMaximum": 400.0}}}
+    gltf = {
+        "asset": {"version": "2.0", "generator": "prism tests/cli/data/make_assets.py"},
+        "extensionsUsed": ["KHR_materials_transmission", "KHR_materials_volume",
+                           "KHR_materials_iridescence"],
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1]}],
+        "nodes": [{"mesh": 0},
+                  {"camera": 0, "translation": [0.0, 0.0, 3.0]}],
+        "meshes": [{"primitives": [primitive]}],
+        "materials": [glass],
+        "cameras": [{"type": "orthographic", "orthographic": {
+            "xmag": 0.4, "ymag": 0.4, "znear": 0.1, "zfar": 10.0}}],
+    }
+    return finish_gltf(gltf, buf)
+
+
 def plane_scene():
     buf = Buffer()
     quad, indices = quad_accessors(buf, half=2.0)
@@ -1262,6 +1296,7 @@ def main():
     write("attenuation-slabs.gltf", attenuation_slabs())
     write("mirrored-quads.gltf", mirrored_quads())
     write("anisotropic-plates.gltf", anisotropic_plates())
+    write("iridescent-glass.gltf", iridescent_glass_box())
     for extension, stem in (("KHR_draco_mesh_compression", "draco"),
                             ("KHR_texture_basisu", "basisu"),
                             ("EXT_meshopt_compression", "meshopt")):
