@@ -833,6 +833,7 @@ class GltfImporter
   bool m_baseColorFactor{false};
   bool m_singleSided{false};
   bool m_anisotropy{false};
+  void queryMaterialExtensions();
   ANARIMaterial newMaterial(int index, bool vertexColors);
   // newMaterial's parts, each setting what its glTF properties say.
   void setBaseLayer(
@@ -2139,6 +2140,20 @@ void GltfImporter::setSheenAndIridescence(
   }
 }
 
+// Which of prism's material extensions the device has (glTF properties
+// that ANARI 1.1 cannot say otherwise).
+void GltfImporter::queryMaterialExtensions()
+{
+  m_unlitMaterials =
+      scenes::hasExtension(m_device, "ANARI_PRISM_MATERIAL_UNLIT");
+  m_baseColorFactor =
+      scenes::hasExtension(m_device, "ANARI_PRISM_MATERIAL_BASE_COLOR_FACTOR");
+  m_singleSided =
+      scenes::hasExtension(m_device, "ANARI_PRISM_MATERIAL_DOUBLE_SIDED");
+  m_anisotropy =
+      scenes::hasExtension(m_device, "ANARI_PRISM_MATERIAL_ANISOTROPY");
+}
+
 // KHR_materials_anisotropy (PRISM_MATERIAL_ANISOTROPY): strength, rotation
 // and the texture's direction (red and green to [-1, 1]) and strength
 // (blue).
@@ -2795,14 +2810,7 @@ LoadResult GltfImporter::load()
 
   const bool transformArrays =
       scenes::hasExtension(m_device, "ANARI_KHR_INSTANCE_TRANSFORM_ARRAY");
-  m_unlitMaterials =
-      scenes::hasExtension(m_device, "ANARI_PRISM_MATERIAL_UNLIT");
-  m_baseColorFactor =
-      scenes::hasExtension(m_device, "ANARI_PRISM_MATERIAL_BASE_COLOR_FACTOR");
-  m_singleSided =
-      scenes::hasExtension(m_device, "ANARI_PRISM_MATERIAL_DOUBLE_SIDED");
-  m_anisotropy =
-      scenes::hasExtension(m_device, "ANARI_PRISM_MATERIAL_ANISOTROPY");
+  queryMaterialExtensions();
   choosePointAndLineRadius();
   std::vector<ANARIObject> instances;
   for (const auto &[meshIndex, placements] : m_meshPlacements) {
