@@ -94,7 +94,9 @@ the outputs are committed, so this only reruns when the assets change):
   anisotropy            anisotropic-plates.gltf: two brushed white metal plates
                         (KHR_materials_anisotropy strength 0.8, the right
                         turned by 90 degrees), each under a point light,
-                        seen from above
+                        seen from above; -no-tangents.gltf: the same
+                        without TANGENT, u along +y: tangents generated
+                        from it run along y, so the highlights turn
   unsupported           draco-*.gltf (KHR_draco_mesh_compression), basisu-*.gltf
   extensions            (KHR_texture_basisu; the KTX2 image is only the magic
                         number), meshopt-*.gltf (EXT_meshopt_compression):
@@ -1027,25 +1029,35 @@ def mirrored_quads():
     return finish_gltf(gltf, buf)
 
 
-def anisotropic_plates():
+def anisotropic_plates(tangents=True):
     """Two white metal plates (roughness 0.3, KHR_materials_anisotropy
-    strength 0.8, TANGENT along +x) side by side at z = 0 over x in [-2, 0]
-    and [0, 2], y in [-1, 1]: the left's anisotropy along the tangent, the
-    right's turned by 90 degrees (anisotropyRotation). A point light 1 above
-    each plate's centre, an orthographic camera looking down -z."""
+    strength 0.8, TANGENT along +x, or none: then u runs along +y) side by
+    side at z = 0 over x in [-2, 0] and [0, 2], y in [-1, 1]: the left's
+    anisotropy along the tangent, the right's turned by 90 degrees
+    (anisotropyRotation). A point light 1 above each plate's centre, an
+    orthographic camera looking down -z."""
     buf = Buffer()
 
     def plate(x0, material):
         corners = [(x0, -1.0), (x0 + 2.0, -1.0), (x0 + 2.0, 1.0), (x0, 1.0)]
-        return {"attributes": {
+        p = {"attributes": {
             "POSITION": buf.accessor("f", FLOAT, "VEC3",
                                      [(x, y, 0.0) for x, y in corners],
                                      bounds=True),
             "NORMAL": buf.accessor("f", FLOAT, "VEC3", [(0.0, 0.0, 1.0)] * 4),
-            "TANGENT": buf.accessor("f", FLOAT, "VEC4",
-                                    [(1.0, 0.0, 0.0, 1.0)] * 4)},
+            # u along +x with TANGENT, along +y without (so the generated
+            # tangents differ from any frame the device would pick).
+            "TEXCOORD_0": buf.accessor("f", FLOAT, "VEC2",
+                                       [(0.0, 1.0), (1.0, 1.0), (1.0, 0.0),
+                                        (0.0, 0.0)] if tangents else
+                                       [(0.0, 0.0), (0.0, 1.0), (1.0, 1.0),
+                                        (1.0, 0.0)])},
             "indices": buf.accessor("H", USHORT, "SCALAR", [0, 1, 2, 0, 2, 3]),
             "material": material}
+        if tangents:
+            p["attributes"]["TANGENT"] = buf.accessor(
+                "f", FLOAT, "VEC4", [(1.0, 0.0, 0.0, 1.0)] * 4)
+        return p
 
     def brushed(rotation):
         return {"pbrMetallicRoughness": {"metallicFactor": 1.0,
@@ -1296,6 +1308,8 @@ def main():
     write("attenuation-slabs.gltf", attenuation_slabs())
     write("mirrored-quads.gltf", mirrored_quads())
     write("anisotropic-plates.gltf", anisotropic_plates())
+    write("anisotropic-plates-no-tangents.gltf",
+          anisotropic_plates(tangents=False))
     write("iridescent-glass.gltf", iridescent_glass_box())
     for extension, stem in (("KHR_draco_mesh_compression", "draco"),
                             ("KHR_texture_basisu", "basisu"),
