@@ -40,9 +40,12 @@ using scenes::operator*;
 constexpr size_t kMaxAccessorElements = size_t(1) << 28;
 constexpr size_t kMaxZeroAccessorElements = size_t(1) << 24;
 constexpr size_t kMaxNodeVisits = 10'000'000;
-// Radius of the spheres and curves glTF points and lines become, as a
-// fraction of the scene's diagonal (about 2 pixels across at 1000 pixels).
+// Radius of the curves glTF lines become, as a fraction of the scene's
+// diagonal (about 2 pixels across at 1000 pixels), and of the spheres its
+// points become: 3 times that, so that a point still covers most of a
+// pixel in a 128-pixel view (a line's length shows it at any width).
 constexpr float kPointAndLineRadius = 0.001f;
+constexpr float kPointOverLineRadius = 3.f;
 
 // ---- JSON values (tinygltf::Value asserts on wrong-kind lookups) ----------
 
@@ -631,8 +634,9 @@ bool isImageWarning(const std::string &line)
 
 // ---- tangents -------------------------------------------------------------
 
-// The texture coordinate set a material's normal map (or clearcoat normal
-// map) reads, or -1 when it has none.
+// The texture coordinate set whose tangents a material needs: the one its
+// normal map (or clearcoat normal map) reads, else its anisotropy's
+// (KHR_materials_anisotropy: the texture's, or TEXCOORD_0); -1 for none.
 int normalMapTexCoord(const tinygltf::Material &m)
 {
   if (m.normalTexture.index >= 0)
@@ -640,7 +644,14 @@ int normalMapTexCoord(const tinygltf::Material &m)
   const TextureRef coat =
       textureRef(extension(m.extensions, "KHR_materials_clearcoat"),
           "clearcoatNormalTexture");
-  return coat.valid() ? coat.texCoord : -1;
+  if (coat.valid())
+    return coat.texCoord;
+  const tinygltf::Value *anisotropy =
+      extension(m.extensions, "KHR_materials_anisotropy");
+  if (!anisotropy)
+    return -1;
+  const TextureRef direction = textureRef(anisotropy, "anisotropyTexture");
+  return direction.valid() ? direction.texCoord : 0;
 }
 
 // MikkTSpace tangents for every triangle corner. Without NORMAL the
@@ -821,6 +832,8 @@ class GltfImporter
   bool m_unlitMaterials{false};
   bool m_baseColorFactor{false};
   bool m_singleSided{false};
+  bool m_anisotropy{false};
+  void queryMaterialExtensions();
   ANARIMaterial newMaterial(int index, bool vertexColors);
   // newMaterial's parts, each setting what its glTF properties say.
   void setBaseLayer(
@@ -833,6 +846,7 @@ class GltfImporter
       ANARIMaterial material, const tinygltf::Material &m);
   void setSheenAndIridescence(
       ANARIMaterial material, const tinygltf::Material &m);
+  void setAnisotropy(ANARIMaterial material, const tinygltf::Material &m);
   void setScalar(ANARIMaterial material,
       const char *name,
       float factor,
@@ -1893,6 +1907,7 @@ ANARIMaterial GltfImporter::newMaterial(int index, bool vertexColors)
   setSpecularAndClearcoat(material, m);
   setTransmissionAndVolume(material, m);
   setSheenAndIridescence(material, m);
+  setAnisotropy(material, m);
   anariCommitParameters(m_device, material);
   return material;
 }
@@ -2125,6 +2140,57 @@ void GltfImporter::setSheenAndIridescence(
   }
 }
 
+// Which of prism's material extensions the device has (glTF properties
+// that ANARI 1.1 cannot say otherwise).
+void GltfImporter::queryMaterialExtensions()
+{
+  m_unlitMaterials =
+      scenes::hasExtension(m_device, "ANARI_PRISM_MATERIAL_UNLIT");
+  m_baseColorFactor =
+      scenes::hasExtension(m_device, "ANARI_PRISM_MATERIAL_BASE_COLOR_FACTOR");
+  m_singleSided =
+      scenes::hasExtension(m_device, "ANARI_PRISM_MATERIAL_DOUBLE_SIDED");
+  m_anisotropy =
+      scenes::hasExtension(m_device, "ANARI_PRISM_MATERIAL_ANISOTROPY");
+}
+
+// KHR_materials_anisotropy (PRISM_MATERIAL_ANISOTROPY): strength, rotation
+// and the texture's direction (red and green to [-1, 1]) and strength
+// (blue).
+void GltfImporter::setAnisotropy(
+    ANARIMaterial material, const tinygltf::Material &m)
+{
+  const tinygltf::Value *e =
+      extension(m.extensions, "KHR_materials_anisotropy");
+  if (!e)
+    return;
+  if (!m_anisotropy) {
+    note(
+        "the device does not implement PRISM_MATERIAL_ANISOTROPY; "
+        "anisotropic (KHR_materials_anisotropy) materials are shaded "
+        "isotropic");
+    return;
+  }
+  scenes::setFloat(m_device,
+      material,
+      "anisotropyStrength",
+      float(number(e, "anisotropyStrength", 0.0)));
+  scenes::setFloat(m_device,
+      material,
+      "anisotropyRotation",
+      float(number(e, "anisotropyRotation", 0.0)));
+  const TextureRef texture = textureRef(e, "anisotropyTexture");
+  if (!texture.valid())
+    return;
+  OutputMap map = scaleMap({2.f, 2.f, 1.f, 1.f});
+  map.offset = {-1.f, -1.f, 0.f, 0.f};
+  if (ANARISampler sampler = newSampler(texture, false, map)) {
+    scenes::setObject(
+        m_device, material, "anisotropyDirection", ANARI_SAMPLER, sampler);
+    anariRelease(m_device, sampler);
+  }
+}
+
 namespace {
 
 // Points become spheres and lines round curves, over their vertices
@@ -2291,7 +2357,9 @@ void GltfImporter::setShape(
       ANARI_FLOAT32_VEC3,
       std::vector<Vec3>((const Vec3 *)placed.data(),
           (const Vec3 *)placed.data() + d.geometryVertices));
-  const float radius = d.points || d.lines ? m_objectRadius : 0.f;
+  const float radius = d.points  ? m_objectRadius * kPointOverLineRadius
+                       : d.lines ? m_objectRadius
+                                 : 0.f;
   if (d.points || d.lines)
     scenes::setFloat(m_device, geometry, "radius", radius);
   if (d.lines)
@@ -2742,12 +2810,7 @@ LoadResult GltfImporter::load()
 
   const bool transformArrays =
       scenes::hasExtension(m_device, "ANARI_KHR_INSTANCE_TRANSFORM_ARRAY");
-  m_unlitMaterials =
-      scenes::hasExtension(m_device, "ANARI_PRISM_MATERIAL_UNLIT");
-  m_baseColorFactor =
-      scenes::hasExtension(m_device, "ANARI_PRISM_MATERIAL_BASE_COLOR_FACTOR");
-  m_singleSided =
-      scenes::hasExtension(m_device, "ANARI_PRISM_MATERIAL_DOUBLE_SIDED");
+  queryMaterialExtensions();
   choosePointAndLineRadius();
   std::vector<ANARIObject> instances;
   for (const auto &[meshIndex, placements] : m_meshPlacements) {

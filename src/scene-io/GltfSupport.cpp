@@ -12,6 +12,7 @@ using Json = nlohmann::json;
 
 // Extensions whose meaning we render (or can safely read as plain data).
 const std::set<std::string> kSupported = {
+    "KHR_materials_anisotropy",
     "KHR_materials_clearcoat",
     "KHR_materials_emissive_strength",
     "KHR_materials_ior",

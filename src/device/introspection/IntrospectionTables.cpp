@@ -84,10 +84,11 @@ enum : int {
   kKhrSpatialFieldUnstructured = 61,
   kKhrVolumeTransferFunction1d = 62,
   kPrismLightDecay = 63,
-  kPrismMaterialBaseColorFactor = 64,
-  kPrismMaterialDoubleSided = 65,
-  kPrismMaterialUnlit = 66,
-  kPrismRenderers = 67,
+  kPrismMaterialAnisotropy = 64,
+  kPrismMaterialBaseColorFactor = 65,
+  kPrismMaterialDoubleSided = 66,
+  kPrismMaterialUnlit = 67,
+  kPrismRenderers = 68,
 };
 
 // Type lists, ANARI_UNKNOWN-terminated.
@@ -2420,7 +2421,7 @@ constexpr ParameterEntry kParameters25[] = {
         .extension = kKhrMaterialMatte},
     {.name = "doubleSided",
         .types = {kTypeList16, 1},
-        .description = "false: back faces are invisible to every ray",
+        .description = "false: back faces are invisible, and let light through",
         .defaultValue = kDefault25_doubleSided,
         .extension = kPrismMaterialDoubleSided}};
 constexpr int kContributors25[] = {kPrismMaterialDoubleSided};
@@ -2468,6 +2469,16 @@ constexpr float kDefault26_iridescence[] = {0.f};
 constexpr float kDefault26_iridescenceIor[] = {1.3f};
 // iridescenceThickness default: ANARI_FLOAT32
 constexpr float kDefault26_iridescenceThickness[] = {0.f};
+// anisotropyStrength default: ANARI_FLOAT32
+constexpr float kDefault26_anisotropyStrength[] = {0.f};
+// anisotropyStrength minimum: ANARI_FLOAT32
+constexpr float kMinimum26_anisotropyStrength[] = {0.f};
+// anisotropyStrength maximum: ANARI_FLOAT32
+constexpr float kMaximum26_anisotropyStrength[] = {1.f};
+// anisotropyRotation default: ANARI_FLOAT32
+constexpr float kDefault26_anisotropyRotation[] = {0.f};
+// anisotropyDirection default: ANARI_FLOAT32_VEC3
+constexpr float kDefault26_anisotropyDirection[] = {1.f, 0.f, 1.f};
 // baseColorFactor default: ANARI_FLOAT32_VEC3
 constexpr float kDefault26_baseColorFactor[] = {1.f, 1.f, 1.f};
 // doubleSided default: ANARI_BOOL
@@ -2620,6 +2631,31 @@ constexpr ParameterEntry kParameters26[] = {
         .description = "iridescence thickness",
         .defaultValue = kDefault26_iridescenceThickness,
         .extension = kKhrMaterialPhysicallyBased},
+    {.name = "anisotropyStrength",
+        .types = {kTypeList38, 3},
+        .tags = kTags_attribute,
+        .description = "how much wider the lobe is along the direction than "
+                       "across it, 0 (isotropic) to 1",
+        .defaultValue = kDefault26_anisotropyStrength,
+        .minimum = kMinimum26_anisotropyStrength,
+        .maximum = kMaximum26_anisotropyStrength,
+        .extension = kPrismMaterialAnisotropy},
+    {.name = "anisotropyRotation",
+        .types = {kTypeList38, 3},
+        .tags = kTags_attribute,
+        .description = "turns the direction by this angle in radians, from the "
+                       "tangent towards the bitangent",
+        .defaultValue = kDefault26_anisotropyRotation,
+        .extension = kPrismMaterialAnisotropy},
+    {.name = "anisotropyDirection",
+        .types = {kTypeList37, 3},
+        .tags = kTags_attribute,
+        .description =
+            "xy: the direction in tangent space (need not be unit length), z: "
+            "multiplies anisotropyStrength; glTF's anisotropyTexture with its "
+            "red and green mapped to [-1, 1]",
+        .defaultValue = kDefault26_anisotropyDirection,
+        .extension = kPrismMaterialAnisotropy},
     {.name = "baseColorFactor",
         .types = {kTypeList37, 3},
         .tags = kTags_attribute_color,
@@ -2630,7 +2666,7 @@ constexpr ParameterEntry kParameters26[] = {
         .extension = kPrismMaterialBaseColorFactor},
     {.name = "doubleSided",
         .types = {kTypeList16, 1},
-        .description = "false: back faces are invisible to every ray",
+        .description = "false: back faces are invisible, and let light through",
         .defaultValue = kDefault26_doubleSided,
         .extension = kPrismMaterialDoubleSided},
     {.name = "unlit",
@@ -2640,7 +2676,8 @@ constexpr ParameterEntry kParameters26[] = {
             "but opacity, alphaMode and alphaCutoff is ignored",
         .defaultValue = kDefault26_unlit,
         .extension = kPrismMaterialUnlit}};
-constexpr int kContributors26[] = {kPrismMaterialBaseColorFactor,
+constexpr int kContributors26[] = {kPrismMaterialAnisotropy,
+    kPrismMaterialBaseColorFactor,
     kPrismMaterialDoubleSided,
     kPrismMaterialUnlit};
 
@@ -3940,11 +3977,12 @@ const char *const kExtensions[] = {"ANARI_EXT_SAMPLER_COMPRESSED_FORMAT_ASTC",
     "ANARI_KHR_SPATIAL_FIELD_UNSTRUCTURED",
     "ANARI_KHR_VOLUME_TRANSFER_FUNCTION1D",
     "ANARI_PRISM_LIGHT_DECAY",
+    "ANARI_PRISM_MATERIAL_ANISOTROPY",
     "ANARI_PRISM_MATERIAL_BASE_COLOR_FACTOR",
     "ANARI_PRISM_MATERIAL_DOUBLE_SIDED",
     "ANARI_PRISM_MATERIAL_UNLIT",
     "ANARI_PRISM_RENDERERS"};
-const size_t kExtensionCount = 68;
+const size_t kExtensionCount = 69;
 
 const char *const kAttributes[] = {"color",
     "worldPosition",
@@ -4140,8 +4178,8 @@ const ObjectEntry kObjects[] = {
         .subtype = "physicallyBased",
         .description = "physically based material object",
         .extension = kKhrMaterialPhysicallyBased,
-        .contributors = {kContributors26, 3},
-        .parameters = {kParameters26, 28}},
+        .contributors = {kContributors26, 4},
+        .parameters = {kParameters26, 31}},
     // ANARI_RENDERER "default"
     {.type = ANARI_RENDERER,
         .subtype = "default",

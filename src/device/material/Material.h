@@ -91,7 +91,9 @@ class Material : public Object
     if (m_readsAttributes)
       return;
     const MaterialShading shading = shade(AttributeValues{});
-    if (!shading.hasNormalMap && !shading.hasCoatNormalMap)
+    // The maps and the anisotropy's direction need the hit's tangents.
+    if (!shading.hasNormalMap && !shading.hasCoatNormalMap
+        && !(shading.bsdf.anisotropy > 0.f))
       m_constantShading.emplace(ConstantShading{shading, Bsdf(shading.bsdf)});
   }
   float alphaCutoff() const
@@ -127,6 +129,12 @@ class Material : public Object
   void readDoubleSided()
   {
     m_doubleSided = readBool("doubleSided", true);
+  }
+  // Keeps back faces whatever doubleSided says: a volume's back faces are
+  // where rays inside it leave, and culling them would trap those rays.
+  void keepBackFaces()
+  {
+    m_doubleSided = true;
   }
 
   // MaterialInput::read() uses the protected parameter readers.

@@ -21,6 +21,10 @@ struct MaterialShading
   // Tangent-space normal maps, when the material has them.
   bool hasNormalMap{false};
   float3 normalMap{0.f, 0.f, 1.f};
+  // KHR_materials_anisotropy's direction in tangent space (x along the
+  // tangent), when bsdf.anisotropy > 0: the integrator turns it into
+  // bsdf.anisotropyDirection in its local frame.
+  float2 anisotropyDirection{1.f, 0.f};
   bool hasCoatNormalMap{false};
   float3 coatNormalMap{0.f, 0.f, 1.f};
   // Absorption per unit length inside, behind a volume boundary.

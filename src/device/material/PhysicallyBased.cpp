@@ -48,6 +48,13 @@ void PhysicallyBased::commitParameters()
   // The JSON (unlike the spec's table) also lets ior vary over the surface.
   input(in.ior, "ior");
   input(in.thickness, "thickness");
+  auto mayExceedZero = [](const MaterialInput<float> &input) {
+    return !input.isConstant() || input.constant() > 0.f;
+  };
+  // Transmission with a thickness bounds a medium (KHR_materials_volume):
+  // rays inside it must meet its back faces to get out.
+  if (mayExceedZero(in.transmission) && mayExceedZero(in.thickness))
+    keepBackFaces();
   in.attenuationDistance =
       read<float>("attenuationDistance", ANARI_FLOAT32, in.attenuationDistance);
   in.attenuationColor =
@@ -58,6 +65,9 @@ void PhysicallyBased::commitParameters()
   in.iridescenceIor =
       read<float>("iridescenceIor", ANARI_FLOAT32, in.iridescenceIor);
   input(in.iridescenceThickness, "iridescenceThickness");
+  input(in.anisotropyStrength, "anisotropyStrength");
+  input(in.anisotropyRotation, "anisotropyRotation");
+  input(in.anisotropyDirection, "anisotropyDirection");
   m_readsAttributes =
       m_colorReadsAttributes || !in.metallic.isConstant()
       || !in.roughness.isConstant() || !in.normal.isConstant()
@@ -67,7 +77,10 @@ void PhysicallyBased::commitParameters()
       || !in.clearcoatNormal.isConstant() || !in.transmission.isConstant()
       || !in.ior.isConstant() || !in.thickness.isConstant()
       || !in.sheenColor.isConstant() || !in.sheenRoughness.isConstant()
-      || !in.iridescence.isConstant() || !in.iridescenceThickness.isConstant();
+      || !in.iridescence.isConstant() || !in.iridescenceThickness.isConstant()
+      || !in.anisotropyStrength.isConstant()
+      || !in.anisotropyRotation.isConstant()
+      || !in.anisotropyDirection.isConstant();
   m_inputs = std::move(in);
 }
 
@@ -101,6 +114,7 @@ MaterialShading PhysicallyBased::shade(const AttributeValues &attributes) const
   out.hasNormalMap =
       m_inputs.normal.source() != MaterialInput<float3>::Source::Constant;
   out.normalMap = values.normal;
+  out.anisotropyDirection = values.anisotropyDirection;
   if (values.transmission > 0.f && values.thickness > 0.f)
     out.attenuation = volumeAttenuationCoefficient(
         values.attenuationColor, values.attenuationDistance);
@@ -146,11 +160,25 @@ float3 PhysicallyBased::usableEmission(const float3 &emissive)
   return {usable(emissive.x), usable(emissive.y), usable(emissive.z)};
 }
 
+void PhysicallyBased::resolveAnisotropy(
+    const AttributeValues &attributes, float &strength, float2 &direction) const
+{
+  const Inputs &in = m_inputs;
+  const float3 texel = in.anisotropyDirection.evaluate(attributes);
+  strength = in.anisotropyStrength.evaluate(attributes) * texel.z;
+  const float rotation = in.anisotropyRotation.evaluate(attributes);
+  const float c = std::cos(rotation), s = std::sin(rotation);
+  direction = {c * texel.x - s * texel.y, s * texel.x + c * texel.y};
+}
+
 PhysicallyBased::Values PhysicallyBased::evaluate(
     const AttributeValues &attributes) const
 {
   const Inputs &in = m_inputs;
   const float4 base = baseColorAndOpacity(attributes);
+  float anisotropy = 0.f;
+  float2 anisotropyDirection{1.f, 0.f};
+  resolveAnisotropy(attributes, anisotropy, anisotropyDirection);
   return {xyz(base),
       base.w,
       in.metallic.evaluate(attributes),
@@ -172,7 +200,9 @@ PhysicallyBased::Values PhysicallyBased::evaluate(
       in.sheenRoughness.evaluate(attributes),
       in.iridescence.evaluate(attributes),
       in.iridescenceIor,
-      in.iridescenceThickness.evaluate(attributes)};
+      in.iridescenceThickness.evaluate(attributes),
+      anisotropy,
+      anisotropyDirection};
 }
 
 void PhysicallyBased::dropReferences()

@@ -47,6 +47,13 @@ class PhysicallyBased : public Material
     MaterialInput<float> iridescence{0.f};
     float iridescenceIor{1.3f};
     MaterialInput<float> iridescenceThickness{0.f};
+    // PRISM_MATERIAL_ANISOTROPY (KHR_materials_anisotropy): the specular
+    // lobe is widest along anisotropyDirection.xy (tangent space) turned
+    // by anisotropyRotation (radians, from the tangent towards the
+    // bitangent), by anisotropyStrength times anisotropyDirection.z.
+    MaterialInput<float> anisotropyStrength{0.f};
+    MaterialInput<float> anisotropyRotation{0.f};
+    MaterialInput<float3> anisotropyDirection{float3{1.f, 0.f, 1.f}};
     // PRISM_MATERIAL_UNLIT: the base color emitted over a black BSDF.
     bool unlit{false};
   };
@@ -77,6 +84,9 @@ class PhysicallyBased : public Material
     float iridescence;
     float iridescenceIor;
     float iridescenceThickness;
+    // Strength (times the direction's z) and the turned direction.
+    float anisotropyStrength;
+    float2 anisotropyDirection;
   };
 
   explicit PhysicallyBased(DeviceState &device);
@@ -100,6 +110,11 @@ class PhysicallyBased : public Material
 
  private:
   MaterialShading shadeUnlit(const AttributeValues &attributes) const;
+  // anisotropyStrength, Rotation and Direction resolved into the strength
+  // and the tangent-space direction.
+  void resolveAnisotropy(const AttributeValues &attributes,
+      float &strength,
+      float2 &direction) const;
 
   Inputs m_inputs;
 };

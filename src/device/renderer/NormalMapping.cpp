@@ -5,27 +5,38 @@
 
 namespace prism {
 
+bool tangentFrame(const SurfaceHit &surface,
+    const rt::Hit &hit,
+    const float3 &normal,
+    float3 &tangent,
+    float3 &bitangent)
+{
+  float4 objectTangent;
+  if (!surface.surface->geometry()->tangentAt(hit, objectTangent)) {
+    orthonormalBasis(normal, tangent, bitangent);
+    return true;
+  }
+  const float3 t{objectTangent.x, objectTangent.y, objectTangent.z};
+  tangent = surface.placement->identity
+                ? t
+                : transformDirection(surface.placement->worldFromObject, t);
+  tangent = tangent - normal * dot(normal, tangent);
+  if (!(lengthSquared(tangent) > 1e-20f))
+    return false;
+  tangent = normalize(tangent);
+  bitangent = cross(normal, tangent) * objectTangent.w;
+  return true;
+}
+
 float3 normalMapped(const SurfaceHit &surface,
     const rt::Hit &hit,
     const float3 &normal,
     const float3 &mapped,
     const float3 &towardsViewer)
 {
-  float4 objectTangent;
   float3 tangent, bitangent;
-  if (surface.surface->geometry()->tangentAt(hit, objectTangent)) {
-    const float3 t{objectTangent.x, objectTangent.y, objectTangent.z};
-    tangent = surface.placement->identity
-                  ? t
-                  : transformDirection(surface.placement->worldFromObject, t);
-    tangent = tangent - normal * dot(normal, tangent);
-    if (!(lengthSquared(tangent) > 1e-20f))
-      return normal;
-    tangent = normalize(tangent);
-    bitangent = cross(normal, tangent) * objectTangent.w;
-  } else {
-    orthonormalBasis(normal, tangent, bitangent);
-  }
+  if (!tangentFrame(surface, hit, normal, tangent, bitangent))
+    return normal;
   const float3 bent =
       tangent * mapped.x + bitangent * mapped.y + normal * mapped.z;
   if (!(lengthSquared(bent) > 1e-20f))

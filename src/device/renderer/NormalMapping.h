@@ -6,6 +6,16 @@
 
 namespace prism {
 
+// The tangent frame around `normal` (world space): the geometry's tangent
+// made orthogonal to it and the bitangent from the tangent's sign, or any
+// frame around it without tangents. False when the tangent is parallel to
+// the normal.
+bool tangentFrame(const SurfaceHit &surface,
+    const rt::Hit &hit,
+    const float3 &normal,
+    float3 &tangent,
+    float3 &bitangent);
+
 // `normal` (the geometry's own shading normal at the hit, world space)
 // bent by a tangent-space normal map value; `normal` itself where the map
 // gives nothing usable or would turn the surface away from the viewer.

@@ -535,6 +535,15 @@ PathTracer::Scattering PathTracer::scatteringAt(
     if (shading.hasCoatNormalMap)
       inputs.clearcoatNormal = frame.toLocal(normalMapped(
           surface, b.hit, unbent, shading.coatNormalMap, towardsViewer));
+    // The anisotropy's direction, from tangent space to ours.
+    float3 tangent, bitangent;
+    if (inputs.anisotropy > 0.f
+        && tangentFrame(surface, b.hit, normal, tangent, bitangent)) {
+      const float3 local =
+          frame.toLocal(tangent * shading.anisotropyDirection.x
+                        + bitangent * shading.anisotropyDirection.y);
+      inputs.anisotropyDirection = {local.x, local.y};
+    }
     bsdf = &storage.emplace(inputs);
   }
   return Scattering{frame,

@@ -225,24 +225,39 @@ PRISM_SAME_OFFSET(geometryId, hit.geomID);
 PRISM_SAME_OFFSET(instanceId, hit.instID);
 #undef PRISM_SAME_OFFSET
 
-// Embree filter: rejects hits on a geometry's back side (the ray along its
-// geometric normal). Ray and normal are in the same space (the instance's,
-// under instancing), and the sign of their dot product is the same in every
-// space, so mirroring transforms need no care.
+// The sign of (ray direction . geometric normal) of hit i: > 0 on the
+// geometry's back side. Ray and normal are in the same space (the
+// instance's, under instancing), and the sign of their dot product is the
+// same in every space, so mirroring transforms need no care.
+float facing(const RTCFilterFunctionNArguments *args, unsigned i)
+{
+  return RTCRayN_dir_x(args->ray, args->N, i)
+             * RTCHitN_Ng_x(args->hit, args->N, i)
+         + RTCRayN_dir_y(args->ray, args->N, i)
+               * RTCHitN_Ng_y(args->hit, args->N, i)
+         + RTCRayN_dir_z(args->ray, args->N, i)
+               * RTCHitN_Ng_z(args->hit, args->N, i);
+}
+
+// Embree filter of camera and bounce rays: rejects hits on a geometry's
+// back side (the ray along its geometric normal).
 void rejectBackFaces(const RTCFilterFunctionNArguments *args)
 {
-  for (unsigned i = 0; i < args->N; i++) {
-    if (args->valid[i] != -1)
-      continue;
-    const float facing = RTCRayN_dir_x(args->ray, args->N, i)
-                             * RTCHitN_Ng_x(args->hit, args->N, i)
-                         + RTCRayN_dir_y(args->ray, args->N, i)
-                               * RTCHitN_Ng_y(args->hit, args->N, i)
-                         + RTCRayN_dir_z(args->ray, args->N, i)
-                               * RTCHitN_Ng_z(args->hit, args->N, i);
-    if (facing > 0.f)
+  for (unsigned i = 0; i < args->N; i++)
+    if (args->valid[i] == -1 && facing(args, i) > 0.f)
       args->valid[i] = 0;
-  }
+}
+
+// Embree filter of shadow rays. Light runs against them, from the light to
+// the shaded point: it passes a face whose back it meets, which is the face
+// the shadow ray meets from the front. So a single-sided surface shadows
+// only what lies behind it seen from the light, and light reaches exactly
+// where the camera sees through back faces.
+void rejectFacesLitFromBehind(const RTCFilterFunctionNArguments *args)
+{
+  for (unsigned i = 0; i < args->N; i++)
+    if (args->valid[i] == -1 && facing(args, i) < 0.f)
+      args->valid[i] = 0;
 }
 
 Hit toHit(const RTCRayHit &rh)
@@ -497,7 +512,7 @@ void Scene::cullBackFaces(uint32_t id)
     return;
   RTCGeometry geometry = rtcGetGeometry(m_scene, id);
   rtcSetGeometryIntersectFilterFunction(geometry, rejectBackFaces);
-  rtcSetGeometryOccludedFilterFunction(geometry, rejectBackFaces);
+  rtcSetGeometryOccludedFilterFunction(geometry, rejectFacesLitFromBehind);
   rtcCommitGeometry(geometry);
 }
 

@@ -2,6 +2,7 @@
 
 #include "AlbedoTables.h"
 #include "Fresnel.h"
+#include "GgxLobe.h"
 #include "Microfacet.h"
 #include "Sampling.h"
 
@@ -39,6 +40,11 @@ float mean(float3 v)
 float finiteOr(float value, float fallback)
 {
   return std::isfinite(value) ? value : fallback;
+}
+
+float2 finiteOr(float2 value, float2 fallback)
+{
+  return {finiteOr(value.x, fallback.x), finiteOr(value.y, fallback.y)};
 }
 
 float3 finiteOr(float3 value, float3 fallback)
@@ -82,7 +88,7 @@ struct Refraction
 };
 
 Refraction microfacetRefraction(
-    float3 wo, float3 wi, float etaO, float etaI, float alpha)
+    float3 wo, float3 wi, float etaO, float etaI, const GgxLobe &lobe)
 {
   Refraction r;
   // The generalised half vector, on the side of the normal.
@@ -102,11 +108,10 @@ Refraction microfacetRefraction(
   const float denominator2 = denominator * denominator;
   if (!(denominator2 > 1e-12f))
     return r;
-  const float d = ggxD(h, alpha);
-  r.btdf = cosOH * -cosIH / (wo.z * -wi.z) * etaO * etaO * d
-           * ggxG2(wo, wi, alpha) / denominator2;
-  r.pdf =
-      ggxG1(wo, alpha) * cosOH * d / wo.z * etaI * etaI * -cosIH / denominator2;
+  const float d = lobe.D(h);
+  r.btdf = cosOH * -cosIH / (wo.z * -wi.z) * etaO * etaO * d * lobe.G2(wo, wi)
+           / denominator2;
+  r.pdf = lobe.G1(wo) * cosOH * d / wo.z * etaI * etaI * -cosIH / denominator2;
   r.cosOH = cosOH;
   return r;
 }
@@ -159,7 +164,10 @@ Bsdf::Bsdf(const BsdfInputs &in)
   m_metallic = unitClamp(in.metallic, 0.f);
   m_roughness = unitClamp(in.roughness, 1.f);
   m_alpha = m_roughness * m_roughness;
-  m_specularDelta = m_alpha < kDeltaAlpha;
+  m_lobe = GgxLobe(m_roughness,
+      unitClamp(in.anisotropy, 0.f),
+      finiteOr(in.anisotropyDirection, float2{1.f, 0.f}));
+  m_specularDelta = m_alpha < kDeltaAlpha && !m_lobe.anisotropic();
 
   // KHR_materials_specular: f0 from the ior, tinted and clamped, then
   // weighted; f90 is the weight alone.
@@ -218,8 +226,9 @@ Bsdf::Bsdf(const BsdfInputs &in)
     return;
 
   // Multiple scattering: Kulla & Conty's lobe, coloured per metallic mix.
-  const GgxAlbedo average =
-      m_specularDelta ? mirrorAlbedo(1.f) : ggxAlbedo(1.f, m_roughness);
+  const GgxAlbedo average = m_specularDelta
+                                ? mirrorAlbedo(1.f)
+                                : ggxAlbedo(1.f, m_lobe.albedoRoughness());
   m_ggxAverage = average.average;
   const float3 dielectricAverageF =
       averageSchlick(m_dielectricF0, m_dielectricF90);
@@ -252,8 +261,9 @@ Bsdf::Bsdf(const BsdfInputs &in)
 
 Bsdf::Albedo Bsdf::specularAlbedo(float cosTheta) const
 {
-  const GgxAlbedo a = m_specularDelta ? mirrorAlbedo(cosTheta)
-                                      : ggxAlbedo(cosTheta, m_roughness);
+  const GgxAlbedo a = m_specularDelta
+                          ? mirrorAlbedo(cosTheta)
+                          : ggxAlbedo(cosTheta, m_lobe.albedoRoughness());
   return {a.total, a.schlick, a.meanCos};
 }
 
@@ -476,10 +486,10 @@ void Bsdf::evaluate(const Context &c, float3 wiIn, float3 &f, float &pdf) const
         coatScale * min(1.f - c.sheenO, 1.f - sheenLayerAlbedo(cosI));
     const Albedo specularI = specularAlbedo(cosI);
     if (!m_specularDelta) {
-      const float d = ggxD(h, m_alpha);
+      const float d = m_lobe.D(h);
       f += specularFresnel(cosOH)
-           * (scale * d * ggxG2(wo, wi, m_alpha) / (4.f * cosO * cosI));
-      pdf += c.probability[kSpecular] * ggxG1(wo, m_alpha) * d / (4.f * cosO);
+           * (scale * d * m_lobe.G2(wo, wi) / (4.f * cosO * cosI));
+      pdf += c.probability[kSpecular] * m_lobe.G1(wo) * d / (4.f * cosO);
       if (m_ggxAverage < 1.f) {
         // Kulla & Conty: (1 - E(mu_o)) (1 - E(mu_i)) / (pi (1 - E_avg))
         // integrates to exactly the energy single scattering lost.
@@ -517,20 +527,20 @@ void Bsdf::evaluate(const Context &c, float3 wiIn, float3 &f, float &pdf) const
     const float3 wr{wi.x, wi.y, -wi.z};
     const float cosR = wr.z;
     const float3 h = normalize(wo + wr);
-    const float d = ggxD(h, m_alpha);
-    float unit = d * ggxG2(wo, wr, m_alpha) / (4.f * cosO * cosR);
+    const float d = m_lobe.D(h);
+    float unit = d * m_lobe.G2(wo, wr) / (4.f * cosO * cosR);
     if (m_ggxAverage < 1.f) {
       unit += (1.f - c.specularO.total) * (1.f - specularAlbedo(cosR).total)
               * kInvPi / (1.f - m_ggxAverage);
     }
     f = m_baseColor * (scale * (1.f - c.dielectricO) * unit);
-    pdf = c.probability[kTransmission] * ggxG1(wo, m_alpha) * d / (4.f * cosO)
+    pdf = c.probability[kTransmission] * m_lobe.G1(wo) * d / (4.f * cosO)
           + c.probability[kTransmissionMulti] * cosR * kInvPi;
     return;
   }
   // Entering the volume: each microfacet splits F / 1 - F, tinted by
   // baseColor once on the way in (never on the way out).
-  const Refraction r = microfacetRefraction(wo, wi, 1.f, m_ior, m_alpha);
+  const Refraction r = microfacetRefraction(wo, wi, 1.f, m_ior, m_lobe);
   if (r.pdf == 0.f)
     return;
   const float fresnel = maxComponent(dielectricFresnel(r.cosOH));
@@ -549,12 +559,12 @@ void Bsdf::evaluateInterior(
   if (wi.z > 0.f) {
     const float3 h = normalize(wo + wi);
     const float3 fresnel = interfaceFresnel(dot(wo, h), m_ior);
-    const float d = ggxD(h, m_alpha);
-    f = fresnel * (d * ggxG2(wo, wi, m_alpha) / (4.f * c.cosO * wi.z));
-    pdf = maxComponent(fresnel) * ggxG1(wo, m_alpha) * d / (4.f * c.cosO);
+    const float d = m_lobe.D(h);
+    f = fresnel * (d * m_lobe.G2(wo, wi) / (4.f * c.cosO * wi.z));
+    pdf = maxComponent(fresnel) * m_lobe.G1(wo) * d / (4.f * c.cosO);
     return;
   }
-  const Refraction r = microfacetRefraction(wo, wi, m_ior, 1.f, m_alpha);
+  const Refraction r = microfacetRefraction(wo, wi, m_ior, 1.f, m_lobe);
   if (r.pdf == 0.f)
     return;
   const float transmitted =
@@ -645,7 +655,7 @@ BsdfSample Bsdf::sampleInterior(const Context &c, float2 u, float uLobe) const
         float3{1.f, 1.f, 1.f} * ((1.f - reflect) * m_ior * m_ior);
     return deltaSample(wi, c.sign, transmitted, 1.f - reflect, 1.f / m_ior);
   }
-  const float3 h = sampleGgxVisibleNormal(wo, m_alpha, m_alpha, u);
+  const float3 h = m_lobe.sampleVisibleNormal(wo, u);
   const float reflect = maxComponent(interfaceFresnel(dot(wo, h), m_ior));
   float3 wi;
   if (uLobe < reflect) {
@@ -672,30 +682,42 @@ BsdfSample Bsdf::sampleInterior(const Context &c, float2 u, float uLobe) const
 
 BsdfSample Bsdf::sample(float3 woIn, float2 u, float uLobe) const
 {
-  if (m_lambertOnly) {
-    float sign = 1.f;
-    if (!viewerSide(woIn, sign))
-      return {};
-    // One lobe sampled exactly by its density: f cos / pdf = baseColor.
-    const float3 wi = sampleCosineHemisphere(u);
-    if (!(wi.z > 0.f) || maxComponent(m_baseColor) <= 0.f)
-      return {};
-    BsdfSample s;
-    s.wi = {wi.x, wi.y, wi.z * sign};
-    s.f = m_baseColor * kInvPi;
-    s.pdf = wi.z * kInvPi;
-    s.weight = m_baseColor;
-    s.relativeIor = 1.f;
-    s.flags = kBsdfReflection;
-    return s;
-  }
+  if (m_lambertOnly)
+    return sampleLambert(woIn, u);
   const Context c = prepare(woIn);
   if (!c.valid)
     return {};
   if (c.inside)
     return sampleInterior(c, u, uLobe);
-  const float3 wo = c.wo;
+  const int lobe = chooseLobe(c, uLobe);
+  float3 wi{0.f, 0.f, 1.f};
+  BsdfSample whole;
+  if (!sampleDirection(c, lobe, u, wi, whole))
+    return whole;
+  return sampleFromDirection(c, lobe, wi);
+}
 
+BsdfSample Bsdf::sampleLambert(float3 woIn, float2 u) const
+{
+  float sign = 1.f;
+  if (!viewerSide(woIn, sign))
+    return {};
+  // One lobe sampled exactly by its density: f cos / pdf = baseColor.
+  const float3 wi = sampleCosineHemisphere(u);
+  if (!(wi.z > 0.f) || maxComponent(m_baseColor) <= 0.f)
+    return {};
+  BsdfSample s;
+  s.wi = {wi.x, wi.y, wi.z * sign};
+  s.f = m_baseColor * kInvPi;
+  s.pdf = wi.z * kInvPi;
+  s.weight = m_baseColor;
+  s.relativeIor = 1.f;
+  s.flags = kBsdfReflection;
+  return s;
+}
+
+int Bsdf::chooseLobe(const Context &c, float uLobe) const
+{
   int lobe = kLobeCount - 1;
   float cumulative = 0.f;
   for (int k = 0; k < kLobeCount; k++) {
@@ -708,32 +730,40 @@ BsdfSample Bsdf::sample(float3 woIn, float2 u, float uLobe) const
   // Rounding can leave uLobe above the sum: take the last possible lobe.
   while (lobe > 0 && c.probability[lobe] == 0.f)
     lobe--;
-  const float probability = c.probability[lobe];
+  return lobe;
+}
 
-  float3 wi{0.f, 0.f, 1.f};
+// A direction from `lobe` into wi (our frame), to be evaluated over every
+// lobe; or false, with `whole` the whole sample: a delta lobe's, or none.
+bool Bsdf::sampleDirection(
+    const Context &c, int lobe, float2 u, float3 &wi, BsdfSample &whole) const
+{
+  const float3 wo = c.wo;
+  const float probability = c.probability[lobe];
   switch (lobe) {
   case kCoat: {
     const float3 woC = toCoat(c, wo);
     if (m_coatDelta) {
       const float3 mirrored = fromCoat(c, mirror(woC));
       if (!(mirrored.z > 0.f))
-        return {}; // the coat reflects it below the surface
+        return false; // the coat reflects it below the surface
       const float reflectance =
           m_clearcoat * fresnelSchlick(kCoatF0, 1.f, woC.z);
-      return deltaSample(mirrored,
+      whole = deltaSample(mirrored,
           c.sign,
           float3{reflectance, reflectance, reflectance},
           probability,
           1.f);
+      return false;
     }
     wi = fromCoat(c,
         reflectDirection(
             woC, sampleGgxVisibleNormal(woC, m_coatAlpha, m_coatAlpha, u)));
-    break;
+    return true;
   }
   case kSheen:
     wi = sampleUniformHemisphere(u);
-    break;
+    return true;
   case kSpecular: {
     if (m_specularDelta) {
       // The mirror direction has mu_i = mu_o: the sheen scaling evaluates
@@ -741,67 +771,78 @@ BsdfSample Bsdf::sample(float3 woIn, float2 u, float uLobe) const
       const float scale = (1.f - c.coatO)
                           * (1.f - coatAlbedo(toCoat(c, mirror(wo)).z))
                           * (1.f - c.sheenO);
-      return deltaSample(mirror(wo),
+      whole = deltaSample(mirror(wo),
           c.sign,
           specularFresnel(c.cosO) * scale,
           probability,
           1.f);
+      return false;
     }
-    wi = reflectDirection(wo, sampleGgxVisibleNormal(wo, m_alpha, m_alpha, u));
-    break;
+    wi = reflectDirection(wo, m_lobe.sampleVisibleNormal(wo, u));
+    return true;
   }
   case kSpecularMulti:
   case kDiffuse:
     wi = sampleCosineHemisphere(u);
-    break;
-  case kTransmission: {
-    const float scale =
-        (1.f - c.coatO) * (1.f - c.sheenO) * m_transmissionWeight;
-    if (!m_volume) {
-      if (m_specularDelta) {
-        return deltaSample(-wo,
-            c.sign,
-            m_baseColor * (scale * (1.f - c.dielectricO)),
-            probability,
-            1.f);
-      }
-      const float3 wr =
-          reflectDirection(wo, sampleGgxVisibleNormal(wo, m_alpha, m_alpha, u));
-      wi = {wr.x, wr.y, -wr.z};
-      break;
-    }
-    if (m_specularDelta) {
-      float3 refracted;
-      if (!refractDirection(wo, {0.f, 0.f, 1.f}, 1.f / m_ior, refracted))
-        return {};
-      const float fresnel = maxComponent(dielectricFresnel(c.cosO));
-      // Entering the medium, radiance scales by 1 / ior^2.
-      return deltaSample(refracted,
-          c.sign,
-          m_baseColor * (scale * (1.f - fresnel) / (m_ior * m_ior)),
-          probability,
-          m_ior);
-    }
-    const float3 h = sampleGgxVisibleNormal(wo, m_alpha, m_alpha, u);
-    if (!refractDirection(wo, h, 1.f / m_ior, wi))
-      return {};
-    break;
-  }
+    return true;
+  case kTransmission:
+    return sampleTransmission(c, u, wi, whole);
   case kTransmissionMulti: {
     const float3 wr = sampleCosineHemisphere(u);
     wi = {wr.x, wr.y, -wr.z};
-    break;
+    return true;
   }
   default:
-    return {};
+    return false;
   }
+}
 
+// The transmission lobe's part of sampleDirection().
+bool Bsdf::sampleTransmission(
+    const Context &c, float2 u, float3 &wi, BsdfSample &whole) const
+{
+  const float3 wo = c.wo;
+  const float probability = c.probability[kTransmission];
+  const float scale = (1.f - c.coatO) * (1.f - c.sheenO) * m_transmissionWeight;
+  if (!m_volume) {
+    if (m_specularDelta) {
+      whole = deltaSample(-wo,
+          c.sign,
+          m_baseColor * (scale * (1.f - c.dielectricO)),
+          probability,
+          1.f);
+      return false;
+    }
+    const float3 wr = reflectDirection(wo, m_lobe.sampleVisibleNormal(wo, u));
+    wi = {wr.x, wr.y, -wr.z};
+    return true;
+  }
+  if (m_specularDelta) {
+    float3 refracted;
+    if (!refractDirection(wo, {0.f, 0.f, 1.f}, 1.f / m_ior, refracted))
+      return false;
+    const float fresnel = maxComponent(dielectricFresnel(c.cosO));
+    // Entering the medium, radiance scales by 1 / ior^2.
+    whole = deltaSample(refracted,
+        c.sign,
+        m_baseColor * (scale * (1.f - fresnel) / (m_ior * m_ior)),
+        probability,
+        m_ior);
+    return false;
+  }
+  const float3 h = m_lobe.sampleVisibleNormal(wo, u);
+  return refractDirection(wo, h, 1.f / m_ior, wi);
+}
+
+// The sample of a non-delta lobe's direction wi (our frame): the mixture
+// density and the summed f over every non-delta lobe, the one-sample MIS
+// estimator, consistent with eval() and pdf() by construction.
+BsdfSample Bsdf::sampleFromDirection(
+    const Context &c, int lobe, float3 wi) const
+{
   const bool transmission = lobe == kTransmission || lobe == kTransmissionMulti;
   if (transmission ? wi.z >= 0.f : wi.z <= 0.f)
     return {};
-  // The mixture density and the summed f over every non-delta lobe: the
-  // one-sample MIS estimator, consistent with eval() and pdf() by
-  // construction.
   const float3 wiCaller{wi.x, wi.y, wi.z * c.sign};
   BsdfSample s;
   float3 f;

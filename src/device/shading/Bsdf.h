@@ -14,6 +14,7 @@
 //    transmission.
 #pragma once
 
+#include "GgxLobe.h"
 #include "math/Vec.h"
 
 #include <cmath>
@@ -50,6 +51,11 @@ struct BsdfInputs
   float iridescence{0.f};
   float iridescenceIor{1.3f};
   float iridescenceThickness{0.f}; // nanometres
+  // KHR_materials_anisotropy: the base layer's GGX lobe is widest along
+  // anisotropyDirection (local frame, the integrator turns the material's
+  // tangent-space direction into it) by strength `anisotropy` in [0, 1].
+  float anisotropy{0.f};
+  float2 anisotropyDirection{1.f, 0.f};
 };
 
 // matte (spec 5.11.1): Lambertian reflection of `color`.
@@ -68,7 +74,8 @@ inline BsdfInputs matteBsdfInputs(float3 color)
 // (the shading frame), emissive, occlusion (ambient light only),
 // attenuationColor/attenuationDistance (the medium behind a volume boundary:
 // volumeAttenuationCoefficient), clearcoatNormal (tangent space: the
-// integrator turns it into BsdfInputs::clearcoatNormal in the local frame).
+// integrator turns it into BsdfInputs::clearcoatNormal in the local frame),
+// the anisotropy's direction (tangent space, likewise).
 template <typename Values>
 BsdfInputs physicallyBasedBsdfInputs(const Values &values)
 {
@@ -88,6 +95,7 @@ BsdfInputs physicallyBasedBsdfInputs(const Values &values)
   inputs.iridescence = values.iridescence;
   inputs.iridescenceIor = values.iridescenceIor;
   inputs.iridescenceThickness = values.iridescenceThickness;
+  inputs.anisotropy = values.anisotropyStrength;
   return inputs;
 }
 
@@ -201,6 +209,16 @@ class Bsdf
   void evaluateInterior(
       const Context &c, float3 wi, float3 &f, float &pdf) const;
   BsdfSample sampleInterior(const Context &c, float2 u, float uLobe) const;
+  BsdfSample sampleLambert(float3 wo, float2 u) const;
+  int chooseLobe(const Context &c, float uLobe) const;
+  bool sampleDirection(const Context &c,
+      int lobe,
+      float2 u,
+      float3 &wi,
+      BsdfSample &whole) const;
+  bool sampleTransmission(
+      const Context &c, float2 u, float3 &wi, BsdfSample &whole) const;
+  BsdfSample sampleFromDirection(const Context &c, int lobe, float3 wi) const;
 
   struct Albedo
   {
@@ -223,6 +241,7 @@ class Bsdf
   float3 m_baseColor{0.f, 0.f, 0.f};
   float m_metallic{0.f};
   float m_roughness{1.f}, m_alpha{1.f};
+  GgxLobe m_lobe; // the specular and transmission lobes' microfacets
   bool m_specularDelta{false};
   float3 m_dielectricF0{
       0.f, 0.f, 0.f}; // KHR_materials_specular's dielectric_f0

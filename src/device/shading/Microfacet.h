@@ -24,6 +24,28 @@ inline float ggxD(float3 h, float alpha)
   return a2 / (std::numbers::pi_v<float> * s * s);
 }
 
+// Anisotropic GGX D(h) with widths alphaX along the frame's x axis and
+// alphaY along y: 1 / (pi ax ay (hx^2/ax^2 + hy^2/ay^2 + hz^2)^2).
+inline float ggxD(float3 h, float alphaX, float alphaY)
+{
+  if (h.z <= 0.f)
+    return 0.f;
+  const float x = h.x / alphaX, y = h.y / alphaY;
+  const float s = x * x + y * y + h.z * h.z;
+  return 1.f / (std::numbers::pi_v<float> * alphaX * alphaY * s * s);
+}
+
+// Anisotropic Smith Lambda: the isotropic one at the width w's azimuth
+// sees, sqrt(ax^2 cos^2 phi + ay^2 sin^2 phi).
+inline float ggxLambda(float3 w, float alphaX, float alphaY)
+{
+  const float z2 = w.z * w.z;
+  if (z2 == 0.f)
+    return std::numeric_limits<float>::infinity();
+  const float x = alphaX * w.x, y = alphaY * w.y;
+  return 0.5f * (std::sqrt(1.f + (x * x + y * y) / z2) - 1.f);
+}
+
 // Smith's Lambda for GGX; symmetric in the sign of w.z.
 inline float ggxLambda(float3 w, float alpha)
 {

@@ -77,11 +77,28 @@ the outputs are committed, so this only reruns when the assets change):
   points and lines      points-lines.gltf: one mesh under a node scaled by 2
                         (positions halved) of POINTS (red, green and blue at
                         x = -0.1, 0, 0.1 and a white one far off at (5, 5):
-                        the scene's diagonal is 7.23, so spheres and curves
-                        get radius 0.00723), a LINE_STRIP (yellow, y = -0.1),
+                        the scene's diagonal is 7.23, so curves get radius
+                        0.00723 and spheres 3 times that), a LINE_STRIP
+                        (yellow, y = -0.1),
                         LINES (magenta, x = 0.12) and a LINE_LOOP (a cyan
                         square whose closing edge is its left side), seen
                         by an orthographic camera over [-0.15, 0.15]^2
+  volume attenuation    attenuation-slabs.gltf: two smooth transmissive boxes 2
+                        deep along an orthographic view, attenuationColor
+                        (0.5, 0.25, 0.8) at attenuationDistance 1, the left
+                        of ior 1, the right of ior 1.5
+  negative scale        mirrored-quads.gltf: single-sided quads under a node of
+                        scale (-1, 1, 1), one facing the camera, one turned
+                        away, and a receiver behind a quad whose front
+                        faces it, under a directional light along -z
+  iridescent glass      iridescent-glass.gltf: a smooth single-sided glass box
+                        with an iridescent film, filling an orthographic view
+  anisotropy            anisotropic-plates.gltf: two brushed white metal plates
+                        (KHR_materials_anisotropy strength 0.8, the right
+                        turned by 90 degrees), each under a point light,
+                        seen from above; -no-tangents.gltf: the same
+                        without TANGENT, u along +y: tangents generated
+                        from it run along y, so the highlights turn
   unsupported           draco-*.gltf (KHR_draco_mesh_compression), basisu-*.gltf
   extensions            (KHR_texture_basisu; the KTX2 image is only the magic
                         number), meshopt-*.gltf (EXT_meshopt_compression):
@@ -916,6 +933,191 @@ def points_lines_file():
     return finish_gltf(gltf, buf)
 
 
+# The attenuation slabs: attenuationColor, over attenuationDistance 1, and
+# the slabs' depth 2 along the view (world units, the node's z scale).
+SLAB_COLOR = (0.5, 0.25, 0.8)
+
+
+def attenuation_slabs():
+    """Two smooth transmissive boxes 2 deep along the view, KHR_materials_
+    volume with attenuationColor SLAB_COLOR at attenuationDistance 1: the
+    left of ior 1 (no interface at all: SLAB_COLOR^2 exactly), the right of
+    ior 1.5; an orthographic camera looks straight through both."""
+    buf = Buffer()
+    primitives = []
+    for material in (0, 1):
+        primitive = cube_primitive(buf)
+        primitive["material"] = material
+        primitives.append(primitive)
+
+    def glass(ior):
+        return {"pbrMetallicRoughness": {"metallicFactor": 0.0,
+                                         "roughnessFactor": 0.0},
+                "extensions": {
+                    "KHR_materials_transmission": {"transmissionFactor": 1.0},
+                    "KHR_materials_ior": {"ior": ior},
+                    "KHR_materials_volume": {
+                        "thicknessFactor": 1.0, "attenuationDistance": 1.0,
+                        "attenuationColor": list(SLAB_COLOR)}}}
+    gltf = {
+        "asset": {"version": "2.0", "generator": "prism tests/cli/data/make_assets.py"},
+        "extensionsUsed": ["KHR_materials_transmission", "KHR_materials_ior",
+                           "KHR_materials_volume"],
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1, 2]}],
+        "nodes": [{"mesh": 0, "translation": [-0.5, 0.0, 0.0],
+                   "scale": [0.9, 0.9, 2.0]},
+                  {"mesh": 1, "translation": [0.5, 0.0, 0.0],
+                   "scale": [0.9, 0.9, 2.0]},
+                  {"camera": 0, "translation": [0.0, 0.0, 5.0]}],
+        "meshes": [{"primitives": [primitives[0]]},
+                   {"primitives": [primitives[1]]}],
+        "materials": [glass(1.0), glass(1.5)],
+        "cameras": [{"type": "orthographic", "orthographic": {
+            "xmag": 1.0, "ymag": 0.5, "znear": 0.1, "zfar": 10.0}}],
+    }
+    return finish_gltf(gltf, buf)
+
+
+def mirrored_quads():
+    """Single-sided quads under a mirroring node (scale -1 in x), seen by an
+    orthographic camera at z = 3 over [-1, 1]^2 and lit by a directional
+    light along -z. Top row: a green quad whose front faces the camera
+    (x in [-0.9, -0.1]) and one whose back does (x in [0.1, 0.9], culled).
+    Bottom row (y in [-0.9, -0.1]): a white receiver at z = 0 and, over its
+    right half (x in [0.1, 0.9]) at z = 0.5, a black quad whose front faces
+    the receiver: the camera sees through its back, and so does the light."""
+    buf = Buffer()
+
+    def quad(x0, x1, y0, y1, z, facing_camera, material):
+        # Stored mirrored in x (the node's scale -1 puts it back), its
+        # corners counter-clockwise seen from +z in the mesh: clockwise in
+        # the world, the front under the node's negative determinant.
+        corners = [(-x1, y0), (-x0, y0), (-x0, y1), (-x1, y1)]
+        normal = (0.0, 0.0, 1.0 if facing_camera else -1.0)
+        order = [0, 1, 2, 0, 2, 3] if facing_camera else [0, 2, 1, 0, 3, 2]
+        return {"attributes": {
+            "POSITION": buf.accessor("f", FLOAT, "VEC3",
+                                     [(x, y, z) for x, y in corners],
+                                     bounds=True),
+            "NORMAL": buf.accessor("f", FLOAT, "VEC3", [normal] * 4)},
+            "indices": buf.accessor("H", USHORT, "SCALAR", order),
+            "material": material}
+    primitives = [quad(-0.9, -0.1, 0.1, 0.9, 0.0, True, 0),
+                  quad(0.1, 0.9, 0.1, 0.9, 0.0, False, 0),
+                  quad(-0.9, 0.9, -0.9, -0.1, 0.0, True, 1),
+                  quad(0.1, 0.9, -0.9, -0.1, 0.5, False, 2)]
+
+    def matte(r, g, b):
+        return {"pbrMetallicRoughness": {"baseColorFactor": [r, g, b, 1.0],
+                                         "metallicFactor": 0.0,
+                                         "roughnessFactor": 1.0}}
+    gltf = {
+        "asset": {"version": "2.0", "generator": "prism tests/cli/data/make_assets.py"},
+        "extensionsUsed": ["KHR_lights_punctual"],
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1, 2]}],
+        "nodes": [{"mesh": 0, "scale": [-1.0, 1.0, 1.0]},
+                  {"camera": 0, "translation": [0.0, 0.0, 3.0]},
+                  {"extensions": {"KHR_lights_punctual": {"light": 0}}}],
+        "meshes": [{"primitives": primitives}],
+        "materials": [matte(0.1, 0.8, 0.2), matte(0.8, 0.8, 0.8),
+                      matte(0.0, 0.0, 0.0)],
+        "cameras": [{"type": "orthographic", "orthographic": {
+            "xmag": 1.0, "ymag": 1.0, "znear": 0.1, "zfar": 10.0}}],
+        "extensions": {"KHR_lights_punctual": {"lights": [
+            {"type": "directional", "intensity": 3.0}]}},
+    }
+    return finish_gltf(gltf, buf)
+
+
+def anisotropic_plates(tangents=True):
+    """Two white metal plates (roughness 0.3, KHR_materials_anisotropy
+    strength 0.8, TANGENT along +x, or none: then u runs along +y) side by
+    side at z = 0 over x in [-2, 0] and [0, 2], y in [-1, 1]: the left's
+    anisotropy along the tangent, the right's turned by 90 degrees
+    (anisotropyRotation). A point light 1 above each plate's centre, an
+    orthographic camera looking down -z."""
+    buf = Buffer()
+
+    def plate(x0, material):
+        corners = [(x0, -1.0), (x0 + 2.0, -1.0), (x0 + 2.0, 1.0), (x0, 1.0)]
+        p = {"attributes": {
+            "POSITION": buf.accessor("f", FLOAT, "VEC3",
+                                     [(x, y, 0.0) for x, y in corners],
+                                     bounds=True),
+            "NORMAL": buf.accessor("f", FLOAT, "VEC3", [(0.0, 0.0, 1.0)] * 4),
+            # u along +x with TANGENT, along +y without (so the generated
+            # tangents differ from any frame the device would pick).
+            "TEXCOORD_0": buf.accessor("f", FLOAT, "VEC2",
+                                       [(0.0, 1.0), (1.0, 1.0), (1.0, 0.0),
+                                        (0.0, 0.0)] if tangents else
+                                       [(0.0, 0.0), (0.0, 1.0), (1.0, 1.0),
+                                        (1.0, 0.0)])},
+            "indices": buf.accessor("H", USHORT, "SCALAR", [0, 1, 2, 0, 2, 3]),
+            "material": material}
+        if tangents:
+            p["attributes"]["TANGENT"] = buf.accessor(
+                "f", FLOAT, "VEC4", [(1.0, 0.0, 0.0, 1.0)] * 4)
+        return p
+
+    def brushed(rotation):
+        return {"pbrMetallicRoughness": {"metallicFactor": 1.0,
+                                         "roughnessFactor": 0.3},
+                "extensions": {"KHR_materials_anisotropy": {
+                    "anisotropyStrength": 0.8,
+                    "anisotropyRotation": rotation}}}
+    lights = [{"extensions": {"KHR_lights_punctual": {"light": 0}},
+               "translation": [x, 0.0, 1.0]} for x in (-1.0, 1.0)]
+    gltf = {
+        "asset": {"version": "2.0", "generator": "prism tests/cli/data/make_assets.py"},
+        "extensionsUsed": ["KHR_materials_anisotropy", "KHR_lights_punctual"],
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1, 2, 3]}],
+        "nodes": [{"mesh": 0},
+                  {"camera": 0, "translation": [0.0, 0.0, 3.0]}] + lights,
+        "meshes": [{"primitives": [plate(-2.0, 0), plate(0.0, 1)]}],
+        "materials": [brushed(0.0), brushed(math.pi / 2)],
+        "cameras": [{"type": "orthographic", "orthographic": {
+            "xmag": 2.0, "ymag": 1.0, "znear": 0.1, "zfar": 10.0}}],
+        "extensions": {"KHR_lights_punctual": {"lights": [
+            {"type": "point", "intensity": 5.0}]}},
+    }
+    return finish_gltf(gltf, buf)
+
+
+def iridescent_glass_box():
+    """A smooth single-sided box of clear glass with walls of thickness
+    0.005 (KHR_materials_volume) and an iridescent film (ior 1.67, 400 nm,
+    as IridescenceLamp's globe), straight in front of an orthographic
+    camera that it fills."""
+    buf = Buffer()
+    primitive = cube_primitive(buf)
+    primitive["material"] = 0
+    glass = {"pbrMetallicRoughness": {"metallicFactor": 0.0,
+                                      "roughnessFactor": 0.0},
+             "extensions": {
+                 "KHR_materials_transmission": {"transmissionFactor": 1.0},
+                 "KHR_materials_volume": {"thicknessFactor": 0.005},
+                 "KHR_materials_iridescence": {
+                     "iridescenceFactor": 1.0, "iridescenceIor": 1.67,
+                     "iridescenceThicknessMaximum": 400.0}}}
+    gltf = {
+        "asset": {"version": "2.0", "generator": "prism tests/cli/data/make_assets.py"},
+        "extensionsUsed": ["KHR_materials_transmission", "KHR_materials_volume",
+                           "KHR_materials_iridescence"],
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1]}],
+        "nodes": [{"mesh": 0},
+                  {"camera": 0, "translation": [0.0, 0.0, 3.0]}],
+        "meshes": [{"primitives": [primitive]}],
+        "materials": [glass],
+        "cameras": [{"type": "orthographic", "orthographic": {
+            "xmag": 0.4, "ymag": 0.4, "znear": 0.1, "zfar": 10.0}}],
+    }
+    return finish_gltf(gltf, buf)
+
+
 def plane_scene():
     buf = Buffer()
     quad, indices = quad_accessors(buf, half=2.0)
@@ -1105,6 +1307,12 @@ def main():
         write("expected-%s-32.pfm" % stem, files[1])
     write("single-sided.gltf", single_sided_file())
     write("points-lines.gltf", points_lines_file())
+    write("attenuation-slabs.gltf", attenuation_slabs())
+    write("mirrored-quads.gltf", mirrored_quads())
+    write("anisotropic-plates.gltf", anisotropic_plates())
+    write("anisotropic-plates-no-tangents.gltf",
+          anisotropic_plates(tangents=False))
+    write("iridescent-glass.gltf", iridescent_glass_box())
     for extension, stem in (("KHR_draco_mesh_compression", "draco"),
                             ("KHR_texture_basisu", "basisu"),
                             ("EXT_meshopt_compression", "meshopt")):

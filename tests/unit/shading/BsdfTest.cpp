@@ -95,7 +95,8 @@ std::string describe(const BsdfInputs &in)
       "baseColor (%g %g %g) metallic %g roughness %g specular %g "
       "specularColor (%g %g %g) ior %g clearcoat %g/%g (%g %g %g) "
       "transmission %g "
-      "thickness %g sheen (%g %g %g)/%g iridescence %g ior %g %g nm",
+      "thickness %g sheen (%g %g %g)/%g iridescence %g ior %g %g nm "
+      "anisotropy %g (%g %g)",
       in.baseColor.x,
       in.baseColor.y,
       in.baseColor.z,
@@ -119,7 +120,10 @@ std::string describe(const BsdfInputs &in)
       in.sheenRoughness,
       in.iridescence,
       in.iridescenceIor,
-      in.iridescenceThickness);
+      in.iridescenceThickness,
+      in.anisotropy,
+      in.anisotropyDirection.x,
+      in.anisotropyDirection.y);
   return text;
 }
 
@@ -199,6 +203,15 @@ std::vector<BsdfInputs> inputGrid()
     in.ior = 2.5f;
     grid.push_back(in);
   }
+  // KHR_materials_anisotropy: metal, plastic and glass stretched along a
+  // turned direction, from a mirror base and a rough one.
+  for (float strength : {0.5f, 1.f})
+    for (float r : {0.f, 0.3f})
+      for (BsdfInputs in : {whiteMetal(r), whitePlastic(r), glass(r, 1.f)}) {
+        in.anisotropy = strength;
+        in.anisotropyDirection = {0.6f, 0.8f};
+        grid.push_back(in);
+      }
 
   const auto pick = [](const RandomSequence &r, uint32_t d, float a, float b) {
     const float u = r.get1D(d);
@@ -414,6 +427,11 @@ std::vector<BsdfInputs> roughInputs()
   in.iridescence = 0.8f;
   in.iridescenceThickness = 450.f;
   inputs.push_back(in);
+  for (BsdfInputs anisotropic : {whiteMetal(0.5f), glass(0.6f, 1.f)}) {
+    anisotropic.anisotropy = 0.8f;
+    anisotropic.anisotropyDirection = {-0.28f, 0.96f};
+    inputs.push_back(anisotropic);
+  }
   return inputs;
 }
 
@@ -668,6 +686,7 @@ TEST(Bsdf, InputsFromPhysicallyBasedValues)
     float3 sheenColor{0.3f, 0.2f, 0.1f};
     float sheenRoughness{0.55f}, iridescence{0.65f}, iridescenceIor{1.4f};
     float iridescenceThickness{321.f};
+    float anisotropyStrength{0.75f};
   } v;
   const BsdfInputs in = physicallyBasedBsdfInputs(v);
   EXPECT_EQ(in.baseColor, v.baseColor);
@@ -685,6 +704,7 @@ TEST(Bsdf, InputsFromPhysicallyBasedValues)
   EXPECT_EQ(in.iridescence, v.iridescence);
   EXPECT_EQ(in.iridescenceIor, v.iridescenceIor);
   EXPECT_EQ(in.iridescenceThickness, v.iridescenceThickness);
+  EXPECT_EQ(in.anisotropy, v.anisotropyStrength);
   EXPECT_TRUE(Bsdf(in).isVolumeBoundary());
   EXPECT_TRUE(Bsdf(in).hasTransmission());
   // The spec defaults: a rough white metal.
@@ -729,4 +749,118 @@ TEST(Bsdf, AlbedoTables)
   EXPECT_NEAR(ggxAlbedo(0.3f, 0.4f).total, 0.88599f, 3e-3f);
   EXPECT_NEAR(sheenAlbedo(1.f, 1.f), 0.16379f, 3e-3f);
   EXPECT_NEAR(sheenAlbedo(0.3f, 0.6f), 0.36939f, 3e-3f);
+}
+
+// KHR_materials_anisotropy at strength 0 is the isotropic lobe, bit for bit
+// (the same arithmetic, not merely the same function).
+TEST(Bsdf, AnisotropyZeroIsIsotropicBitForBit)
+{
+  for (BsdfInputs isotropic : inputGrid()) {
+    isotropic.anisotropy = 0.f;
+    isotropic.anisotropyDirection = {1.f, 0.f};
+    BsdfInputs turned = isotropic;
+    turned.anisotropy = 0.f;
+    turned.anisotropyDirection = {0.6f, -0.8f};
+    const Bsdf a(isotropic), b(turned);
+    for (uint32_t i = 0; i < 32; i++) {
+      const RandomSequence r({i, 21}, 0, 0);
+      const float3 wo = sampleUniformSphere(r.get2D(0));
+      const float3 wi = sampleUniformSphere(r.get2D(1));
+      float3 fa, fb;
+      float pa, pb;
+      a.evalAndPdf(wo, wi, fa, pa);
+      b.evalAndPdf(wo, wi, fb, pb);
+      ASSERT_EQ(fa, fb) << describe(isotropic);
+      ASSERT_EQ(pa, pb) << describe(isotropic);
+      const BsdfSample sa = a.sample(wo, r.get2D(2), r.get1D(3));
+      const BsdfSample sb = b.sample(wo, r.get2D(2), r.get1D(3));
+      ASSERT_EQ(sa.wi, sb.wi);
+      ASSERT_EQ(sa.weight, sb.weight);
+      ASSERT_EQ(sa.pdf, sb.pdf);
+    }
+  }
+}
+
+// The anisotropic distribution is normalised (integral of D(h) cos(h) over
+// the hemisphere is 1) and so are its visible normals from any view.
+TEST(Bsdf, AnisotropicGgxIsNormalised)
+{
+  const GgxLobe lobe(0.45f, 0.9f, {0.8f, 0.6f});
+  ASSERT_TRUE(lobe.anisotropic());
+  EXPECT_NEAR(lobe.alphaAcross(), 0.45f * 0.45f, 1e-6f);
+  EXPECT_NEAR(lobe.alphaAlong(), lerp(0.45f * 0.45f, 1.f, 0.81f), 1e-6f);
+  constexpr int kTheta = 800, kPhi = 400;
+  for (const float3 wo :
+      {float3{0.f, 0.f, 1.f}, direction(0.5f, 0.3f), direction(0.2f, 2.f)}) {
+    double projected = 0.0, visible = 0.0;
+    for (int i = 0; i < kTheta; i++) {
+      const float theta = 0.5f * kPi * (i + 0.5f) / kTheta;
+      const float s = std::sin(theta);
+      for (int j = 0; j < kPhi; j++) {
+        const float phi = 2.f * kPi * (j + 0.5f) / kPhi;
+        const float3 h{s * std::cos(phi), s * std::sin(phi), std::cos(theta)};
+        const double d = lobe.D(h) * s;
+        projected += d * h.z;
+        visible += d * lobe.G1(wo) * max(0.f, dot(wo, h)) / wo.z;
+      }
+    }
+    const double cell = (0.5 * kPi / kTheta) * (2.0 * kPi / kPhi);
+    EXPECT_NEAR(projected * cell, 1.0, 2e-3);
+    EXPECT_NEAR(visible * cell, 1.0, 2e-3) << "wo.z " << wo.z;
+  }
+}
+
+// White furnace of an anisotropic white metal, seen along its direction,
+// across it and between. Single scattering is the exact anisotropic lobe;
+// the multiple-scattering term (Kulla-Conty) reads the isotropic tables at
+// the geometric-mean width, which is not the anisotropic lobe's albedo: the
+// albedo stays below 1.03 (measured at most 1.027, at grazing views along
+// the wide axis), and loses energy where the lobe is far wider one way
+// than the other (measured down to 0.53 at strength 1 on a mirror base,
+// 0.83 at strength 0.7; 0.94 and above from a base roughness of 0.3 at
+// strength 0.7).
+TEST(Bsdf, AnisotropicMetalWhiteFurnace)
+{
+  float lowest = 2.f, highest = 0.f;
+  for (float strength : {0.3f, 0.7f, 1.f})
+    for (float roughness : {0.f, 0.3f, 0.6f}) {
+      BsdfInputs in = whiteMetal(roughness);
+      in.anisotropy = strength;
+      in.anisotropyDirection = {1.f, 0.f};
+      const Bsdf bsdf(in);
+      for (float phi : {0.f, 0.8f, 0.5f * kPi})
+        for (float mu : {1.f, 0.6f, 0.25f}) {
+          const AlbedoEstimate e = estimateAlbedo(bsdf, direction(mu, phi));
+          EXPECT_LE(e.albedo.x, 1.03f + 3.f * e.standardError.x)
+              << describe(in) << " cos " << mu << " phi " << phi;
+          EXPECT_GE(e.albedo.x, 0.5f)
+              << describe(in) << " cos " << mu << " phi " << phi;
+          lowest = min(lowest, e.albedo.x);
+          highest = max(highest, e.albedo.x);
+        }
+    }
+  RecordProperty("lowestAlbedo", std::to_string(lowest));
+  RecordProperty("highestAlbedo", std::to_string(highest));
+}
+
+// Seen head on, the reflection spreads along the anisotropy direction: at
+// 25 degrees off the mirror direction it reflects more along it than
+// across it, and turning the direction by 90 degrees swaps the two.
+TEST(Bsdf, AnisotropicHighlightStretchesAlongItsDirection)
+{
+  BsdfInputs in = whiteMetal(0.2f);
+  in.anisotropy = 0.8f;
+  in.anisotropyDirection = {0.6f, 0.8f};
+  const float3 wo{0.f, 0.f, 1.f};
+  const float a = 25.f * kPi / 180.f;
+  const float3 along{std::sin(a) * 0.6f, std::sin(a) * 0.8f, std::cos(a)};
+  const float3 across{std::sin(a) * -0.8f, std::sin(a) * 0.6f, std::cos(a)};
+  const Bsdf bsdf(in);
+  EXPECT_GT(bsdf.eval(wo, along).x, 20.f * bsdf.eval(wo, across).x);
+  in.anisotropyDirection = {-0.8f, 0.6f};
+  const Bsdf turned(in);
+  EXPECT_GT(turned.eval(wo, across).x, 20.f * turned.eval(wo, along).x);
+  EXPECT_NEAR(turned.eval(wo, across).x,
+      bsdf.eval(wo, along).x,
+      1e-4f * bsdf.eval(wo, along).x);
 }
