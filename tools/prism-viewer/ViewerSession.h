@@ -1,0 +1,141 @@
+// Everything the viewer drives on the device, without any UI: the library
+// and device, the loaded scene and its lighting, the renderer, the camera
+// (OrbitCamera's pose), the frame pipeline and the parameter sets the
+// panels edit. The window (main.cpp, Panels.*) and the script both act
+// through this, so the tests exercise what the UI does.
+#pragma once
+
+#include "DeviceSession.h"
+#include "FramePipeline.h"
+#include "OrbitCamera.h"
+#include "ParameterModel.h"
+#include "SceneLoader.h"
+#include "ViewerOptions.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace prism::viewer {
+
+// One light the viewer knows the subtype of, and its parameters.
+struct ViewerLight
+{
+  std::string label;
+  ParameterSet parameters;
+};
+
+class ViewerSession
+{
+ public:
+  explicit ViewerSession(const ViewerOptions &options);
+  ~ViewerSession();
+  ViewerSession(const ViewerSession &) = delete;
+  ViewerSession &operator=(const ViewerSession &) = delete;
+
+  // Opens the library and device and makes the renderer, camera and frame
+  // (over an empty world); the error says why not.
+  std::string open();
+  // Replaces the scene; on failure the previous one stays and the error
+  // names the file and the problem.
+  std::string loadScene(const std::string &source);
+  const std::string &sceneName() const
+  {
+    return m_sceneName;
+  }
+
+  // Render-target size in pixels (the window's, times the scale).
+  void setViewport(uint32_t width, uint32_t height, float scale);
+  // Never waits; true when a new image is ready.
+  bool update();
+
+  OrbitCamera &camera()
+  {
+    return m_camera;
+  }
+  // Copies the camera's pose to the device and restarts accumulation.
+  void cameraChanged();
+  // Frames the scene again (the file's camera, else its bounds).
+  void frameScene();
+
+  std::vector<std::string> rendererSubtypes() const;
+  std::string setRenderer(const std::string &subtype);
+  ParameterSet &rendererParameters()
+  {
+    return m_rendererParameters;
+  }
+  ParameterSet &cameraParameters()
+  {
+    return m_cameraParameters;
+  }
+  std::vector<ViewerLight> &lights()
+  {
+    return m_lights;
+  }
+  // `set renderer|camera|light N PARAM VALUE...`: through the panels' sets;
+  // the error names the problem.
+  std::string setParameter(const std::string &target,
+      int index,
+      const std::string &name,
+      const std::vector<std::string> &words);
+  // After a panel edited a set: restart accumulation.
+  void parametersChanged();
+
+  // The object under pixel (x, y) of the shown image (from its top-left),
+  // which becomes the selection (highlighted).
+  std::optional<Pick> pick(int x, int y);
+  const std::optional<Pick> &selection() const
+  {
+    return m_selection;
+  }
+  // Focuses depth of field on what is under (x, y).
+  bool focusAt(int x, int y);
+
+  FramePipeline &pipeline()
+  {
+    return *m_pipeline;
+  }
+  // The shown image with the selection tinted.
+  Rgba8Image shownImage() const;
+  // PNG or EXR (by extension) of the shown channel, unhighlighted.
+  std::string screenshot(const std::string &path) const;
+
+  ANARIDevice device() const
+  {
+    return m_session.device();
+  }
+  int deviceErrors() const
+  {
+    return m_session.errors();
+  }
+
+ private:
+  void releaseScene();
+  void lightScene();
+  void describeLights();
+  scenes::Bounds worldBounds() const;
+
+  const ViewerOptions &m_options;
+  tools::DeviceSession m_session;
+  std::string m_rendererSubtype;
+  ANARIRenderer m_renderer{nullptr};
+  ANARICamera m_cameraObject{nullptr};
+  ANARIFrame m_frame{nullptr};
+  ANARIWorld m_emptyWorld{nullptr};
+  std::unique_ptr<FramePipeline> m_pipeline;
+  scenes::Scene m_scene;
+  std::string m_sceneName;
+  OrbitCamera m_camera;
+  ParameterSet m_rendererParameters;
+  ParameterSet m_cameraParameters;
+  std::vector<ViewerLight> m_lights;
+  ANARILight m_environment{nullptr}; // the one the viewer added, if any
+  std::optional<Pick> m_selection;
+  uint32_t m_width{0}, m_height{0};
+};
+
+// Prints "prism-viewer: <line>" on stderr (device messages too).
+void printMessage(const std::string &line);
+
+} // namespace prism::viewer

@@ -1,0 +1,205 @@
+// prism-viewer: an interactive viewer for any ANARI library. See --help and
+// docs/viewer.md. This parses options, opens the window and the session,
+// and runs the UI loop: input, the frame pipeline's poll, the script's
+// next commands, the panels.
+#include "CameraInput.h"
+#include "Panels.h"
+#include "ScriptRunner.h"
+#include "ViewerOptions.h"
+#include "ViewerSession.h"
+#include "ViewerWindow.h"
+
+#include <imgui.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <thread>
+
+namespace prism::viewer {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr int kExitFailure = 1;
+constexpr int kExitUsage = 2;
+// The loop runs at most this often: the renderer keeps the cores.
+constexpr auto kFramePeriod = std::chrono::milliseconds(16);
+// After the camera stops, frames render at the interaction scale this long.
+constexpr auto kStillAfter = std::chrono::milliseconds(250);
+
+int fail(const std::string &message, int code = kExitFailure)
+{
+  printMessage("error: " + message);
+  return code;
+}
+
+// Keeps the window open with `message` until it is closed: a library that
+// failed to load leaves nothing else to show.
+int showUntilClosed(ViewerWindow &window, const std::string &message)
+{
+  while (!window.shouldClose()) {
+    window.beginFrame();
+    ImGui::Begin("prism-viewer");
+    ImGui::TextColored(ImVec4(1.f, 0.4f, 0.4f, 1.f), "%s", message.c_str());
+    ImGui::End();
+    window.endFrame();
+    std::this_thread::sleep_for(kFramePeriod);
+  }
+  return kExitFailure;
+}
+
+class ViewerLoop
+{
+ public:
+  ViewerLoop(const ViewerOptions &options,
+      ViewerWindow &window,
+      ViewerSession &session,
+      std::unique_ptr<ScriptRunner> script)
+      : m_options(options),
+        m_window(window),
+        m_session(session),
+        m_script(std::move(script))
+  {
+    if (!options.frameTimes.empty())
+      m_frameTimes.open(options.frameTimes);
+    m_state.sceneText = options.scene;
+  }
+
+  void setMessage(const std::string &message, bool error)
+  {
+    m_state.message = message;
+    m_state.messageIsError = error;
+  }
+
+  int run()
+  {
+    Clock::time_point previous = Clock::now();
+    while (!m_window.shouldClose()) {
+      const Clock::time_point start = Clock::now();
+      if (m_frameTimes.is_open())
+        m_frameTimes << std::chrono::duration<double, std::milli>(
+            start - previous)
+                            .count()
+                     << '\n';
+      previous = start;
+      if (std::optional<int> status = frame())
+        return *status;
+      std::this_thread::sleep_until(start + kFramePeriod);
+    }
+    return 0;
+  }
+
+ private:
+  // One UI frame; an exit status when the script ends the run.
+  std::optional<int> frame()
+  {
+    m_window.beginFrame();
+    for (const std::string &path : m_window.takeDroppedFiles()) {
+      const std::string error = m_session.loadScene(path);
+      setMessage(error.empty() ? "opened " + path : error, !error.empty());
+      if (error.empty())
+        m_state.sceneText = path;
+    }
+    bool refresh = false;
+    if (!m_script) {
+      const InputOutcome input = handleCameraInput(m_session);
+      if (input.moved)
+        m_lastMove = Clock::now();
+      refresh = input.picked;
+    }
+    const bool moving = Clock::now() - m_lastMove < kStillAfter;
+    uint32_t w = 0, h = 0;
+    m_window.size(w, h);
+    m_session.setViewport(w, h, moving ? m_options.interactionScale : 1.f);
+    refresh |= m_session.update();
+    std::optional<int> status;
+    if (m_script) {
+      const std::optional<Pick> before = m_session.selection();
+      const ScriptState state = m_script->step(m_session);
+      refresh |= m_session.selection().has_value() != before.has_value();
+      if (state == ScriptState::Failed)
+        status = fail(m_script->error());
+      else if (state == ScriptState::Finished)
+        status = 0;
+    }
+    if (refresh)
+      m_window.showImage(m_session.shownImage());
+    drawPanels(m_session, m_state);
+    m_window.endFrame();
+    return status;
+  }
+
+  const ViewerOptions &m_options;
+  ViewerWindow &m_window;
+  ViewerSession &m_session;
+  std::unique_ptr<ScriptRunner> m_script;
+  PanelState m_state;
+  Clock::time_point m_lastMove{};
+  std::ofstream m_frameTimes;
+};
+
+int run(int argc, char **argv)
+{
+  const ParsedOptions parsed =
+      parseViewerOptions(argc, argv, std::getenv("ANARI_LIBRARY"));
+  if (!parsed.ok()) {
+    printMessage("error: " + parsed.error);
+    printMessage("try 'prism-viewer --help'");
+    return kExitUsage;
+  }
+  const ViewerOptions &options = parsed.options;
+  if (options.help) {
+    std::fputs(viewerHelp().c_str(), stdout);
+    return 0;
+  }
+  std::unique_ptr<ScriptRunner> script;
+  if (!options.script.empty()) {
+    ParsedScript commands = readScript(options.script);
+    if (!commands.ok())
+      return fail(commands.error, kExitUsage);
+    script = std::make_unique<ScriptRunner>(std::move(commands));
+  }
+  ViewerWindow window;
+  if (const std::string error =
+          window.open(options.width, options.height, "prism-viewer");
+      !error.empty())
+    return fail(error);
+  ViewerSession session(options);
+  if (const std::string error = session.open(); !error.empty()) {
+    printMessage("error: " + error);
+    return script ? kExitFailure : showUntilClosed(window, error);
+  }
+  uint32_t w = 0, h = 0;
+  window.size(w, h);
+  session.setViewport(w, h, 1.f);
+  ViewerLoop loop(options, window, session, std::move(script));
+  if (!options.scene.empty()) {
+    const std::string error = session.loadScene(options.scene);
+    if (!error.empty()) {
+      printMessage("error: " + error);
+      if (!options.script.empty())
+        return kExitFailure;
+      loop.setMessage(error, true);
+    }
+  }
+  return loop.run();
+}
+
+} // namespace
+} // namespace prism::viewer
+
+int main(int argc, char **argv)
+{
+  try {
+    return prism::viewer::run(argc, argv);
+  } catch (const std::bad_alloc &) {
+    prism::viewer::printMessage("error: out of memory");
+  } catch (const std::exception &e) {
+    prism::viewer::printMessage(std::string("error: ") + e.what());
+  }
+  return 1;
+}
