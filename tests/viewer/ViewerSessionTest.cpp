@@ -1,0 +1,165 @@
+// The session on the prism device, without a window: parameter panels from
+// introspection, progressive frames through the pipeline, picking, the
+// script's set, and failures that leave the session usable.
+#include "ScriptRunner.h"
+#include "ViewerSession.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <thread>
+
+namespace prism::viewer {
+namespace {
+
+// Polls as the UI loop does until `done` (ctest's timeout bounds it).
+template <typename Done>
+void pollUntil(ViewerSession &session, Done done)
+{
+  while (!done()) {
+    session.update();
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+}
+
+class ViewerSessionTest : public ::testing::Test
+{
+ protected:
+  void SetUp() override
+  {
+    m_options.renderer = "default";
+    m_session = std::make_unique<ViewerSession>(m_options);
+    ASSERT_EQ(m_session->open(), "");
+    m_session->setViewport(64, 48, 1.f);
+  }
+
+  ViewerOptions m_options;
+  std::unique_ptr<ViewerSession> m_session;
+};
+
+TEST_F(ViewerSessionTest, RendererPanelComesFromIntrospection)
+{
+  const ParameterSet &renderer = m_session->rendererParameters();
+  const ParameterWidget *depth = renderer.find("maxPathLength");
+  ASSERT_NE(depth, nullptr);
+  EXPECT_EQ(depth->kind, WidgetKind::Integer);
+  EXPECT_EQ(depth->minimum, 1.0);
+  EXPECT_EQ(depth->maximum, 1024.0);
+  ASSERT_TRUE(renderer.value("maxPathLength"));
+  EXPECT_EQ(renderer.value("maxPathLength")->numbers.at(0), 8.0);
+  const ParameterWidget *background = renderer.find("background");
+  ASSERT_NE(background, nullptr);
+  EXPECT_EQ(background->kind, WidgetKind::Color);
+  EXPECT_EQ(background->components, 4);
+}
+
+TEST_F(ViewerSessionTest, EnumsListTheirValues)
+{
+  m_session->setRenderer("debug");
+  const ParameterWidget *mode = m_session->rendererParameters().find("mode");
+  ASSERT_NE(mode, nullptr);
+  EXPECT_EQ(mode->kind, WidgetKind::Choice);
+  EXPECT_NE(std::find(mode->choices.begin(), mode->choices.end(), "objectId"),
+      mode->choices.end());
+  EXPECT_EQ(m_session->setParameter("renderer", 0, "mode", {"uv"}), "");
+  EXPECT_EQ(m_session->rendererParameters().value("mode")->text, "uv");
+  EXPECT_NE(m_session->setParameter("renderer", 0, "mode", {"sideways"}), "");
+}
+
+TEST_F(ViewerSessionTest, SetChecksNamesTypesAndRanges)
+{
+  EXPECT_EQ(m_session->setParameter("renderer", 0, "maxPathLength", {"2"}), "");
+  EXPECT_EQ(
+      m_session->rendererParameters().value("maxPathLength")->numbers.at(0),
+      2.0);
+  EXPECT_NE(m_session->setParameter("renderer", 0, "maxPathLength", {"0"}), "");
+  EXPECT_NE(
+      m_session->setParameter("renderer", 0, "maxPathLength", {"1.5"}), "");
+  EXPECT_NE(m_session->setParameter("renderer", 0, "noSuchThing", {"1"}), "");
+  EXPECT_NE(m_session->setParameter("renderer", 1, "maxPathLength", {"2"}), "");
+  EXPECT_NE(m_session->setParameter("light", 5, "intensity", {"2"}), "");
+  EXPECT_EQ(m_session->setParameter("camera", 0, "fovy", {"0.5"}), "");
+  EXPECT_NEAR(m_session->camera().pose().fovyDegrees, 28.6479f, 1e-3f);
+}
+
+TEST_F(ViewerSessionTest, FramesRefineAndPickingFindsTheBoxes)
+{
+  ASSERT_EQ(m_session->loadScene("demo:cornell-box"), "");
+  FramePipeline &pipeline = m_session->pipeline();
+  pollUntil(*m_session, [&] { return pipeline.status().samples >= 3; });
+  EXPECT_EQ(pipeline.image().width, 64u);
+  EXPECT_EQ(pipeline.image().pixels.size(), 64u * 48u * 4u);
+  // The middle of the framed box shows a wall or a block; a corner of the
+  // window shows nothing.
+  const std::optional<Pick> middle = m_session->pick(32, 24);
+  ASSERT_TRUE(middle);
+  EXPECT_TRUE(middle->hit);
+  EXPECT_NE(middle->objectId, kNoId);
+  EXPECT_TRUE(middle->depth);
+  ASSERT_TRUE(m_session->selection());
+  // A change restarts accumulation: samples count from zero again.
+  m_session->camera().orbit(10.f, 0.f);
+  m_session->cameraChanged();
+  EXPECT_EQ(pipeline.status().samples, 0u);
+  pollUntil(*m_session, [&] { return pipeline.status().samples >= 1; });
+}
+
+TEST_F(ViewerSessionTest, TheSampleLimitStopsRefinement)
+{
+  ASSERT_EQ(m_session->loadScene("demo:cornell-box"), "");
+  FramePipeline &pipeline = m_session->pipeline();
+  pipeline.setSampleLimit(2);
+  pollUntil(*m_session, [&] { return pipeline.status().samples >= 2; });
+  for (int i = 0; i < 50; ++i) {
+    m_session->update();
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  pipeline.finish();
+  EXPECT_EQ(pipeline.status().samples, 2u);
+}
+
+TEST_F(ViewerSessionTest, AFileThatFailsKeepsTheSceneShown)
+{
+  ASSERT_EQ(m_session->loadScene("demo:cornell-box"), "");
+  const std::string error = m_session->loadScene("/nonexistent/model.glb");
+  EXPECT_NE(error.find("/nonexistent/model.glb"), std::string::npos) << error;
+  EXPECT_EQ(m_session->sceneName(), "demo:cornell-box");
+  EXPECT_NE(m_session->loadScene("demo:no-such-demo"), "");
+  FramePipeline &pipeline = m_session->pipeline();
+  pollUntil(*m_session, [&] { return pipeline.status().samples >= 1; });
+}
+
+TEST_F(ViewerSessionTest, ScriptsRunThroughTheSession)
+{
+  ASSERT_EQ(m_session->loadScene("demo:cornell-box"), "");
+  ScriptRunner runner(
+      parseScript("orbit 20\n"
+                  "set renderer 0 maxPathLength 1\n"
+                  "wait-samples 2\n"
+                  "channel objectId\n"
+                  "set renderer 0 maxPathLength 0\n"));
+  ScriptState state = ScriptState::Running;
+  pollUntil(*m_session, [&] {
+    state = runner.step(*m_session);
+    return state != ScriptState::Running;
+  });
+  EXPECT_EQ(state, ScriptState::Failed);
+  EXPECT_EQ(runner.error().rfind("script line 5 'set renderer 0 "
+                                 "maxPathLength 0': ",
+                0),
+      0u)
+      << runner.error();
+  EXPECT_EQ(m_session->pipeline().channel(), Channel::ObjectId);
+}
+
+TEST(ViewerSessionOpen, ALibraryThatFailsIsNamed)
+{
+  ViewerOptions options;
+  options.library = "no_such_library";
+  ViewerSession session(options);
+  const std::string error = session.open();
+  EXPECT_NE(error.find("no_such_library"), std::string::npos) << error;
+}
+
+} // namespace
+} // namespace prism::viewer
