@@ -79,6 +79,17 @@ ParsedOptions parseViewerOptions(
         parsed.error = "--spp-limit takes a sample count, not '" + text + "'";
         return parsed;
       }
+    } else if (arg == "--threads") {
+      if (!value(text))
+        return parsed;
+      const auto r =
+          std::from_chars(text.data(), text.data() + text.size(), o.threads);
+      if (r.ec != std::errc() || r.ptr != text.data() + text.size()
+          || o.threads == 0) {
+        parsed.error =
+            "--threads takes a count (1 or more), not '" + text + "'";
+        return parsed;
+      }
     } else if (arg == "--interaction-scale") {
       if (!value(text))
         return parsed;
@@ -116,6 +127,8 @@ window) with any ANARI library, refining progressively.
   --size WxH              window size (default 1024x768)
   --spp-limit N           stop refining at N samples (default: never)
   --interaction-scale F   resolution scale while the camera moves (0.5)
+  --threads N             render threads, where the device takes numThreads
+                          (leaving a core to the window keeps it fluid)
   --script FILE           replay UI actions from FILE (docs/viewer.md)
   --trace FILE            record an ANARI trace through the validation layer
   --frame-times FILE      write each window frame's interval in ms (bench/)

@@ -77,8 +77,8 @@ std::string ViewerSession::open()
     setenv("ANARI_DEBUG_TRACE", m_options.traceFile.c_str(), 1);
   }
   bool usage = false;
-  std::string error =
-      m_session.open({m_options.library, m_options.deviceSubtype, 0}, usage);
+  std::string error = m_session.open(
+      {m_options.library, m_options.deviceSubtype, m_options.threads}, usage);
   if (!error.empty())
     return error;
   ANARIDevice device = m_session.device();

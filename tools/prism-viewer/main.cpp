@@ -84,7 +84,7 @@ class ViewerLoop
         m_frameTimes << std::chrono::duration<double, std::milli>(
             start - previous)
                             .count()
-                     << '\n';
+                     << std::endl; // whole lines, even if the run is killed
       previous = start;
       if (std::optional<int> status = frame())
         return *status;
