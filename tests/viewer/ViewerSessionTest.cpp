@@ -80,6 +80,34 @@ TEST_F(ViewerSessionTest, SetChecksNamesTypesAndRanges)
   EXPECT_NE(m_session->setParameter("light", 5, "intensity", {"2"}), "");
   EXPECT_EQ(m_session->setParameter("camera", 0, "fovy", {"0.5"}), "");
   EXPECT_NEAR(m_session->camera().pose().fovyDegrees, 28.6479f, 1e-3f);
+  // The pose sets the position on every move: the script may not.
+  EXPECT_NE(
+      m_session->setParameter("camera", 0, "position", {"0", "0", "0"}), "");
+}
+
+TEST_F(ViewerSessionTest, ThePickedObjectIsTintedInTheShownImageOnly)
+{
+  ASSERT_EQ(m_session->loadScene("demo:cornell-box"), "");
+  FramePipeline &pipeline = m_session->pipeline();
+  pollUntil(*m_session, [&] { return pipeline.status().samples >= 1; });
+  pipeline.finish();
+  const std::optional<Pick> picked = m_session->pick(32, 24);
+  ASSERT_TRUE(picked && picked->hit);
+  const Rgba8Image plain = pipeline.image();
+  const Rgba8Image shown = m_session->shownImage();
+  const std::vector<bool> mask = pickedMask(pipeline.ids(), *picked);
+  ASSERT_EQ(shown.pixels.size(), plain.pixels.size());
+  size_t tinted = 0, untouched = 0;
+  for (size_t i = 0; i < mask.size(); ++i) {
+    const bool same = std::equal(
+        &shown.pixels[4 * i], &shown.pixels[4 * i + 3], &plain.pixels[4 * i]);
+    tinted += mask[i] && !same;
+    untouched += !mask[i] && same;
+  }
+  const size_t inMask = std::count(mask.begin(), mask.end(), true);
+  EXPECT_GT(inMask, 0u);
+  EXPECT_GT(tinted, inMask / 2); // pure orange pixels do not change
+  EXPECT_EQ(untouched, mask.size() - inMask);
 }
 
 TEST_F(ViewerSessionTest, FramesRefineAndPickingFindsTheBoxes)

@@ -91,6 +91,29 @@ void drawSceneControls(ViewerSession &session, PanelState &state)
   }
 }
 
+// The camera's own parameters but those the pose sets on every move.
+void drawCameraParameters(ViewerSession &session)
+{
+  ParameterSet &set = session.cameraParameters();
+  ImGui::PushID(&set);
+  for (const ParameterWidget &w : set.widgets()) {
+    if (isPoseParameter(w.name))
+      continue;
+    if (drawParameter(set, w))
+      session.parametersChanged();
+  }
+  ImGui::PopID();
+}
+
+void drawDenoiseToggle(ViewerSession &session)
+{
+  ParameterSet &set = session.rendererParameters();
+  const ParameterWidget *denoise = set.find("denoise");
+  if (denoise && denoise->kind == WidgetKind::Toggle
+      && drawParameter(set, *denoise))
+    session.parametersChanged();
+}
+
 void drawCameraControls(ViewerSession &session)
 {
   OrbitCamera &camera = session.camera();
@@ -110,6 +133,10 @@ void drawCameraControls(ViewerSession &session)
     session.frameScene();
   else if (changed)
     session.cameraChanged();
+  if (ImGui::TreeNode("camera parameters")) {
+    drawCameraParameters(session);
+    ImGui::TreePop();
+  }
 }
 
 void drawScreenshot(ViewerSession &session, PanelState &state)
@@ -208,6 +235,7 @@ void drawPanels(ViewerSession &session, PanelState &state)
   ImGui::SetNextWindowSize(ImVec2(380, 520), ImGuiCond_FirstUseEver);
   ImGui::Begin("prism-viewer");
   drawSceneControls(session, state);
+  drawDenoiseToggle(session);
   if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen))
     drawCameraControls(session);
   if (ImGui::CollapsingHeader("Renderer"))

@@ -79,6 +79,17 @@ ParsedOptions parseViewerOptions(
         parsed.error = "--spp-limit takes a sample count, not '" + text + "'";
         return parsed;
       }
+    } else if (arg == "--camera") {
+      if (!value(text))
+        return parsed;
+      const auto r = std::from_chars(
+          text.data(), text.data() + text.size(), o.cameraIndex);
+      if (r.ec != std::errc() || r.ptr != text.data() + text.size()
+          || o.cameraIndex < 0) {
+        parsed.error =
+            "--camera takes a camera index (0 or more), not '" + text + "'";
+        return parsed;
+      }
     } else if (arg == "--threads") {
       if (!value(text))
         return parsed;
@@ -125,6 +136,8 @@ window) with any ANARI library, refining progressively.
   --device SUBTYPE        device subtype (default: default)
   --renderer NAME         renderer subtype (default: default)
   --size WxH              window size (default 1024x768)
+  --camera N              start from the glTF file's camera N (default: its
+                          first; F returns to it)
   --spp-limit N           stop refining at N samples (default: never)
   --interaction-scale F   resolution scale while the camera moves (0.5)
   --threads N             render threads, where the device takes numThreads

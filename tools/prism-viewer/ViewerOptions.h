@@ -14,8 +14,9 @@ struct ViewerOptions
   std::string renderer{"default"};
   uint32_t width{1024}, height{768}; // --size WxH, the window's
   std::string script;                // --script FILE
-  uint32_t sampleLimit{0};           // --spp-limit N (0: none)
-  uint32_t threads{0}; // --threads N: the device's numThreads (0: its own)
+  int cameraIndex{-1};     // --camera N: the glTF camera to start from
+  uint32_t sampleLimit{0}; // --spp-limit N (0: none)
+  uint32_t threads{0};     // --threads N: the device's numThreads (0: its own)
   float interactionScale{0.5f}; // --interaction-scale F in (0, 1]
   std::string traceFile;        // --trace FILE: the validation layer's
   std::string frameTimes; // --frame-times FILE: each UI frame's interval (ms)

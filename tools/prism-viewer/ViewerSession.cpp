@@ -40,6 +40,20 @@ bool oneFloat(const std::vector<std::string> &words, float &value)
 
 } // namespace
 
+bool isPoseParameter(const std::string &name)
+{
+  for (const char *owned : {"position",
+           "direction",
+           "up",
+           "aspect",
+           "fovy",
+           "apertureRadius",
+           "focusDistance"})
+    if (name == owned)
+      return true;
+  return false;
+}
+
 void printMessage(const std::string &line)
 {
   static std::mutex lock;
@@ -168,7 +182,10 @@ std::string ViewerSession::loadScene(const std::string &text)
            + "' is an NSI stream, which names its own camera and outputs: "
              "render it with nsi-render";
   const int errorsBefore = m_session.errors();
-  scene_io::LoadResult loaded = scene_io::loadScene(device, source.source);
+  scene_io::LoadOptions load;
+  load.gltfCamera = m_options.cameraIndex;
+  scene_io::LoadResult loaded =
+      scene_io::loadScene(device, source.source, load);
   for (const std::string &note : loaded.scene.notes)
     printMessage("warning: " + note);
   if (loaded.ok() && m_session.errors() > errorsBefore)
@@ -319,7 +336,7 @@ std::string ViewerSession::setParameter(const std::string &target,
   } else {
     return "set applies to renderer, camera or light";
   }
-  if (target == "camera") {
+  if (target == "camera" && isPoseParameter(name)) {
     // The pose owns these: it would overwrite them on the next move.
     float v = 0.f;
     if (name == "fovy" || name == "apertureRadius" || name == "focusDistance") {
@@ -336,6 +353,9 @@ std::string ViewerSession::setParameter(const std::string &target,
       cameraChanged();
       return {};
     }
+    return "the camera's '" + name
+           + "' follows the viewer's moves (orbit, pan, zoom, fly) and the "
+             "window";
   }
   const std::string error = set->setFromWords(name, words);
   if (error.empty())

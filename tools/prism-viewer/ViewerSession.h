@@ -135,6 +135,10 @@ class ViewerSession
   uint32_t m_width{0}, m_height{0};
 };
 
+// The camera parameters the viewer's pose sets on every move (position,
+// direction, up, aspect, fovy, apertureRadius, focusDistance).
+bool isPoseParameter(const std::string &name);
+
 // Prints "prism-viewer: <line>" on stderr (device messages too).
 void printMessage(const std::string &line);
 
