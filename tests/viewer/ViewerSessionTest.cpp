@@ -180,6 +180,46 @@ TEST_F(ViewerSessionTest, ScriptsRunThroughTheSession)
   EXPECT_EQ(m_session->pipeline().channel(), Channel::ObjectId);
 }
 
+TEST_F(ViewerSessionTest, TheVolumeIsRestyledKeepingTheView)
+{
+  ASSERT_EQ(m_session->loadScene("demo:cornell-box"), "");
+  EXPECT_FALSE(m_session->hasVolume());
+  EXPECT_NE(m_session->restyleVolume({}), "");
+  ASSERT_EQ(m_session->loadScene("demo:volume"), "");
+  ASSERT_TRUE(m_session->hasVolume());
+  FramePipeline &pipeline = m_session->pipeline();
+  pollUntil(*m_session, [&] { return pipeline.status().samples >= 1; });
+  m_session->camera().orbit(40.f, 0.f);
+  m_session->cameraChanged();
+  pollUntil(*m_session, [&] { return pipeline.status().samples >= 4; });
+  const CameraPose before = m_session->camera().pose();
+  const Rgba8Image styled = pipeline.image();
+  TransferFunctionEdit edit;
+  edit.opacities = {0.f, 0.f}; // invisible: the environment shows through
+  ASSERT_EQ(m_session->restyleVolume(edit), "");
+  EXPECT_EQ(m_session->camera().pose().eye, before.eye);
+  pollUntil(*m_session, [&] { return pipeline.status().samples >= 4; });
+  const Rgba8Image &clear = pipeline.image();
+  ASSERT_EQ(clear.pixels.size(), styled.pixels.size());
+  // The window's border shows the environment either way; its middle,
+  // the volume, changes.
+  auto difference = [&](uint32_t x, uint32_t y) {
+    const size_t i = 4 * (size_t(y) * clear.width + x);
+    int d = 0;
+    for (int c = 0; c < 3; ++c)
+      d += std::abs(int(clear.pixels[i + c]) - int(styled.pixels[i + c]));
+    return d;
+  };
+  EXPECT_LE(difference(0, 0), 3);
+  EXPECT_GT(difference(32, 24), 30);
+  edit.opacities = {0.f, 2.f};
+  EXPECT_EQ(m_session->restyleVolume(edit), "opacities are between 0 and 1");
+  edit.opacities = {1.f};
+  edit.customRange = true;
+  edit.range = {1.f, 1.f};
+  EXPECT_EQ(m_session->restyleVolume(edit), "the value range needs low < high");
+}
+
 TEST(ViewerSessionOpen, ALibraryThatFailsIsNamed)
 {
   ViewerOptions options;

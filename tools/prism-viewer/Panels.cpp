@@ -1,5 +1,7 @@
 #include "Panels.h"
 
+#include "ColorMaps.h"
+
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
@@ -149,6 +151,62 @@ void drawScreenshot(ViewerSession &session, PanelState &state)
   }
 }
 
+// Color map, opacity curve, value range, unit distance; the volume is
+// rebuilt when an edit is done (a slider released), not on every drag step.
+void drawTransferFunction(ViewerSession &session, PanelState &state)
+{
+  TransferFunctionEdit &edit = state.transferFunction;
+  bool done = false;
+  const auto &maps = scenes::colorMaps();
+  if (ImGui::BeginCombo("color map", maps[edit.colorMap].name)) {
+    for (size_t i = 0; i < maps.size(); ++i)
+      if (ImGui::Selectable(maps[i].name, int(i) == edit.colorMap)) {
+        edit.colorMap = int(i);
+        done = true;
+      }
+    ImGui::EndCombo();
+  }
+  ImGui::PlotLines("opacity",
+      edit.opacities.data(),
+      int(edit.opacities.size()),
+      0,
+      nullptr,
+      0.f,
+      1.f,
+      ImVec2(0, 60));
+  for (size_t i = 0; i < edit.opacities.size(); ++i) {
+    ImGui::PushID(int(i));
+    ImGui::VSliderFloat(
+        "##o", ImVec2(24, 80), &edit.opacities[i], 0.f, 1.f, "");
+    done |= ImGui::IsItemDeactivatedAfterEdit();
+    ImGui::PopID();
+    ImGui::SameLine();
+  }
+  if (ImGui::Button("+") && edit.opacities.size() < 16)
+    edit.opacities.push_back(1.f), done = true;
+  ImGui::SameLine();
+  if (ImGui::Button("-") && edit.opacities.size() > 1)
+    edit.opacities.pop_back(), done = true;
+  done |= ImGui::Checkbox("own value range", &edit.customRange);
+  if (edit.customRange) {
+    ImGui::InputFloat2("range", edit.range.data());
+    done |= ImGui::IsItemDeactivatedAfterEdit();
+  }
+  ImGui::DragFloat("unit distance",
+      &edit.unitDistance,
+      0.01f,
+      1e-4f,
+      1e4f,
+      "%.4g",
+      ImGuiSliderFlags_Logarithmic);
+  done |= ImGui::IsItemDeactivatedAfterEdit();
+  if (done) {
+    const std::string error = session.restyleVolume(edit);
+    state.message = error;
+    state.messageIsError = !error.empty();
+  }
+}
+
 void drawSelection(ViewerSession &session)
 {
   const std::optional<Pick> &pick = session.selection();
@@ -243,6 +301,9 @@ void drawPanels(ViewerSession &session, PanelState &state)
   for (ViewerLight &light : session.lights())
     if (ImGui::CollapsingHeader(light.label.c_str()))
       drawParameterSet(session, light.parameters);
+  if (session.hasVolume()
+      && ImGui::CollapsingHeader("Volume transfer function"))
+    drawTransferFunction(session, state);
   if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen))
     drawSelection(session);
   if (ImGui::CollapsingHeader("Screenshot"))

@@ -3,6 +3,7 @@
 // introspection (ParameterModel.*), the selection and the status bar.
 #pragma once
 
+#include "TransferFunctionEdit.h"
 #include "ViewerSession.h"
 
 #include <string>
@@ -16,6 +17,7 @@ struct PanelState
   std::string screenshotPath{"prism-viewer.png"};
   std::string message; // the last error or note, shown until replaced
   bool messageIsError{false};
+  TransferFunctionEdit transferFunction;
 };
 
 // Draws every panel; edits go to the session at once.

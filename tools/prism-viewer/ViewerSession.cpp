@@ -173,7 +173,6 @@ void ViewerSession::releaseScene()
 
 std::string ViewerSession::loadScene(const std::string &text)
 {
-  ANARIDevice device = m_session.device();
   const scene_io::SourceResult source = scene_io::identifySceneSource(text);
   if (!source.ok())
     return source.error;
@@ -181,15 +180,43 @@ std::string ViewerSession::loadScene(const std::string &text)
     return "'" + text
            + "' is an NSI stream, which names its own camera and outputs: "
              "render it with nsi-render";
+  scene_io::LoadOptions options;
+  options.gltfCamera = m_options.cameraIndex;
+  const std::string error = load(source.source, options, true);
+  if (error.empty())
+    m_sceneName = text;
+  return error;
+}
+
+bool ViewerSession::hasVolume() const
+{
+  return m_scene.world && scene_io::hasVolumeStyle(m_source);
+}
+
+std::string ViewerSession::restyleVolume(const TransferFunctionEdit &edit)
+{
+  if (!hasVolume())
+    return "the scene has no volume whose transfer function can be edited";
+  scene_io::LoadOptions options = m_loadOptions;
+  if (std::string error =
+          transferFunctionOptions(edit, options.transferFunction);
+      !error.empty())
+    return error;
+  return load(m_source, options, false);
+}
+
+std::string ViewerSession::load(const scene_io::SceneSource &source,
+    const scene_io::LoadOptions &options,
+    bool reframe)
+{
+  ANARIDevice device = m_session.device();
   const int errorsBefore = m_session.errors();
-  scene_io::LoadOptions load;
-  load.gltfCamera = m_options.cameraIndex;
-  scene_io::LoadResult loaded =
-      scene_io::loadScene(device, source.source, load);
+  scene_io::LoadResult loaded = scene_io::loadScene(device, source, options);
   for (const std::string &note : loaded.scene.notes)
     printMessage("warning: " + note);
   if (loaded.ok() && m_session.errors() > errorsBefore)
-    loaded.error = "the device refused the scene '" + text + "' (see above)";
+    loaded.error =
+        "the device refused the scene '" + source.name + "' (see above)";
   if (!loaded.ok()) {
     if (loaded.scene.world)
       scenes::releaseScene(device, loaded.scene);
@@ -198,11 +225,15 @@ std::string ViewerSession::loadScene(const std::string &text)
   m_pipeline->finish();
   releaseScene();
   m_scene = loaded.scene;
-  m_sceneName = text;
+  m_source = source;
+  m_loadOptions = options;
   lightScene();
   scenes::setObject(device, m_frame, "world", ANARI_WORLD, m_scene.world);
   anariCommitParameters(device, m_frame);
-  frameScene();
+  if (reframe)
+    frameScene();
+  else
+    m_pipeline->restart();
   return {};
 }
 

@@ -10,6 +10,7 @@
 #include "OrbitCamera.h"
 #include "ParameterModel.h"
 #include "SceneLoader.h"
+#include "TransferFunctionEdit.h"
 #include "ViewerOptions.h"
 
 #include <memory>
@@ -44,6 +45,12 @@ class ViewerSession
   {
     return m_sceneName;
   }
+  // Whether the scene is a volume whose transfer function can be edited
+  // (volume files, demo:volume).
+  bool hasVolume() const;
+  // Rebuilds the volume with `edit`'s transfer function, keeping the view;
+  // the error says why not.
+  std::string restyleVolume(const TransferFunctionEdit &edit);
 
   // Render-target size in pixels (the window's, times the scale).
   void setViewport(uint32_t width, uint32_t height, float scale);
@@ -111,6 +118,9 @@ class ViewerSession
   }
 
  private:
+  std::string load(const scene_io::SceneSource &source,
+      const scene_io::LoadOptions &options,
+      bool reframe);
   void releaseScene();
   void lightScene();
   void describeLights();
@@ -126,6 +136,8 @@ class ViewerSession
   std::unique_ptr<FramePipeline> m_pipeline;
   scenes::Scene m_scene;
   std::string m_sceneName;
+  scene_io::SceneSource m_source;
+  scene_io::LoadOptions m_loadOptions;
   OrbitCamera m_camera;
   ParameterSet m_rendererParameters;
   ParameterSet m_cameraParameters;
