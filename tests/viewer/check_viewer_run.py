@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Runs prism-viewer under Xvfb on a script and checks what it did.
 
-usage: check_viewer_run.py script|errors VIEWER XVFB_RUN WORKDIR
+usage: check_viewer_run.py script|errors|library VIEWER XVFB_RUN WORKDIR
 
 `script`: demo:cornell-box at 320x240 (its surfaces' ids: 0 white walls,
 floor and ceiling, 1 red wall, 2 green wall, 3 the blocks, 4 the lamp).
@@ -21,7 +21,9 @@ parameter panel's code. Checks (analytic, regions of 9x9 pixels):
     red wall stays lit.
 `errors`: an unknown script line, a scene that fails to load, a library
 that fails to load and a missing display each end the run with one clear
-message (one "prism-viewer: error:" line naming the problem) and a non-zero status.
+message (one "prism-viewer: error:" line naming the problem) and a
+non-zero status.
+`library`: the viewer on another ANARI library (library_test says which).
 """
 import os
 import subprocess
@@ -195,12 +197,30 @@ def errors_test(viewer, xvfb, work):
 VIEWER = None
 
 
+def library_test(viewer, xvfb, work):
+    """Another ANARI library (the test suite's recording device, which
+    renders nothing and reports no sample count): the viewer still
+    refines, picks (nothing) and saves, and ends with status 0."""
+    script = os.path.join(work, "other.txt")
+    with open(script, "w") as f:
+        f.write("wait-samples 2\npick 10 10\nscreenshot other.png\nquit\n")
+    result = run([xvfb, "-a", viewer, "demo:cornell-box", "--library",
+                  "recording", "--size", "160x120", "--script", script], work)
+    check(result.returncode == 0, "the script ends with status 0")
+    check("pick 10 10: objectId none instanceId none primitiveId none"
+          in result.stdout, "the pick finds nothing")
+    check(os.path.exists(os.path.join(work, "other.png")),
+          "the screenshot was written")
+
+
 def main():
     global VIEWER
     what, viewer, xvfb, work = sys.argv[1:5]
     VIEWER = viewer
     os.makedirs(work, exist_ok=True)
-    {"script": script_test, "errors": errors_test}[what](viewer, xvfb, work)
+    tests = {"script": script_test, "errors": errors_test,
+             "library": library_test}
+    tests[what](viewer, xvfb, work)
     if failures:
         print("%d check(s) failed" % len(failures))
         return 1

@@ -1,5 +1,6 @@
 #include "FramePipeline.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace prism::viewer {
@@ -136,17 +137,18 @@ void FramePipeline::copyOut()
 void FramePipeline::copyStatus()
 {
   ++m_status.finished;
+  // The device's count where it is larger (several samples a frame), else
+  // the frames finished since the change (a device reporting no count, or
+  // a count that does not move).
   uint32_t samples = 0;
-  if (anariGetProperty(m_device,
-          m_frame,
-          "numSamples",
-          ANARI_UINT32,
-          &samples,
-          sizeof(samples),
-          ANARI_NO_WAIT))
-    m_status.samples = samples;
-  else
-    m_status.samples++;
+  anariGetProperty(m_device,
+      m_frame,
+      "numSamples",
+      ANARI_UINT32,
+      &samples,
+      sizeof(samples),
+      ANARI_NO_WAIT);
+  m_status.samples = std::max(samples, m_status.samples + 1);
   float value = 0.f;
   if (anariGetProperty(m_device,
           m_frame,
