@@ -116,6 +116,10 @@ TEST_F(ViewerSessionTest, FramesRefineAndPickingFindsTheBoxes)
   FramePipeline &pipeline = m_session->pipeline();
   pollUntil(*m_session, [&] { return pipeline.status().samples >= 3; });
   EXPECT_EQ(pipeline.image().width, 64u);
+  // The path tracer counts its rays: a rate over the last frame.
+  EXPECT_TRUE(pipeline.status().countsRays);
+  EXPECT_GT(pipeline.status().raysPerSecond, 0.0);
+  EXPECT_GT(pipeline.status().frameSeconds, 0.f);
   EXPECT_EQ(pipeline.image().pixels.size(), 64u * 48u * 4u);
   // The middle of the framed box shows a wall or a block; a corner of the
   // window shows nothing.

@@ -167,13 +167,23 @@ void FramePipeline::copyStatus()
                              ANARI_NO_WAIT)
                              ? value
                              : -1.f;
-  m_status.countsRays = anariGetProperty(m_device,
+  // Rays per second: the renderer's running count across the frame, over
+  // the frame's duration.
+  uint64_t rays = 0;
+  const bool counted = anariGetProperty(m_device,
       m_renderer,
       "raysTraced",
       ANARI_UINT64,
-      &m_status.raysTraced,
-      sizeof(m_status.raysTraced),
+      &rays,
+      sizeof(rays),
       ANARI_NO_WAIT);
+  m_status.raysPerSecond =
+      counted && m_status.countsRays && rays >= m_status.raysTraced
+              && m_status.frameSeconds > 0.f
+          ? double(rays - m_status.raysTraced) / m_status.frameSeconds
+          : -1.0;
+  m_status.countsRays = counted;
+  m_status.raysTraced = rays;
 }
 
 void FramePipeline::copyImage()

@@ -24,7 +24,8 @@ struct FrameStatus
   float convergence{-1.f}; // `refinementProgress`; < 0: not reported
   uint64_t raysTraced{0};  // the renderer's `raysTraced`, where reported
   bool countsRays{false};
-  uint64_t finished{0}; // frames finished since the start
+  double raysPerSecond{-1.0}; // over the last frame; < 0: not known
+  uint64_t finished{0};       // frames finished since the start
 };
 
 class FramePipeline

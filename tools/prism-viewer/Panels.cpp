@@ -242,11 +242,9 @@ void drawStatusBar(ViewerSession &session)
       s.frameSeconds * 1e3f,
       pipeline.width(),
       pipeline.height());
-  if (s.countsRays && s.frameSeconds > 0.f && n > 0 && n < int(sizeof(line)))
-    n += std::snprintf(line + n,
-        sizeof(line) - n,
-        "  %.1f Mrays total",
-        double(s.raysTraced) * 1e-6);
+  if (s.raysPerSecond >= 0.0 && n > 0 && n < int(sizeof(line)))
+    n += std::snprintf(
+        line + n, sizeof(line) - n, "  %.2f Mrays/s", s.raysPerSecond * 1e-6);
   if (s.convergence >= 0.f && n > 0 && n < int(sizeof(line)))
     std::snprintf(line + n,
         sizeof(line) - n,
