@@ -19,9 +19,10 @@ TEST(ViewerScript, ReadsEveryCommand)
       "channel objectId\n"
       "wait-samples 8\n"
       "screenshot out.png\n"
+      "window-screenshot window.png\n"
       "quit\n");
   ASSERT_TRUE(s.ok()) << s.error;
-  ASSERT_EQ(s.commands.size(), 8u);
+  ASSERT_EQ(s.commands.size(), 9u);
   EXPECT_EQ(s.commands[0].action, ScriptAction::Orbit);
   EXPECT_FLOAT_EQ(s.commands[0].degrees, 30.f);
   EXPECT_EQ(s.commands[0].line, 3);
@@ -35,7 +36,9 @@ TEST(ViewerScript, ReadsEveryCommand)
   EXPECT_EQ(s.commands[4].name, "objectId");
   EXPECT_EQ(s.commands[5].samples, 8u);
   EXPECT_EQ(s.commands[6].name, "out.png");
-  EXPECT_EQ(s.commands[7].action, ScriptAction::Quit);
+  EXPECT_EQ(s.commands[7].action, ScriptAction::WindowScreenshot);
+  EXPECT_EQ(s.commands[7].name, "window.png");
+  EXPECT_EQ(s.commands[8].action, ScriptAction::Quit);
 }
 
 TEST(ViewerScript, AnUnknownLineIsAnErrorNamingIt)

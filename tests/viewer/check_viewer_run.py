@@ -5,10 +5,14 @@ usage: check_viewer_run.py script|errors|library VIEWER XVFB_RUN WORKDIR
 
 `script`: demo:cornell-box at 320x240 (its surfaces' ids: 0 white walls,
 floor and ceiling, 1 red wall, 2 green wall, 3 the blocks, 4 the lamp).
-The script picks four pixels, saves the color, objectId and depth channels,
+The script picks four pixels, saves the color, objectId and depth channels
+and the whole window,
 orbits 30 degrees and changes the renderer's maxPathLength to 1 through the
 parameter panel's code. Checks (analytic, regions of 9x9 pixels):
   - each pick prints the id of the surface the framed view shows there;
+  - the window shows the image pixel for pixel, right side up, with the
+    picked block tinted halfway to orange (between the folded panel and
+    the status bar);
   - the objectId screenshot shows, at each picked pixel, exactly the color
     the viewer gives that id (idColor in ChannelView.cpp);
   - color: the red wall region is red (R > 2 G, R > 2 B), the green one
@@ -91,6 +95,11 @@ def check(ok, what):
 def script_test(viewer, xvfb, work):
     lines = ["wait-samples 16", "screenshot color.png"]
     lines += ["pick %d %d" % xy for xy in PICKS]
+    # The window as drawn (the panel folded at the top-left, the status
+    # bar at the bottom) in the same frame as the image: the block picked
+    # last is tinted.
+    lines += ["pick 190 185", "screenshot plain.png",
+              "window-screenshot window.png"]
     lines += ["channel objectId", "screenshot ids.png",
               "channel depth", "screenshot depth.png",
               "channel color", "orbit 30", "wait-samples 16",
@@ -114,7 +123,8 @@ def script_test(viewer, xvfb, work):
               "pick %s prints objectId %d (got %s)" % (xy, expected,
                                                         picked.get(xy)))
     images = {}
-    for name in ["color", "ids", "depth", "orbit", "direct"]:
+    for name in ["color", "ids", "depth", "orbit", "direct", "plain",
+                 "window"]:
         path = os.path.join(work, name + ".png")
         if not os.path.exists(path):
             check(False, path + " was written")
@@ -127,6 +137,25 @@ def script_test(viewer, xvfb, work):
         check(got == id_color(expected),
               "ids.png at %s is id %d's color %s (got %s)" % (
                   xy, expected, id_color(expected), got))
+    window, plain = images["window"], images["plain"]
+    ids = images["ids"]
+    block = id_color(3)
+    same = tinted = 0
+    for y in range(40, 200):  # between the folded panel and the status bar
+        for x in range(WIDTH):
+            p, w = plain.getpixel((x, y)), window.getpixel((x, y))
+            if ids.getpixel((x, y)) == block:
+                expected = tuple((c + o) // 2 for c, o in zip(p, (255, 150, 0)))
+                tinted += all(abs(a - b) <= 1 for a, b in zip(w, expected))
+            else:
+                same += p == w
+    block_pixels = sum(1 for y in range(40, 200) for x in range(WIDTH)
+                       if ids.getpixel((x, y)) == block)
+    check(same == 160 * WIDTH - block_pixels, "the window shows the image "
+          "pixel for pixel, right side up (%d of %d)" % (
+              same, 160 * WIDTH - block_pixels))
+    check(block_pixels > 0 and tinted == block_pixels, "the picked blocks (one surface, id 3) are "
+          "tinted halfway to orange (%d of %d)" % (tinted, block_pixels))
     red = region_mean(images["color"], 70, 120)
     check(red[0] > 2 * red[1] and red[0] > 2 * red[2],
           "the red wall is red %s" % red)

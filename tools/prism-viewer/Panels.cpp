@@ -289,7 +289,12 @@ void drawPanels(ViewerSession &session, PanelState &state)
 {
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(380, 520), ImGuiCond_FirstUseEver);
-  ImGui::Begin("prism-viewer");
+  ImGui::SetNextWindowCollapsed(state.startFolded, ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin("prism-viewer")) {
+    ImGui::End();
+    drawStatusBar(session);
+    return;
+  }
   drawSceneControls(session, state);
   drawDenoiseToggle(session);
   if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen))

@@ -17,6 +17,7 @@ struct PanelState
   std::string screenshotPath{"prism-viewer.png"};
   std::string message; // the last error or note, shown until replaced
   bool messageIsError{false};
+  bool startFolded{false}; // the main panel starts collapsed
   TransferFunctionEdit transferFunction;
 };
 

@@ -80,6 +80,14 @@ bool ScriptRunner::run(const ScriptCommand &c, ViewerSession &session)
     const std::string error = session.screenshot(c.name);
     return error.empty() ? true : fail(error);
   }
+  case ScriptAction::WindowScreenshot:
+    if (!m_capture)
+      return fail("there is no window");
+    if (pipeline.status().samples == 0
+        || pipeline.imageChannel() != pipeline.channel())
+      return false;
+    m_capture(c.name);
+    return true;
   case ScriptAction::Quit:
     m_quit = true;
     return true;

@@ -7,6 +7,7 @@
 #include "ViewerScript.h"
 #include "ViewerSession.h"
 
+#include <functional>
 #include <string>
 
 namespace prism::viewer {
@@ -17,6 +18,14 @@ class ScriptRunner
 {
  public:
   explicit ScriptRunner(ParsedScript script) : m_script(std::move(script)) {}
+
+  // Saves the whole window to a file once this frame is drawn (the window
+  // sets it; without one, window-screenshot is an error).
+  using WindowCapture = std::function<void(const std::string &path)>;
+  void setWindowCapture(WindowCapture capture)
+  {
+    m_capture = std::move(capture);
+  }
 
   // Runs what can run now; called once per UI frame after the session's
   // update.
@@ -35,6 +44,7 @@ class ScriptRunner
   size_t m_next{0};
   std::string m_error;
   bool m_quit{false};
+  WindowCapture m_capture;
 };
 
 // The line `pick` prints.

@@ -66,6 +66,11 @@ std::string parseArguments(const std::vector<std::string> &w, ScriptCommand &c)
     if (n != 1)
       return "screenshot takes a file name (no spaces)";
     c.name = w[1];
+  } else if (verb == "window-screenshot") {
+    c.action = ScriptAction::WindowScreenshot;
+    if (n != 1)
+      return "window-screenshot takes a file name (no spaces)";
+    c.name = w[1];
   } else if (verb == "quit") {
     c.action = ScriptAction::Quit;
     if (n != 0)

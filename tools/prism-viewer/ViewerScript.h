@@ -10,6 +10,7 @@
 //                                        objectId, primitiveId, instanceId
 //   wait-samples N
 //   screenshot PATH                      PNG (or .exr) of the rendered image
+//   window-screenshot PATH               PNG of the whole window, panels too
 //   quit
 #pragma once
 
@@ -25,6 +26,7 @@ enum class ScriptAction {
   Channel,
   WaitSamples,
   Screenshot,
+  WindowScreenshot,
   Quit
 };
 

@@ -1,5 +1,7 @@
 #include "ViewerWindow.h"
 
+#include "ImageIO.h"
+
 #define GLFW_INCLUDE_NONE
 #include <GL/gl.h>
 #include <GLFW/glfw3.h>
@@ -149,7 +151,7 @@ void ViewerWindow::showImage(const Rgba8Image &image)
   }
 }
 
-void ViewerWindow::endFrame()
+std::string ViewerWindow::endFrame(const std::string &capturePath)
 {
   if (m_textureWidth > 0) {
     // Row 0 of the image is its bottom: v runs up.
@@ -167,7 +169,35 @@ void ViewerWindow::endFrame()
   glClearColor(0.1f, 0.1f, 0.1f, 1.f);
   glClear(GL_COLOR_BUFFER_BIT);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  std::string error;
+  if (!capturePath.empty())
+    error = capture(capturePath, w, h);
   glfwSwapBuffers(m_window);
+  return error;
+}
+
+std::string ViewerWindow::capture(
+    const std::string &path, uint32_t width, uint32_t height) const
+{
+  std::vector<uint8_t> pixels(size_t(width) * height * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glReadBuffer(GL_BACK);
+  glReadPixels(0,
+      0,
+      GLsizei(width),
+      GLsizei(height),
+      GL_RGBA,
+      GL_UNSIGNED_BYTE,
+      pixels.data());
+  // GL's rows, like ANARI's and prism_image's, start at the bottom.
+  image::Image out(width, height);
+  for (size_t i = 0; i < out.pixels.size(); ++i)
+    for (int c = 0; c < 4; ++c) {
+      const float v = pixels[4 * i + c] / 255.f;
+      out.pixels[i][c] = c == 3 ? 1.f : image::linearFromSrgb(v);
+    }
+  const image::Status written = image::write(path, out);
+  return written.ok() ? std::string() : written.error;
 }
 
 } // namespace prism::viewer

@@ -28,8 +28,10 @@ class ViewerWindow
   void requestClose();
   // Polls events and starts an ImGui frame.
   void beginFrame();
-  // Draws the image behind ImGui's windows, renders ImGui and swaps.
-  void endFrame();
+  // Draws the image behind ImGui's windows, renders ImGui and swaps;
+  // with `capturePath`, first writes what was drawn there (PNG); the error
+  // says why not.
+  std::string endFrame(const std::string &capturePath = {});
 
   // Replaces the texture's pixels.
   void showImage(const Rgba8Image &image);
@@ -40,6 +42,8 @@ class ViewerWindow
 
  private:
   static void onDrop(GLFWwindow *window, int count, const char **paths);
+  std::string capture(
+      const std::string &path, uint32_t width, uint32_t height) const;
 
   GLFWwindow *m_window{nullptr};
   bool m_imgui{false};

@@ -18,6 +18,7 @@
 #include <memory>
 #include <optional>
 #include <thread>
+#include <utility>
 
 namespace prism::viewer {
 namespace {
@@ -67,6 +68,12 @@ class ViewerLoop
     if (!options.frameTimes.empty())
       m_frameTimes.open(options.frameTimes);
     m_state.sceneText = options.scene;
+    if (m_script) {
+      m_script->setWindowCapture(
+          [this](const std::string &path) { m_capturePath = path; });
+      // Scripts look at the image: the panel starts folded.
+      m_state.startFolded = true;
+    }
   }
 
   void setMessage(const std::string &message, bool error)
@@ -129,7 +136,10 @@ class ViewerLoop
     if (refresh)
       m_window.showImage(m_session.shownImage());
     drawPanels(m_session, m_state);
-    m_window.endFrame();
+    const std::string captureError =
+        m_window.endFrame(std::exchange(m_capturePath, {}));
+    if (!captureError.empty() && !status)
+      status = fail(captureError);
     return status;
   }
 
@@ -140,6 +150,7 @@ class ViewerLoop
   PanelState m_state;
   Clock::time_point m_lastMove{};
   std::ofstream m_frameTimes;
+  std::string m_capturePath; // window-screenshot's, for this frame
 };
 
 int run(int argc, char **argv)
