@@ -196,10 +196,10 @@ void FramePipeline::copyImage()
   Rgba8Image image = channelToRgba8(m_channel, pixels, type, w, h);
   if (pixels)
     anariUnmapFrame(m_device, m_frame, name.c_str());
-  if (!image.pixels.empty()) {
-    m_image = std::move(image);
-    m_imageChannel = m_channel;
-  }
+  // A channel the device does not give shows (and saves) nothing rather
+  // than the previous channel's image.
+  m_image = std::move(image);
+  m_imageChannel = m_channel;
 }
 
 void FramePipeline::copyIds()

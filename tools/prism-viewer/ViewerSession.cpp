@@ -436,7 +436,8 @@ std::string ViewerSession::screenshot(const std::string &path) const
 {
   const Rgba8Image &shown = m_pipeline->image();
   if (shown.pixels.empty())
-    return "no image has been rendered yet";
+    return std::string("the device gives no ")
+           + channelName(m_pipeline->imageChannel()) + " channel to save";
   image::Image out(shown.width, shown.height);
   for (size_t i = 0; i < out.pixels.size(); ++i)
     for (int c = 0; c < 4; ++c) {

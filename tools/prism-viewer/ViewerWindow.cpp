@@ -122,8 +122,10 @@ void ViewerWindow::beginFrame()
 
 void ViewerWindow::showImage(const Rgba8Image &image)
 {
-  if (image.pixels.empty())
+  if (image.pixels.empty()) {
+    m_textureWidth = m_textureHeight = 0; // nothing to show
     return;
+  }
   glBindTexture(GL_TEXTURE_2D, m_texture);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   if (image.width != m_textureWidth || image.height != m_textureHeight) {

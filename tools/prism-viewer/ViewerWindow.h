@@ -33,7 +33,7 @@ class ViewerWindow
   // says why not.
   std::string endFrame(const std::string &capturePath = {});
 
-  // Replaces the texture's pixels.
+  // Replaces the texture's pixels (an empty image: nothing is shown).
   void showImage(const Rgba8Image &image);
   // The window's size in pixels (framebuffer).
   void size(uint32_t &width, uint32_t &height) const;
