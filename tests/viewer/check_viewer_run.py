@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Runs prism-viewer under Xvfb on a script and checks what it did.
 
-usage: check_viewer_run.py script|errors|library VIEWER XVFB_RUN WORKDIR
+usage: check_viewer_run.py script|errors|library|panels VIEWER XVFB_RUN
+                          WORKDIR
 
 `script`: demo:cornell-box at 320x240 (its surfaces' ids: 0 white walls,
 floor and ceiling, 1 red wall, 2 green wall, 3 the blocks, 4 the lamp).
@@ -28,6 +29,7 @@ that fails to load and a missing display each end the run with one clear
 message (one "prism-viewer: error:" line naming the problem) and a
 non-zero status.
 `library`: the viewer on another ANARI library (library_test says which).
+`panels`: every panel section drawn (panels_test says how it is checked).
 """
 import os
 import subprocess
@@ -242,13 +244,46 @@ def library_test(viewer, xvfb, work):
           "the screenshot was written")
 
 
+def panels_test(viewer, xvfb, work):
+    """Every panel section open (--panels open) with the debug renderer
+    on demo:cornell-box at 480x720: the panels generated from
+    introspection are drawn (the run ends with status 0) over the image:
+    where the panel lies, the window is the panel's dark background (under
+    a third of the image's brightness there), not the image's bright wall;
+    beside it, the image pixel for pixel."""
+    script = os.path.join(work, "panels.txt")
+    with open(script, "w") as f:
+        f.write("wait-samples 1\nscreenshot image.png\n"
+                "window-screenshot window.png\nquit\n")
+    result = run([xvfb, "-a", "-s", "-screen 0 640x800x24", viewer,
+                  "demo:cornell-box", "--renderer", "debug", "--panels",
+                  "open", "--size", "480x720", "--script", script], work)
+    check(result.returncode == 0, "the script ends with status 0")
+    for name in ["image", "window"]:
+        if not os.path.exists(os.path.join(work, name + ".png")):
+            check(False, name + ".png was written")
+            return
+    image = Image.open(os.path.join(work, "image.png")).convert("RGB")
+    window = Image.open(os.path.join(work, "window.png")).convert("RGB")
+    # Inside the panel (which starts at 8, 8 and is 380 wide), below the
+    # title bar, and in the window's right-hand strip outside it.
+    inside = sum(region_mean(window, 300, 200))
+    under = sum(region_mean(image, 300, 200))
+    outside = (region_mean(window, 440, 300), region_mean(image, 440, 300))
+    # The dark style's panel background is 94 % opaque.
+    check(under > 300 and inside < under / 3, "the panel covers the image "
+          "(%.0f over %.0f)" % (inside, under))
+    check(outside[0] == outside[1], "outside the panel the window is the "
+          "image %s" % (outside,))
+
+
 def main():
     global VIEWER
     what, viewer, xvfb, work = sys.argv[1:5]
     VIEWER = viewer
     os.makedirs(work, exist_ok=True)
     tests = {"script": script_test, "errors": errors_test,
-             "library": library_test}
+             "library": library_test, "panels": panels_test}
     tests[what](viewer, xvfb, work)
     if failures:
         print("%d check(s) failed" % len(failures))

@@ -13,6 +13,13 @@ namespace {
 
 constexpr float kStatusBarHeight = 24.f;
 
+// Every section starts open with --panels open (demos, tests), else folded.
+bool g_openAll = false;
+ImGuiTreeNodeFlags openFlags()
+{
+  return g_openAll ? ImGuiTreeNodeFlags_DefaultOpen : 0;
+}
+
 bool drawNumbers(ParameterSet &set, const ParameterWidget &w, ParameterValue &v)
 {
   float f[4] = {};
@@ -135,7 +142,7 @@ void drawCameraControls(ViewerSession &session)
     session.frameScene();
   else if (changed)
     session.cameraChanged();
-  if (ImGui::TreeNode("camera parameters")) {
+  if (ImGui::TreeNodeEx("camera parameters", openFlags())) {
     drawCameraParameters(session);
     ImGui::TreePop();
   }
@@ -258,10 +265,16 @@ void drawStatusBar(ViewerSession &session)
 
 bool drawParameter(ParameterSet &set, const ParameterWidget &w)
 {
-  std::optional<ParameterValue> value = set.value(w.name);
-  if (w.kind == WidgetKind::ReadOnly || !value) {
+  if (w.kind == WidgetKind::ReadOnly) {
     ImGui::TextDisabled("%s", w.name.c_str());
     return false;
+  }
+  // Without a default the widget starts at zero (or the minimum); nothing
+  // is set until the user edits it.
+  std::optional<ParameterValue> value = set.value(w.name);
+  if (!value) {
+    value = ParameterValue{};
+    value->numbers.assign(w.components, w.minimum.value_or(0.0));
   }
   bool changed = false;
   if (w.kind == WidgetKind::Choice) {
@@ -288,8 +301,14 @@ bool drawParameter(ParameterSet &set, const ParameterWidget &w)
 void drawPanels(ViewerSession &session, PanelState &state)
 {
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(380, 520), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowCollapsed(state.startFolded, ImGuiCond_FirstUseEver);
+  const float height = ImGui::GetIO().DisplaySize.y - kStatusBarHeight - 16.f;
+  ImGui::SetNextWindowSize(
+      ImVec2(380,
+          std::max(120.f, std::min(height, state.openAll ? 4000.f : 520.f))),
+      ImGuiCond_FirstUseEver);
+  g_openAll = state.openAll;
+  ImGui::SetNextWindowCollapsed(
+      state.startFolded && !state.openAll, ImGuiCond_FirstUseEver);
   if (!ImGui::Begin("prism-viewer")) {
     ImGui::End();
     drawStatusBar(session);
@@ -299,17 +318,17 @@ void drawPanels(ViewerSession &session, PanelState &state)
   drawDenoiseToggle(session);
   if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen))
     drawCameraControls(session);
-  if (ImGui::CollapsingHeader("Renderer"))
+  if (ImGui::CollapsingHeader("Renderer", openFlags()))
     drawParameterSet(session, session.rendererParameters());
   for (ViewerLight &light : session.lights())
-    if (ImGui::CollapsingHeader(light.label.c_str()))
+    if (ImGui::CollapsingHeader(light.label.c_str(), openFlags()))
       drawParameterSet(session, light.parameters);
   if (session.hasVolume()
-      && ImGui::CollapsingHeader("Volume transfer function"))
+      && ImGui::CollapsingHeader("Volume transfer function", openFlags()))
     drawTransferFunction(session, state);
   if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen))
     drawSelection(session);
-  if (ImGui::CollapsingHeader("Screenshot"))
+  if (ImGui::CollapsingHeader("Screenshot", openFlags()))
     drawScreenshot(session, state);
   if (!state.message.empty()) {
     const ImVec4 colour = state.messageIsError ? ImVec4(1.f, 0.4f, 0.4f, 1.f)

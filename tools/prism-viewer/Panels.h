@@ -18,6 +18,7 @@ struct PanelState
   std::string message; // the last error or note, shown until replaced
   bool messageIsError{false};
   bool startFolded{false}; // the main panel starts collapsed
+  bool openAll{false};     // every section starts open (--panels open)
   TransferFunctionEdit transferFunction;
 };
 

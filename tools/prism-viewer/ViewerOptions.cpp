@@ -59,6 +59,14 @@ ParsedOptions parseViewerOptions(
     } else if (arg == "--trace") {
       if (!value(o.traceFile))
         return parsed;
+    } else if (arg == "--panels") {
+      if (!value(text))
+        return parsed;
+      if (text != "open" && text != "folded") {
+        parsed.error = "--panels is open or folded, not '" + text + "'";
+        return parsed;
+      }
+      o.panelsOpen = text == "open";
     } else if (arg == "--frame-times") {
       if (!value(o.frameTimes))
         return parsed;
@@ -144,6 +152,8 @@ window) with any ANARI library, refining progressively.
                           (leaving a core to the window keeps it fluid)
   --script FILE           replay UI actions from FILE (docs/viewer.md)
   --trace FILE            record an ANARI trace through the validation layer
+  --panels open|folded    every panel section open at the start (default:
+                          folded; scripts start with the whole panel folded)
   --frame-times FILE      write each window frame's interval in ms (bench/)
   -v, --verbose           every device message
   -h, --help              this text

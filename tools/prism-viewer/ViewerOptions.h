@@ -20,6 +20,7 @@ struct ViewerOptions
   float interactionScale{0.5f}; // --interaction-scale F in (0, 1]
   std::string traceFile;        // --trace FILE: the validation layer's
   std::string frameTimes; // --frame-times FILE: each UI frame's interval (ms)
+  bool panelsOpen{false}; // --panels open: every panel section starts open
   bool verbose{false};
   bool help{false};
 };

@@ -68,6 +68,7 @@ class ViewerLoop
     if (!options.frameTimes.empty())
       m_frameTimes.open(options.frameTimes);
     m_state.sceneText = options.scene;
+    m_state.openAll = options.panelsOpen;
     if (m_script) {
       m_script->setWindowCapture(
           [this](const std::string &path) { m_capturePath = path; });
