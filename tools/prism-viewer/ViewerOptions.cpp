@@ -154,7 +154,8 @@ window) with any ANARI library, refining progressively.
   --trace FILE            record an ANARI trace through the validation layer
   --panels open|folded    every panel section open at the start (default:
                           folded; scripts start with the whole panel folded)
-  --frame-times FILE      write each window frame's interval in ms (bench/)
+  --frame-times FILE      write each window frame's interval and drawing
+                          time in ms (bench/)
   -v, --verbose           every device message
   -h, --help              this text
 

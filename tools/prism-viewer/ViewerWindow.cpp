@@ -66,6 +66,7 @@ std::string ViewerWindow::open(
   glfwSwapInterval(0);
   glfwSetWindowUserPointer(m_window, this);
   glfwSetDropCallback(m_window, &ViewerWindow::onDrop);
+  glfwSetWindowRefreshCallback(m_window, &ViewerWindow::onRefresh);
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr; // no imgui.ini beside the user's files
@@ -87,6 +88,27 @@ void ViewerWindow::onDrop(GLFWwindow *window, int count, const char **paths)
   auto *self = (ViewerWindow *)glfwGetWindowUserPointer(window);
   for (int i = 0; i < count; ++i)
     self->m_dropped.push_back(paths[i]);
+}
+
+void ViewerWindow::onRefresh(GLFWwindow *window)
+{
+  ((ViewerWindow *)glfwGetWindowUserPointer(window))->m_exposed = true;
+}
+
+bool ViewerWindow::activity()
+{
+  const ImGuiIO &io = ImGui::GetIO();
+  bool active = std::exchange(m_exposed, false) || !m_dropped.empty()
+                || io.MouseDelta.x != 0.f || io.MouseDelta.y != 0.f
+                || io.MouseWheel != 0.f || io.MouseWheelH != 0.f
+                || io.InputQueueCharacters.Size > 0;
+  for (bool down : io.MouseDown)
+    active |= down;
+  for (bool down : io.KeysDown)
+    active |= down;
+  uint32_t w = 0, h = 0;
+  size(w, h);
+  return active || w != m_drawnWidth || h != m_drawnHeight;
 }
 
 std::vector<std::string> ViewerWindow::takeDroppedFiles()
@@ -153,7 +175,7 @@ void ViewerWindow::showImage(const Rgba8Image &image)
   }
 }
 
-std::string ViewerWindow::endFrame(const std::string &capturePath)
+std::string ViewerWindow::endFrame(bool draw, const std::string &capturePath)
 {
   if (m_textureWidth > 0) {
     // Row 0 of the image is its bottom: v runs up.
@@ -165,8 +187,12 @@ std::string ViewerWindow::endFrame(const std::string &capturePath)
         ImVec2(1, 0));
   }
   ImGui::Render();
+  if (!draw && capturePath.empty())
+    return {};
   uint32_t w = 0, h = 0;
   size(w, h);
+  m_drawnWidth = w;
+  m_drawnHeight = h;
   glViewport(0, 0, GLsizei(w), GLsizei(h));
   glClearColor(0.1f, 0.1f, 0.1f, 1.f);
   glClear(GL_COLOR_BUFFER_BIT);

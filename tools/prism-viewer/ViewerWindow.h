@@ -28,10 +28,15 @@ class ViewerWindow
   void requestClose();
   // Polls events and starts an ImGui frame.
   void beginFrame();
-  // Draws the image behind ImGui's windows, renders ImGui and swaps;
-  // with `capturePath`, first writes what was drawn there (PNG); the error
-  // says why not.
-  std::string endFrame(const std::string &capturePath = {});
+  // Whether anything since the last frame asks for the window to be drawn
+  // again: input, a resize, the window uncovered.
+  bool activity();
+  // Draws the image behind ImGui's windows, renders ImGui and swaps; with
+  // `draw` false only ImGui's frame ends (drawing 1080p through software
+  // OpenGL costs tens of ms, wasted when nothing changed). With
+  // `capturePath`, first writes what was drawn there (PNG); the error says
+  // why not.
+  std::string endFrame(bool draw, const std::string &capturePath = {});
 
   // Replaces the texture's pixels (an empty image: nothing is shown).
   void showImage(const Rgba8Image &image);
@@ -42,6 +47,7 @@ class ViewerWindow
 
  private:
   static void onDrop(GLFWwindow *window, int count, const char **paths);
+  static void onRefresh(GLFWwindow *window);
   std::string capture(
       const std::string &path, uint32_t width, uint32_t height) const;
 
@@ -50,6 +56,8 @@ class ViewerWindow
   unsigned m_texture{0};
   uint32_t m_textureWidth{0}, m_textureHeight{0};
   std::vector<std::string> m_dropped;
+  bool m_exposed{true}; // the window needs drawing whatever else happens
+  uint32_t m_drawnWidth{0}, m_drawnHeight{0};
 };
 
 } // namespace prism::viewer

@@ -11,6 +11,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -31,6 +32,10 @@ constexpr int kExitUsage = 2;
 constexpr auto kFramePeriod = std::chrono::milliseconds(16);
 // After the camera stops, frames render at the interaction scale this long.
 constexpr auto kStillAfter = std::chrono::milliseconds(250);
+// After input or a change, the window is drawn this many frames (ImGui's
+// hover and focus settle over a frame or two); otherwise only when a new
+// image arrives.
+constexpr int kDrawsAfterActivity = 3;
 
 int fail(const std::string &message, int code = kExitFailure)
 {
@@ -47,7 +52,7 @@ int showUntilClosed(ViewerWindow &window, const std::string &message)
     ImGui::Begin("prism-viewer");
     ImGui::TextColored(ImVec4(1.f, 0.4f, 0.4f, 1.f), "%s", message.c_str());
     ImGui::End();
-    window.endFrame();
+    window.endFrame(true);
     std::this_thread::sleep_for(kFramePeriod);
   }
   return kExitFailure;
@@ -88,13 +93,15 @@ class ViewerLoop
     Clock::time_point previous = Clock::now();
     while (!m_window.shouldClose()) {
       const Clock::time_point start = Clock::now();
-      if (m_frameTimes.is_open())
-        m_frameTimes << std::chrono::duration<double, std::milli>(
-            start - previous)
-                            .count()
-                     << std::endl; // whole lines, even if the run is killed
+      const double interval =
+          std::chrono::duration<double, std::milli>(start - previous).count();
       previous = start;
-      if (std::optional<int> status = frame())
+      const std::optional<int> status = frame();
+      if (m_frameTimes.is_open())
+        // The loop's interval, and how long this frame's drawing took
+        // (0: not drawn). Whole lines, even if the run is killed.
+        m_frameTimes << interval << ' ' << m_drawMs << std::endl;
+      if (status)
         return *status;
       std::this_thread::sleep_until(start + kFramePeriod);
     }
@@ -106,6 +113,8 @@ class ViewerLoop
   std::optional<int> frame()
   {
     m_window.beginFrame();
+    if (m_window.activity())
+      m_drawsLeft = kDrawsAfterActivity;
     for (const std::string &path : m_window.takeDroppedFiles()) {
       const std::string error = m_session.loadScene(path);
       setMessage(error.empty() ? "opened " + path : error, !error.empty());
@@ -134,11 +143,24 @@ class ViewerLoop
       else if (state == ScriptState::Finished)
         status = 0;
     }
-    if (refresh)
+    if (refresh) {
       m_window.showImage(m_session.shownImage());
+      m_drawsLeft = std::max(m_drawsLeft, 1);
+    }
+    if (m_state.message != m_shownMessage) {
+      m_shownMessage = m_state.message;
+      m_drawsLeft = std::max(m_drawsLeft, 1);
+    }
     drawPanels(m_session, m_state);
+    const bool draw = m_drawsLeft > 0;
+    m_drawsLeft -= draw ? 1 : 0;
+    const Clock::time_point drawStart = Clock::now();
     const std::string captureError =
-        m_window.endFrame(std::exchange(m_capturePath, {}));
+        m_window.endFrame(draw, std::exchange(m_capturePath, {}));
+    m_drawMs = draw ? std::chrono::duration<double, std::milli>(
+                   Clock::now() - drawStart)
+                          .count()
+                    : 0.0;
     if (!captureError.empty() && !status)
       status = fail(captureError);
     return status;
@@ -152,6 +174,9 @@ class ViewerLoop
   Clock::time_point m_lastMove{};
   std::ofstream m_frameTimes;
   std::string m_capturePath; // window-screenshot's, for this frame
+  int m_drawsLeft{kDrawsAfterActivity};
+  std::string m_shownMessage;
+  double m_drawMs{0.0}; // the last frame's drawing, for --frame-times
 };
 
 int run(int argc, char **argv)
