@@ -224,6 +224,25 @@ TEST_F(ViewerSessionTest, TheVolumeIsRestyledKeepingTheView)
   EXPECT_EQ(m_session->restyleVolume(edit), "the value range needs low < high");
 }
 
+TEST_F(ViewerSessionTest, TheFileCamerasAreViewedThrough)
+{
+  const std::string file =
+      std::string(PRISM_VIEWER_TEST_DATA) + "/fresnel-plane.gltf";
+  ASSERT_EQ(m_session->loadScene("demo:cornell-box"), "");
+  EXPECT_FALSE(m_session->hasFileCameras());
+  ASSERT_EQ(m_session->loadScene(file), "");
+  ASSERT_TRUE(m_session->hasFileCameras());
+  m_session->camera().orbit(90.f, 0.f);
+  m_session->cameraChanged();
+  const Vec3 moved = m_session->camera().pose().eye;
+  ASSERT_EQ(m_session->viewFileCamera(0), "");
+  EXPECT_NE(m_session->camera().pose().eye, moved); // back at the file's
+  const std::string error = m_session->viewFileCamera(1);
+  EXPECT_NE(error.find("the file has 1 camera"), std::string::npos) << error;
+  EXPECT_EQ(m_session->fileCamera(), 0);
+  EXPECT_EQ(m_session->sceneName(), file);
+}
+
 TEST(ViewerSessionOpen, ALibraryThatFailsIsNamed)
 {
   ViewerOptions options;

@@ -123,7 +123,21 @@ void drawDenoiseToggle(ViewerSession &session)
     session.parametersChanged();
 }
 
-void drawCameraControls(ViewerSession &session)
+// The glTF file's cameras: the file is loaded again through camera N.
+void drawFileCamera(ViewerSession &session, PanelState &state)
+{
+  ImGui::SetNextItemWidth(100.f);
+  ImGui::InputInt("##camera", &state.fileCamera);
+  state.fileCamera = std::max(state.fileCamera, 0);
+  ImGui::SameLine();
+  if (ImGui::Button("View through the file's camera")) {
+    const std::string error = session.viewFileCamera(state.fileCamera);
+    state.message = error;
+    state.messageIsError = !error.empty();
+  }
+}
+
+void drawCameraControls(ViewerSession &session, PanelState &state)
 {
   OrbitCamera &camera = session.camera();
   float fovy = camera.pose().fovyDegrees;
@@ -142,6 +156,8 @@ void drawCameraControls(ViewerSession &session)
     session.frameScene();
   else if (changed)
     session.cameraChanged();
+  if (session.hasFileCameras())
+    drawFileCamera(session, state);
   if (ImGui::TreeNodeEx("camera parameters", openFlags())) {
     drawCameraParameters(session);
     ImGui::TreePop();
@@ -317,7 +333,7 @@ void drawPanels(ViewerSession &session, PanelState &state)
   drawSceneControls(session, state);
   drawDenoiseToggle(session);
   if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen))
-    drawCameraControls(session);
+    drawCameraControls(session, state);
   if (ImGui::CollapsingHeader("Renderer", openFlags()))
     drawParameterSet(session, session.rendererParameters());
   for (ViewerLight &light : session.lights())

@@ -20,6 +20,7 @@ struct PanelState
   bool startFolded{false}; // the main panel starts collapsed
   bool openAll{false};     // every section starts open (--panels open)
   TransferFunctionEdit transferFunction;
+  int fileCamera{0}; // the glTF camera to view through
 };
 
 // Draws every panel; edits go to the session at once.

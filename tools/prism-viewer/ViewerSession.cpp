@@ -188,6 +188,20 @@ std::string ViewerSession::loadScene(const std::string &text)
   return error;
 }
 
+bool ViewerSession::hasFileCameras() const
+{
+  return m_scene.world && m_source.format == scene_io::SceneFormat::Gltf;
+}
+
+std::string ViewerSession::viewFileCamera(int index)
+{
+  if (!hasFileCameras())
+    return "only glTF files have cameras to view through";
+  scene_io::LoadOptions options = m_loadOptions;
+  options.gltfCamera = index;
+  return load(m_source, options, true);
+}
+
 bool ViewerSession::hasVolume() const
 {
   return m_scene.world && scene_io::hasVolumeStyle(m_source);

@@ -45,6 +45,15 @@ class ViewerSession
   {
     return m_sceneName;
   }
+  // Whether the scene is a glTF file (whose cameras viewFileCamera picks).
+  bool hasFileCameras() const;
+  // Reloads the file viewing through its camera `index`; on failure (no
+  // such camera) the scene stays and the error says why.
+  std::string viewFileCamera(int index);
+  int fileCamera() const
+  {
+    return m_loadOptions.gltfCamera;
+  }
   // Whether the scene is a volume whose transfer function can be edited
   // (volume files, demo:volume).
   bool hasVolume() const;
