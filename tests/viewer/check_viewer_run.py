@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Runs prism-viewer under Xvfb on a script and checks what it did.
 
-usage: check_viewer_run.py script|errors|library|panels VIEWER XVFB_RUN
-                          WORKDIR
+usage: check_viewer_run.py script|errors|library|panels|mpi VIEWER XVFB_RUN
+                          WORKDIR [MPIEXEC]
 
 `script`: demo:cornell-box at 320x240 (its surfaces' ids: 0 white walls,
 floor and ceiling, 1 red wall, 2 green wall, 3 the blocks, 4 the lamp).
@@ -30,6 +30,7 @@ message (one "prism-viewer: error:" line naming the problem) and a
 non-zero status.
 `library`: the viewer on another ANARI library (library_test says which).
 `panels`: every panel section drawn (panels_test says how it is checked).
+`mpi`: rank 0's window followed by another process (mpi_test says how).
 """
 import os
 import subprocess
@@ -71,7 +72,7 @@ def run(cmd, cwd, env=None, timeout=500):
     if os.path.exists(status_file):
         os.remove(status_file)
     if os.path.basename(cmd[0]) == "xvfb-run":
-        at = cmd.index(VIEWER)
+        at = 4 if cmd[2] == "-s" else 2  # after xvfb-run -a [-s ARGS]
         cmd = cmd[:at] + ["sh", "-c", '"$0" "$@"; echo $? > "%s"'
                           % status_file] + cmd[at:]
     result = subprocess.run(cmd, capture_output=True, text=True, env=env,
@@ -225,9 +226,6 @@ def errors_test(viewer, xvfb, work):
     expect_one_error(result, 1, ["no display"], "no display")
 
 
-VIEWER = None
-
-
 def library_test(viewer, xvfb, work):
     """Another ANARI library (the test suite's recording device, which
     renders nothing and reports no sample count): the viewer still
@@ -277,13 +275,56 @@ def panels_test(viewer, xvfb, work):
           "image %s" % (outside,))
 
 
+def mpi_test(viewer, xvfb, work):
+    """Two processes under mpirun with prism_mpi: rank 0 shows the window
+    and the other follows its changes (orbit, a renderer parameter) and
+    renders with it. Its picks are the single process's, and its image
+    matches the single process's (prism's own device) on at least 99 % of
+    the pixels (both processes hold the whole scene)."""
+    script = os.path.join(work, "follow.txt")
+    lines = ["wait-samples 4", "pick 70 120", "pick 190 185", "orbit 30",
+             "set renderer 0 maxPathLength 1", "wait-samples 4",
+             "screenshot IMAGE", "pick 70 120", "quit"]
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
+               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    outputs = {}
+    for name, library, launcher in [
+            ("one", "prism", []),
+            ("mpi", "prism_mpi", [MPIEXEC, "--oversubscribe", "--mca",
+                                  "btl_vader_single_copy_mechanism", "none",
+                                  "-n", "2"])]:
+        with open(script, "w") as f:
+            f.write("\n".join(lines).replace("IMAGE", name + ".png") + "\n")
+        result = run([xvfb, "-a"] + launcher + [
+            viewer, "demo:cornell-box", "--library", library, "--size",
+            "%dx%d" % (WIDTH, HEIGHT), "--script", script], work, env=env)
+        check(result.returncode == 0, name + ": status 0")
+        outputs[name] = [l for l in result.stdout.splitlines()
+                         if l.startswith("pick")]
+    check(outputs["mpi"] == outputs["one"] and len(outputs["one"]) == 3,
+          "the picks match one process's %s" % outputs["one"])
+    paths = [os.path.join(work, n + ".png") for n in ["one", "mpi"]]
+    if not all(os.path.exists(p) for p in paths):
+        check(False, "both screenshots were written")
+        return
+    one, mpi = [Image.open(p).convert("RGB") for p in paths]
+    same = sum(1 for a, b in zip(one.getdata(), mpi.getdata()) if a == b)
+    check(same >= 0.99 * WIDTH * HEIGHT, "the image matches one process's "
+          "(%d of %d pixels equal)" % (same, WIDTH * HEIGHT))
+
+
+MPIEXEC = "mpiexec"
+
+
 def main():
-    global VIEWER
+    global MPIEXEC
     what, viewer, xvfb, work = sys.argv[1:5]
-    VIEWER = viewer
+    if len(sys.argv) > 5:
+        MPIEXEC = sys.argv[5]
     os.makedirs(work, exist_ok=True)
     tests = {"script": script_test, "errors": errors_test,
-             "library": library_test, "panels": panels_test}
+             "library": library_test, "panels": panels_test,
+             "mpi": mpi_test}
     tests[what](viewer, xvfb, work)
     if failures:
         print("%d check(s) failed" % len(failures))

@@ -87,12 +87,14 @@ void FramePipeline::restart()
   m_stale = true;
   m_idsWanted = true;
   m_status.samples = 0;
-  if (m_inFlight)
+  if (m_inFlight && m_discards)
     anariDiscardFrame(m_device, m_frame);
 }
 
 void FramePipeline::start()
 {
+  if (m_beforeRender)
+    m_beforeRender(m_beforeRenderUser);
   anariRenderFrame(m_device, m_frame);
   m_inFlight = true;
   m_stale = false;

@@ -55,6 +55,19 @@ class FramePipeline
   {
     m_renderer = renderer;
   }
+  // Called just before each anariRenderFrame (the MPI mirror tells the
+  // other processes to render too).
+  void beforeRender(void (*hook)(void *), void *user)
+  {
+    m_beforeRender = hook;
+    m_beforeRenderUser = user;
+  }
+  // Whether a change discards the frame in flight (else it is left to
+  // finish: data-parallel frames are rendered by every process together).
+  void setDiscards(bool discards)
+  {
+    m_discards = discards;
+  }
   // Something the frame shows changed (committed already).
   void restart();
 
@@ -104,6 +117,9 @@ class FramePipeline
   Channel m_imageChannel{Channel::Color};
   uint32_t m_sampleLimit{0};
   bool m_inFlight{false};
+  bool m_discards{true};
+  void (*m_beforeRender)(void *){nullptr};
+  void *m_beforeRenderUser{nullptr};
   bool m_stale{true};     // the frame in flight predates a change
   bool m_idsWanted{true}; // the next finished frame's ids are read
   Rgba8Image m_image;

@@ -51,6 +51,11 @@ class OrbitCamera
   void focusOn(const Vec3 &point);
   void setAperture(float radius);
 
+  // Takes a pose as it is (the MPI mirror's followers).
+  void setPose(const CameraPose &pose)
+  {
+    m_pose = pose;
+  }
   const CameraPose &pose() const
   {
     return m_pose;

@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 
 namespace prism::viewer {
@@ -303,7 +304,22 @@ bool ParameterSet::set(const std::string &name, const ParameterValue &value)
   }
   anariCommitParameters(m_device, m_object);
   m_values[name] = value;
+  if (m_observer)
+    m_observer(m_observerUser, name, value);
   return true;
+}
+
+std::vector<std::string> valueWords(const ParameterValue &value)
+{
+  if (value.numbers.empty())
+    return {value.text};
+  std::vector<std::string> words;
+  for (double v : value.numbers) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.9g", v);
+    words.push_back(text);
+  }
+  return words;
 }
 
 std::string ParameterSet::setFromWords(

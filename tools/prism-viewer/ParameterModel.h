@@ -81,6 +81,15 @@ class ParameterSet
   std::string setFromWords(
       const std::string &name, const std::vector<std::string> &words);
 
+  // Called with each value set (the MPI mirror repeats it elsewhere).
+  using Observer = void (*)(
+      void *user, const std::string &name, const ParameterValue &value);
+  void observe(Observer observer, void *user)
+  {
+    m_observer = observer;
+    m_observerUser = user;
+  }
+
   ANARIObject object() const
   {
     return m_object;
@@ -97,6 +106,11 @@ class ParameterSet
   std::string m_subtype;
   std::vector<ParameterWidget> m_widgets;
   std::map<std::string, ParameterValue> m_values;
+  Observer m_observer{nullptr};
+  void *m_observerUser{nullptr};
 };
+
+// A value as the words `parseValue` reads back (the mirror's messages).
+std::vector<std::string> valueWords(const ParameterValue &value);
 
 } // namespace prism::viewer

@@ -136,6 +136,7 @@ std::string ViewerSession::setRenderer(const std::string &subtype)
     return "the device has no renderer '" + subtype + "' (renderers: " + list
            + ")";
   }
+  const MirrorScope scope = mirrored("renderer " + subtype);
   ANARIRenderer renderer = anariNewRenderer(device, subtype.c_str());
   if (m_scene.hasBackground)
     anariSetParameter(device,
@@ -154,6 +155,7 @@ std::string ViewerSession::setRenderer(const std::string &subtype)
   m_rendererSubtype = subtype;
   m_rendererParameters =
       ParameterSet(device, renderer, ANARI_RENDERER, subtype);
+  observeParameters();
   if (m_pipeline) {
     m_pipeline->setRenderer(renderer);
     m_pipeline->restart();
@@ -173,6 +175,7 @@ void ViewerSession::releaseScene()
 
 std::string ViewerSession::loadScene(const std::string &text)
 {
+  const MirrorScope scope = mirrored("load " + text);
   const scene_io::SourceResult source = scene_io::identifySceneSource(text);
   if (!source.ok())
     return source.error;
@@ -195,6 +198,7 @@ bool ViewerSession::hasFileCameras() const
 
 std::string ViewerSession::viewFileCamera(int index)
 {
+  const MirrorScope scope = mirrored("filecam " + std::to_string(index));
   if (!hasFileCameras())
     return "only glTF files have cameras to view through";
   scene_io::LoadOptions options = m_loadOptions;
@@ -209,6 +213,9 @@ bool ViewerSession::hasVolume() const
 
 std::string ViewerSession::restyleVolume(const TransferFunctionEdit &edit)
 {
+  if (m_mirror)
+    return "the transfer function is not shared with the other MPI "
+           "processes yet";
   if (!hasVolume())
     return "the scene has no volume whose transfer function can be edited";
   scene_io::LoadOptions options = m_loadOptions;
@@ -280,6 +287,7 @@ void ViewerSession::describeLights()
   if (m_environment)
     m_lights.push_back({"environment (hdri)",
         ParameterSet(device(), m_environment, ANARI_LIGHT, "hdri")});
+  observeParameters();
 }
 
 scenes::Bounds ViewerSession::worldBounds() const
@@ -303,6 +311,7 @@ scenes::Bounds ViewerSession::worldBounds() const
 
 void ViewerSession::frameScene()
 {
+  const MirrorScope scope = mirrored("frame");
   const scenes::Bounds bounds = worldBounds();
   const float aspect = m_width > 0 && m_height > 0
                            ? float(m_width) / float(m_height)
@@ -317,6 +326,7 @@ void ViewerSession::frameScene()
 
 void ViewerSession::cameraChanged()
 {
+  const MirrorScope scope = mirrored(poseLine(m_camera.pose()));
   ANARIDevice device = m_session.device();
   const CameraPose &pose = m_camera.pose();
   const float aspect = m_width > 0 && m_height > 0
@@ -346,8 +356,15 @@ void ViewerSession::setViewport(uint32_t width, uint32_t height, float scale)
   if (width == 0 || height == 0 || !m_pipeline)
     return;
   const bool resized = width != m_width || height != m_height;
+  if (!resized && scale == m_scale)
+    return;
+  char line[96];
+  std::snprintf(
+      line, sizeof(line), "viewport %u %u %.9g", width, height, double(scale));
+  const MirrorScope scope = mirrored(line);
   m_width = width;
   m_height = height;
+  m_scale = scale;
   const auto scaled = [&](uint32_t v) {
     return std::max(1u, uint32_t(std::lround(float(v) * scale)));
   };

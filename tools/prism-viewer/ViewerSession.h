@@ -13,6 +13,7 @@
 #include "TransferFunctionEdit.h"
 #include "ViewerOptions.h"
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -117,6 +118,15 @@ class ViewerSession
   // PNG or EXR (by extension) of the shown channel, unhighlighted.
   std::string screenshot(const std::string &path) const;
 
+  // Under mpirun: every top-level change (load, frame, renderer, viewport,
+  // pose, parameter values, file camera, render) goes to `mirror` as one
+  // line, before it is made here, so the other processes make it in the
+  // same order (their collective calls match). Frames in flight are no
+  // longer discarded.
+  void mirrorTo(std::function<void(const std::string &)> mirror);
+  // Makes one mirrored change (the other processes); false on "quit".
+  bool applyMirrored(const std::string &line);
+
   ANARIDevice device() const
   {
     return m_session.device();
@@ -134,6 +144,33 @@ class ViewerSession
   void lightScene();
   void describeLights();
   scenes::Bounds worldBounds() const;
+  // Sends `line` when not inside another mirrored change; the scope ends
+  // the change.
+  class MirrorScope
+  {
+   public:
+    explicit MirrorScope(int &depth) : m_depth(depth)
+    {
+      ++m_depth;
+    }
+    ~MirrorScope()
+    {
+      --m_depth;
+    }
+    MirrorScope(const MirrorScope &) = delete;
+    MirrorScope &operator=(const MirrorScope &) = delete;
+
+   private:
+    int &m_depth;
+  };
+  MirrorScope mirrored(const std::string &line);
+  // Each parameter set's values go to the mirror as `set` lines.
+  void observeParameters();
+  struct MirrorTarget
+  {
+    ViewerSession *session;
+    std::string prefix; // "set renderer 0 "
+  };
 
   const ViewerOptions &m_options;
   tools::DeviceSession m_session;
@@ -154,11 +191,18 @@ class ViewerSession
   ANARILight m_environment{nullptr}; // the one the viewer added, if any
   std::optional<Pick> m_selection;
   uint32_t m_width{0}, m_height{0};
+  float m_scale{1.f};
+  std::function<void(const std::string &)> m_mirror;
+  int m_mirrorDepth{0};
+  std::vector<std::unique_ptr<MirrorTarget>> m_mirrorTargets;
 };
 
 // The camera parameters the viewer's pose sets on every move (position,
 // direction, up, aspect, fovy, apertureRadius, focusDistance).
 bool isPoseParameter(const std::string &name);
+
+// The mirror's line for a camera pose.
+std::string poseLine(const CameraPose &pose);
 
 // Prints "prism-viewer: <line>" on stderr (device messages too).
 void printMessage(const std::string &line);

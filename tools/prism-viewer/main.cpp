@@ -3,6 +3,7 @@
 // and runs the UI loop: input, the frame pipeline's poll, the script's
 // next commands, the panels.
 #include "CameraInput.h"
+#include "MpiProcesses.h"
 #include "Panels.h"
 #include "ScriptRunner.h"
 #include "ViewerOptions.h"
@@ -179,6 +180,31 @@ class ViewerLoop
   double m_drawMs{0.0}; // the last frame's drawing, for --frame-times
 };
 
+// The processes of an mpirun but rank 0: no window; they make rank 0's
+// changes on their own device until it quits.
+int followRankZero(const ViewerOptions &options, const MpiProcesses &mpi)
+{
+  if (mpi.receive() != "start")
+    return 0; // rank 0 could not open its window
+  ViewerSession session(options);
+  if (const std::string error = session.open(); !error.empty())
+    return fail("process " + std::to_string(mpi.rank()) + ": " + error);
+  while (session.applyMirrored(mpi.receive())) {
+  }
+  return 0;
+}
+
+// Tells the other processes to stop when rank 0's run ends (before its
+// session, whose device release is collective, is destroyed).
+struct QuitFollowers
+{
+  const MpiProcesses &mpi;
+  ~QuitFollowers()
+  {
+    mpi.send("quit");
+  }
+};
+
 int run(int argc, char **argv)
 {
   const ParsedOptions parsed =
@@ -200,16 +226,25 @@ int run(int argc, char **argv)
       return fail(commands.error, kExitUsage);
     script = std::make_unique<ScriptRunner>(std::move(commands));
   }
+  const MpiProcesses mpi;
+  if (mpi.rank() > 0)
+    return followRankZero(options, mpi);
   ViewerWindow window;
   if (const std::string error =
           window.open(options.width, options.height, "prism-viewer");
-      !error.empty())
+      !error.empty()) {
+    mpi.send("quit");
     return fail(error);
+  }
+  mpi.send("start");
   ViewerSession session(options);
+  const QuitFollowers quitFollowers{mpi};
   if (const std::string error = session.open(); !error.empty()) {
     printMessage("error: " + error);
     return script ? kExitFailure : showUntilClosed(window, error);
   }
+  if (mpi.size() > 1)
+    session.mirrorTo([&mpi](const std::string &line) { mpi.send(line); });
   uint32_t w = 0, h = 0;
   window.size(w, h);
   session.setViewport(w, h, 1.f);
