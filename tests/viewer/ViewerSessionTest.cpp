@@ -243,6 +243,48 @@ TEST_F(ViewerSessionTest, TheFileCamerasAreViewedThrough)
   EXPECT_EQ(m_session->sceneName(), file);
 }
 
+// The MPI mirror without MPI: what one session sends, another makes.
+TEST_F(ViewerSessionTest, AMirroredSessionFollowsEveryChange)
+{
+  std::vector<std::string> lines;
+  m_session->mirrorTo([&](const std::string &line) { lines.push_back(line); });
+  ASSERT_EQ(m_session->loadScene("demo:cornell-box"), "");
+  m_session->camera().orbit(25.f, 10.f);
+  m_session->cameraChanged();
+  ASSERT_EQ(m_session->setParameter("renderer", 0, "maxPathLength", {"3"}), "");
+  ASSERT_EQ(m_session->setParameter("camera", 0, "fovy", {"0.7"}), "");
+  FramePipeline &pipeline = m_session->pipeline();
+  pollUntil(*m_session, [&] { return pipeline.status().samples >= 1; });
+  pipeline.finish();
+  // Nested changes are not sent again: one load, no frame of its own.
+  EXPECT_EQ(std::count_if(lines.begin(),
+                lines.end(),
+                [](const std::string &l) { return l.rfind("load ", 0) == 0; }),
+      1);
+  EXPECT_EQ(std::count(lines.begin(), lines.end(), "frame"), 0);
+  EXPECT_NE(std::find(lines.begin(), lines.end(), "render"), lines.end());
+  EXPECT_NE(
+      std::find(lines.begin(), lines.end(), "set renderer 0 maxPathLength 3"),
+      lines.end());
+
+  ViewerSession follower(m_options);
+  ASSERT_EQ(follower.open(), "");
+  for (const std::string &line : lines)
+    ASSERT_TRUE(follower.applyMirrored(line)) << line;
+  EXPECT_FALSE(follower.applyMirrored("quit"));
+  EXPECT_EQ(follower.sceneName(), "demo:cornell-box");
+  const CameraPose &a = m_session->camera().pose(),
+                   &b = follower.camera().pose();
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(a.eye[i], b.eye[i], 1e-5f);
+    EXPECT_NEAR(a.at[i], b.at[i], 1e-5f);
+  }
+  EXPECT_NEAR(a.fovyDegrees, b.fovyDegrees, 1e-4f);
+  EXPECT_EQ(
+      follower.rendererParameters().value("maxPathLength")->numbers.at(0), 3.0);
+  EXPECT_EQ(follower.pipeline().width(), pipeline.width());
+}
+
 TEST(ViewerSessionOpen, ALibraryThatFailsIsNamed)
 {
   ViewerOptions options;

@@ -19,6 +19,11 @@ void ViewerSession::mirrorTo(std::function<void(const std::string &)> mirror)
       },
       this);
   observeParameters();
+  // The followers start where this session is now.
+  if (m_mirror && m_width > 0) {
+    m_mirror(viewportLine(m_width, m_height, m_scale));
+    m_mirror(poseLine(m_camera.pose()));
+  }
 }
 
 ViewerSession::MirrorScope ViewerSession::mirrored(const std::string &line)
@@ -26,6 +31,14 @@ ViewerSession::MirrorScope ViewerSession::mirrored(const std::string &line)
   if (m_mirror && m_mirrorDepth == 0)
     m_mirror(line);
   return MirrorScope(m_mirrorDepth);
+}
+
+std::string viewportLine(uint32_t width, uint32_t height, float scale)
+{
+  char line[96];
+  std::snprintf(
+      line, sizeof(line), "viewport %u %u %.9g", width, height, double(scale));
+  return line;
 }
 
 std::string poseLine(const CameraPose &pose)

@@ -358,10 +358,7 @@ void ViewerSession::setViewport(uint32_t width, uint32_t height, float scale)
   const bool resized = width != m_width || height != m_height;
   if (!resized && scale == m_scale)
     return;
-  char line[96];
-  std::snprintf(
-      line, sizeof(line), "viewport %u %u %.9g", width, height, double(scale));
-  const MirrorScope scope = mirrored(line);
+  const MirrorScope scope = mirrored(viewportLine(width, height, scale));
   m_width = width;
   m_height = height;
   m_scale = scale;

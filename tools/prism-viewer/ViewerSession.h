@@ -201,8 +201,9 @@ class ViewerSession
 // direction, up, aspect, fovy, apertureRadius, focusDistance).
 bool isPoseParameter(const std::string &name);
 
-// The mirror's line for a camera pose.
+// The mirror's lines for a camera pose and a viewport.
 std::string poseLine(const CameraPose &pose);
+std::string viewportLine(uint32_t width, uint32_t height, float scale);
 
 // Prints "prism-viewer: <line>" on stderr (device messages too).
 void printMessage(const std::string &line);
