@@ -103,7 +103,7 @@ class RenderRun
 {
  public:
   explicit RenderRun(const Options &options)
-      : m_options(options), m_session(options.verbose)
+      : m_options(options), m_session(options.verbose, &console::message)
   {}
 
   int checkInputs();
@@ -121,7 +121,7 @@ class RenderRun
   void printSummary(const std::vector<OutputImage> &images);
 
   const Options &m_options;
-  DeviceSession m_session;
+  tools::DeviceSession m_session;
   scene_io::SceneSource m_source;
   std::vector<ChannelRequest> m_requests;
   scenes::Scene m_scene;
@@ -177,15 +177,16 @@ int RenderRun::openDevice()
     setenv("ANARI_DEBUG_TRACE", m_options.traceFile.c_str(), 1);
   }
   bool usage = false;
-  const std::string error = m_session.open(m_options, usage);
+  const std::string error = m_session.open(
+      {m_options.library, m_options.deviceSubtype, m_options.threads}, usage);
   if (!error.empty())
     return fail(error, usage ? kExitUsage : kExitFailure);
   ANARIDevice device = m_session.device();
   const char **renderers = anariGetObjectSubtypes(device, ANARI_RENDERER);
   if (m_options.renderer != "default" && renderers && *renderers
-      && !contains(renderers, m_options.renderer))
+      && !tools::contains(renderers, m_options.renderer))
     return fail("the device has no renderer '" + m_options.renderer
-                    + "' (renderers: " + joinList(renderers) + ")",
+                    + "' (renderers: " + tools::joinList(renderers) + ")",
         kExitUsage);
   for (const ChannelRequest &r : m_requests) {
     const char *needed = channelExtension(r);

@@ -1,10 +1,8 @@
 #include "DeviceSession.h"
 
-#include "Console.h"
-
 #include <cstring>
 
-namespace prism::render {
+namespace prism::tools {
 namespace {
 
 const char *severityName(ANARIStatusSeverity severity)
@@ -66,7 +64,9 @@ bool contains(const char **list, const std::string &name)
   return false;
 }
 
-DeviceSession::DeviceSession(bool verbose) : m_verbose(verbose) {}
+DeviceSession::DeviceSession(bool verbose, MessageSink sink)
+    : m_verbose(verbose), m_sink(sink)
+{}
 
 DeviceSession::~DeviceSession()
 {
@@ -92,47 +92,48 @@ void DeviceSession::onStatus(const void *self,
   auto *session = (DeviceSession *)self;
   if (severity <= ANARI_SEVERITY_ERROR)
     session->m_errors++;
-  if (severity <= ANARI_SEVERITY_WARNING || session->m_verbose)
-    console::message(std::string("device ") + severityName(severity) + ": "
-                     + (message ? message : ""));
+  if (session->m_sink
+      && (severity <= ANARI_SEVERITY_WARNING || session->m_verbose))
+    session->m_sink(std::string("device ") + severityName(severity) + ": "
+                    + (message ? message : ""));
 }
 
-std::string DeviceSession::open(const Options &options, bool &usage)
+std::string DeviceSession::open(const DeviceChoice &choice, bool &usage)
 {
   usage = true;
   m_library =
-      anariLoadLibrary(options.library.c_str(), &DeviceSession::onStatus, this);
+      anariLoadLibrary(choice.library.c_str(), &DeviceSession::onStatus, this);
   if (!m_library)
-    return "cannot load ANARI library '" + options.library
-           + "' (libanari_library_" + options.library + ".so)";
+    return "cannot load ANARI library '" + choice.library
+           + "' (libanari_library_" + choice.library + ".so)";
   const char **subtypes = anariGetDeviceSubtypes(m_library);
-  if (subtypes && *subtypes && options.deviceSubtype != "default"
-      && !contains(subtypes, options.deviceSubtype))
-    return "library '" + options.library + "' has no device '"
-           + options.deviceSubtype + "' (devices: " + joinList(subtypes) + ")";
-  m_device = anariNewDevice(m_library, options.deviceSubtype.c_str());
+  if (subtypes && *subtypes && choice.deviceSubtype != "default"
+      && !contains(subtypes, choice.deviceSubtype))
+    return "library '" + choice.library + "' has no device '"
+           + choice.deviceSubtype + "' (devices: " + joinList(subtypes) + ")";
+  m_device = anariNewDevice(m_library, choice.deviceSubtype.c_str());
   if (!m_device) {
     usage = false;
-    return "library '" + options.library + "' could not create device '"
-           + options.deviceSubtype + "'";
+    return "library '" + choice.library + "' could not create device '"
+           + choice.deviceSubtype + "'";
   }
-  m_extensions = deviceExtensions(m_library, m_device, options.deviceSubtype);
-  limitThreads(options);
+  m_extensions = deviceExtensions(m_library, m_device, choice.deviceSubtype);
+  limitThreads(choice);
   return {};
 }
 
-void DeviceSession::limitThreads(const Options &options)
+void DeviceSession::limitThreads(const DeviceChoice &choice)
 {
-  if (options.threads == 0)
+  if (choice.threads == 0)
     return;
   const auto *parameters = (const ANARIParameter *)anariGetObjectInfo(m_device,
       ANARI_DEVICE,
-      options.deviceSubtype.c_str(),
+      choice.deviceSubtype.c_str(),
       "parameter",
       ANARI_PARAMETER_LIST);
   for (; parameters && parameters->name; ++parameters)
     if (std::strcmp(parameters->name, "numThreads") == 0) {
-      const int32_t threads = int32_t(options.threads);
+      const int32_t threads = int32_t(choice.threads);
       anariSetParameter(
           m_device, m_device, "numThreads", ANARI_INT32, &threads);
       anariCommitParameters(m_device, m_device);
@@ -140,4 +141,4 @@ void DeviceSession::limitThreads(const Options &options)
     }
 }
 
-} // namespace prism::render
+} // namespace prism::tools
