@@ -260,6 +260,19 @@ Hit toHit(const RTCRayHit &rh)
   return hit;
 }
 
+RTCBuildQuality embreeQuality(Context::BuildQuality quality)
+{
+  switch (quality) {
+  case Context::BuildQuality::Low:
+    return RTC_BUILD_QUALITY_LOW;
+  case Context::BuildQuality::High:
+    return RTC_BUILD_QUALITY_HIGH;
+  case Context::BuildQuality::Medium:
+    break;
+  }
+  return RTC_BUILD_QUALITY_MEDIUM;
+}
+
 } // namespace
 
 Scene::Scene(const Context &context) : m_context(context)
@@ -282,7 +295,7 @@ void Scene::clear()
   m_attached.clear();
   m_scene = m_context.isValid() ? rtcNewScene(m_context.handle()) : nullptr;
   if (m_scene) {
-    rtcSetSceneBuildQuality(m_scene, RTC_BUILD_QUALITY_HIGH);
+    rtcSetSceneBuildQuality(m_scene, embreeQuality(m_context.buildQuality()));
     // Watertight: without it rays through a quad's split diagonal can miss.
     rtcSetSceneFlags(m_scene, RTC_SCENE_FLAG_ROBUST);
   }
@@ -482,6 +495,7 @@ void Scene::addInstance(
 
 void Scene::attach(RTCGeometry geometry, uint32_t id)
 {
+  rtcSetGeometryBuildQuality(geometry, embreeQuality(m_context.buildQuality()));
   rtcCommitGeometry(geometry);
   rtcAttachGeometryByID(m_scene, geometry, id);
   rtcReleaseGeometry(geometry);
