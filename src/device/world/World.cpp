@@ -129,7 +129,6 @@ void World::commitParameters()
 void World::finalize()
 {
   m_implicitGroup->finalize();
-  m_placements.clear();
   m_placedLights.clear();
   m_ownEmitters.clear();
   m_sharesEmitters = false;
@@ -157,7 +156,8 @@ void World::finalize()
       placeLights(instance->group()->lights(), instance->worldFromObject(i));
   }
   m_declaredLightCount = m_placedLights.size();
-  m_scene->clear();
+  std::vector<Placement> previous;
+  previous.swap(m_placements);
   auto place = [&](const Group *group,
                    const Instance *instance,
                    const mat3x4 &transform,
@@ -195,10 +195,6 @@ void World::finalize()
         && std::memcmp(&transform, &kIdentityMat3x4, sizeof(mat3x4)) == 0;
     m_placements.push_back(
         {group, instance, transform, objectFromWorld, id, identity, motion});
-    if (motion)
-      m_scene->addInstance(embreeId, group->scene(), *motion);
-    else
-      m_scene->addInstance(embreeId, group->scene(), transform);
   };
   if (!isEmpty(m_implicitGroup->bounds()))
     place(m_implicitGroup, nullptr, kIdentityMat3x4, ~0u);
@@ -212,6 +208,8 @@ void World::finalize()
           instance->id(i));
     }
   }
+  if (!moveInstancesInPlace(previous))
+    rebuildScene();
   m_scene->commit();
   m_bounds = m_scene->bounds();
   placeVolumes();
@@ -219,6 +217,47 @@ void World::finalize()
   m_traced = single ? &m_placements[0].group->scene() : m_scene.get();
   placeEmitters();
   indexLights(sceneRadius(m_bounds));
+}
+
+bool World::moveInstancesInPlace(const std::vector<Placement> &previous)
+{
+  // The same groups (their scenes as built now), instances and ids in the
+  // same order, none moving over the shutter: only transforms changed.
+  if (previous.size() != m_placements.size() || m_placements.empty())
+    return false;
+  for (size_t i = 0; i < m_placements.size(); i++) {
+    const Placement &now = m_placements[i];
+    const Placement &before = previous[i];
+    if (now.group != before.group || now.instance != before.instance
+        || now.instanceId != before.instanceId || now.motion || before.motion)
+      return false;
+  }
+  for (size_t i = 0; i < m_placements.size(); i++) {
+    const Placement &now = m_placements[i];
+    const bool moved =
+        std::memcmp(
+            &now.worldFromObject, &previous[i].worldFromObject, sizeof(mat3x4))
+        != 0;
+    // A group rebuilt since is caught here too: a full rebuild follows.
+    const auto id = uint32_t(i);
+    if (moved ? !m_scene->moveInstance(
+            id, now.group->scene(), now.worldFromObject)
+              : !m_scene->placesInstance(id, now.group->scene()))
+      return false;
+  }
+  return true;
+}
+
+void World::rebuildScene()
+{
+  m_scene->clear();
+  for (size_t i = 0; i < m_placements.size(); i++) {
+    const Placement &p = m_placements[i];
+    if (p.motion)
+      m_scene->addInstance(uint32_t(i), p.group->scene(), *p.motion);
+    else
+      m_scene->addInstance(uint32_t(i), p.group->scene(), p.worldFromObject);
+  }
 }
 
 void World::indexLights(float radius)
