@@ -355,8 +355,8 @@ class PrismSide
   }
   ~PrismSide()
   {
-    if (m_firstTransforms)
-      anariRelease(m_device, m_firstTransforms);
+    // The device takes every object with it: releasing the shared arrays
+    // one by one first would have it copy them (they are still in use).
     if (m_device)
       anariRelease(m_device, m_device);
     if (m_library)
@@ -384,10 +384,13 @@ class PrismSide
     anariUnmapArray(m_device, a);
     return a;
   }
+  // Sets `name` to `array`, which the application keeps until the end:
+  // releasing a shared array the device still uses makes it copy the data
+  // (the application may free its memory then), which an application
+  // avoiding copies does not do.
   void setArray(ANARIObject object, const char *name, ANARIArray1D array)
   {
     anariSetParameter(m_device, object, name, ANARI_ARRAY1D, &array);
-    anariRelease(m_device, array);
   }
   ANARIGeometry geometry(const SceneData &data)
   {
@@ -450,10 +453,8 @@ class PrismSide
           mesh + 1 == data.meshes ? data.primitives - first : perMesh;
       ANARIArray1D transforms =
           shared(&data.transforms[16 * first], ANARI_FLOAT32_MAT4, count);
-      if (mesh == 0) { // kept for the edit benchmark
-        anariRetain(m_device, transforms);
+      if (mesh == 0) // kept for the edit benchmark
         m_firstTransforms = transforms;
-      }
       setArray(instance, "transform", transforms);
       anariCommitParameters(m_device, instance);
       placed.push_back(instance);
@@ -543,11 +544,12 @@ class PrismSide
 Figures runPrism(const std::string &kind, double scale, const char *quality)
 {
   Figures figures;
+  SceneData data; // the application's memory outlives the device
   PrismSide prism(quality);
   if (!prism.ok())
     return figures;
   figures.startRss = peakRssBytes();
-  const SceneData data = makeData(kind, scale, false);
+  data = makeData(kind, scale, false);
   figures.primitives = double(data.primitives);
   const auto start = Clock::now();
   ANARIWorld w = prism.world(data);
@@ -562,12 +564,12 @@ Figures runPrism(const std::string &kind, double scale, const char *quality)
 // the first frame's (every BVH built).
 void runEdit(double scale)
 {
+  SceneData data; // the application's memory outlives the device
   PrismSide prism(nullptr);
   if (!prism.ok())
     return;
   // Meshes of 20k triangles (2M in all): rebuilding the groups would cost
   // as much as the top level, as in production scenes.
-  SceneData data;
   data.kind = "instances";
   makeInstances(data, size_t(std::max(1.0, 1e7 * scale)), false, 20000);
   double bytes = 0;
@@ -624,7 +626,13 @@ Figures inChild(Side &&side)
   if (child > 0) {
     if (read(channel[0], &figures, sizeof(figures)) != ssize_t(sizeof(figures)))
       figures = Figures{};
-    waitpid(child, nullptr, 0);
+    int status = 0;
+    waitpid(child, &status, 0);
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+      std::fprintf(stderr,
+          "a measuring process failed (%s %d)\n",
+          WIFSIGNALED(status) ? "signal" : "exit status",
+          WIFSIGNALED(status) ? WTERMSIG(status) : WEXITSTATUS(status));
   }
   close(channel[0]);
   return figures;
