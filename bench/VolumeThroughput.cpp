@@ -7,8 +7,13 @@
 // `pathtracer` (one sample per pixel: delta tracking) with and without
 // the grid. Prints the median frame time of each, the speed-up of the
 // grid, and the RMSE between the two raycast images (same sampling rate:
-// the images must agree). Never a test: it prints.
+// the images must agree). With --nanovdb: a dense field (a head scan's
+// size, every voxel non-zero) and a sparse cloud (the blobs at 256^3) each
+// as a structuredRegular grid and as a NanoVDB grid, NanoVDB's time over
+// the dense grid's and the RMSE between their images. Never a test: it
+// prints.
 #include <anari/anari.h>
+#include <nanovdb/util/GridBuilder.h>
 
 #include <algorithm>
 #include <chrono>
@@ -51,6 +56,30 @@ float blobs(float x, float y, float z)
                      : 0.f;
 }
 
+// Everywhere non-zero, as a scan's noise floor fills its box: an MRI-like
+// head, a lumpy ellipsoid in a faint haze.
+float head(float x, float y, float z)
+{
+  const float dx = (x - 0.5f) / 0.42f, dy = (y - 0.37f) / 0.32f,
+              dz = (z - 0.094f) / 0.09f;
+  const float r = std::sqrt(dx * dx + dy * dy + dz * dz);
+  const float tissue =
+      r < 1.f ? 0.6f + 0.3f * std::sin(23.f * x) * std::sin(29.f * y) : 0.f;
+  return 0.05f + 0.02f * std::sin(71.f * x + 53.f * y) + tissue;
+}
+
+using Function = float (*)(float, float, float);
+
+struct Dimensions
+{
+  uint32_t x, y, z;
+  // Samples one spacing apart, the longest axis spanning [0, 1].
+  float spacing() const
+  {
+    return 1.f / float(std::max({x, y, z}) - 1);
+  }
+};
+
 class Bench
 {
  public:
@@ -71,20 +100,57 @@ class Bench
 
   ANARISpatialField structured(uint32_t n)
   {
-    ANARIArray3D data = anariNewArray3D(
-        m_device, nullptr, nullptr, nullptr, ANARI_FLOAT32, n, n, n);
+    return structured({n, n, n}, blobs);
+  }
+  // nx x ny x nz samples of `value` over [0, 1] along the longest axis.
+  ANARISpatialField structured(const Dimensions &size, Function value)
+  {
+    ANARIArray3D data = anariNewArray3D(m_device,
+        nullptr,
+        nullptr,
+        nullptr,
+        ANARI_FLOAT32,
+        size.x,
+        size.y,
+        size.z);
     auto *v = (float *)anariMapArray(m_device, data);
-    const float s = 1.f / float(n - 1);
-    for (uint32_t z = 0; z < n; z++)
-      for (uint32_t y = 0; y < n; y++)
-        for (uint32_t x = 0; x < n; x++)
-          v[(size_t(z) * n + y) * n + x] =
-              blobs(float(x) * s, float(y) * s, float(z) * s);
+    const float s = size.spacing();
+    for (uint32_t z = 0; z < size.z; z++)
+      for (uint32_t y = 0; y < size.y; y++)
+        for (uint32_t x = 0; x < size.x; x++)
+          v[(size_t(z) * size.y + y) * size.x + x] =
+              value(float(x) * s, float(y) * s, float(z) * s);
     anariUnmapArray(m_device, data);
     ANARISpatialField f = anariNewSpatialField(m_device, "structuredRegular");
     const float spacing[3] = {s, s, s};
     anariSetParameter(m_device, f, "data", ANARI_ARRAY3D, &data);
     anariSetParameter(m_device, f, "spacing", ANARI_FLOAT32_VEC3, spacing);
+    anariRelease(m_device, data);
+    anariCommitParameters(m_device, f);
+    return f;
+  }
+  // The same samples as a NanoVDB float grid (voxel ijk at ijk * spacing,
+  // as the dense grid's sample ijk): every voxel active when `dense`,
+  // else only the non-zero ones (background 0).
+  ANARISpatialField nanoVdb(const Dimensions &size, Function value, bool dense)
+  {
+    nanovdb::GridBuilder<float> builder(0.f, nanovdb::GridClass::FogVolume);
+    auto voxels = builder.getAccessor();
+    const float s = size.spacing();
+    for (uint32_t z = 0; z < size.z; z++)
+      for (uint32_t y = 0; y < size.y; y++)
+        for (uint32_t x = 0; x < size.x; x++) {
+          const float v = value(float(x) * s, float(y) * s, float(z) * s);
+          if (dense || v != 0.f)
+            voxels.setValue(nanovdb::Coord(int(x), int(y), int(z)), v);
+        }
+    const auto handle = builder.getHandle<>(double(s), nanovdb::Vec3d(0.0));
+    ANARIArray1D data = anariNewArray1D(
+        m_device, nullptr, nullptr, nullptr, ANARI_UINT8, handle.size());
+    std::memcpy(anariMapArray(m_device, data), handle.data(), handle.size());
+    anariUnmapArray(m_device, data);
+    ANARISpatialField f = anariNewSpatialField(m_device, "nanovdb");
+    anariSetParameter(m_device, f, "data", ANARI_ARRAY1D, &data);
     anariRelease(m_device, data);
     anariCommitParameters(m_device, f);
     return f;
@@ -246,38 +312,86 @@ class Bench
     return result;
   }
 
-  void measure(const char *name, ANARIWorld w)
+  struct Measured
   {
-    const Result skipping = render(w, "raycast", true);
+    Result raycast, pathtracer;
+  };
+  Measured measure(const char *name, ANARIWorld w)
+  {
+    Measured measured;
+    measured.raycast = render(w, "raycast", true);
     const Result reference = render(w, "raycast", false);
-    double squared = 0.0, mean = 0.0;
-    for (size_t i = 0; i < skipping.image.size(); i++) {
-      if (i % 4 == 3)
-        continue;
-      const double d = skipping.image[i] - reference.image[i];
-      squared += d * d;
-      mean += reference.image[i];
-    }
-    const double values = double(skipping.image.size()) * 0.75;
     std::printf(
         "%-24s raycast %8.1f ms, reference marcher %8.1f ms: %5.2fx"
         "  (RMSE between them %.2e, mean value %.3f)\n",
         name,
-        1e3 * skipping.medianSeconds,
+        1e3 * measured.raycast.medianSeconds,
         1e3 * reference.medianSeconds,
-        reference.medianSeconds / skipping.medianSeconds,
-        std::sqrt(squared / std::max(values, 1.0)),
-        mean / std::max(values, 1.0));
-    const Result traced = render(w, "pathtracer", true);
+        reference.medianSeconds / measured.raycast.medianSeconds,
+        rmse(measured.raycast.image, reference.image),
+        meanColor(reference.image));
+    measured.pathtracer = render(w, "pathtracer", true);
     const Result tracedWithout = render(w, "pathtracer", false);
     std::printf(
         "%-24s pathtracer 1 spp %8.1f ms, one majorant %8.1f ms: "
         "%5.2fx\n",
         name,
-        1e3 * traced.medianSeconds,
+        1e3 * measured.pathtracer.medianSeconds,
         1e3 * tracedWithout.medianSeconds,
-        tracedWithout.medianSeconds / traced.medianSeconds);
+        tracedWithout.medianSeconds / measured.pathtracer.medianSeconds);
     std::fflush(stdout);
+    return measured;
+  }
+
+  // The same field as a dense structuredRegular grid and as a NanoVDB
+  // grid (every voxel active when `dense`): NanoVDB's time over the
+  // dense grid's, and how far apart their raycast images are.
+  void compareWithNanoVdb(
+      const char *name, const Dimensions &size, Function value, bool dense)
+  {
+    char label[64];
+    std::snprintf(label, sizeof(label), "%s dense", name);
+    ANARIWorld w = world(structured(size, value));
+    const Measured grid = measure(label, w);
+    anariRelease(m_device, w);
+    std::snprintf(label, sizeof(label), "%s nanovdb", name);
+    w = world(nanoVdb(size, value, dense));
+    const Measured vdb = measure(label, w);
+    anariRelease(m_device, w);
+    std::printf(
+        "%-24s nanovdb / dense: raycast %.2fx, pathtracer %.2fx"
+        "  (raycast RMSE between them %.2e; pathtracer mean %.4f vs %.4f)\n",
+        name,
+        vdb.raycast.medianSeconds / grid.raycast.medianSeconds,
+        vdb.pathtracer.medianSeconds / grid.pathtracer.medianSeconds,
+        rmse(vdb.raycast.image, grid.raycast.image),
+        meanColor(vdb.pathtracer.image),
+        meanColor(grid.pathtracer.image));
+    std::fflush(stdout);
+  }
+
+  static double rmse(const std::vector<float> &a, const std::vector<float> &b)
+  {
+    double squared = 0.0, values = 0.0;
+    for (size_t i = 0; i < std::min(a.size(), b.size()); i++) {
+      if (i % 4 == 3)
+        continue;
+      const double d = a[i] - b[i];
+      squared += d * d;
+      values += 1.0;
+    }
+    return std::sqrt(squared / std::max(values, 1.0));
+  }
+  static double meanColor(const std::vector<float> &image)
+  {
+    double sum = 0.0, values = 0.0;
+    for (size_t i = 0; i < image.size(); i++) {
+      if (i % 4 != 3) {
+        sum += image[i];
+        values += 1.0;
+      }
+    }
+    return sum / std::max(values, 1.0);
   }
 
   ANARIDevice device() const
@@ -296,6 +410,8 @@ class Bench
 int main(int argc, char **argv)
 {
   Options options;
+  bool nanovdbOnly = false;
+  std::vector<std::string> one;
   for (int i = 1; i < argc; i++) {
     const std::string arg = argv[i];
     if (arg == "--quick") {
@@ -303,14 +419,28 @@ int main(int argc, char **argv)
       options.width = 256;
       options.height = 192;
       options.runs = 1;
+    } else if (arg == "--one" && i + 3 < argc) {
+      one = {argv[i + 1], argv[i + 2], argv[i + 3]};
+      i += 3;
+    } else if (arg == "--size" && i + 2 < argc) {
+      options.width = uint32_t(std::max(1, std::atoi(argv[++i])));
+      options.height = uint32_t(std::max(1, std::atoi(argv[++i])));
+    } else if (arg == "--nanovdb") {
+      nanovdbOnly = true;
     } else if (arg == "--runs" && i + 1 < argc) {
       options.runs = std::max(1, std::atoi(argv[++i]));
     } else {
       std::fprintf(stderr,
-          "usage: prism-bench-volumes [--quick] [--runs N]\n"
+          "usage: prism-bench-volumes [--quick] [--runs N] [--size W H] "
+          "[--nanovdb]\n"
+          "  [--one FIELD DATA RENDERER]\n"
           "  frame times of raycast (majorant grid vs the reference marcher)"
           " and pathtracer\n  on 128^3 and 256^3 structuredRegular fields and"
-          " a ~1M-cell unstructured mesh\n");
+          " a ~1M-cell unstructured mesh;\n  --nanovdb: only dense data "
+          "(128x96x24)"
+          " and a sparse cloud (256^3) as dense\n  and NanoVDB grids;"
+          " --one dense|nanovdb head|cloud raycast|pathtracer: that\n  alone"
+          " (for paired runs); --size W H: the frame's size\n");
       return 2;
     }
   }
@@ -319,6 +449,31 @@ int main(int argc, char **argv)
       options.height,
       options.runs);
   Bench bench(options);
+  if (!one.empty()) {
+    // One field, one renderer: for paired runs of whole processes.
+    const bool cloud = one[1] == "cloud";
+    const uint32_t n = options.quick ? 128 : 256;
+    const Dimensions size =
+        cloud ? Dimensions{n, n, n} : Dimensions{128, 96, 24};
+    const Function value = cloud ? blobs : head;
+    ANARIWorld w =
+        bench.world(one[0] == "nanovdb" ? bench.nanoVdb(size, value, !cloud)
+                                        : bench.structured(size, value));
+    const auto result = bench.render(w, one[2].c_str(), true);
+    std::printf("%s %s %s: %.1f ms\n",
+        one[0].c_str(),
+        one[1].c_str(),
+        one[2].c_str(),
+        1e3 * result.medianSeconds);
+    anariRelease(bench.device(), w);
+    return 0;
+  }
+  if (nanovdbOnly) {
+    bench.compareWithNanoVdb("head 128x96x24", {128, 96, 24}, head, true);
+    const uint32_t n = options.quick ? 128 : 256;
+    bench.compareWithNanoVdb("cloud", {n, n, n}, blobs, false);
+    return 0;
+  }
   for (uint32_t n : {128u, 256u}) {
     const auto start = Clock::now();
     ANARIWorld w = bench.world(bench.structured(n));

@@ -580,6 +580,9 @@ void Device::setDeviceParameter(
     m_statusCallback = mem ? *(const ANARIStatusCallback *)mem : nullptr;
   } else if (n == "statusCallbackUserData" && type == ANARI_VOID_POINTER) {
     m_statusUserPtr = mem;
+  } else if (n == "bvhQuality" && type == ANARI_STRING && mem
+             && m_rtContext.setBuildQuality((const char *)mem)) {
+    // PRISM_BVH_QUALITY: BVHs built from now on.
   } else if (n != "name" && m_statusCallback) {
     m_statusCallback(m_statusUserPtr,
         this_device(),

@@ -10,6 +10,8 @@
 #include <cstring>
 #include <limits>
 
+#include <unistd.h>
+
 namespace prism {
 namespace {
 
@@ -64,7 +66,9 @@ Array::Array(DeviceState &device,
 {
   if (!m_appMemory) {
     // Zeroed so object arrays start as NULL handles, never garbage.
-    m_managed.reset((unsigned char *)std::calloc(capacity(), m_elementSize));
+    // kReadableSlack more: Embree reads past a vertex array's last element.
+    m_managed.reset((unsigned char *)std::calloc(
+        capacity() * m_elementSize + kReadableSlack, 1));
     if (!m_managed)
       throw std::bad_alloc();
   }
@@ -110,6 +114,24 @@ const void *Array::begin() const
   return base + m_regionBegin * m_elementSize;
 }
 
+bool Array::readableAfterEnd(size_t bytes) const
+{
+  if (bytes <= kReadableSlack && !m_appMemory)
+    return true; // the device's memory carries the slack
+  const auto *base = (const unsigned char *)storage();
+  const uintptr_t end = uintptr_t(base + m_regionEnd * m_elementSize);
+  const uintptr_t allocationEnd = uintptr_t(base + capacity() * m_elementSize);
+  if (end + bytes <= allocationEnd)
+    return true; // elements beyond the region in use
+  // The application's allocation: readable memory comes in whole pages,
+  // so bytes in the page of the last element's last byte can be read
+  // (their values are never used).
+  if (m_regionEnd == m_regionBegin || !m_appMemory)
+    return false;
+  const uintptr_t page = uintptr_t(sysconf(_SC_PAGESIZE));
+  return (end - 1) / page == (end + bytes - 1) / page;
+}
+
 void *Array::map()
 {
   m_mapped = true;
@@ -130,7 +152,7 @@ void Array::takePrivateCopy()
     return;
   const size_t bytes = capacity() * m_elementSize;
   std::unique_ptr<unsigned char[], FreeMemory> copy(
-      (unsigned char *)std::malloc(bytes));
+      (unsigned char *)std::malloc(bytes + kReadableSlack));
   if (!copy)
     throw std::bad_alloc();
   std::memcpy(copy.get(), m_appMemory, bytes);

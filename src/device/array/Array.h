@@ -68,6 +68,12 @@ class Array : public Object
   {
     return m_appMemory && !m_deleter;
   }
+  // Whether `bytes` beyond the last element in use can be read without a
+  // fault (Embree reads 16 bytes for each 12-byte vertex): the device's
+  // own memory carries kReadableSlack spare bytes; the application's
+  // memory is checked against the end of its page.
+  bool readableAfterEnd(size_t bytes) const;
+  static constexpr size_t kReadableSlack = 16;
   // Copies the application's memory into the device's and uses the copy
   // from now on (objects reading the array re-commit). Throws bad_alloc.
   void takePrivateCopy();
@@ -99,6 +105,10 @@ class Array : public Object
 
  private:
   void *storage();
+  const void *storage() const
+  {
+    return const_cast<Array *>(this)->storage();
+  }
   void refreshObjectReferences();
   void releaseObjectReferences();
 

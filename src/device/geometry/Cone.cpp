@@ -37,7 +37,7 @@ float Cone::segmentRadius(size_t segment, int end) const
 
 void Cone::readShape()
 {
-  std::vector<uint32_t> pairs;
+  SharedElements<uint32_t> &pairs = m_indices;
   const bool indexed = readIndices(2, pairs);
   const std::string caps = readString("caps", "none");
   const Array *vertexCaps = readArray("vertex.cap", {ANARI_UINT8});
@@ -51,9 +51,7 @@ void Cone::readShape()
   if (!readPositions(2))
     return;
   if (!indexed) {
-    pairs.resize(m_vertexCount / 2 * 2);
-    for (size_t i = 0; i < pairs.size(); i++)
-      pairs[i] = uint32_t(i);
+    generateIndices(pairs, m_vertexCount / 2 * 2);
   }
   requireVertexIndicesBelow(m_vertexCount, pairs);
   checkRadii(pairs.size() / 2);
@@ -77,6 +75,7 @@ void Cone::readShape()
                              || (end == 0 ? caps == "first" : caps == "second");
     }
   }
+  m_indices.clear(); // the segments hold their vertices
   for (size_t i = 0; i < m_segments.size(); i++) {
     m_segments[i].radius[0] = segmentRadius(i, 0);
     m_segments[i].radius[1] = segmentRadius(i, 1);

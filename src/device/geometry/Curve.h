@@ -15,9 +15,9 @@ class Curve : public Geometry
  protected:
   void readShape() override;
   Corners cornersAt(uint32_t primitive, float u, float v) const override;
+  size_t copiedBytes() const override;
 
  private:
-  std::vector<uint32_t> m_segmentStarts;
   std::vector<float4> m_positionRadius; // per vertex (+1 padding)
 };
 

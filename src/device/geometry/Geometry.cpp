@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 namespace prism {
 namespace {
@@ -97,6 +98,7 @@ void Geometry::commitParameters()
   m_primitiveCount = 0;
   m_vertexCount = 0;
   m_positions.clear();
+  m_indices.clear();
   m_vertexMotion = VertexMotion();
   readShape();
   readAttributes();
@@ -152,13 +154,18 @@ bool Geometry::readPositions(size_t minimumCount)
         minimumCount);
     return false;
   }
-  // One extra element: Embree reads 16 bytes for each 12-byte vertex.
-  m_positions.resize(m_vertexCount + 1);
+  // Embree reads 16 bytes for each 12-byte vertex: in place where the 4
+  // after the last can be read, else a copy with one spare element.
+  if (uintptr_t(positions->begin()) % alignof(float) == 0
+      && positions->readableAfterEnd(sizeof(float))) {
+    m_positions.share((const float3 *)positions->begin(), m_vertexCount);
+    return true;
+  }
   convertToFloat3(ANARI_FLOAT32_VEC3,
       positions->begin(),
       m_vertexCount,
       positions->elementSize(),
-      m_positions.data());
+      m_positions.own(m_vertexCount, 1));
   return true;
 }
 
@@ -198,7 +205,7 @@ bool Geometry::readDeformablePositions(size_t minimumCount)
   // The keys take precedence over vertex.position (marked read, unused).
   readAny("vertex.position");
   m_vertexCount = m_vertexMotion.vertexCount();
-  m_positions = m_vertexMotion.firstPositions();
+  m_positions.share(m_vertexMotion.firstPositions().data(), m_vertexCount);
   auto warn = [&](const std::string &message) {
     if (!message.empty()) {
       report(ANARI_SEVERITY_WARNING,
@@ -214,7 +221,7 @@ bool Geometry::readDeformablePositions(size_t minimumCount)
   return true;
 }
 
-bool Geometry::readIndices(int components, std::vector<uint32_t> &indices)
+bool Geometry::readIndices(int components, SharedElements<uint32_t> &indices)
 {
   indices.clear();
   const ANARIDataType u32[] = {
@@ -233,7 +240,7 @@ bool Geometry::readIndices(int components, std::vector<uint32_t> &indices)
         array->count(),
         array->elementSize(),
         wide.data());
-    indices.resize(count);
+    uint32_t *narrow = indices.own(count);
     for (size_t i = 0; i < count; i++) {
       if (wide[i] > kGeometryMaxIndex) {
         invalidate(
@@ -243,21 +250,49 @@ bool Geometry::readIndices(int components, std::vector<uint32_t> &indices)
             (unsigned long long)wide[i]);
         return true;
       }
-      indices[i] = uint32_t(wide[i]);
+      narrow[i] = uint32_t(wide[i]);
     }
+  } else if (uintptr_t(array->begin()) % alignof(uint32_t) == 0) {
+    indices.share((const uint32_t *)array->begin(), count);
   } else {
-    indices.resize(count);
     convertToUint32(array->elementType(),
         array->begin(),
         array->count(),
         array->elementSize(),
-        indices.data());
+        indices.own(count));
   }
   return true;
 }
 
+void Geometry::generateIndices(SharedElements<uint32_t> &indices, size_t count)
+{
+  uint32_t *generated = indices.own(count);
+  for (size_t i = 0; i < count; i++)
+    generated[i] = uint32_t(i);
+}
+
+size_t Geometry::copiedBytes() const
+{
+  return m_positions.copiedBytes() + m_indices.copiedBytes();
+}
+
+bool Geometry::getProperty(const std::string &name,
+    ANARIDataType type,
+    void *mem,
+    uint64_t size,
+    ANARIWaitMask mask)
+{
+  if (name == "prism.copiedBytes" && type == ANARI_UINT64 && mem
+      && size >= sizeof(uint64_t)) {
+    const uint64_t bytes = copiedBytes();
+    std::memcpy(mem, &bytes, sizeof(bytes));
+    return true;
+  }
+  return Object::getProperty(name, type, mem, size, mask);
+}
+
 void Geometry::requireVertexIndicesBelow(
-    size_t vertexCount, const std::vector<uint32_t> &indices)
+    size_t vertexCount, const SharedElements<uint32_t> &indices)
 {
   for (size_t i = 0; i < indices.size(); i++) {
     if (indices[i] >= vertexCount) {

@@ -7,6 +7,7 @@
 #include "../rt/Hit.h"
 #include "Attributes.h"
 #include "EmitterShape.h"
+#include "SharedElements.h"
 #include "VertexMotion.h"
 
 #include <vector>
@@ -57,6 +58,11 @@ class Geometry : public Object
   // Whether the normal attributesAt() returns is just the normalised
   // hit.geometricNormal (no vertex or corner normals, no analytic normal):
   // renderers that need nothing else may then skip attributesAt().
+  bool getProperty(const std::string &name,
+      ANARIDataType type,
+      void *mem,
+      uint64_t size,
+      ANARIWaitMask mask) override;
   bool flatShaded() const
   {
     return m_vertexNormals.empty() && m_cornerNormals.empty()
@@ -99,10 +105,12 @@ class Geometry : public Object
   const Array *readArray(const char *name,
       std::initializer_list<ANARIDataType> elementTypes,
       bool required = false);
-  // The primitive index array as `components` uint32 per primitive; false
-  // if unset. Out-of-range or over-wide indices invalidate the geometry.
-  bool readIndices(int components, std::vector<uint32_t> &indices);
-  // Positions (FLOAT32_VEC3) with Embree's read padding; false if missing.
+  // The primitive index array as `components` uint32 per primitive (read
+  // in place when it holds exactly that); false if unset. Out-of-range or
+  // over-wide indices invalidate the geometry.
+  bool readIndices(int components, SharedElements<uint32_t> &indices);
+  // Positions (FLOAT32_VEC3) with Embree's read padding, read in place
+  // when the array's memory allows it; false if missing.
   bool readPositions(size_t minimumCount);
   // Meshes: motion.vertex.* keys (deformation motion blur) if set, else
   // vertex.position as readPositions(); false if neither is usable.
@@ -113,11 +121,19 @@ class Geometry : public Object
   }
   // Every vertex index used must be below this (checked after readShape).
   void requireVertexIndicesBelow(
-      size_t vertexCount, const std::vector<uint32_t> &indices);
+      size_t vertexCount, const SharedElements<uint32_t> &indices);
+  // 0, 1, ... count - 1 into `indices` (a soup's implied indices).
+  static void generateIndices(SharedElements<uint32_t> &indices, size_t count);
+  // Bytes of array data this geometry holds as its own copies and
+  // conversions (positions and indices; subtypes add theirs).
+  virtual size_t copiedBytes() const;
   // Radii per vertex (FLOAT32), or empty if unset.
   std::vector<float> readFloats(const char *name);
 
-  std::vector<float3> m_positions; // plus one padding element
+  // Embree reads one float beyond the last: the array has it to read.
+  SharedElements<float3> m_positions;
+  // The primitive index array as read by readIndices (subtypes' own).
+  SharedElements<uint32_t> m_indices;
   size_t m_vertexCount{0};
   // Set when motion.vertex.position is: the vertices over time (then
   // m_positions holds its first key).

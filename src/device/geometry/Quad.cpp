@@ -10,9 +10,7 @@ void Quad::readShape()
   if (!readDeformablePositions(4))
     return;
   if (!indexed) {
-    m_indices.resize(m_vertexCount / 4 * 4);
-    for (size_t i = 0; i < m_indices.size(); i++)
-      m_indices[i] = uint32_t(i);
+    generateIndices(m_indices, m_vertexCount / 4 * 4);
   }
   requireVertexIndicesBelow(m_vertexCount, m_indices);
   setPrimitiveCount(uint32_t(m_indices.size() / 4));

@@ -19,9 +19,6 @@ class Quad : public Geometry
   {
     return 4;
   }
-
- private:
-  std::vector<uint32_t> m_indices; // 4 per quad (generated for a soup)
 };
 
 } // namespace prism

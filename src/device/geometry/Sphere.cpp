@@ -6,30 +6,30 @@ namespace prism {
 
 void Sphere::readShape()
 {
-  const bool indexed = readIndices(1, m_vertexOf);
+  const bool indexed = readIndices(1, m_indices);
   const std::vector<float> radii = readFloats("vertex.radius");
   const float radius = read<float>("radius", ANARI_FLOAT32, 1.f);
   if (!readPositions(1))
     return;
-  if (!indexed) {
-    m_vertexOf.resize(m_vertexCount);
-    for (size_t i = 0; i < m_vertexCount; i++)
-      m_vertexOf[i] = uint32_t(i);
-  }
-  requireVertexIndicesBelow(m_vertexCount, m_vertexOf);
+  // Without indices, sphere i is vertex i (no index array is made).
+  m_indexed = indexed;
+  requireVertexIndicesBelow(m_vertexCount, m_indices);
   if (!radii.empty() && radii.size() < m_vertexCount)
     invalidate("'vertex.radius' has %zu elements but there are %zu vertices",
         radii.size(),
         m_vertexCount);
   if (!isValid())
     return;
-  m_centerRadius.resize(m_vertexOf.size());
-  for (size_t i = 0; i < m_vertexOf.size(); i++) {
-    const float3 &c = m_positions[m_vertexOf[i]];
+  // Embree's layout, the one conversion spheres need.
+  const size_t count = indexed ? m_indices.size() : m_vertexCount;
+  std::vector<float4>(count).swap(m_centerRadius);
+  for (size_t i = 0; i < count; i++) {
+    const uint32_t v = vertexOf(uint32_t(i));
+    const float3 &c = m_positions[v];
     m_centerRadius[i] =
-        float4{c.x, c.y, c.z, radii.empty() ? radius : radii[m_vertexOf[i]]};
+        float4{c.x, c.y, c.z, radii.empty() ? radius : radii[v]};
   }
-  setPrimitiveCount(uint32_t(m_vertexOf.size()));
+  setPrimitiveCount(uint32_t(count));
 }
 
 void Sphere::addTo(rt::Scene &scene, uint32_t id) const
@@ -39,7 +39,7 @@ void Sphere::addTo(rt::Scene &scene, uint32_t id) const
 
 Geometry::Corners Sphere::cornersAt(uint32_t primitive, float, float) const
 {
-  return {1, {m_vertexOf[primitive]}, {0}, {1.f}};
+  return {1, {vertexOf(primitive)}, {0}, {1.f}};
 }
 
 float3 Sphere::surfaceNormal(
@@ -47,6 +47,11 @@ float3 Sphere::surfaceNormal(
 {
   const float4 &s = m_centerRadius[hit.primitiveId];
   return normalize(objectPosition - float3{s.x, s.y, s.z});
+}
+
+size_t Sphere::copiedBytes() const
+{
+  return Geometry::copiedBytes() + m_centerRadius.capacity() * sizeof(float4);
 }
 
 void Sphere::appendEmitterShape(EmitterShape &shape) const

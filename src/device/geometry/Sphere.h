@@ -18,13 +18,19 @@ class Sphere : public Geometry
   Corners cornersAt(uint32_t primitive, float u, float v) const override;
   float3 surfaceNormal(
       const rt::Hit &hit, const float3 &objectPosition) const override;
+  size_t copiedBytes() const override;
   bool hasAnalyticNormal() const override
   {
     return true;
   }
 
  private:
-  std::vector<uint32_t> m_vertexOf;   // sphere -> vertex
+  uint32_t vertexOf(uint32_t sphere) const
+  {
+    return m_indexed ? m_indices[sphere] : sphere;
+  }
+
+  bool m_indexed{false};
   std::vector<float4> m_centerRadius; // per sphere, for Embree
 };
 

@@ -19,9 +19,6 @@ class Triangle : public Geometry
   {
     return 3;
   }
-
- private:
-  std::vector<uint32_t> m_indices; // 3 per triangle (generated for a soup)
 };
 
 } // namespace prism

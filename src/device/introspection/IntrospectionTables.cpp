@@ -83,12 +83,13 @@ enum : int {
   kKhrSpatialFieldStructuredRegularFilterCubic = 60,
   kKhrSpatialFieldUnstructured = 61,
   kKhrVolumeTransferFunction1d = 62,
-  kPrismLightDecay = 63,
-  kPrismMaterialAnisotropy = 64,
-  kPrismMaterialBaseColorFactor = 65,
-  kPrismMaterialDoubleSided = 66,
-  kPrismMaterialUnlit = 67,
-  kPrismRenderers = 68,
+  kPrismBvhQuality = 63,
+  kPrismLightDecay = 64,
+  kPrismMaterialAnisotropy = 65,
+  kPrismMaterialBaseColorFactor = 66,
+  kPrismMaterialDoubleSided = 67,
+  kPrismMaterialUnlit = 68,
+  kPrismRenderers = 69,
 };
 
 // Type lists, ANARI_UNKNOWN-terminated.
@@ -189,6 +190,10 @@ constexpr const char *kTags_required[] = {"required", nullptr};
 constexpr const char *kTags_vector[] = {"vector", nullptr};
 
 // ANARI_DEVICE: core
+constexpr ValueEntry kValues0_bvhQuality[] = {
+    {"low", ANARI_UNKNOWN, kPrismBvhQuality},
+    {"medium", ANARI_UNKNOWN, kPrismBvhQuality},
+    {"high", ANARI_UNKNOWN, kPrismBvhQuality}};
 constexpr ParameterEntry kParameters0[] = {
     {.name = "name",
         .types = {kTypeList0, 1},
@@ -202,13 +207,22 @@ constexpr ParameterEntry kParameters0[] = {
         .types = {kTypeList2, 1},
         .description = "optional pointer passed as the first argument of the "
                        "status callback",
-        .extension = kCore}};
+        .extension = kCore},
+    {.name = "bvhQuality",
+        .types = {kTypeList0, 1},
+        .description = "the Embree build quality of every BVH built from now "
+                       "on: low, medium or high",
+        .defaultValue = "medium",
+        .hasValues = true,
+        .values = {kValues0_bvhQuality, 3},
+        .extension = kPrismBvhQuality}};
 constexpr PropertyEntry kProperties0[] = {{"version", ANARI_INT32, true, kCore},
     {"version.major", ANARI_INT32, false, kCore},
     {"version.minor", ANARI_INT32, false, kCore},
     {"version.patch", ANARI_INT32, false, kCore},
     {"version.name", ANARI_STRING, false, kCore},
     {"geometryMaxIndex", ANARI_UINT64, true, kCore}};
+constexpr int kContributors0[] = {kPrismBvhQuality};
 
 // ANARI_ARRAY1D: core
 constexpr ParameterEntry kParameters1[] = {
@@ -3976,13 +3990,14 @@ const char *const kExtensions[] = {"ANARI_EXT_SAMPLER_COMPRESSED_FORMAT_ASTC",
     "ANARI_KHR_SPATIAL_FIELD_STRUCTURED_REGULAR_FILTER_CUBIC",
     "ANARI_KHR_SPATIAL_FIELD_UNSTRUCTURED",
     "ANARI_KHR_VOLUME_TRANSFER_FUNCTION1D",
+    "ANARI_PRISM_BVH_QUALITY",
     "ANARI_PRISM_LIGHT_DECAY",
     "ANARI_PRISM_MATERIAL_ANISOTROPY",
     "ANARI_PRISM_MATERIAL_BASE_COLOR_FACTOR",
     "ANARI_PRISM_MATERIAL_DOUBLE_SIDED",
     "ANARI_PRISM_MATERIAL_UNLIT",
     "ANARI_PRISM_RENDERERS"};
-const size_t kExtensionCount = 69;
+const size_t kExtensionCount = 70;
 
 const char *const kAttributes[] = {"color",
     "worldPosition",
@@ -4002,7 +4017,8 @@ const ObjectEntry kObjects[] = {
     {.type = ANARI_DEVICE,
         .description = "device object",
         .extension = kCore,
-        .parameters = {kParameters0, 3},
+        .contributors = {kContributors0, 1},
+        .parameters = {kParameters0, 4},
         .properties = {kProperties0, 6}},
     // ANARI_ARRAY1D
     {.type = ANARI_ARRAY1D,

@@ -12,7 +12,37 @@ void onEmbreeError(void *userPtr, RTCError code, const char *message)
                        + ": " + (message ? message : ""));
 }
 
+bool onEmbreeMemory(void *userPtr, ssize_t bytes, bool /*post*/)
+{
+  ((Context *)userPtr)->countBytes(int64_t(bytes));
+  return true; // never refuse: limits are the system's
+}
+
 } // namespace
+
+void Context::countBytes(int64_t change)
+{
+  const int64_t now =
+      m_bytes.fetch_add(change, std::memory_order_relaxed) + change;
+  int64_t peak = m_peakBytes.load(std::memory_order_relaxed);
+  while (now > peak
+         && !m_peakBytes.compare_exchange_weak(
+             peak, now, std::memory_order_relaxed)) {
+  }
+}
+
+bool Context::setBuildQuality(const std::string &name)
+{
+  if (name == "low")
+    setBuildQuality(BuildQuality::Low);
+  else if (name == "medium")
+    setBuildQuality(BuildQuality::Medium);
+  else if (name == "high")
+    setBuildQuality(BuildQuality::High);
+  else
+    return false;
+  return true;
+}
 
 Context::Context(ErrorSink onError) : m_onError(std::move(onError))
 {
@@ -24,6 +54,7 @@ Context::Context(ErrorSink onError) : m_onError(std::move(onError))
     return;
   }
   rtcSetDeviceErrorFunction(m_device, onEmbreeError, this);
+  rtcSetDeviceMemoryMonitorFunction(m_device, onEmbreeMemory, this);
 }
 
 Context::~Context()

@@ -275,6 +275,19 @@ Hit toHit(const RTCRayHit &rh)
   return hit;
 }
 
+RTCBuildQuality embreeQuality(Context::BuildQuality quality)
+{
+  switch (quality) {
+  case Context::BuildQuality::Low:
+    return RTC_BUILD_QUALITY_LOW;
+  case Context::BuildQuality::High:
+    return RTC_BUILD_QUALITY_HIGH;
+  case Context::BuildQuality::Medium:
+    break;
+  }
+  return RTC_BUILD_QUALITY_MEDIUM;
+}
+
 } // namespace
 
 Scene::Scene(const Context &context) : m_context(context)
@@ -295,9 +308,10 @@ void Scene::clear()
   m_rayRange = kLargestCoordinate;
   m_interpolatedVertices.clear();
   m_attached.clear();
+  m_instanced.clear();
   m_scene = m_context.isValid() ? rtcNewScene(m_context.handle()) : nullptr;
   if (m_scene) {
-    rtcSetSceneBuildQuality(m_scene, RTC_BUILD_QUALITY_HIGH);
+    rtcSetSceneBuildQuality(m_scene, embreeQuality(m_context.buildQuality()));
     // Watertight: without it rays through a quad's split diagonal can miss.
     rtcSetSceneFlags(m_scene, RTC_SCENE_FLAG_ROBUST);
   }
@@ -460,6 +474,34 @@ void Scene::addInstance(
       g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, &worldFromObject);
   attach(g, id);
   m_rayRange = std::min(m_rayRange, worldRayRange(inverse(worldFromObject)));
+  if (id >= m_instanced.size())
+    m_instanced.resize(size_t(id) + 1, nullptr);
+  m_instanced[id] = child.m_scene;
+}
+
+bool Scene::moveInstance(
+    uint32_t id, const Scene &child, const mat3x4 &worldFromObject)
+{
+  if (!placesInstance(id, child))
+    return false;
+  // rayRange() is the smallest over all placements: a move that would
+  // lower it needs a rebuild; one that raises the moved instance's own
+  // leaves it where it was (at worst smaller than needed, never beyond
+  // what Embree can trace).
+  if (worldRayRange(inverse(worldFromObject)) < m_rayRange)
+    return false;
+  RTCGeometry g = rtcGetGeometry(m_scene, id);
+  rtcSetGeometryTransform(
+      g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, &worldFromObject);
+  rtcCommitGeometry(g);
+  // From the first move on, the scene is one that changes: Embree builds
+  // it faster (RTC_SCENE_FLAG_DYNAMIC) at some cost in trace speed.
+  if (!(rtcGetSceneFlags(m_scene) & RTC_SCENE_FLAG_DYNAMIC)) {
+    rtcSetSceneFlags(
+        m_scene, rtcGetSceneFlags(m_scene) | RTC_SCENE_FLAG_DYNAMIC);
+    rtcSetSceneBuildQuality(m_scene, RTC_BUILD_QUALITY_LOW);
+  }
+  return true;
 }
 
 void Scene::addInstance(
@@ -497,6 +539,7 @@ void Scene::addInstance(
 
 void Scene::attach(RTCGeometry geometry, uint32_t id)
 {
+  rtcSetGeometryBuildQuality(geometry, embreeQuality(m_context.buildQuality()));
   rtcCommitGeometry(geometry);
   rtcAttachGeometryByID(m_scene, geometry, id);
   rtcReleaseGeometry(geometry);

@@ -93,6 +93,21 @@ class Scene
   void addInstance(
       uint32_t id, const Scene &child, const MotionTransform &worldFromObject);
 
+  // Moves instance `id` (added by addInstance with a fixed transform) to
+  // `worldFromObject`, keeping its Embree geometry: an edit commit()
+  // then rebuilds only this scene's BVH. False, changing nothing, when
+  // `id` is not such an instance of `child` as built now (the child was
+  // rebuilt since) or the move would lower rayRange().
+  bool moveInstance(
+      uint32_t id, const Scene &child, const mat3x4 &worldFromObject);
+  // Whether geometry `id` is a fixed-transform instance of `child` as
+  // built now.
+  bool placesInstance(uint32_t id, const Scene &child) const
+  {
+    return m_scene && child.m_scene && id < m_instanced.size()
+           && m_instanced[id] == child.m_scene;
+  }
+
   // Builds the BVH; call after adding everything.
   void commit();
   box3 bounds() const;
@@ -144,6 +159,9 @@ class Scene
   // between them; kept until clear().
   std::vector<std::vector<float3>> m_interpolatedVertices;
   std::vector<bool> m_attached; // by geometry id
+  // By geometry id: the child scene a fixed-transform instance places, for
+  // moveInstance() (NULL for other geometry).
+  std::vector<const RTCSceneTy *> m_instanced;
 };
 
 } // namespace prism::rt

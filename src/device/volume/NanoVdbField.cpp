@@ -169,6 +169,23 @@ float NanoVdbField::sample(const float3 &position) const
   return m_sampler->sample(index);
 }
 
+void NanoVdbField::sampleLine(
+    const float3 &start, const float3 &step, int count, float *values) const
+{
+  if (!m_sampler || count <= 0)
+    return SpatialField::sampleLine(start, step, count, values);
+  // The index box is convex: with both ends in it, every point is, and
+  // the line is read through one accessor. Otherwise point by point, as
+  // sample() (NaN beyond the voxels).
+  const float3 first = toIndex(start);
+  const float3 last = toIndex(start + step * float(count - 1));
+  if (!contains(m_indexBox, first) || !contains(m_indexBox, last))
+    return SpatialField::sampleLine(start, step, count, values);
+  const float3 indexStep =
+      count > 1 ? (last - first) / float(count - 1) : float3{0.f, 0.f, 0.f};
+  m_sampler->sampleLine(first, indexStep, count, values);
+}
+
 float3 NanoVdbField::toIndex(const float3 &position) const
 {
   const float3 d = position - m_objectOrigin;
@@ -185,10 +202,11 @@ void NanoVdbField::valueRange(const box3 &region, float &lo, float &hi) const
   box3 clipped;
   if (!m_sampler || !clipToBounds(region, clipped))
     return;
-  // The voxels whose values filters read anywhere in the region: its
-  // corners in index space (the same arithmetic as sample()), one voxel
-  // more below and two above the cells they fall in (the cubic footprint,
-  // which covers nearest and linear too, and rounding).
+  // The voxels whose values the filter reads anywhere in the region: its
+  // corners in index space (the same arithmetic as sample()), widened by
+  // a sixteenth of a voxel and a relative margin for rounding, then by the
+  // filter's taps (nearest rounds, linear reads the cell's upper corner,
+  // cubic one more each side). A tight footprint keeps majorants tight.
   float3 lower{kInfinity, kInfinity, kInfinity};
   float3 upper = -lower;
   for (int corner = 0; corner < 8; corner++) {
@@ -201,21 +219,28 @@ void NanoVdbField::valueRange(const box3 &region, float &lo, float &hi) const
   }
   lower = max(lower, m_indexBox.lower);
   upper = min(upper, m_indexBox.upper);
+  const float shift = m_filter == FieldFilter::Nearest ? 0.5f : 0.f;
+  const int below = m_filter == FieldFilter::Cubic ? 1 : 0;
+  const int above = m_filter == FieldFilter::Cubic    ? 2
+                    : m_filter == FieldFilter::Linear ? 1
+                                                      : 0;
   // Index coordinates stay within +-2^30 (checked at commit); NaN (a
   // corner beyond float's reach) takes the far end, which stays
   // conservative.
-  auto voxel = [](float x, float fallback) {
+  auto voxel = [shift](float x, float side, float fallback) {
     constexpr float limit = float(kLargestIndex);
-    const float clamped = x >= -limit && x <= limit ? x : fallback;
-    return int(std::floor(clamped));
+    const float widened =
+        x + shift + side * (0.0625f + std::fabs(x) * (1.f / 65536.f));
+    return int(
+        std::floor(widened >= -limit && widened <= limit ? widened : fallback));
   };
   const float limit = float(kLargestIndex);
-  const int3 first{voxel(lower.x, -limit) - 1,
-      voxel(lower.y, -limit) - 1,
-      voxel(lower.z, -limit) - 1};
-  const int3 last{voxel(upper.x, limit) + 2,
-      voxel(upper.y, limit) + 2,
-      voxel(upper.z, limit) + 2};
+  const int3 first{voxel(lower.x, -1.f, -limit) - below,
+      voxel(lower.y, -1.f, -limit) - below,
+      voxel(lower.z, -1.f, -limit) - below};
+  const int3 last{voxel(upper.x, 1.f, limit) + above,
+      voxel(upper.y, 1.f, limit) + above,
+      voxel(upper.z, 1.f, limit) + above};
   const float2 stored = m_sampler->valueRange(first, last);
   const float overshoot = m_filter == FieldFilter::Cubic
                               ? kTricubicOvershoot * (stored.y - stored.x)

@@ -21,6 +21,10 @@ class NanoVdbField : public SpatialField
     return m_bounds;
   }
   float sample(const float3 &position) const override;
+  void sampleLine(const float3 &start,
+      const float3 &step,
+      int count,
+      float *values) const override;
   void valueRange(const box3 &region, float &lo, float &hi) const override;
   float cellSize() const override
   {

@@ -33,60 +33,30 @@ class TypedGridSampler : public NanoVdbGridSampler
   {
     // One accessor per call: its node cache is not shared between threads.
     const Accessor accessor(m_root);
-    auto value = [&](int i, int j, int k) {
-      return float(accessor.getValue(nanovdb::Coord(i, j, k)));
-    };
-    if constexpr (kFilter == FieldFilter::Nearest) {
-      // floor(x + 1/2): ties round up.
-      return value(int(std::floor(index.x + 0.5f)),
-          int(std::floor(index.y + 0.5f)),
-          int(std::floor(index.z + 0.5f)));
-    }
-    const float3 base = {
-        std::floor(index.x), std::floor(index.y), std::floor(index.z)};
-    const float3 t = index - base;
-    const int i = int(base.x);
-    const int j = int(base.y);
-    const int k = int(base.z);
-    if constexpr (kFilter == FieldFilter::Linear) {
-      auto row = [&](int dj, int dk) {
-        const float v0 = value(i, j + dj, k + dk);
-        return v0 + t.x * (value(i + 1, j + dj, k + dk) - v0);
-      };
-      const float y0 = row(0, 0) + t.y * (row(1, 0) - row(0, 0));
-      const float y1 = row(0, 1) + t.y * (row(1, 1) - row(0, 1));
-      return y0 + t.z * (y1 - y0);
-    } else {
-      // Catmull-Rom, as structuredRegular's cubic filter (NanoVDB's own
-      // tricubic sampler needs gradients and does not bound overshoot).
-      const auto wx = catmullRomWeights(t.x);
-      const auto wy = catmullRomWeights(t.y);
-      const auto wz = catmullRomWeights(t.z);
-      float result = 0.f;
-      for (int dk = 0; dk < 4; dk++) {
-        float plane = 0.f;
-        for (int dj = 0; dj < 4; dj++) {
-          float line = 0.f;
-          for (int di = 0; di < 4; di++)
-            line += wx[di] * value(i - 1 + di, j - 1 + dj, k - 1 + dk);
-          plane += wy[dj] * line;
-        }
-        result += wz[dk] * plane;
-      }
-      return result;
-    }
+    return filtered(accessor, index);
+  }
+
+  void sampleLine(const float3 &start,
+      const float3 &step,
+      int count,
+      float *values) const override
+  {
+    // One accessor for the whole line: neighbouring points share leaves.
+    const Accessor accessor(m_root);
+    for (int n = 0; n < count; n++)
+      values[n] = filtered(accessor, start + step * float(n));
   }
 
   float2 valueRange(const int3 &lo, const int3 &hi) const override
   {
+    float2 range{kInfinity, -kInfinity};
+    if (leafSpanRange(lo, hi, range))
+      return range;
     const int3 first = spanOf(lo);
     const int3 last = spanOf(hi);
-    const int3 cells = last - first + 1;
-    if (!m_hasLocalRanges
-        || double(cells.x) * cells.y * cells.z > kMaxRangeCellsPerQuery)
+    if (!m_hasLocalRanges || tooMany(first, last, kMaxRangeCellsPerQuery))
       return m_wholeRange;
     const Accessor accessor(m_root);
-    float2 range{kInfinity, -kInfinity};
     for (int k = first.z; k <= last.z; k++)
       for (int j = first.y; j <= last.y; j++)
         for (int i = first.x; i <= last.x; i++) {
@@ -115,6 +85,9 @@ class TypedGridSampler : public NanoVdbGridSampler
   // large region falls back to the whole grid's range.
   static constexpr uint64_t kMaxLowerReferences = uint64_t(1) << 20;
   static constexpr int64_t kMaxRangeCellsPerQuery = 4096;
+  // A majorant cell with the cubic footprint spans 2 leaves per axis; a
+  // region far larger reads the lower nodes' ranges instead.
+  static constexpr int64_t kMaxLeafSpansPerQuery = 512;
 
   // The lower node span holding `voxel` (an arithmetic shift floors).
   static int3 spanOf(const int3 &voxel)
@@ -137,11 +110,140 @@ class TypedGridSampler : public NanoVdbGridSampler
            | (uint64_t(uint32_t(cell.z)) & mask);
   }
 
+  // The range over voxels lo..hi leaf span by leaf span (8^3 voxels): the
+  // voxels themselves where the region covers part of a leaf, the leaf's
+  // range where it covers all of it, the one tile value covering the span
+  // where no leaf is. False (range untouched) for regions of more than
+  // kMaxLeafSpansPerQuery spans, or a leaf the node arrays did not hold.
+  bool leafSpanRange(const int3 &lo, const int3 &hi, float2 &range) const
+  {
+    const int3 first = leafSpanOf(lo);
+    const int3 last = leafSpanOf(hi);
+    if (!m_hasLocalRanges || tooMany(first, last, kMaxLeafSpansPerQuery))
+      return false;
+    const Accessor accessor(m_root);
+    constexpr int kDim = int(Leaf::DIM);
+    float2 found{kInfinity, -kInfinity};
+    for (int k = first.z; k <= last.z; k++)
+      for (int j = first.y; j <= last.y; j++)
+        for (int i = first.x; i <= last.x; i++) {
+          const int3 origin = int3{i, j, k} * kDim;
+          const nanovdb::Coord coord(origin.x, origin.y, origin.z);
+          const Leaf *leaf = accessor.probeLeaf(coord);
+          if (!leaf) {
+            unite(found, float(accessor.getValue(coord)));
+            continue;
+          }
+          const int3 from = max(lo, origin) - origin;
+          const int3 to = min(hi, origin + (kDim - 1)) - origin;
+          if (to - from == int3{kDim - 1, kDim - 1, kDim - 1}) {
+            const auto cached = m_leafRanges.find(leaf);
+            if (cached == m_leafRanges.end())
+              return false;
+            unite(found, cached->second.x);
+            unite(found, cached->second.y);
+            continue;
+          }
+          // x-major offsets: (x << 6) | (y << 3) | z.
+          for (int x = from.x; x <= to.x; x++)
+            for (int y = from.y; y <= to.y; y++)
+              for (int z = from.z; z <= to.z; z++)
+                unite(found,
+                    float(leaf->getValue(uint32_t((x * kDim + y) * kDim + z))));
+        }
+    range = found;
+    return true;
+  }
+  // Whether the box of cells first..last holds more than `limit`.
+  static bool tooMany(const int3 &first, const int3 &last, int64_t limit)
+  {
+    const int3 cells = last - first + 1;
+    return double(cells.x) * cells.y * cells.z > double(limit);
+  }
+  static int3 leafSpanOf(const int3 &voxel)
+  {
+    constexpr int kLog2 = int(Leaf::TOTAL);
+    return {voxel.x >> kLog2, voxel.y >> kLog2, voxel.z >> kLog2};
+  }
+
+  float filtered(const Accessor &accessor, const float3 &index) const
+  {
+    auto value = [&](int i, int j, int k) {
+      return float(accessor.getValue(nanovdb::Coord(i, j, k)));
+    };
+    if constexpr (kFilter == FieldFilter::Nearest) {
+      // floor(x + 1/2): ties round up.
+      return value(int(std::floor(index.x + 0.5f)),
+          int(std::floor(index.y + 0.5f)),
+          int(std::floor(index.z + 0.5f)));
+    }
+    const float3 base = {
+        std::floor(index.x), std::floor(index.y), std::floor(index.z)};
+    const float3 t = index - base;
+    const int i = int(base.x);
+    const int j = int(base.y);
+    const int k = int(base.z);
+    if constexpr (kFilter == FieldFilter::Linear) {
+      float corners[8];
+      if (!leafCorners(accessor, i, j, k, corners)) {
+        for (int c = 0; c < 8; c++)
+          corners[c] = value(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2));
+      }
+      auto row = [&](int c) {
+        return corners[c] + t.x * (corners[c + 1] - corners[c]);
+      };
+      const float y0 = row(0) + t.y * (row(2) - row(0));
+      const float y1 = row(4) + t.y * (row(6) - row(4));
+      return y0 + t.z * (y1 - y0);
+    } else {
+      // Catmull-Rom, as structuredRegular's cubic filter (NanoVDB's own
+      // tricubic sampler needs gradients and does not bound overshoot).
+      const auto wx = catmullRomWeights(t.x);
+      const auto wy = catmullRomWeights(t.y);
+      const auto wz = catmullRomWeights(t.z);
+      float result = 0.f;
+      for (int dk = 0; dk < 4; dk++) {
+        float plane = 0.f;
+        for (int dj = 0; dj < 4; dj++) {
+          float line = 0.f;
+          for (int di = 0; di < 4; di++)
+            line += wx[di] * value(i - 1 + di, j - 1 + dj, k - 1 + dk);
+          plane += wy[dj] * line;
+        }
+        result += wz[dk] * plane;
+      }
+      return result;
+    }
+  }
+
+  // The 8 voxels (i + (c & 1), j + (c >> 1 & 1), k + (c >> 2)) read
+  // straight from one leaf when they all lie in the same one (7 cells in
+  // 8 along each axis): no tree walk per tap. False otherwise.
+  static bool leafCorners(
+      const Accessor &accessor, int i, int j, int k, float corners[8])
+  {
+    constexpr int kLast = Leaf::DIM - 1;
+    if ((i & kLast) == kLast || (j & kLast) == kLast || (k & kLast) == kLast)
+      return false;
+    const Leaf *leaf = accessor.probeLeaf(nanovdb::Coord(i, j, k));
+    if (!leaf)
+      return false;
+    // A leaf's values are x-major: offset (x << 6) | (y << 3) | z.
+    const uint32_t first = Leaf::CoordToOffset(nanovdb::Coord(i, j, k));
+    constexpr uint32_t dx = Leaf::DIM * Leaf::DIM, dy = Leaf::DIM;
+    for (int c = 0; c < 8; c++) {
+      const uint32_t offset =
+          first + (c & 1) * dx + (c >> 1 & 1) * dy + uint32_t(c >> 2);
+      corners[c] = float(leaf->getValue(offset));
+    }
+    return true;
+  }
+
   // Every value stored anywhere in the grid, from the node arrays rather
   // than the child graph: a crafted grid whose children all point at one
   // node would make a walk visit it billions of times. Leaves
   // (variable-size for FpN) are reached through lower nodes, once each.
-  float2 storedValueRange() const
+  float2 storedValueRange()
   {
     float2 range{float(m_root.background()), float(m_root.background())};
     const auto *root = m_root.data();
@@ -159,9 +261,8 @@ class TypedGridSampler : public NanoVdbGridSampler
     const auto *lower = reinterpret_cast<const typename Lower::DataType *>(
         tree.mNodeCount[1] ? (const uint8_t *)&tree + tree.mNodeOffset[1]
                            : nullptr);
-    std::unordered_map<const Leaf *, float2> leafRanges;
     for (uint32_t n = 0; n < tree.mNodeCount[1]; n++) {
-      const float2 node = lowerNodeRange(lower[n], leafRanges);
+      const float2 node = lowerNodeRange(lower[n], m_leafRanges);
       unite(range, node.x);
       unite(range, node.y);
     }
@@ -174,7 +275,6 @@ class TypedGridSampler : public NanoVdbGridSampler
   void buildLocalRanges()
   {
     std::unordered_map<const typename Lower::DataType *, float2> nodeRanges;
-    std::unordered_map<const Leaf *, float2> leafRanges;
     uint64_t references = 0;
     const auto *root = m_root.data();
     for (uint32_t n = 0; n < root->mTableSize; n++) {
@@ -191,7 +291,7 @@ class TypedGridSampler : public NanoVdbGridSampler
         const auto *lower = upper->getChild(*child)->data();
         auto [node, added] = nodeRanges.try_emplace(lower);
         if (added)
-          node->second = lowerNodeRange(*lower, leafRanges);
+          node->second = lowerNodeRange(*lower, m_leafRanges);
         const nanovdb::Coord local = Upper::OffsetToLocalCoord(*child);
         const int3 cell{(upperOrigin[0] >> kLowerLog2Span) + local[0],
             (upperOrigin[1] >> kLowerLog2Span) + local[1],
@@ -240,6 +340,8 @@ class TypedGridSampler : public NanoVdbGridSampler
   float2 m_wholeRange{};
   bool m_hasLocalRanges{false};
   std::unordered_map<uint64_t, float2> m_lowerRanges;
+  // Every leaf's range of values (active or not), by address.
+  std::unordered_map<const Leaf *, float2> m_leafRanges;
 };
 
 template <typename BuildT>

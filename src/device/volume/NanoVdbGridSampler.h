@@ -17,6 +17,12 @@ class NanoVdbGridSampler
   // The filtered value at `index` (index space: voxel ijk's value sits at
   // ijk). Voxels no node stores read the grid's background.
   virtual float sample(const float3 &index) const = 0;
+  // sample() at start + n * step for n < count (index space), sharing one
+  // tree accessor's cache along the line.
+  virtual void sampleLine(const float3 &start,
+      const float3 &step,
+      int count,
+      float *values) const = 0;
   // A conservative [min, max] of the values sample() reads at voxels
   // lo..hi (index space, inclusive: the caller adds the filter's
   // footprint): local per lower node's span (128^3 voxels) where the

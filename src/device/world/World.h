@@ -199,6 +199,13 @@ class World : public Object
   void placeEmitters();
   // Places the volumes of every placed group.
   void placeVolumes();
+  // Moves the Embree instances whose transform changed since `previous`
+  // (the placements the scene was built for) and keeps the rest; false
+  // (the scene then needs rebuildScene()) when more than transforms
+  // changed.
+  bool moveInstancesInPlace(const std::vector<Placement> &previous);
+  // The top-level scene from m_placements, every instance anew.
+  void rebuildScene();
   // The lights rays can reach and light selection, from m_placedLights.
   void indexLights(float sceneRadius);
   // Moves every emitterLight() index by `shift`.
