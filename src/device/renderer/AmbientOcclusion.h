@@ -24,15 +24,15 @@ class AmbientOcclusion : public Renderer
     return std::max(1u, 256u / m_samples); // ~256 rays per pixel
   }
 
-  void renderTile(const RenderContext &context,
-      const Tile &tile,
-      FrameBuffers &buffers,
-      const std::atomic<bool> &cancel) const override;
-
  protected:
   void commitParameters() override;
+  std::unique_ptr<TileWork> startTile(const RenderContext &context,
+      const Tile &tile,
+      FrameBuffers &buffers) const override;
 
  private:
+  class Wavefront;
+
   // What a tile works in, reused tile after tile.
   struct TileWorkspace
   {

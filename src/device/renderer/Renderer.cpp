@@ -7,6 +7,7 @@
 #include "../array/ElementConversion.h"
 #include "../introspection/Introspection.h"
 #include "../object/DeviceState.h"
+#include "../parallel/Blocks.h"
 #include "ImageFilter.h"
 
 #include "anari/frontend/type_utility.h"
@@ -82,22 +83,67 @@ void Renderer::renderTile(const RenderContext &context,
     FrameBuffers &buffers,
     const std::atomic<bool> &cancel) const
 {
-  Ray rays[rt::kPacketSize];
-  rt::Hit hits[rt::kPacketSize];
-  const PrimaryRays primaryRays(context);
-  for (uint32_t y = tile.y0; y < tile.y1 && !cancel; y++) {
-    for (uint32_t x = tile.x0; x < tile.x1; x += rt::kPacketSize) {
-      const int count = int(std::min<uint32_t>(rt::kPacketSize, tile.x1 - x));
-      tracePrimary(context, primaryRays, x, y, count, rays, hits);
-      for (int i = 0; i < count; i++) {
-        store(context,
-            buffers,
-            x + i,
-            y,
-            shadeSample(context, rays[i], hits[i], x + i, y));
-      }
+  const std::unique_ptr<TileWork> work = startTile(context, tile, buffers);
+  const uint32_t width = tile.x1 - tile.x0;
+  auto packetsOfRows = [&](size_t first, size_t rows) {
+    const uint32_t end = tile.y0 + uint32_t(first + rows);
+    for (uint32_t y = tile.y0 + uint32_t(first); y < end && !cancel; y++) {
+      for (uint32_t x = tile.x0; x < tile.x1; x += rt::kPacketSize)
+        work->packet(
+            x, y, int(std::min<uint32_t>(rt::kPacketSize, tile.x1 - x)));
+    }
+  };
+  const size_t rows = tile.y1 - tile.y0;
+  if (work->packetsInParallel())
+    forEachBlock(rows, std::max<size_t>(1, 1024 / width), packetsOfRows);
+  else
+    packetsOfRows(0, rows);
+  while (!cancel && work->bounce()) {
+  }
+  if (!cancel)
+    work->finish();
+}
+
+// The default tile: each packet's primary rays traced together, each
+// pixel shaded by the renderer's shadeSample() and stored.
+class Renderer::PrimaryPackets : public TileWork
+{
+ public:
+  PrimaryPackets(const Renderer &renderer,
+      const RenderContext &context,
+      FrameBuffers &buffers)
+      : m_renderer(renderer),
+        m_context(context),
+        m_buffers(buffers),
+        m_primaryRays(context)
+  {}
+
+  void packet(uint32_t x0, uint32_t y, int count) override
+  {
+    m_renderer.tracePrimary(
+        m_context, m_primaryRays, x0, y, count, m_rays, m_hits);
+    for (int i = 0; i < count; i++) {
+      store(m_context,
+          m_buffers,
+          x0 + i,
+          y,
+          m_renderer.shadeSample(m_context, m_rays[i], m_hits[i], x0 + i, y));
     }
   }
+
+ private:
+  const Renderer &m_renderer;
+  const RenderContext &m_context;
+  FrameBuffers &m_buffers;
+  const PrimaryRays m_primaryRays;
+  Ray m_rays[rt::kPacketSize];
+  rt::Hit m_hits[rt::kPacketSize];
+};
+
+std::unique_ptr<TileWork> Renderer::startTile(
+    const RenderContext &context, const Tile &, FrameBuffers &buffers) const
+{
+  return std::make_unique<PrimaryPackets>(*this, context, buffers);
 }
 
 PixelSample Renderer::shadeSample(const RenderContext &context,
