@@ -235,7 +235,8 @@ TEST_F(Conformance, EveryParameterARendererReadsIsAdvertised)
 // Object::param(), so the definitions' bounds and values are enforced.
 bool enforcesDefinitions(ANARIDataType type)
 {
-  return type == ANARI_RENDERER || type == ANARI_LIGHT;
+  return type == ANARI_RENDERER || type == ANARI_LIGHT || type == ANARI_SAMPLER
+         || type == ANARI_MATERIAL;
 }
 
 // `bytes` of `type` (FLOAT32 or INT32 based) with every component moved
