@@ -221,10 +221,13 @@ void AmbientOcclusion::Wavefront::finish()
   }
 }
 
-std::unique_ptr<TileWork> AmbientOcclusion::startTile(
-    const RenderContext &context, const Tile &tile, FrameBuffers &buffers) const
+void AmbientOcclusion::renderTile(const RenderContext &context,
+    const Tile &tile,
+    FrameBuffers &buffers,
+    const std::atomic<bool> &cancel) const
 {
-  return std::make_unique<Wavefront>(*this, context, tile, buffers);
+  Wavefront work(*this, context, tile, buffers);
+  runTile(work, tile, cancel);
 }
 
 } // namespace prism

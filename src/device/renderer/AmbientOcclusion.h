@@ -26,9 +26,10 @@ class AmbientOcclusion : public Renderer
 
  protected:
   void commitParameters() override;
-  std::unique_ptr<TileWork> startTile(const RenderContext &context,
+  void renderTile(const RenderContext &context,
       const Tile &tile,
-      FrameBuffers &buffers) const override;
+      FrameBuffers &buffers,
+      const std::atomic<bool> &cancel) const override;
 
  private:
   class Wavefront;

@@ -262,10 +262,13 @@ void PathTracer::Wavefront::finish()
   });
 }
 
-std::unique_ptr<TileWork> PathTracer::startTile(
-    const RenderContext &context, const Tile &tile, FrameBuffers &buffers) const
+void PathTracer::renderTile(const RenderContext &context,
+    const Tile &tile,
+    FrameBuffers &buffers,
+    const std::atomic<bool> &cancel) const
 {
-  return std::make_unique<Wavefront>(*this, context, tile, buffers);
+  Wavefront work(*this, context, tile, buffers);
+  runTile(work, tile, cancel);
 }
 
 float PathTracer::emissionWeight(const RenderContext &context,

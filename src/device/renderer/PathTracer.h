@@ -48,9 +48,10 @@ class PathTracer : public Renderer
  protected:
   void commitParameters() override;
   // A tile's wavefront, traced through context.transport.
-  std::unique_ptr<TileWork> startTile(const RenderContext &context,
+  void renderTile(const RenderContext &context,
       const Tile &tile,
-      FrameBuffers &buffers) const override;
+      FrameBuffers &buffers,
+      const std::atomic<bool> &cancel) const override;
 
  private:
   class Wavefront;

@@ -418,10 +418,13 @@ void Raycast::Packets::packet(uint32_t x0, uint32_t y, int count)
   }
 }
 
-std::unique_ptr<TileWork> Raycast::startTile(
-    const RenderContext &context, const Tile &, FrameBuffers &buffers) const
+void Raycast::renderTile(const RenderContext &context,
+    const Tile &tile,
+    FrameBuffers &buffers,
+    const std::atomic<bool> &cancel) const
 {
-  return std::make_unique<Packets>(*this, context, buffers);
+  Packets work(*this, context, buffers);
+  runTile(work, tile, cancel);
 }
 
 PixelSample Raycast::shadeSample(const RenderContext &context,

@@ -26,9 +26,10 @@ class Raycast : public Renderer
   // Traces whole packets and shades, in line, hits on surfaces whose color
   // is constant and whose first layer hides everything behind; every other
   // pixel goes through shadeSample(). Both give the same image.
-  std::unique_ptr<TileWork> startTile(const RenderContext &context,
+  void renderTile(const RenderContext &context,
       const Tile &tile,
-      FrameBuffers &buffers) const override;
+      FrameBuffers &buffers,
+      const std::atomic<bool> &cancel) const override;
   PixelSample shadeSample(const RenderContext &context,
       const Ray &ray,
       const rt::Hit &hit,

@@ -78,30 +78,27 @@ float4 Renderer::background(
       (float(y) + 0.5f) / float(height));
 }
 
-void Renderer::renderTile(const RenderContext &context,
-    const Tile &tile,
-    FrameBuffers &buffers,
-    const std::atomic<bool> &cancel) const
+void Renderer::runTile(
+    TileWork &work, const Tile &tile, const std::atomic<bool> &cancel)
 {
-  const std::unique_ptr<TileWork> work = startTile(context, tile, buffers);
   const uint32_t width = tile.x1 - tile.x0;
   auto packetsOfRows = [&](size_t first, size_t rows) {
     const uint32_t end = tile.y0 + uint32_t(first + rows);
     for (uint32_t y = tile.y0 + uint32_t(first); y < end && !cancel; y++) {
       for (uint32_t x = tile.x0; x < tile.x1; x += rt::kPacketSize)
-        work->packet(
+        work.packet(
             x, y, int(std::min<uint32_t>(rt::kPacketSize, tile.x1 - x)));
     }
   };
   const size_t rows = tile.y1 - tile.y0;
-  if (work->packetsInParallel())
+  if (work.packetsInParallel())
     forEachBlock(rows, std::max<size_t>(1, 1024 / width), packetsOfRows);
   else
     packetsOfRows(0, rows);
-  while (!cancel && work->bounce()) {
+  while (!cancel && work.bounce()) {
   }
   if (!cancel)
-    work->finish();
+    work.finish();
 }
 
 // The default tile: each packet's primary rays traced together, each
@@ -140,10 +137,13 @@ class Renderer::PrimaryPackets : public TileWork
   rt::Hit m_hits[rt::kPacketSize];
 };
 
-std::unique_ptr<TileWork> Renderer::startTile(
-    const RenderContext &context, const Tile &, FrameBuffers &buffers) const
+void Renderer::renderTile(const RenderContext &context,
+    const Tile &tile,
+    FrameBuffers &buffers,
+    const std::atomic<bool> &cancel) const
 {
-  return std::make_unique<PrimaryPackets>(*this, context, buffers);
+  PrimaryPackets work(*this, context, buffers);
+  runTile(work, tile, cancel);
 }
 
 PixelSample Renderer::shadeSample(const RenderContext &context,

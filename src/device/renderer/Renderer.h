@@ -10,7 +10,6 @@
 #include "SurfaceHit.h"
 
 #include <atomic>
-#include <memory>
 
 namespace prism {
 
@@ -42,11 +41,12 @@ struct RenderContext
   uint32_t seed{0};
 };
 
-// One tile's work as the tile loop, Renderer::renderTile(), drives it:
+// One tile's work as the tile loop, Renderer::runTile(), drives it:
 // packet() for the tile's pixels row by row, in packets of up to
 // rt::kPacketSize, then bounce() until nothing is left to trace, then
-// finish(). Each renderer makes its own (Renderer::startTile()); the loop
-// stops, storing nothing more, once the frame is cancelled.
+// finish(). Each renderer's renderTile() makes its own, on the stack, and
+// runs it through Renderer::runTile(); the loop stops, storing nothing
+// more, once the frame is cancelled.
 class TileWork
 {
  public:
@@ -78,9 +78,10 @@ class Renderer : public Object
 
   // Called once per frame before any tile.
   virtual void beginFrame(const RenderContext &context) {}
-  // Renders the pixels of `tile`: the one tile loop every renderer runs,
-  // over the TileWork startTile() makes; returns early once `cancel` is set.
-  void renderTile(const RenderContext &context,
+  // Renders the pixels of `tile` through runTile() with the renderer's
+  // TileWork (by default packets of primary rays, each pixel shaded by
+  // shadeSample()); returns early once `cancel` is set.
+  virtual void renderTile(const RenderContext &context,
       const Tile &tile,
       FrameBuffers &buffers,
       const std::atomic<bool> &cancel) const;
@@ -142,11 +143,9 @@ class Renderer : public Object
 
  protected:
   void commitParameters() override;
-  // The work of one tile: by default packets of primary rays, each pixel
-  // shaded by shadeSample().
-  virtual std::unique_ptr<TileWork> startTile(const RenderContext &context,
-      const Tile &tile,
-      FrameBuffers &buffers) const;
+  // The one tile loop every renderer runs `work` through.
+  static void runTile(
+      TileWork &work, const Tile &tile, const std::atomic<bool> &cancel);
   // One pixel's sample from its primary ray and what that ray hit; by
   // default the background.
   virtual PixelSample shadeSample(const RenderContext &context,
