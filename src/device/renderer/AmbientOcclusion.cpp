@@ -1,5 +1,7 @@
 #include "AmbientOcclusion.h"
 
+#include "TileLoop.h"
+
 #include "../math/LocalFrame.h"
 #include "../math/SphereSampling.h"
 #include "SampleHash.h"
@@ -34,7 +36,7 @@ void AmbientOcclusion::commitParameters()
 // A tile's wavefront: its camera rays (and their continuations through
 // see-through surfaces) as one queue per bounce, all occlusion rays as
 // one queue at the end.
-class AmbientOcclusion::Wavefront : public WavefrontTile<TileWorkspace>
+class AmbientOcclusion::Wavefront final : public WavefrontTile<TileWorkspace>
 {
  public:
   Wavefront(const AmbientOcclusion &renderer,

@@ -1,5 +1,7 @@
 #include "PathTracer.h"
 
+#include "TileLoop.h"
+
 #include "NormalMapping.h"
 
 #include "../light/EmissiveSurface.h"
@@ -138,7 +140,7 @@ void PathTracer::commitParameters()
 
 // A tile's paths advancing bounce by bounce: each bounce's rays traced as
 // one queue, then its shadow rays as another.
-class PathTracer::Wavefront : public WavefrontTile<TileWorkspace>
+class PathTracer::Wavefront final : public WavefrontTile<TileWorkspace>
 {
  public:
   Wavefront(const PathTracer &renderer,

@@ -1,5 +1,7 @@
 #include "Raycast.h"
 
+#include "TileLoop.h"
+
 #include "PrimaryRays.h"
 #include "SampleHash.h"
 #include "VolumeTracing.h"
@@ -239,7 +241,7 @@ void Raycast::commitParameters()
 
 // A tile's packets: traced whole, shaded by PacketShading, the lanes it
 // cannot shade (see-through, textured, in volumes) by shadeSample().
-class Raycast::Packets : public TileWork
+class Raycast::Packets final : public TileWork
 {
  public:
   Packets(const Raycast &renderer,

@@ -2,12 +2,12 @@
 
 #include "PrimaryRays.h"
 #include "SampleSequence.h"
+#include "TileLoop.h"
 
 #include "../array/Array.h"
 #include "../array/ElementConversion.h"
 #include "../introspection/Introspection.h"
 #include "../object/DeviceState.h"
-#include "../parallel/Blocks.h"
 #include "ImageFilter.h"
 
 #include "anari/frontend/type_utility.h"
@@ -78,32 +78,9 @@ float4 Renderer::background(
       (float(y) + 0.5f) / float(height));
 }
 
-void Renderer::runTile(
-    TileWork &work, const Tile &tile, const std::atomic<bool> &cancel)
-{
-  const uint32_t width = tile.x1 - tile.x0;
-  auto packetsOfRows = [&](size_t first, size_t rows) {
-    const uint32_t end = tile.y0 + uint32_t(first + rows);
-    for (uint32_t y = tile.y0 + uint32_t(first); y < end && !cancel; y++) {
-      for (uint32_t x = tile.x0; x < tile.x1; x += rt::kPacketSize)
-        work.packet(
-            x, y, int(std::min<uint32_t>(rt::kPacketSize, tile.x1 - x)));
-    }
-  };
-  const size_t rows = tile.y1 - tile.y0;
-  if (work.packetsInParallel())
-    forEachBlock(rows, std::max<size_t>(1, 1024 / width), packetsOfRows);
-  else
-    packetsOfRows(0, rows);
-  while (!cancel && work.bounce()) {
-  }
-  if (!cancel)
-    work.finish();
-}
-
 // The default tile: each packet's primary rays traced together, each
 // pixel shaded by the renderer's shadeSample() and stored.
-class Renderer::PrimaryPackets : public TileWork
+class Renderer::PrimaryPackets final : public TileWork
 {
  public:
   PrimaryPackets(const Renderer &renderer,

@@ -41,12 +41,12 @@ struct RenderContext
   uint32_t seed{0};
 };
 
-// One tile's work as the tile loop, Renderer::runTile(), drives it:
+// One tile's work as the tile loop, runTile(), drives it:
 // packet() for the tile's pixels row by row, in packets of up to
 // rt::kPacketSize, then bounce() until nothing is left to trace, then
-// finish(). Each renderer's renderTile() makes its own, on the stack, and
-// runs it through Renderer::runTile(); the loop stops, storing nothing
-// more, once the frame is cancelled.
+// finish(). Each renderer's renderTile() makes its own (a final class), on
+// the stack, and runs it through runTile() (TileLoop.h); the loop stops,
+// storing nothing more, once the frame is cancelled.
 class TileWork
 {
  public:
@@ -143,9 +143,6 @@ class Renderer : public Object
 
  protected:
   void commitParameters() override;
-  // The one tile loop every renderer runs `work` through.
-  static void runTile(
-      TileWork &work, const Tile &tile, const std::atomic<bool> &cancel);
   // One pixel's sample from its primary ray and what that ray hit; by
   // default the background.
   virtual PixelSample shadeSample(const RenderContext &context,
