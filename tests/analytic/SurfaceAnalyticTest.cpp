@@ -26,6 +26,25 @@ class SurfaceAnalytic : public AnalyticTest
         array1D(std::vector<uint32_t>{0, 1, 2, 0, 2, 3}, ANARI_UINT32_VEC3));
     return g;
   }
+  // A 20 x 20 quad tilted from the view direction (-z) so that the cosine
+  // between its normal and the rays is `cosine`.
+  ANARIGeometry tiltedPlane(float cosine)
+  {
+    const float sine = std::sqrt(1.f - cosine * cosine);
+    return geometry("quad",
+        {-10,
+            -10 * cosine,
+            -10 * sine,
+            10,
+            -10 * cosine,
+            -10 * sine,
+            10,
+            10 * cosine,
+            10 * sine,
+            -10,
+            10 * cosine,
+            10 * sine});
+  }
   RenderedImage renderOrthographic(ANARIWorld w, float height, uint32_t size)
   {
     ANARICamera c = orthographic(kEyeZ5, kLookDown, height);
@@ -95,21 +114,8 @@ TEST_F(SurfaceAnalytic, RaycastColorOfAFacingPlaneIsItsBaseColor)
 
 TEST_F(SurfaceAnalytic, RaycastEyeLightFollowsTheBlendRatio)
 {
-  // The plane tilted 60 degrees from the view direction: cos = 0.5.
-  const float c60 = 0.5f, s60 = std::sqrt(3.f) / 2.f;
-  ANARIGeometry g = geometry("quad",
-      {-10,
-          -10 * c60,
-          -10 * s60,
-          10,
-          -10 * c60,
-          -10 * s60,
-          10,
-          10 * c60,
-          10 * s60,
-          -10,
-          10 * c60,
-          10 * s60});
+  const float c60 = 0.5f;
+  ANARIGeometry g = tiltedPlane(c60);
   ANARIWorld w = world({surface(g, matte(0.8f, 0.8f, 0.8f))});
   ANARICamera c = orthographic(kEyeZ5, kLookDown, 2.f);
   ANARIRenderer r = renderer("raycast");
@@ -123,6 +129,35 @@ TEST_F(SurfaceAnalytic, RaycastEyeLightFollowsTheBlendRatio)
   anariRelease(m_device, c);
   anariRelease(m_device, r);
   EXPECT_TRUE(problems().empty());
+}
+
+// A renderer parameter beyond its declared range is clamped to the nearest
+// bound (with a warning): eyeLightBlendRatio 5 renders as 1, -3 as 0.
+TEST_F(SurfaceAnalytic, RaycastClampsAnEyeLightBlendRatioOutOfRange)
+{
+  const float c60 = 0.5f;
+  ANARIGeometry g = tiltedPlane(c60);
+  ANARIWorld w = world({surface(g, matte(0.8f, 0.8f, 0.8f))});
+  ANARICamera c = orthographic(kEyeZ5, kLookDown, 2.f);
+  for (const float ratio : {5.f, -3.f}) {
+    ANARIRenderer r = renderer("raycast");
+    anariSetParameter(m_device, r, "eyeLightBlendRatio", ANARI_FLOAT32, &ratio);
+    anariCommitParameters(m_device, r);
+    RenderedImage image = render(w, c, r, 8, 8);
+    const float clamped = ratio > 1.f ? 1.f : 0.f;
+    const float expected = 0.8f * (clamped * c60 + (1.f - clamped));
+    EXPECT_NEAR(image.pixel(4, 4)[0], expected, 1e-6f) << ratio;
+    anariRelease(m_device, r);
+  }
+  bool warned = false;
+  for (const StatusMessage &problem : problems())
+    warned |= problem.text.find(
+                  "'eyeLightBlendRatio' (5) must be in [0, 1]; "
+                  "clamped to 1")
+              != std::string::npos;
+  EXPECT_TRUE(warned);
+  anariRelease(m_device, w);
+  anariRelease(m_device, c);
 }
 
 TEST_F(SurfaceAnalytic, IdChannels)

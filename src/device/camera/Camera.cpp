@@ -44,7 +44,7 @@ void Camera::commitParameters()
   m_right = normalize(m_right);
   m_up = cross(m_right, m_direction);
 
-  m_apertureRadius = read<float>("apertureRadius", ANARI_FLOAT32, 0.f);
+  m_apertureRadius = param<float>("apertureRadius");
   if (!(m_apertureRadius >= 0.f && std::isfinite(m_apertureRadius))) {
     report(ANARI_SEVERITY_WARNING,
         ANARI_STATUS_INVALID_ARGUMENT,
@@ -52,7 +52,7 @@ void Camera::commitParameters()
         m_apertureRadius);
     m_apertureRadius = 0.f;
   }
-  m_focusDistance = read<float>("focusDistance", ANARI_FLOAT32, 1.f);
+  m_focusDistance = param<float>("focusDistance");
   if (!(m_focusDistance > 0.f && std::isfinite(m_focusDistance))) {
     report(ANARI_SEVERITY_WARNING,
         ANARI_STATUS_INVALID_ARGUMENT,
@@ -76,8 +76,7 @@ void Camera::commitParameters()
   m_eyeAspectScale = m_stereoMode == StereoMode::kSideBySide  ? 0.5f
                      : m_stereoMode == StereoMode::kTopBottom ? 2.f
                                                               : 1.f;
-  m_interpupillaryDistance =
-      read<float>("interpupillaryDistance", ANARI_FLOAT32, 0.0635f);
+  m_interpupillaryDistance = param<float>("interpupillaryDistance");
   if (!(m_interpupillaryDistance >= 0.f
           && std::isfinite(m_interpupillaryDistance))) {
     report(ANARI_SEVERITY_WARNING,
@@ -151,9 +150,10 @@ float Camera::rayTime(float2 screen, float sample) const
 
 void Camera::readNearFar(float &near, float &far)
 {
-  near = read<float>("near", ANARI_FLOAT32, 0.f);
-  far =
-      read<float>("far", ANARI_FLOAT32, std::numeric_limits<float>::infinity());
+  // The definitions give neither a default: unset, nothing is clipped.
+  near = isSet("near") ? param<float>("near") : 0.f;
+  far = isSet("far") ? param<float>("far")
+                     : std::numeric_limits<float>::infinity();
   if (!(near >= 0.f && near < far)) {
     report(ANARI_SEVERITY_WARNING,
         ANARI_STATUS_INVALID_ARGUMENT,
@@ -170,7 +170,7 @@ void Camera::readAspect()
   m_aspect = 0.f;
   if (!isSet("aspect"))
     return;
-  const float aspect = read<float>("aspect", ANARI_FLOAT32, 0.f);
+  const float aspect = param<float>("aspect");
   if (!(aspect > 0.f && std::isfinite(aspect))) {
     report(ANARI_SEVERITY_WARNING,
         ANARI_STATUS_INVALID_ARGUMENT,

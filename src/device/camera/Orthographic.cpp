@@ -10,7 +10,7 @@ Orthographic::Orthographic(DeviceState &device) : Camera(device, "orthographic")
 void Orthographic::commitParameters()
 {
   Camera::commitParameters();
-  m_height = read<float>("height", ANARI_FLOAT32, 1.f);
+  m_height = param<float>("height");
   if (!(m_height > 0.f && std::isfinite(m_height))) {
     report(ANARI_SEVERITY_WARNING,
         ANARI_STATUS_INVALID_ARGUMENT,

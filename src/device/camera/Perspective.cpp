@@ -10,7 +10,7 @@ void Perspective::commitParameters()
 {
   Camera::commitParameters();
   constexpr float kDefaultFovy = float(M_PI / 3.0);
-  float fovy = read<float>("fovy", ANARI_FLOAT32, kDefaultFovy);
+  float fovy = param<float>("fovy");
   if (!(fovy > 0.f && fovy < float(M_PI))) {
     report(ANARI_SEVERITY_WARNING,
         ANARI_STATUS_INVALID_ARGUMENT,

@@ -3003,9 +3003,7 @@ constexpr ParameterEntry kParameters30[] = {
         .extension = kPrismRenderers},
     {.name = "maxPathLength",
         .types = {kTypeList40, 1},
-        .description =
-            "the most surfaces a path meets (1: direct light only); a value "
-            "outside [1, 1024] is reported and the default used",
+        .description = "the most surfaces a path meets (1: direct light only)",
         .defaultValue = kDefault30_maxPathLength,
         .minimum = kMinimum30_maxPathLength,
         .maximum = kMaximum30_maxPathLength,
@@ -3124,8 +3122,7 @@ constexpr ParameterEntry kParameters31[] = {
         .types = {kTypeList6, 1},
         .description =
             "volume samples per data cell along a ray (the reference marcher's "
-            "step is the cell size divided by this); a value outside [0.001, "
-            "1000] is reported and the default used",
+            "step is the cell size divided by this)",
         .defaultValue = kDefault31_volumeSamplingRate,
         .minimum = kMinimum31_volumeSamplingRate,
         .maximum = kMaximum31_volumeSamplingRate,

@@ -29,8 +29,23 @@ Light::Light(DeviceState &device, const std::string &subtype)
 void Light::commitParameters()
 {
   m_valid = true;
-  m_color = lightParam<float3>("color");
+  m_color = readColor();
   m_visible = param<bool>("visible");
+}
+
+float3 Light::readColor()
+{
+  float3 color;
+  // Beyond the definition's bounds: the value set, unclamped, judged here.
+  if (checkedParam("color", color).verdict != ParamVerdict::kAccepted)
+    color = readAny("color")->as<float3>();
+  if (!isFinite(color) || minComponent(color) < 0.f) {
+    invalidate("'color' (%g, %g, %g) must be finite and >= 0",
+        color.x,
+        color.y,
+        color.z);
+  }
+  return color;
 }
 
 Light::Brightness Light::readBrightness(

@@ -56,17 +56,24 @@ class Light : public Object
   };
   Brightness readBrightness(std::initializer_list<const char *> precedence);
   // A declared parameter (Object::param(): default and bounds from the
-  // definitions); a value the definition rejects is reported and makes the
-  // light invalid.
+  // definitions). A number above the maximum is clamped to it with a
+  // warning; one below the minimum, not a number or not an accepted value
+  // is reported and makes the light invalid (it has no physical meaning).
   template <typename T>
   T lightParam(const char *name)
   {
     T value;
-    std::string problem;
-    if (!checkedParam(name, value, problem))
-      invalidate("%s", problem.c_str());
+    const ParamCheck check = checkedParam(name, value);
+    if (check.verdict == ParamVerdict::kAboveMaximum)
+      reportRejected(check);
+    else if (check.verdict != ParamVerdict::kAccepted)
+      invalidate("%s", check.problem.c_str());
     return value;
   }
+  // `color`: finite and >= 0, else the light is invalid. The definitions'
+  // maximum (1, 1, 1) is advisory: a color above 1 is HDR input, taken as
+  // set without a warning.
+  float3 readColor();
   // A FLOAT32 that must be finite and >= 0; otherwise reported, the light
   // becomes invalid and 0 is returned.
   float readNonNegative(const char *name);

@@ -109,26 +109,20 @@ class Material : public Object
 
  protected:
   // Reads alphaMode and alphaCutoff, which every subtype understands; an
-  // unknown mode warns and falls back to opaque.
+  // unknown mode warns and falls back to opaque (its definition's default).
   void readAlphaMode()
   {
-    const std::string mode = readString("alphaMode", "opaque");
+    const std::string mode = param<std::string>("alphaMode");
     m_alphaMode = mode == "blend"  ? AlphaMode::Blend
                   : mode == "mask" ? AlphaMode::Mask
                                    : AlphaMode::Opaque;
-    if (mode != "opaque" && mode != "blend" && mode != "mask") {
-      report(ANARI_SEVERITY_WARNING,
-          ANARI_STATUS_INVALID_ARGUMENT,
-          "unknown 'alphaMode' \"%s\"; using opaque",
-          mode.c_str());
-    }
-    m_alphaCutoff = read<float>("alphaCutoff", ANARI_FLOAT32, 0.5f);
+    m_alphaCutoff = param<float>("alphaCutoff");
   }
   // Reads doubleSided (PRISM_MATERIAL_DOUBLE_SIDED), which every subtype
   // understands.
   void readDoubleSided()
   {
-    m_doubleSided = readBool("doubleSided", true);
+    m_doubleSided = param<bool>("doubleSided");
   }
   // Keeps back faces whatever doubleSided says: a volume's back faces are
   // where rays inside it leave, and culling them would trap those rays.

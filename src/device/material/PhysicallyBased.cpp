@@ -38,7 +38,7 @@ void PhysicallyBased::commitParameters()
   input(in.occlusion, "occlusion", InputAccepts::SamplerOnly);
   readAlphaMode();
   readDoubleSided();
-  in.unlit = readBool("unlit", false);
+  in.unlit = param<bool>("unlit");
   input(in.specular, "specular");
   input(in.specularColor, "specularColor");
   input(in.clearcoat, "clearcoat");
@@ -55,15 +55,12 @@ void PhysicallyBased::commitParameters()
   // rays inside it must meet its back faces to get out.
   if (mayExceedZero(in.transmission) && mayExceedZero(in.thickness))
     keepBackFaces();
-  in.attenuationDistance =
-      read<float>("attenuationDistance", ANARI_FLOAT32, in.attenuationDistance);
-  in.attenuationColor =
-      read<float3>("attenuationColor", ANARI_FLOAT32_VEC3, in.attenuationColor);
+  in.attenuationDistance = param<float>("attenuationDistance");
+  in.attenuationColor = param<float3>("attenuationColor");
   input(in.sheenColor, "sheenColor");
   input(in.sheenRoughness, "sheenRoughness");
   input(in.iridescence, "iridescence");
-  in.iridescenceIor =
-      read<float>("iridescenceIor", ANARI_FLOAT32, in.iridescenceIor);
+  in.iridescenceIor = param<float>("iridescenceIor");
   input(in.iridescenceThickness, "iridescenceThickness");
   input(in.anisotropyStrength, "anisotropyStrength");
   input(in.anisotropyRotation, "anisotropyRotation");

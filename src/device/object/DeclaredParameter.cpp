@@ -2,6 +2,7 @@
 
 #include "anari/frontend/type_utility.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -59,6 +60,29 @@ double component(Scalar scalar, const void *bytes, int i)
   }
 }
 
+template <typename T>
+void storeComponent(void *bytes, int i, double v)
+{
+  const T t = T(v);
+  std::memcpy((char *)bytes + i * sizeof(t), &t, sizeof(t));
+}
+
+void setComponent(Scalar scalar, void *bytes, int i, double v)
+{
+  switch (scalar) {
+  case Scalar::kFloat:
+    return storeComponent<float>(bytes, i, v);
+  case Scalar::kInt32:
+    return storeComponent<int32_t>(bytes, i, v);
+  case Scalar::kUint32:
+    return storeComponent<uint32_t>(bytes, i, v);
+  case Scalar::kUint64:
+    return storeComponent<uint64_t>(bytes, i, v);
+  default:
+    return;
+  }
+}
+
 std::string number(double v)
 {
   char text[32];
@@ -84,34 +108,54 @@ std::string valueText(ANARIDataType type, const void *bytes)
   return text + (count > 1 ? ")" : "");
 }
 
-std::string boundsProblem(const introspection::ParameterDefinition &definition,
+ParamVerdict checkBounds(const introspection::ParameterDefinition &definition,
     ANARIDataType type,
-    const void *bytes)
+    const void *bytes,
+    std::string &problem)
 {
   const Scalar scalar = scalarOf(type);
   if (scalar == Scalar::kNone)
-    return {};
+    return ParamVerdict::kAccepted;
   const bool bounded = int(definition.valueType) == int(type);
   const void *minimum = bounded ? definition.minimum : nullptr;
   const void *maximum = bounded ? definition.maximum : nullptr;
-  bool inside = true;
+  bool below = false, above = false;
   for (int i = 0; i < anari::componentsOf(type); i++) {
     const double v = component(scalar, bytes, i);
-    if (std::isnan(v))
-      return "is not a number";
-    if (minimum && v < component(scalar, minimum, i))
-      inside = false;
-    if (maximum && v > component(scalar, maximum, i))
-      inside = false;
+    if (std::isnan(v)) {
+      problem = "is not a number";
+      return ParamVerdict::kRejected;
+    }
+    below |= minimum && v < component(scalar, minimum, i);
+    above |= maximum && v > component(scalar, maximum, i);
   }
-  if (inside)
-    return {};
+  if (!below && !above)
+    return ParamVerdict::kAccepted;
   if (minimum && maximum) {
-    return "must be in [" + valueText(type, minimum) + ", "
-           + valueText(type, maximum) + "]";
+    problem = "must be in [" + valueText(type, minimum) + ", "
+              + valueText(type, maximum) + "]";
+  } else {
+    problem = minimum ? "must be >= " + valueText(type, minimum)
+                      : "must be <= " + valueText(type, maximum);
   }
-  return minimum ? "must be >= " + valueText(type, minimum)
-                 : "must be <= " + valueText(type, maximum);
+  return below ? ParamVerdict::kBelowMinimum : ParamVerdict::kAboveMaximum;
+}
+
+void clampToBounds(const introspection::ParameterDefinition &definition,
+    ANARIDataType type,
+    void *bytes)
+{
+  const Scalar scalar = scalarOf(type);
+  if (scalar == Scalar::kNone || int(definition.valueType) != int(type))
+    return;
+  for (int i = 0; i < anari::componentsOf(type); i++) {
+    double v = component(scalar, bytes, i);
+    if (definition.minimum)
+      v = std::max(v, component(scalar, definition.minimum, i));
+    if (definition.maximum)
+      v = std::min(v, component(scalar, definition.maximum, i));
+    setComponent(scalar, bytes, i, v);
+  }
 }
 
 std::string valueProblem(const introspection::ParameterDefinition &definition,

@@ -27,6 +27,8 @@ constexpr ANARIDataType declaredType()
     return ANARI_FLOAT32_VEC3;
   else if constexpr (std::is_same_v<T, float4>)
     return ANARI_FLOAT32_VEC4;
+  else if constexpr (std::is_same_v<T, mat4>)
+    return ANARI_FLOAT32_MAT4;
   else
     static_assert(sizeof(T) == 0, "no ANARI type for this parameter type");
 }

@@ -12,6 +12,23 @@
 #include <cstring>
 
 namespace prism {
+namespace {
+
+// "'decay' (7) must be in [0, 4]" (appended piece by piece: GCC 12 warns
+// falsely about "'" + std::string).
+std::string problemText(
+    const char *name, const std::string &value, const std::string &why)
+{
+  std::string text = "'";
+  text += name;
+  text += "' (";
+  text += value;
+  text += ") ";
+  text += why;
+  return text;
+}
+
+} // namespace
 
 Object::Object(DeviceState &device, ANARIDataType type, std::string subtype)
     : m_device(device), m_type(type), m_subtype(std::move(subtype))
@@ -212,11 +229,14 @@ const introspection::ParameterDefinition *Object::declaration(const char *name)
   return definition;
 }
 
-bool Object::readDeclared(const char *name,
-    ANARIDataType type,
-    void *out,
-    size_t size,
-    std::string &problem)
+bool Object::declares(const char *name) const
+{
+  return introspection::findParameter(m_type, m_subtype.c_str(), name)
+         != nullptr;
+}
+
+ParamCheck Object::readDeclared(
+    const char *name, ANARIDataType type, void *out, size_t size)
 {
   const introspection::ParameterDefinition *definition = declaration(name);
   const void *fallback = definition && definition->defaultValue
@@ -230,29 +250,32 @@ bool Object::readDeclared(const char *name,
       std::memset(out, 0, size);
   };
   const Parameter *p = readAny(name);
-  if (!p) {
+  ParamCheck check;
+  if (!p || p->type() != type) {
+    if (p)
+      wrongType(name, p->type(), {type});
     useDefault();
-    return true;
-  }
-  if (p->type() != type) {
-    wrongType(name, p->type(), {type});
-    useDefault();
-    return true;
+    return check;
   }
   std::memcpy(out, p->data(), size);
   if (!definition)
-    return true;
-  const std::string why = boundsProblem(*definition, type, p->data());
-  if (why.empty())
-    return true;
-  problem =
-      "'" + std::string(name) + "' (" + valueText(type, p->data()) + ") " + why;
-  useDefault();
-  return false;
+    return check;
+  std::string why;
+  check.verdict = checkBounds(*definition, type, p->data(), why);
+  if (check.verdict == ParamVerdict::kAccepted)
+    return check;
+  check.problem = problemText(name, valueText(type, p->data()), why);
+  if (check.verdict == ParamVerdict::kRejected) {
+    useDefault();
+    check.outcome = "using the default " + valueText(type, out);
+  } else {
+    clampToBounds(*definition, type, out);
+    check.outcome = "clamped to " + valueText(type, out);
+  }
+  return check;
 }
 
-bool Object::readDeclaredString(
-    const char *name, std::string &out, std::string &problem)
+ParamCheck Object::readDeclaredString(const char *name, std::string &out)
 {
   const introspection::ParameterDefinition *definition = declaration(name);
   const char *fallback = definition && definition->defaultValue
@@ -261,34 +284,35 @@ bool Object::readDeclaredString(
                              : "";
   const Parameter *p = readAny(name);
   out = fallback;
+  ParamCheck check;
   if (!p)
-    return true;
+    return check;
   if (p->type() != ANARI_STRING) {
     wrongType(name, p->type(), {ANARI_STRING});
-    return true;
+    return check;
   }
   const std::string why =
       definition ? valueProblem(*definition, p->string()) : std::string();
   if (why.empty()) {
     out = p->string();
-    return true;
+    return check;
   }
-  problem = "'" + std::string(name) + "' (\"" + p->string() + "\") " + why;
-  return false;
+  check.verdict = ParamVerdict::kRejected;
+  std::string value = "\"";
+  value += p->string();
+  value += "\"";
+  check.problem = problemText(name, value, why);
+  check.outcome = "using the default \"" + out + "\"";
+  return check;
 }
 
-void Object::reportRejected(const char *name, const std::string &problem)
+void Object::reportRejected(const ParamCheck &check)
 {
-  const introspection::ParameterDefinition *definition =
-      introspection::findParameter(m_type, m_subtype.c_str(), name);
-  std::string fallback = "zero";
-  if (definition && definition->defaultValue)
-    fallback = valueText(definition->valueType, definition->defaultValue);
   report(ANARI_SEVERITY_WARNING,
       ANARI_STATUS_INVALID_ARGUMENT,
-      "%s; using the default %s",
-      problem.c_str(),
-      fallback.c_str());
+      "%s; %s",
+      check.problem.c_str(),
+      check.outcome.c_str());
 }
 
 void Object::wrongType(const char *name,

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "ContentHash.h"
+#include "DeclaredParameter.h"
 #include "DeclaredType.h"
 #include "ObjectRef.h"
 #include "Parameter.h"
@@ -16,10 +17,6 @@
 #include <vector>
 
 namespace prism {
-namespace introspection {
-struct ParameterDefinition;
-}
-
 class DeviceState;
 
 class Object
@@ -180,34 +177,35 @@ class Object
   }
   // Declared parameters: the definition of this object's type and subtype
   // in the introspection tables gives the type T must be, the default, the
-  // bounds and the accepted values. Returns the value set, or the default
+  // bounds and the accepted values. Returns the value set; the default
   // when it is unset or set with another type (warned once, see
-  // wrongType()), out of bounds, not a number or not an accepted value
-  // (reported as a warning naming the range each commit).
+  // wrongType()), not a number or not an accepted value; a number beyond
+  // the bounds clamped to the nearest one. A value not taken as set is
+  // reported as a warning naming the range, each commit.
   template <typename T>
   T param(const char *name)
   {
     T value;
-    std::string problem;
-    if (!checkedParam(name, value, problem))
-      reportRejected(name, problem);
+    const ParamCheck check = checkedParam(name, value);
+    if (check.verdict != ParamVerdict::kAccepted)
+      reportRejected(check);
     return value;
   }
-  // The same, not reporting a rejected value: false, with `problem`
-  // ("'decay' (7) must be in [0, 4]"), when the value set is rejected.
+  // The same, not reporting: `value` is what param() would return, the
+  // check says why it is not the value set.
   template <typename T>
-  bool checkedParam(const char *name, T &value, std::string &problem)
+  ParamCheck checkedParam(const char *name, T &value)
   {
     if constexpr (std::is_same_v<T, std::string>) {
-      return readDeclaredString(name, value, problem);
+      return readDeclaredString(name, value);
     } else if constexpr (std::is_same_v<T, bool>) {
       uint8_t byte = 0;
-      const bool accepted =
-          readDeclared(name, ANARI_BOOL, &byte, sizeof(byte), problem);
+      const ParamCheck check =
+          readDeclared(name, ANARI_BOOL, &byte, sizeof(byte));
       value = byte != 0;
-      return accepted;
+      return check;
     } else {
-      return readDeclared(name, declaredType<T>(), &value, sizeof(T), problem);
+      return readDeclared(name, declaredType<T>(), &value, sizeof(T));
     }
   }
   bool readBool(const char *name, bool fallback);
@@ -218,6 +216,8 @@ class Object
   // The raw parameter (marked read, no type check), or NULL if unset.
   const Parameter *readAny(const char *name);
   bool isSet(const char *name) const;
+  // Whether the definitions declare `name` for this type and subtype.
+  bool declares(const char *name) const;
   // Marks every committed parameter as read (objects that accept anything).
   void readAll();
   // Makes refresh() re-commit this object when `object` changes (objects
@@ -226,8 +226,8 @@ class Object
   // derived from it (pointers into it) stays valid whatever the
   // application releases or remaps meanwhile.
   void dependOn(Object *object);
-  // Warns that `name`'s value was rejected and its default used.
-  void reportRejected(const char *name, const std::string &problem);
+  // Warns that a value was not taken as set, and what was used instead.
+  void reportRejected(const ParamCheck &check);
   // Records that `name` was set with an unsupported type.
   void wrongType(const char *name,
       ANARIDataType given,
@@ -237,13 +237,9 @@ class Object
   void reportUnusedParameters();
   // checkedParam() on the C bytes of `type` (`size` of them written to
   // `out`).
-  bool readDeclared(const char *name,
-      ANARIDataType type,
-      void *out,
-      size_t size,
-      std::string &problem);
-  bool readDeclaredString(
-      const char *name, std::string &out, std::string &problem);
+  ParamCheck readDeclared(
+      const char *name, ANARIDataType type, void *out, size_t size);
+  ParamCheck readDeclaredString(const char *name, std::string &out);
   // The declaration of `name` for this object; nullptr (recorded) if none.
   const introspection::ParameterDefinition *declaration(const char *name);
 

@@ -24,15 +24,16 @@ class AmbientOcclusion : public Renderer
     return std::max(1u, 256u / m_samples); // ~256 rays per pixel
   }
 
+ protected:
+  void commitParameters() override;
   void renderTile(const RenderContext &context,
       const Tile &tile,
       FrameBuffers &buffers,
       const std::atomic<bool> &cancel) const override;
 
- protected:
-  void commitParameters() override;
-
  private:
+  class Wavefront;
+
   // What a tile works in, reused tile after tile.
   struct TileWorkspace
   {

@@ -154,12 +154,7 @@ PixelSample Debug::shadeSample(const RenderContext &context,
     break;
   }
   sample.color = float4{c.x, c.y, c.z, 1.f};
-  sample.depth = hit.t;
-  sample.normal = surface.shadingNormal;
-  sample.albedo = c;
-  sample.primitiveId = surface.attributes.primitiveId;
-  sample.objectId = surface.surface->id();
-  sample.instanceId = surface.placement->instanceId;
+  recordSurfaceChannels(sample, hit.t, surface, c);
   return sample;
 }
 

@@ -1,5 +1,7 @@
 #include "PathTracer.h"
 
+#include "TileLoop.h"
+
 #include "NormalMapping.h"
 
 #include "../light/EmissiveSurface.h"
@@ -12,6 +14,7 @@
 #include "VolumeTracing.h"
 #include "wavefront/BounceDecisions.h"
 #include "wavefront/RayTransport.h"
+#include "wavefront/WavefrontTile.h"
 
 #include <algorithm>
 #include <cmath>
@@ -135,79 +138,139 @@ void PathTracer::commitParameters()
   m_seed = uint32_t(param<int32_t>("seed"));
 }
 
-void PathTracer::renderTile(const RenderContext &context,
-    const Tile &tile,
-    FrameBuffers &buffers,
-    const std::atomic<bool> &cancel) const
+// A tile's paths advancing bounce by bounce: each bounce's rays traced as
+// one queue, then its shadow rays as another.
+class PathTracer::Wavefront final : public WavefrontTile<TileWorkspace>
 {
-  const RayTransport &transport = *context.transport;
-  const uint32_t width = tile.x1 - tile.x0;
-  const size_t count = size_t(width) * (tile.y1 - tile.y0);
-  const auto workspace = m_workspaces.take();
-  std::vector<PathState> &paths = workspace->paths;
-  rt::RayQueue &rays = workspace->rays;
-  BounceQueues &queued = workspace->queued;
-  rt::RayQueue &next = queued.next, &shadows = queued.shadows;
-  std::vector<float3> &contributions = queued.contributions;
-  paths.resize(count);
-  // Paths started and camera rays made in blocks (on several threads for
-  // a wavefront larger than a tile's), the rays queued in pixel order.
-  std::vector<Ray> &cameraRays = workspace->cameraRays;
-  cameraRays.resize(count);
-  forEachBlock(count, 1024, [&](size_t begin, size_t size) {
-    for (size_t i = begin; i < begin + size; i++) {
-      PathState &path = paths[i];
-      path = PathState{};
-      path.x = tile.x0 + uint32_t(i % width);
-      path.y = tile.y0 + uint32_t(i / width);
-      path.seed = sequenceSeed(path.x, path.y, 0, context.seed);
-      path.sampleIndex = context.sampleIndex;
-      cameraRays[i] = cameraRay(context, path.x, path.y);
-      path.time = cameraRays[i].time;
-    }
-  });
+ public:
+  Wavefront(const PathTracer &renderer,
+      const RenderContext &context,
+      const Tile &tile,
+      FrameBuffers &buffers)
+      : WavefrontTile(context, tile, buffers, renderer.m_workspaces),
+        m_renderer(renderer),
+        m_volumes(!context.world->volumes().empty())
+  {
+    m_workspace->paths.resize(m_count);
+    m_workspace->cameraRays.resize(m_count);
+  }
+
+  // Starts the packet's paths and makes their camera rays.
+  void packet(uint32_t x0, uint32_t y, int count) override;
+  bool packetsInParallel() const override
+  {
+    return true; // each pixel's path and ray on its own
+  }
+  bool bounce() override;
+  void finish() override;
+
+ private:
+  // Queues the camera rays in pixel order, before the first bounce.
+  void queueCameraRays();
+  // Adds what the shadow rays that reached their lights bring.
+  void traceShadows();
+
+  const PathTracer &m_renderer;
+  const bool m_volumes;
+  bool m_queued{false};
+};
+
+void PathTracer::Wavefront::packet(uint32_t x0, uint32_t y, int count)
+{
+  std::vector<PathState> &paths = m_workspace->paths;
+  std::vector<Ray> &cameraRays = m_workspace->cameraRays;
+  const size_t first = indexOf(x0, y);
+  for (size_t i = first; i < first + size_t(count); i++) {
+    PathState &path = paths[i];
+    path = PathState{};
+    const uint2 pixel = pixelOf(i);
+    path.x = pixel.x;
+    path.y = pixel.y;
+    path.seed = sequenceSeed(path.x, path.y, 0, m_context.seed);
+    path.sampleIndex = m_context.sampleIndex;
+    cameraRays[i] = m_renderer.cameraRay(m_context, path.x, path.y);
+    path.time = cameraRays[i].time;
+  }
+}
+
+void PathTracer::Wavefront::queueCameraRays()
+{
+  rt::RayQueue &rays = m_workspace->rays;
   rays.clear();
-  for (size_t i = 0; i < count; i++) {
-    const Ray &ray = cameraRays[i];
+  for (size_t i = 0; i < m_count; i++) {
+    const Ray &ray = m_workspace->cameraRays[i];
     rays.push(
         ray.origin, ray.direction, ray.tMin, ray.tMax, ray.time, uint32_t(i));
   }
   rays.setCoherent(true);
-  uint64_t traced = 0;
-  const bool volumes = !context.world->volumes().empty();
-  while (!rays.empty() && !cancel) {
-    traced += rays.size();
-    const QueueMedia media(context, paths, rays, m_volumeMajorantGrid);
-    transport.traceClosest(rays, volumes ? &media : nullptr);
-    shadeBounce(
-        context, paths, rays, workspace->decisions, queued, workspace->blocks);
-    transport.shareBounce(paths, rays, next, shadows, contributions);
-    if (!shadows.empty()) {
-      traced += shadows.size();
-      transport.traceOcclusion(shadows);
-      for (size_t k = 0; k < shadows.size(); k++) {
-        const float3 &through = shadows.transmittance(k);
-        if (maxComponent(through) > 0.f) {
-          PathState &path = paths[shadows.tag(k)];
-          path.radiance = path.radiance + contributions[k] * through;
-        }
-      }
-    }
-    std::swap(rays, next);
-  }
-  m_raysTraced.fetch_add(traced, std::memory_order_relaxed);
-  if (cancel)
+  m_queued = true;
+}
+
+bool PathTracer::Wavefront::bounce()
+{
+  if (!m_queued)
+    queueCameraRays();
+  rt::RayQueue &rays = m_workspace->rays;
+  if (rays.empty())
+    return false;
+  std::vector<PathState> &paths = m_workspace->paths;
+  BounceQueues &queued = m_workspace->queued;
+  m_renderer.m_raysTraced.fetch_add(rays.size(), std::memory_order_relaxed);
+  const QueueMedia media(
+      m_context, paths, rays, m_renderer.m_volumeMajorantGrid);
+  m_context.transport->traceClosest(rays, m_volumes ? &media : nullptr);
+  m_renderer.shadeBounce(m_context,
+      paths,
+      rays,
+      m_workspace->decisions,
+      queued,
+      m_workspace->blocks);
+  m_context.transport->shareBounce(
+      paths, rays, queued.next, queued.shadows, queued.contributions);
+  traceShadows();
+  std::swap(rays, queued.next);
+  return true;
+}
+
+void PathTracer::Wavefront::traceShadows()
+{
+  BounceQueues &queued = m_workspace->queued;
+  rt::RayQueue &shadows = queued.shadows;
+  if (shadows.empty())
     return;
-  forEachBlock(count, 1024, [&](size_t begin, size_t size) {
+  m_renderer.m_raysTraced.fetch_add(shadows.size(), std::memory_order_relaxed);
+  m_context.transport->traceOcclusion(shadows);
+  for (size_t k = 0; k < shadows.size(); k++) {
+    const float3 &through = shadows.transmittance(k);
+    if (maxComponent(through) > 0.f) {
+      PathState &path = m_workspace->paths[shadows.tag(k)];
+      path.radiance = path.radiance + queued.contributions[k] * through;
+    }
+  }
+}
+
+void PathTracer::Wavefront::finish()
+{
+  std::vector<PathState> &paths = m_workspace->paths;
+  forEachBlock(m_count, 1024, [&](size_t begin, size_t size) {
     for (size_t i = begin; i < begin + size; i++) {
       PathState &path = paths[i];
       // Else the background, already stored by shadeBounce.
       if (path.recordedFirstHit || path.bounce > 0)
         path.sample.color =
             float4{path.radiance.x, path.radiance.y, path.radiance.z, 1.f};
-      store(context, buffers, path.x, path.y, path.sample);
+      store(m_context, m_buffers, path.x, path.y, path.sample);
     }
   });
+}
+
+void PathTracer::renderTile(const RenderContext &context,
+    const Tile &tile,
+    FrameBuffers &buffers,
+    const std::atomic<bool> &cancel) const
+{
+  Wavefront work(*this, context, tile, buffers);
+  runTile(work, tile, cancel);
 }
 
 float PathTracer::emissionWeight(const RenderContext &context,
@@ -491,12 +554,7 @@ void PathTracer::recordFirstHit(Bounce &b) const
   PathState &path = b.path;
   if (path.recordedFirstHit)
     return;
-  path.sample.depth = b.hit.t;
-  path.sample.normal = b.surface.shadingNormal;
-  path.sample.albedo = b.shading->albedo;
-  path.sample.primitiveId = b.surface.attributes.primitiveId;
-  path.sample.objectId = b.surface.surface->id();
-  path.sample.instanceId = b.surface.placement->instanceId;
+  recordSurfaceChannels(path.sample, b.hit.t, b.surface, b.shading->albedo);
   path.recordedFirstHit = true;
 }
 

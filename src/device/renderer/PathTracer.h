@@ -48,16 +48,18 @@ class PathTracer : public Renderer
   {
     return true;
   }
-  // Traces through context.transport.
+
+ protected:
+  void commitParameters() override;
+  // A tile's wavefront, traced through context.transport.
   void renderTile(const RenderContext &context,
       const Tile &tile,
       FrameBuffers &buffers,
       const std::atomic<bool> &cancel) const override;
 
- protected:
-  void commitParameters() override;
-
  private:
+  class Wavefront;
+
   // What shading some rays of a bounce queues: continuing paths' next
   // rays, light samples' shadow rays and what each brings (contributions[k]
   // for shadow ray k, added if nothing blocks it), in ray order.

@@ -1,5 +1,7 @@
 #include "Raycast.h"
 
+#include "TileLoop.h"
+
 #include "PrimaryRays.h"
 #include "SampleHash.h"
 #include "VolumeTracing.h"
@@ -237,147 +239,194 @@ void Raycast::commitParameters()
                                                                       : sdkRate;
 }
 
+// A tile's packets: traced whole, shaded by PacketShading, the lanes it
+// cannot shade (see-through, textured, in volumes) by shadeSample().
+class Raycast::Packets final : public TileWork
+{
+ public:
+  Packets(const Raycast &renderer,
+      const RenderContext &context,
+      FrameBuffers &buffers)
+      : m_renderer(renderer),
+        m_context(context),
+        m_world(*context.world),
+        m_buffers(buffers),
+        m_primaryRays(context),
+        m_volumes(!m_world.volumes().empty())
+  {
+    if (renderer.uniformBackground())
+      m_shading.fillBackground(renderer.background(context, 0, 0));
+  }
+
+  void packet(uint32_t x0, uint32_t y, int count) override;
+
+ private:
+  static constexpr int kLanes = rt::kPacketSize;
+
+  Ray laneRay(int i) const
+  {
+    return Ray{{m_packet.originX[i], m_packet.originY[i], m_packet.originZ[i]},
+        {m_packet.directionX[i],
+            m_packet.directionY[i],
+            m_packet.directionZ[i]},
+        m_packet.tMin[i],
+        m_rayTMax[i],
+        m_packet.time[i]};
+  }
+  rt::Hit laneHit(int i) const
+  {
+    rt::Hit hit;
+    hit.t = m_packet.tMax[i];
+    hit.u = m_packet.u[i];
+    hit.v = m_packet.v[i];
+    hit.geometricNormal = {
+        m_packet.normalX[i], m_packet.normalY[i], m_packet.normalZ[i]};
+    hit.primitiveId = m_packet.primitiveId[i];
+    hit.geometryId = m_packet.geometryId[i];
+    hit.instanceId = m_packet.instanceId[i];
+    return hit;
+  }
+  // Whether lane i's ray crosses a volume before what it hit.
+  bool meetsVolume(int i) const
+  {
+    const float end = m_packet.geometryId[i] == rt::kInvalidId
+                          ? m_rayTMax[i]
+                          : m_packet.tMax[i];
+    return mayMeetVolumes(m_world,
+        {m_packet.originX[i], m_packet.originY[i], m_packet.originZ[i]},
+        {m_packet.directionX[i],
+            m_packet.directionY[i],
+            m_packet.directionZ[i]},
+        m_packet.tMin[i],
+        end);
+  }
+  // Lane i of the packet just traced for the straight loop: a miss, a hit
+  // on a flat constant surface, or a hit shaded here, the loop told to
+  // take it for a miss.
+  void prepareLane(int i, uint32_t x, uint32_t y);
+  // Fills the lanes' backgrounds when they differ from pixel to pixel.
+  void fillBackgrounds(uint32_t x0, uint32_t y, int count);
+
+  const Raycast &m_renderer;
+  const RenderContext &m_context;
+  const World &m_world;
+  FrameBuffers &m_buffers;
+  const PrimaryRays m_primaryRays;
+  const bool m_volumes;
+  ConstantSurface m_lastSurface;
+  SurfaceHit m_surface; // reused for hits whose normal the geometry resolves
+  rt::RayHitPacket m_packet;
+  int m_active[kLanes];
+  float m_rayTMax[kLanes]; // Embree overwrites the packet's with the hit's t
+  bool m_inVolume[kLanes] = {}; // per lane of the packet just traced
+  PacketShading m_shading;
+};
+
+void Raycast::Packets::prepareLane(int i, uint32_t x, uint32_t y)
+{
+  if (m_inVolume[i]) {
+    m_shading.setLane(i, m_lastSurface, false);
+    m_shading.otherwise[i] = true;
+    m_shading.samples[i] =
+        m_renderer.shadeSample(m_context, laneRay(i), laneHit(i), x, y);
+    return;
+  }
+  if (m_packet.geometryId[i] == rt::kInvalidId) {
+    m_shading.setLane(i, m_lastSurface, false);
+    return;
+  }
+  const ConstantSurface &constant = constantSurface(
+      m_world, m_packet.instanceId[i], m_packet.geometryId[i], m_lastSurface);
+  m_shading.setLane(i, constant, constant.flat);
+  if (constant.flat)
+    return;
+  m_shading.otherwise[i] = true;
+  const Ray ray = laneRay(i);
+  const rt::Hit hit = laneHit(i);
+  PixelSample &sample = m_shading.samples[i];
+  if (!constant.constant
+      || !resolveSurfaceHit(
+          m_world, ray, hit, m_surface, HitDetail::ForMaterial)) {
+    sample = m_renderer.shadeSample(m_context, ray, hit, x, y);
+    return;
+  }
+  // A constant surface whose normal the geometry resolves (spheres,
+  // vertex normals, instances): just that is resolved per hit.
+  LayerBlend blend;
+  blend.add(constant.baseColor,
+      eyeLight(m_renderer.m_eyeLightBlendRatio,
+          std::abs(dot(m_surface.shadingNormal, ray.direction))),
+      constant.coverage);
+  sample.color = blend.over({m_shading.backR[i],
+      m_shading.backG[i],
+      m_shading.backB[i],
+      m_shading.backA[i]});
+  sample.depth = hit.t;
+  sample.normal = m_surface.shadingNormal;
+  sample.albedo = constant.baseColor;
+  sample.primitiveId = hit.primitiveId;
+  sample.objectId = constant.objectId;
+  sample.instanceId = constant.instanceId;
+}
+
+void Raycast::Packets::fillBackgrounds(uint32_t x0, uint32_t y, int count)
+{
+  if (m_renderer.uniformBackground())
+    return;
+  for (int i = 0; i < count; i++) {
+    const float4 b = m_renderer.background(m_context, x0 + i, y);
+    m_shading.backR[i] = b.x;
+    m_shading.backG[i] = b.y;
+    m_shading.backB[i] = b.z;
+    m_shading.backA[i] = b.w;
+  }
+}
+
+void Raycast::Packets::packet(uint32_t x0, uint32_t y, int count)
+{
+  m_primaryRays.generate(x0, y, count, m_packet, m_active);
+  std::copy(m_packet.tMax, m_packet.tMax + kLanes, m_rayTMax);
+  m_world.intersect(m_packet, m_active);
+  fillBackgrounds(x0, y, count);
+  // Mostly every lane misses or hits the surface the last hit did.
+  bool anyHit = false, sameSurface = true;
+  for (int i = 0; i < kLanes; i++) {
+    const bool isHit = m_packet.geometryId[i] != rt::kInvalidId;
+    anyHit |= isHit;
+    sameSurface &= !isHit
+                   || (m_packet.geometryId[i] == m_lastSurface.geometryKey
+                       && m_packet.instanceId[i] == m_lastSurface.instanceKey);
+  }
+  // Lanes whose rays cross a volume are marched (only if any can).
+  bool anyVolume = false;
+  if (m_volumes) {
+    for (int i = 0; i < kLanes; i++)
+      anyVolume |= m_inVolume[i] = i < count && meetsVolume(i);
+  }
+  if (sameSurface && (m_lastSurface.flat || !anyHit) && !anyVolume) {
+    for (int i = 0; i < kLanes; i++) {
+      m_shading.setLane(
+          i, m_lastSurface, m_packet.geometryId[i] != rt::kInvalidId);
+    }
+  } else {
+    for (int i = 0; i < kLanes; i++)
+      prepareLane(i, x0 + uint32_t(i), y);
+  }
+  m_shading.shadeFlat(m_packet, m_renderer.m_eyeLightBlendRatio);
+  m_shading.store(m_packet, m_buffers, m_context.width, x0, y, count);
+  for (int i = 0; i < count; i++) {
+    if (m_shading.otherwise[i])
+      store(m_context, m_buffers, x0 + uint32_t(i), y, m_shading.samples[i]);
+  }
+}
+
 void Raycast::renderTile(const RenderContext &context,
     const Tile &tile,
     FrameBuffers &buffers,
     const std::atomic<bool> &cancel) const
 {
-  constexpr int kLanes = rt::kPacketSize;
-  const World &world = *context.world;
-  const PrimaryRays primaryRays(context);
-  ConstantSurface lastSurface;
-  SurfaceHit surface; // reused for hits whose normal the geometry resolves
-  rt::RayHitPacket packet;
-  int active[kLanes];
-  float rayTMax[kLanes]; // Embree overwrites the packet's with the hit's t
-  PacketShading shading;
-  // Lane i of the packet just traced for the straight loop: a miss, a hit
-  // on a flat constant surface, or a hit shaded here, the loop told to
-  // take it for a miss.
-  const bool volumes = !world.volumes().empty();
-  auto laneRay = [&](int i) {
-    return Ray{{packet.originX[i], packet.originY[i], packet.originZ[i]},
-        {packet.directionX[i], packet.directionY[i], packet.directionZ[i]},
-        packet.tMin[i],
-        rayTMax[i],
-        packet.time[i]};
-  };
-  auto laneHit = [&](int i) {
-    rt::Hit hit;
-    hit.t = packet.tMax[i];
-    hit.u = packet.u[i];
-    hit.v = packet.v[i];
-    hit.geometricNormal = {
-        packet.normalX[i], packet.normalY[i], packet.normalZ[i]};
-    hit.primitiveId = packet.primitiveId[i];
-    hit.geometryId = packet.geometryId[i];
-    hit.instanceId = packet.instanceId[i];
-    return hit;
-  };
-  // Whether lane i's ray crosses a volume before what it hit.
-  auto meetsVolume = [&](int i) {
-    const float end =
-        packet.geometryId[i] == rt::kInvalidId ? rayTMax[i] : packet.tMax[i];
-    return mayMeetVolumes(world,
-        {packet.originX[i], packet.originY[i], packet.originZ[i]},
-        {packet.directionX[i], packet.directionY[i], packet.directionZ[i]},
-        packet.tMin[i],
-        end);
-  };
-  bool inVolume[kLanes] = {}; // per lane of the packet just traced
-  auto prepareLane = [&](int i, uint32_t x, uint32_t y) {
-    if (inVolume[i]) {
-      shading.setLane(i, lastSurface, false);
-      shading.otherwise[i] = true;
-      shading.samples[i] = shadeSample(context, laneRay(i), laneHit(i), x, y);
-      return;
-    }
-    if (packet.geometryId[i] == rt::kInvalidId) {
-      shading.setLane(i, lastSurface, false);
-      return;
-    }
-    const ConstantSurface &constant = constantSurface(
-        world, packet.instanceId[i], packet.geometryId[i], lastSurface);
-    shading.setLane(i, constant, constant.flat);
-    if (constant.flat)
-      return;
-    shading.otherwise[i] = true;
-    const Ray ray = laneRay(i);
-    const rt::Hit hit = laneHit(i);
-    PixelSample &sample = shading.samples[i];
-    if (!constant.constant
-        || !resolveSurfaceHit(
-            world, ray, hit, surface, HitDetail::ForMaterial)) {
-      sample = shadeSample(context, ray, hit, x, y);
-      return;
-    }
-    // A constant surface whose normal the geometry resolves (spheres,
-    // vertex normals, instances): just that is resolved per hit.
-    LayerBlend blend;
-    blend.add(constant.baseColor,
-        eyeLight(m_eyeLightBlendRatio,
-            std::abs(dot(surface.shadingNormal, ray.direction))),
-        constant.coverage);
-    sample.color = blend.over({shading.backR[i],
-        shading.backG[i],
-        shading.backB[i],
-        shading.backA[i]});
-    sample.depth = hit.t;
-    sample.normal = surface.shadingNormal;
-    sample.albedo = constant.baseColor;
-    sample.primitiveId = hit.primitiveId;
-    sample.objectId = constant.objectId;
-    sample.instanceId = constant.instanceId;
-  };
-  if (uniformBackground())
-    shading.fillBackground(background(context, 0, 0));
-  for (uint32_t y = tile.y0; y < tile.y1 && !cancel; y++) {
-    for (uint32_t x0 = tile.x0; x0 < tile.x1; x0 += kLanes) {
-      const int count = int(std::min<uint32_t>(kLanes, tile.x1 - x0));
-      primaryRays.generate(x0, y, count, packet, active);
-      std::copy(packet.tMax, packet.tMax + kLanes, rayTMax);
-      world.intersect(packet, active);
-      if (!uniformBackground()) {
-        for (int i = 0; i < count; i++) {
-          const float4 b = background(context, x0 + i, y);
-          shading.backR[i] = b.x;
-          shading.backG[i] = b.y;
-          shading.backB[i] = b.z;
-          shading.backA[i] = b.w;
-        }
-      }
-      // Mostly every lane misses or hits the surface the last hit did.
-      bool anyHit = false, sameSurface = true;
-      for (int i = 0; i < kLanes; i++) {
-        const bool isHit = packet.geometryId[i] != rt::kInvalidId;
-        anyHit |= isHit;
-        sameSurface &= !isHit
-                       || (packet.geometryId[i] == lastSurface.geometryKey
-                           && packet.instanceId[i] == lastSurface.instanceKey);
-      }
-      // Lanes whose rays cross a volume are marched (only if any can).
-      bool anyVolume = false;
-      if (volumes) {
-        for (int i = 0; i < kLanes; i++)
-          anyVolume |= inVolume[i] = i < count && meetsVolume(i);
-      }
-      if (sameSurface && (lastSurface.flat || !anyHit) && !anyVolume) {
-        for (int i = 0; i < kLanes; i++) {
-          shading.setLane(
-              i, lastSurface, packet.geometryId[i] != rt::kInvalidId);
-        }
-      } else {
-        for (int i = 0; i < kLanes; i++)
-          prepareLane(i, x0 + uint32_t(i), y);
-      }
-      shading.shadeFlat(packet, m_eyeLightBlendRatio);
-      shading.store(packet, buffers, context.width, x0, y, count);
-      for (int i = 0; i < count; i++) {
-        if (shading.otherwise[i])
-          store(context, buffers, x0 + uint32_t(i), y, shading.samples[i]);
-      }
-    }
-  }
+  Packets work(*this, context, buffers);
+  runTile(work, tile, cancel);
 }
 
 PixelSample Raycast::shadeSample(const RenderContext &context,
@@ -428,12 +477,8 @@ PixelSample Raycast::shadeSample(const RenderContext &context,
       const float coverage = surface.material().coverage(base.w);
       if (coverage > 0.f) {
         if (first) {
-          sample.depth = hit.t;
-          sample.normal = surface.shadingNormal;
-          sample.albedo = float3{base.x, base.y, base.z};
-          sample.primitiveId = surface.attributes.primitiveId;
-          sample.objectId = surface.surface->id();
-          sample.instanceId = surface.placement->instanceId;
+          recordSurfaceChannels(
+              sample, hit.t, surface, float3{base.x, base.y, base.z});
           first = false;
         }
         blend.add(float3{base.x, base.y, base.z},

@@ -21,6 +21,8 @@ class Raycast : public Renderer
     return true; // eye-light shading
   }
 
+ protected:
+  void commitParameters() override;
   // Traces whole packets and shades, in line, hits on surfaces whose color
   // is constant and whose first layer hides everything behind; every other
   // pixel goes through shadeSample(). Both give the same image.
@@ -28,9 +30,6 @@ class Raycast : public Renderer
       const Tile &tile,
       FrameBuffers &buffers,
       const std::atomic<bool> &cancel) const override;
-
- protected:
-  void commitParameters() override;
   PixelSample shadeSample(const RenderContext &context,
       const Ray &ray,
       const rt::Hit &hit,
@@ -38,6 +37,8 @@ class Raycast : public Renderer
       uint32_t y) const override;
 
  private:
+  class Packets;
+
   float m_eyeLightBlendRatio{0.5f};
   float m_volumeSamplingRate{1.f};
   bool m_volumeMajorantGrid{true};

@@ -2,6 +2,7 @@
 
 #include "PrimaryRays.h"
 #include "SampleSequence.h"
+#include "TileLoop.h"
 
 #include "../array/Array.h"
 #include "../array/ElementConversion.h"
@@ -77,27 +78,49 @@ float4 Renderer::background(
       (float(y) + 0.5f) / float(height));
 }
 
+// The default tile: each packet's primary rays traced together, each
+// pixel shaded by the renderer's shadeSample() and stored.
+class Renderer::PrimaryPackets final : public TileWork
+{
+ public:
+  PrimaryPackets(const Renderer &renderer,
+      const RenderContext &context,
+      FrameBuffers &buffers)
+      : m_renderer(renderer),
+        m_context(context),
+        m_buffers(buffers),
+        m_primaryRays(context)
+  {}
+
+  void packet(uint32_t x0, uint32_t y, int count) override
+  {
+    m_renderer.tracePrimary(
+        m_context, m_primaryRays, x0, y, count, m_rays, m_hits);
+    for (int i = 0; i < count; i++) {
+      store(m_context,
+          m_buffers,
+          x0 + i,
+          y,
+          m_renderer.shadeSample(m_context, m_rays[i], m_hits[i], x0 + i, y));
+    }
+  }
+
+ private:
+  const Renderer &m_renderer;
+  const RenderContext &m_context;
+  FrameBuffers &m_buffers;
+  const PrimaryRays m_primaryRays;
+  Ray m_rays[rt::kPacketSize];
+  rt::Hit m_hits[rt::kPacketSize];
+};
+
 void Renderer::renderTile(const RenderContext &context,
     const Tile &tile,
     FrameBuffers &buffers,
     const std::atomic<bool> &cancel) const
 {
-  Ray rays[rt::kPacketSize];
-  rt::Hit hits[rt::kPacketSize];
-  const PrimaryRays primaryRays(context);
-  for (uint32_t y = tile.y0; y < tile.y1 && !cancel; y++) {
-    for (uint32_t x = tile.x0; x < tile.x1; x += rt::kPacketSize) {
-      const int count = int(std::min<uint32_t>(rt::kPacketSize, tile.x1 - x));
-      tracePrimary(context, primaryRays, x, y, count, rays, hits);
-      for (int i = 0; i < count; i++) {
-        store(context,
-            buffers,
-            x + i,
-            y,
-            shadeSample(context, rays[i], hits[i], x + i, y));
-      }
-    }
-  }
+  PrimaryPackets work(*this, context, buffers);
+  runTile(work, tile, cancel);
 }
 
 PixelSample Renderer::shadeSample(const RenderContext &context,

@@ -41,6 +41,36 @@ struct RenderContext
   uint32_t seed{0};
 };
 
+// One tile's work as the tile loop, runTile(), drives it:
+// packet() for the tile's pixels row by row, in packets of up to
+// rt::kPacketSize, then bounce() until nothing is left to trace, then
+// finish(). Each renderer's renderTile() makes its own (a final class), on
+// the stack, and runs it through runTile() (TileLoop.h); the loop stops,
+// storing nothing more, once the frame is cancelled.
+class TileWork
+{
+ public:
+  virtual ~TileWork() = default;
+  // The camera rays of `count` pixels of row y from x0: traced, shaded and
+  // stored as one coherent packet, or made and kept for the first bounce
+  // of a wavefront.
+  virtual void packet(uint32_t x0, uint32_t y, int count) = 0;
+  // Whether packet() may run for different rows at once: rows then go to
+  // the process's threads in blocks (a lockstep render's row of tiles).
+  virtual bool packetsInParallel() const
+  {
+    return false;
+  }
+  // Traces the queued rays together and shades their hits, queueing the
+  // rays that follow; false when there was nothing to trace.
+  virtual bool bounce()
+  {
+    return false;
+  }
+  // Stores what the bounces gathered.
+  virtual void finish() {}
+};
+
 class Renderer : public Object
 {
  public:
@@ -48,8 +78,9 @@ class Renderer : public Object
 
   // Called once per frame before any tile.
   virtual void beginFrame(const RenderContext &context) {}
-  // Renders the pixels of `tile`, row by row in packets of primary rays,
-  // each pixel shaded by shadeSample(); returns early once `cancel` is set.
+  // Renders the pixels of `tile` through runTile() with the renderer's
+  // TileWork (by default packets of primary rays, each pixel shaded by
+  // shadeSample()); returns early once `cancel` is set.
   virtual void renderTile(const RenderContext &context,
       const Tile &tile,
       FrameBuffers &buffers,
@@ -155,6 +186,8 @@ class Renderer : public Object
   float m_ambientRadiance{0.f};
 
  private:
+  class PrimaryPackets;
+
   float4 m_backgroundColor{0, 0, 0, 1};
   std::vector<float4> m_backgroundImage; // linear RGBA, row 0 at the bottom
   uint32_t m_backgroundWidth{0};

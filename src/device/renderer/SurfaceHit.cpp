@@ -58,4 +58,17 @@ bool resolveSurfaceHit(const World &world,
   return true;
 }
 
+void recordSurfaceChannels(PixelSample &sample,
+    float t,
+    const SurfaceHit &surface,
+    const float3 &albedo)
+{
+  sample.depth = t;
+  sample.normal = surface.shadingNormal;
+  sample.albedo = albedo;
+  sample.primitiveId = surface.attributes.primitiveId;
+  sample.objectId = surface.surface->id();
+  sample.instanceId = surface.placement->instanceId;
+}
+
 } // namespace prism

@@ -6,6 +6,7 @@
 #include "../geometry/Attributes.h"
 #include "../rt/Hit.h"
 #include "../world/World.h"
+#include "FrameBuffers.h"
 
 namespace prism {
 
@@ -39,5 +40,12 @@ bool resolveSurfaceHit(const World &world,
     const rt::Hit &hit,
     SurfaceHit &out,
     HitDetail detail = HitDetail::Full);
+
+// Fills the channels of `sample` a surface shows where a ray first meets
+// it at `t`: depth, shading normal, `albedo` and the ids.
+void recordSurfaceChannels(PixelSample &sample,
+    float t,
+    const SurfaceHit &surface,
+    const float3 &albedo);
 
 } // namespace prism

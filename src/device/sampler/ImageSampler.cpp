@@ -54,41 +54,26 @@ void ImageSampler::commitParameters()
                                                       : ANARI_ARRAY3D;
   m_image = readColorArray("image", arrayType, m_acceptsElementType);
   m_inAttribute = readInAttribute();
-  m_inTransform = read<mat4>("inTransform", ANARI_FLOAT32_MAT4, kIdentityMat4);
-  m_inOffset =
-      read<float4>("inOffset", ANARI_FLOAT32_VEC4, {0.f, 0.f, 0.f, 0.f});
-
-  const std::string filter = readString("filter", "linear");
-  m_filter = filter == "nearest" ? Filter::Nearest : Filter::Linear;
-  if (filter != "nearest" && filter != "linear") {
-    // The spec: unknown filters give the default.
-    report(ANARI_SEVERITY_WARNING,
-        ANARI_STATUS_INVALID_ARGUMENT,
-        "unknown 'filter' \"%s\"; using linear",
-        filter.c_str());
-  }
+  m_inTransform = param<mat4>("inTransform");
+  m_inOffset = param<float4>("inOffset");
+  // The spec: unknown filters give the default (linear).
+  m_filter = param<std::string>("filter") == "nearest" ? Filter::Nearest
+                                                       : Filter::Linear;
   for (int d = 0; d < m_dimensions; d++)
     m_wrap[d] = readWrapMode(m_wrapParameters[d]);
-  m_borderColor =
-      read<float4>("borderColor", ANARI_FLOAT32_VEC4, {0.f, 0.f, 0.f, 0.f});
+  m_borderColor = param<float4>("borderColor");
 }
 
 WrapMode ImageSampler::readWrapMode(const char *name)
 {
-  const std::string mode = readString(name, "clampToEdge");
-  if (mode == "clampToEdge")
-    return WrapMode::ClampToEdge;
+  // An unknown mode is reported and the default, clampToEdge, used.
+  const std::string mode = param<std::string>(name);
   if (mode == "repeat")
     return WrapMode::Repeat;
   if (mode == "mirrorRepeat")
     return WrapMode::MirrorRepeat;
   if (mode == "clampToBorder")
     return WrapMode::ClampToBorder;
-  report(ANARI_SEVERITY_WARNING,
-      ANARI_STATUS_INVALID_ARGUMENT,
-      "unknown '%s' \"%s\"; using clampToEdge",
-      name,
-      mode.c_str());
   return WrapMode::ClampToEdge;
 }
 

@@ -10,7 +10,7 @@ void Primitive::commitParameters()
 {
   Sampler::commitParameters();
   m_array = readColorArray("array", ANARI_ARRAY1D, isColorElementType);
-  m_inOffset = read<uint64_t>("inOffset", ANARI_UINT64, 0);
+  m_inOffset = param<uint64_t>("inOffset");
 }
 
 void Primitive::finalize()

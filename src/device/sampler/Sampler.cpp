@@ -40,6 +40,12 @@ bool isColorElementType(ANARIDataType type)
 
 void Sampler::commitParameters()
 {
+  if (declares("outTransform")) {
+    m_outTransform = param<mat4>("outTransform");
+    m_outOffset = param<float4>("outOffset");
+    return;
+  }
+  // KHR_SAMPLER_PRIMITIVE declares no output transform; one set is applied.
   m_outTransform =
       read<mat4>("outTransform", ANARI_FLOAT32_MAT4, kIdentityMat4);
   m_outOffset =
@@ -48,7 +54,7 @@ void Sampler::commitParameters()
 
 Attribute Sampler::readInAttribute()
 {
-  const std::string name = readString("inAttribute", "attribute0");
+  const std::string name = param<std::string>("inAttribute");
   const Attribute attribute = attributeFromName(name);
   if (attribute != Attribute::None)
     return attribute;

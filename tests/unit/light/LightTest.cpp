@@ -278,6 +278,29 @@ TEST_F(LightTest, ColorFiltersAndVisibleControlsCameraVisibility)
   EXPECT_TRUE(m_messages.empty()) << m_messages.front();
 }
 
+// A color above the definitions' advisory maximum (1, 1, 1) is HDR input:
+// taken as set, without a warning; NaN or negative makes the light invalid.
+TEST_F(LightTest, HdrColorIsTakenAsSet)
+{
+  light::Point light(m_device);
+  setFloat(light, "intensity", 1.f);
+  setVec3(light, "color", {4.f, 2.f, 0.5f});
+  commit(light);
+  EXPECT_TRUE(light.isValid());
+  const LightSample s = place(light)->sample({0, 0, -1}, {0.5f, 0.5f});
+  EXPECT_FLOAT_EQ(s.radiance.x, 4.f);
+  EXPECT_FLOAT_EQ(s.radiance.y, 2.f);
+  EXPECT_FLOAT_EQ(s.radiance.z, 0.5f);
+  EXPECT_TRUE(m_messages.empty()) << m_messages.front();
+  for (float bad : {std::nanf(""), -0.5f}) {
+    light::Point invalid(m_device);
+    setVec3(invalid, "color", {1.f, bad, 1.f});
+    commit(invalid);
+    EXPECT_FALSE(invalid.isValid()) << bad;
+  }
+  EXPECT_TRUE(reported({"'color'", "must be finite and >= 0"}));
+}
+
 TEST_F(LightTest, DefaultsAreVisibleAndWhite)
 {
   light::Directional light(m_device);
@@ -329,8 +352,8 @@ TEST_F(LightTest, PointIrradianceFallsWithInverseSquare)
 
 // PRISM_LIGHT_DECAY: the intensity reaches distance d as I / d^decay; 2
 // is the inverse square exactly, 0 keeps I at any distance, and a decay
-// outside the declared [0, 4] is reported with that range and leaves the
-// light invalid.
+// above the declared [0, 4] is clamped to 4 with a warning; below it or
+// not a number it is reported and leaves the light invalid.
 TEST_F(LightTest, PointAndSpotDecay)
 {
   for (const char *subtype : {"point", "spot"}) {
@@ -356,17 +379,22 @@ TEST_F(LightTest, PointAndSpotDecay)
       }
     }
   }
-  // Above the range, not a number, or negative: reported, and the light is
-  // invalid.
-  for (float bad : {7.f, std::nanf(""), -1.f}) {
+  light::Point clamped(m_device);
+  setFloat(clamped, "intensity", 1.f);
+  setFloat(clamped, "decay", 7.f);
+  commit(clamped);
+  EXPECT_TRUE(reported({"'decay' (7) must be in [0, 4]", "clamped to 4"}));
+  const LightSample s = place(clamped)->sample({0, 0, -2.f}, {0.3f, 0.7f});
+  EXPECT_NEAR(s.radiance.x, 1.f / 16.f, 1e-6f);
+  // Not a number, or negative: reported, and the light is invalid.
+  for (float bad : {std::nanf(""), -1.f}) {
     light::Point invalid(m_device);
     setFloat(invalid, "decay", bad);
     commit(invalid);
     EXPECT_FALSE(invalid.place(kIdentityMat3x4)) << bad;
   }
   EXPECT_TRUE(
-      reported({"'decay' (7) must be in [0, 4]", "the light is invalid"}));
-  EXPECT_TRUE(reported({"'decay' (-1) must be in [0, 4]"}));
+      reported({"'decay' (-1) must be in [0, 4]", "the light is invalid"}));
   EXPECT_TRUE(reported({"'decay' (nan) is not a number"}));
 }
 
