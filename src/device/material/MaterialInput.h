@@ -51,7 +51,15 @@ class MaterialInput
       return input;
     const bool any = accepts == InputAccepts::Any;
     if (any && p->type() == kConstantType) {
-      input.m_constant = p->template as<T>();
+      // Declared bounds clamp the constant, with a warning; what is not a
+      // number stays for the material, which treats it component-wise.
+      T bounded;
+      const ParamCheck check = material.checkedParam(name, bounded);
+      const bool clamped = check.verdict == ParamVerdict::kBelowMinimum
+                           || check.verdict == ParamVerdict::kAboveMaximum;
+      input.m_constant = clamped ? bounded : p->template as<T>();
+      if (clamped)
+        material.reportRejected(check);
     } else if (p->type() == ANARI_SAMPLER) {
       // Samplers of an unknown subtype are inert objects, not Samplers.
       auto *sampler = dynamic_cast<prism::Sampler *>(p->object());
