@@ -83,6 +83,7 @@ uint32_t LightTree::buildRange(std::vector<uint32_t> &order,
     leaf.power = std::isfinite(e.power) ? std::max(e.power, 0.f) : 0.f;
     leaf.child = order[begin];
     leaf.leaf = true;
+    finishNode(leaf);
     m_trail[order[begin]] = trail;
     return index;
   }
@@ -125,29 +126,46 @@ uint32_t LightTree::buildRange(std::vector<uint32_t> &order,
   node.power = a.power + b.power;
   node.child = first;
   node.second = second;
+  finishNode(node);
   return index;
+}
+
+void LightTree::finishNode(Node &node)
+{
+  node.centre = (node.lower + node.upper) * 0.5f;
+  node.radius2 = 0.25f * lengthSquared(node.upper - node.lower);
+  node.cosCone = std::cos(node.coneAngle);
+  node.sinCone = std::sin(node.coneAngle);
 }
 
 float LightTree::importance(const Node &node, const float3 &point) const
 {
   if (!(node.power > 0.f))
     return 0.f;
-  const float3 centre = (node.lower + node.upper) * 0.5f;
-  const float radius2 = 0.25f * lengthSquared(node.upper - node.lower);
-  const float3 toPoint = point - centre;
+  const float3 toPoint = point - node.centre;
   const float distance2 = lengthSquared(toPoint);
   float cosineBound = 1.f;
-  // Two-sided emitters: a cone of half angle pi / 2 faces every point.
-  if (node.coneAngle < 0.5f * kPi && distance2 > radius2) {
-    const float distance = std::sqrt(distance2);
-    const float theta = angleBetween(node.axis, toPoint / distance);
-    const float fromEitherSide = std::min(theta, kPi - theta);
-    const float boxAngle = std::asin(std::sqrt(radius2 / distance2));
-    const float beyond =
-        std::max(0.f, fromEitherSide - node.coneAngle - boxAngle);
-    cosineBound = std::max(std::cos(beyond), kMinCosineBound);
+  // Two-sided emitters: a cone of half angle pi / 2 or more faces every
+  // point. Otherwise the smallest angle between the point's direction and
+  // a normal in the cone, less the angle the box subtends, by the angle
+  // difference formulas (no inverse trigonometry on the hot path).
+  if (node.cosCone > 0.f && distance2 > node.radius2) {
+    const float cosTheta =
+        std::min(std::abs(dot(node.axis, toPoint)) / std::sqrt(distance2), 1.f);
+    if (cosTheta < node.cosCone) {
+      const float sinTheta = std::sqrt(1.f - cosTheta * cosTheta);
+      const float cosOutside =
+          cosTheta * node.cosCone + sinTheta * node.sinCone;
+      const float sinOutside =
+          sinTheta * node.cosCone - cosTheta * node.sinCone;
+      const float sinBox2 = node.radius2 / distance2;
+      const float cosBox = std::sqrt(1.f - sinBox2);
+      if (cosOutside < cosBox)
+        cosineBound = cosOutside * cosBox + sinOutside * std::sqrt(sinBox2);
+    }
+    cosineBound = std::max(cosineBound, kMinCosineBound);
   }
-  return node.power * cosineBound / std::max(distance2, radius2);
+  return node.power * cosineBound / std::max(distance2, node.radius2);
 }
 
 float LightTree::firstChildShare(const Node &node, const float3 &point) const

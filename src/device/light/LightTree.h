@@ -44,8 +44,11 @@ class LightTree
   struct Node
   {
     float3 lower, upper;
+    float3 centre;        // of the box
+    float radius2{0.f};   // of the sphere around the box, squared
     float3 axis;          // of the cone of normals
     float coneAngle{0.f}; // its half angle; pi: every direction
+    float cosCone{0.f}, sinCone{0.f};
     float power{0.f};
     uint32_t child{0};  // the first child; a leaf's emitter
     uint32_t second{0}; // the second child
@@ -57,6 +60,7 @@ class LightTree
       const std::vector<TreeEmitter> &emitters,
       uint64_t trail,
       uint32_t depth);
+  static void finishNode(Node &node);
   float importance(const Node &node, const float3 &point) const;
   // The probability of descending into the first child of `node`.
   float firstChildShare(const Node &node, const float3 &point) const;
