@@ -14,8 +14,7 @@ namespace {
 using scenes::Vec3;
 using scenes::operator*;
 
-// Emissive triangles of the many-light room: 4 colours of this many, whose
-// power together is about the emissive panel's.
+// Emissive triangles of the many-light hall: 4 colours of this many.
 constexpr int kTrianglesPerColour = 272;
 
 ANARIMaterial newEmitter(ANARIDevice device, const Vec3 &radiance)
@@ -38,17 +37,19 @@ void addSurface(ANARIDevice device,
   anariRelease(device, material);
 }
 
-// A room [-1, 1] x [0, 2] x [-1, 1] open towards +z (white floor, ceiling
-// and back wall, red left and green right wall) with two white blocks, and
-// the camera looking in.
-scenes::Scene room(ANARIDevice device, std::vector<ANARIObject> &surfaces)
+// A room [-1, 1] x [0, 2] x [1 - depth, 1] open towards +z (white floor,
+// ceiling and back wall, red left and green right wall) with two white
+// blocks, and the camera looking in.
+scenes::Scene room(
+    ANARIDevice device, std::vector<ANARIObject> &surfaces, float depth)
 {
   scenes::TriangleMesh white, red, green;
-  white.addQuad({-1, 0, 1}, {2, 0, 0}, {0, 0, -2}); // floor
-  white.addQuad({-1, 2, -1}, {2, 0, 0}, {0, 0, 2}); // ceiling
-  white.addQuad({-1, 0, -1}, {2, 0, 0}, {0, 2, 0}); // back
-  red.addQuad({-1, 0, 1}, {0, 0, -2}, {0, 2, 0});   // left
-  green.addQuad({1, 0, -1}, {0, 0, 2}, {0, 2, 0});  // right
+  const float back = 1.f - depth;
+  white.addQuad({-1, 0, 1}, {2, 0, 0}, {0, 0, -depth});   // floor
+  white.addQuad({-1, 2, back}, {2, 0, 0}, {0, 0, depth}); // ceiling
+  white.addQuad({-1, 0, back}, {2, 0, 0}, {0, 2, 0});     // back
+  red.addQuad({-1, 0, 1}, {0, 0, -depth}, {0, 2, 0});     // left
+  green.addQuad({1, 0, back}, {0, 0, depth}, {0, 2, 0});  // right
   white.addBox(scenes::translationMatrix({-0.35f, 0.6f, -0.3f})
                * scenes::rotationYMatrix(0.3f)
                * scenes::scaleMatrix({0.6f, 1.2f, 0.6f}));
@@ -72,7 +73,7 @@ scenes::Scene room(ANARIDevice device, std::vector<ANARIObject> &surfaces)
 scenes::Scene emissivePanelRoom(ANARIDevice device)
 {
   std::vector<ANARIObject> surfaces;
-  scenes::Scene scene = room(device, surfaces);
+  scenes::Scene scene = room(device, surfaces, 2.f);
   scenes::TriangleMesh panel;
   panel.addQuad({-0.25f, 1.999f, -0.25f}, {0.5f, 0, 0}, {0, 0, 0.5f});
   addSurface(device, surfaces, panel, newEmitter(device, {12.f, 10.2f, 7.2f}));
@@ -87,31 +88,28 @@ float nextUniform(uint32_t &state)
   return float(state >> 8) * (1.f / 16777216.f);
 }
 
-// Small triangles scattered over the ceiling and the upper half of the
-// side and back walls, 1 mm in front of them.
-scenes::TriangleMesh scatteredTriangles(uint32_t &state, int count)
+// Triangles scattered over the ceiling and the upper half of the side walls
+// of a room of `depth` (as room()), 1 mm in front of them.
+scenes::TriangleMesh scatteredTriangles(uint32_t &state, int count, float depth)
 {
   scenes::TriangleMesh mesh;
-  const float size = 0.05f;
+  const float size = 0.1f;
   for (int i = 0; i < count; i++) {
-    const float a = 2.f * nextUniform(state) - 1.f, b = nextUniform(state);
+    const float a = 2.f * nextUniform(state) - 1.f;
+    const float z = 0.9f - (depth - 0.2f) * nextUniform(state);
     Vec3 corner, edge1, edge2;
-    switch (int(nextUniform(state) * 4.f)) {
+    switch (int(nextUniform(state) * 3.f)) {
     case 0: // ceiling
-      corner = {a * 0.95f, 1.999f, 2.f * b - 1.f};
-      edge1 = {size, 0, 0}, edge2 = {0, 0, size};
+      corner = {a * 0.9f, 1.999f, z};
+      edge1 = {size, 0, 0}, edge2 = {0, 0, -size};
       break;
     case 1: // left wall
-      corner = {-0.999f, 1.f + 0.95f * b, a * 0.95f};
-      edge1 = {0, size, 0}, edge2 = {0, 0, size};
+      corner = {-0.999f, 1.45f + 0.45f * a, z};
+      edge1 = {0, size, 0}, edge2 = {0, 0, -size};
       break;
-    case 2: // right wall
-      corner = {0.999f, 1.f + 0.95f * b, a * 0.95f};
-      edge1 = {0, 0, size}, edge2 = {0, size, 0};
-      break;
-    default: // back wall
-      corner = {a * 0.95f, 1.f + 0.95f * b, -0.999f};
-      edge1 = {size, 0, 0}, edge2 = {0, size, 0};
+    default: // right wall
+      corner = {0.999f, 1.45f + 0.45f * a, z};
+      edge1 = {0, 0, -size}, edge2 = {0, size, 0};
     }
     const auto first = uint32_t(mesh.positions.size());
     mesh.positions.push_back(corner);
@@ -129,16 +127,15 @@ scenes::TriangleMesh scatteredTriangles(uint32_t &state, int count)
 scenes::Scene manyLightRoom(ANARIDevice device)
 {
   std::vector<ANARIObject> surfaces;
-  scenes::Scene scene = room(device, surfaces);
-  const Vec3 colours[] = {{5.f, 1.f, .5f},
-      {.75f, 4.5f, 1.f},
-      {.75f, 1.25f, 5.5f},
-      {3.75f, 3.75f, 3.f}};
+  const float depth = 16.f; // a hall: most emitters are far from most points
+  scenes::Scene scene = room(device, surfaces, depth);
+  const Vec3 colours[] = {
+      {2.f, .4f, .2f}, {.3f, 1.8f, .4f}, {.3f, .5f, 2.2f}, {1.5f, 1.5f, 1.2f}};
   uint32_t state = 12345u;
   for (const Vec3 &radiance : colours)
     addSurface(device,
         surfaces,
-        scatteredTriangles(state, kTrianglesPerColour),
+        scatteredTriangles(state, kTrianglesPerColour, depth),
         newEmitter(device, radiance));
   scenes::finishWorld(device, scene, surfaces, {}, {});
   return scene;
@@ -165,8 +162,9 @@ scenes::Scene skyLitModel(ANARIDevice device, std::string &error)
   }
   scene_io::addWorldLight(device, loaded.scene, environment.light);
   scenes::Scene scene = std::move(loaded.scene);
-  if (!scene.camera.valid && !scene.bounds.empty()) {
-    // Three box diagonals away, a little from above.
+  if (!scene.bounds.empty()) {
+    // Close enough that the model fills most of the frame (the sky seen
+    // directly has no noise to measure), a little from above.
     const scenes::Bounds &b = scene.bounds;
     const Vec3 centre{0.5f * (b.lower[0] + b.upper[0]),
         0.5f * (b.lower[1] + b.upper[1]),
@@ -174,11 +172,12 @@ scenes::Scene skyLitModel(ANARIDevice device, std::string &error)
     const float size = scenes::length(scenes::Vec3{b.upper[0] - b.lower[0],
         b.upper[1] - b.lower[1],
         b.upper[2] - b.lower[2]});
+    scene.camera = {};
     scene.camera.valid = true;
     scene.camera.at = centre;
-    scene.camera.eye = {centre[0] + 1.2f * size,
-        centre[1] + 0.9f * size,
-        centre[2] + 2.f * size};
+    scene.camera.eye = {centre[0] + 0.6f * size,
+        centre[1] + 0.45f * size,
+        centre[2] + 1.f * size};
   }
   return scene;
 }

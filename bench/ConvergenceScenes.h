@@ -1,8 +1,8 @@
 // The scenes prism-bench-convergence measures: the Cornell box demo (a quad
-// light), the same kind of room lit by an emissive ceiling panel, a room
-// lit by 1,088 small emissive triangles in four colours, and a glTF model
-// under a small committed HDR sky (bench/data/sun-sky.hdr, written by
-// scripts/make-bench-sky.py).
+// light), the same kind of room lit by an emissive ceiling panel, a hall
+// 16 m deep lit by 1,088 emissive triangles in four colours, and a glTF
+// model under a small committed HDR sky (bench/data/sun-sky.hdr, written
+// by scripts/make-bench-sky.py).
 #pragma once
 
 #include "Scene.h"
