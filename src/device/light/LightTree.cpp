@@ -11,6 +11,9 @@ namespace {
 // The importance of an emitter seen exactly edge-on is kept above zero:
 // the bounds are conservative, but rounding is not.
 constexpr float kMinCosineBound = 1e-3f;
+// Emitters per leaf: the last steps of a descent cost more than choosing
+// among a few neighbours by power saves.
+constexpr uint32_t kLeafSize = 4;
 
 struct Cone
 {
@@ -56,12 +59,16 @@ void LightTree::build(const std::vector<TreeEmitter> &emitters)
   m_trail.assign(emitters.size(), 0);
   if (emitters.empty())
     return;
-  std::vector<uint32_t> order(emitters.size());
-  for (uint32_t i = 0; i < order.size(); i++)
-    order[i] = i;
+  m_order.resize(emitters.size());
+  m_power.resize(emitters.size());
+  for (uint32_t i = 0; i < m_order.size(); i++) {
+    m_order[i] = i;
+    const float power = emitters[i].power;
+    m_power[i] = std::isfinite(power) ? std::max(power, 0.f) : 0.f;
+  }
   m_nodes.reserve(2 * emitters.size());
   m_nodes.emplace_back();
-  buildRange(order, 0, uint32_t(order.size()), emitters, 0, 0);
+  buildRange(m_order, 0, uint32_t(m_order.size()), emitters, 0, 0);
 }
 
 uint32_t LightTree::buildRange(std::vector<uint32_t> &order,
@@ -73,18 +80,26 @@ uint32_t LightTree::buildRange(std::vector<uint32_t> &order,
 {
   // The node for [begin, end) is the last one added; returns it.
   const uint32_t index = uint32_t(m_nodes.size() - 1);
-  if (end - begin == 1) {
-    const TreeEmitter &e = emitters[order[begin]];
+  if (end - begin <= kLeafSize) {
+    // A leaf: a few neighbours, chosen among by power alone.
     Node &leaf = m_nodes[index];
-    leaf.lower = e.lower;
-    leaf.upper = e.upper;
-    leaf.axis = e.omnidirectional ? float3{0, 0, 1} : e.normal;
-    leaf.coneAngle = e.omnidirectional ? kPi : 0.f;
-    leaf.power = std::isfinite(e.power) ? std::max(e.power, 0.f) : 0.f;
-    leaf.child = order[begin];
+    Cone cone{{0.f, 0.f, 1.f}, 0.f};
+    for (uint32_t i = begin; i < end; i++) {
+      const TreeEmitter &e = emitters[order[i]];
+      const Cone own{e.omnidirectional ? float3{0, 0, 1} : e.normal,
+          e.omnidirectional ? kPi : 0.f};
+      cone = i == begin ? own : unite(cone, own);
+      leaf.lower = i == begin ? e.lower : min(leaf.lower, e.lower);
+      leaf.upper = i == begin ? e.upper : max(leaf.upper, e.upper);
+      leaf.power += m_power[order[i]];
+      m_trail[order[i]] = trail;
+    }
+    leaf.axis = cone.axis;
+    leaf.coneAngle = cone.angle;
+    leaf.child = begin;
+    leaf.second = end - begin;
     leaf.leaf = true;
     finishNode(leaf);
-    m_trail[order[begin]] = trail;
     return index;
   }
   // Split at the median of the centres along the longest axis of their
@@ -134,38 +149,41 @@ void LightTree::finishNode(Node &node)
 {
   node.centre = (node.lower + node.upper) * 0.5f;
   node.radius2 = 0.25f * lengthSquared(node.upper - node.lower);
+  node.radius = std::sqrt(node.radius2);
   node.cosCone = std::cos(node.coneAngle);
   node.sinCone = std::sin(node.coneAngle);
 }
 
 float LightTree::importance(const Node &node, const float3 &point) const
 {
-  if (!(node.power > 0.f))
-    return 0.f;
   const float3 toPoint = point - node.centre;
   const float distance2 = lengthSquared(toPoint);
+  // Inside the bounding sphere: no bound on angle, distance its radius.
+  if (!(distance2 > node.radius2))
+    return node.power / std::max(node.radius2, 1e-30f);
+  const float inverseDistance = 1.f / std::sqrt(distance2);
   float cosineBound = 1.f;
   // Two-sided emitters: a cone of half angle pi / 2 or more faces every
   // point. Otherwise the smallest angle between the point's direction and
   // a normal in the cone, less the angle the box subtends, by the angle
   // difference formulas (no inverse trigonometry on the hot path).
-  if (node.cosCone > 0.f && distance2 > node.radius2) {
+  if (node.cosCone > 0.f) {
     const float cosTheta =
-        std::min(std::abs(dot(node.axis, toPoint)) / std::sqrt(distance2), 1.f);
+        std::min(std::abs(dot(node.axis, toPoint)) * inverseDistance, 1.f);
     if (cosTheta < node.cosCone) {
       const float sinTheta = std::sqrt(1.f - cosTheta * cosTheta);
       const float cosOutside =
           cosTheta * node.cosCone + sinTheta * node.sinCone;
       const float sinOutside =
           sinTheta * node.cosCone - cosTheta * node.sinCone;
-      const float sinBox2 = node.radius2 / distance2;
-      const float cosBox = std::sqrt(1.f - sinBox2);
+      const float sinBox = node.radius * inverseDistance;
+      const float cosBox = std::sqrt(1.f - sinBox * sinBox);
       if (cosOutside < cosBox)
-        cosineBound = cosOutside * cosBox + sinOutside * std::sqrt(sinBox2);
+        cosineBound = std::max(
+            cosOutside * cosBox + sinOutside * sinBox, kMinCosineBound);
     }
-    cosineBound = std::max(cosineBound, kMinCosineBound);
   }
-  return node.power * cosineBound / std::max(distance2, node.radius2);
+  return node.power * cosineBound * (inverseDistance * inverseDistance);
 }
 
 float LightTree::firstChildShare(const Node &node, const float3 &point) const
@@ -197,7 +215,31 @@ uint32_t LightTree::pick(
     }
     u = std::clamp(u, 0.f, 0.99999994f);
   }
-  return node->child;
+  // Within the leaf by power (uniformly if it has none).
+  const uint32_t *first = &m_order[node->child];
+  const uint32_t count = node->second;
+  const bool powered = node->power > 0.f;
+  const float target = u * (powered ? node->power : float(count));
+  float below = 0.f;
+  for (uint32_t i = 0; i < count; i++) {
+    const float own = powered ? m_power[first[i]] : 1.f;
+    if (target < below + own || i + 1 == count) {
+      if (!(own > 0.f))
+        continue; // only a last, powerless emitter gets here
+      u = std::clamp((target - below) / own, 0.f, 0.99999994f);
+      probability *= own / (powered ? node->power : float(count));
+      return first[i];
+    }
+    below += own;
+  }
+  // Rounding left the target past every powered emitter: the last one.
+  for (uint32_t i = count; i-- > 0;)
+    if (!powered || m_power[first[i]] > 0.f) {
+      probability *= powered ? m_power[first[i]] / node->power : 1.f / count;
+      u = 0.99999994f;
+      return first[i];
+    }
+  return first[0];
 }
 
 float LightTree::probability(const float3 &point, uint32_t emitter) const
@@ -216,7 +258,8 @@ float LightTree::probability(const float3 &point, uint32_t emitter) const
       node = &m_nodes[node->child];
     }
   }
-  return probability;
+  return node->power > 0.f ? probability * m_power[emitter] / node->power
+                           : probability / float(node->second);
 }
 
 } // namespace prism::light

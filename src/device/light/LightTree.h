@@ -4,7 +4,8 @@
 // of normals) and their power, and a descent picks a child in proportion to
 // power / distance^2 times the best cosine the cone allows towards the
 // point. Nearby emitters facing the point are chosen often, far or turned
-// away ones rarely, so ten thousand emitters cost a descent of log2 of that.
+// away ones rarely, so ten thousand emitters cost a descent of log2 of that
+// (leaves hold up to four neighbours, chosen among by power).
 // Importance never reaches zero for an emitter that can light the point, so
 // the choice stays unbiased; probability() retraces the same descent.
 #pragma once
@@ -45,13 +46,14 @@ class LightTree
   {
     float3 lower, upper;
     float3 centre;        // of the box
-    float radius2{0.f};   // of the sphere around the box, squared
+    float radius{0.f};    // of the sphere around the box
+    float radius2{0.f};   // squared
     float3 axis;          // of the cone of normals
     float coneAngle{0.f}; // its half angle; pi: every direction
     float cosCone{0.f}, sinCone{0.f};
     float power{0.f};
-    uint32_t child{0};  // the first child; a leaf's emitter
-    uint32_t second{0}; // the second child
+    uint32_t child{0};  // the first child; a leaf's first in m_order
+    uint32_t second{0}; // the second child; a leaf's emitter count
     bool leaf{false};
   };
   uint32_t buildRange(std::vector<uint32_t> &order,
@@ -69,6 +71,8 @@ class LightTree
   // Per emitter, its path from the root: bit d set means the second child
   // at depth d (the tree is balanced, so 64 levels hold 2^64 emitters).
   std::vector<uint64_t> m_trail;
+  std::vector<uint32_t> m_order; // emitters, each leaf's together
+  std::vector<float> m_power;    // per emitter
 };
 
 } // namespace prism::light

@@ -82,17 +82,25 @@ TEST(LightTree, ProbabilitiesSumToOneAndAreWhatPickChoosesWith)
   }
 }
 
-TEST(LightTree, PrefersNearAndFacingEmitters)
+TEST(LightTree, PrefersNearEmitters)
 {
-  // Two equal triangles: one just below the point, one far off.
-  std::vector<float3> corners = {
-      {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {50, 0, 0}, {51, 0, 0}, {50, 1, 0}};
+  // Four unit triangles just below the point and four equal ones far off
+  // (a leaf's worth each).
+  std::vector<float3> corners;
+  for (float x : {0.f, 1.f, 2.f, 3.f, 50.f, 51.f, 52.f, 53.f})
+    for (float3 c : {float3{x, 0, 0}, float3{x + 1, 0, 0}, float3{x, 1, 0}})
+      corners.push_back(c);
   light::LightTree tree;
   tree.build(emittersOf(corners));
-  const float3 point{0.3f, 0.3f, 1.f};
-  EXPECT_GT(tree.probability(point, 0), 0.99f);
-  EXPECT_GT(tree.probability(point, 1), 0.f);
-  EXPECT_LT(tree.probability(point, 1), 0.01f);
+  const float3 point{1.5f, 0.3f, 1.f};
+  float near = 0.f;
+  for (uint32_t i = 0; i < 4; i++)
+    near += tree.probability(point, i);
+  EXPECT_GT(near, 0.99f);
+  for (uint32_t i = 4; i < 8; i++) {
+    EXPECT_GT(tree.probability(point, i), 0.f);
+    EXPECT_LT(tree.probability(point, i), 0.01f);
+  }
 }
 
 TEST(LightTree, LeftoverNumberIsUniform)
