@@ -1,15 +1,18 @@
 // prism-bench-convergence: how fast the path tracer reaches a clean image.
-// The Cornell box demo is accumulated frame by frame; at every power of two
-// samples per pixel its RMSE against a high-sample reference of its own
-// (computed once, cached in the build tree) is printed with the time spent
-// so far, then the log-log slope of error over samples and the time to
-// reach fixed RMSE levels, as medians over runs. Never a test: it prints.
+// Each scene (ConvergenceScenes.h) is accumulated frame by frame; at every
+// power of two samples per pixel its RMSE against a high-sample reference
+// of its own (computed once, cached in the build tree) is printed with the
+// wall and CPU time spent so far, then the log-log slope of error over
+// samples and the time to reach fixed RMSE levels, as medians over runs.
+// CPU seconds beside wall seconds show what idle threads cost. Never a
+// test: it prints.
 // The reference is rendered with another renderer `seed`: independent
 // sequences. A reference continuing the measured samples' own sequence
 // shares their first N samples and so scores their error too low.
-#include "DemoScenes.h"
+#include "ConvergenceScenes.h"
 
 #include <anari/anari.h>
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
@@ -35,6 +38,7 @@ struct Options
   int runs{3};
   int maxPathLength{8};
   std::string cache; // folder for the reference; default beside the binary
+  std::vector<std::string> scenes; // default: all of them
 };
 
 const float kLevels[] = {0.05f, 0.02f, 0.015f, 0.01f};
@@ -45,7 +49,8 @@ constexpr int32_t kMeasuredSeed = 0, kReferenceSeed = 1;
 class Renderer
 {
  public:
-  explicit Renderer(const Options &options) : m_options(options)
+  Renderer(const Options &options, const std::string &sceneName)
+      : m_options(options)
   {
     m_library = anariLoadLibrary("prism", nullptr, nullptr);
     if (!m_library) {
@@ -53,8 +58,12 @@ class Renderer
       std::exit(1);
     }
     m_device = anariNewDevice(m_library, "default");
-    const auto *demo = prism::scenes::findDemoScene("cornell-box");
-    m_scene = demo->build(m_device);
+    std::string error;
+    m_scene = prism::bench::buildConvergenceScene(m_device, sceneName, error);
+    if (!m_scene.world) {
+      std::fprintf(stderr, "%s: %s\n", sceneName.c_str(), error.c_str());
+      std::exit(1);
+    }
     m_camera = anariNewCamera(m_device, "perspective");
     const auto &c = m_scene.camera;
     const float direction[3] = {
@@ -110,13 +119,27 @@ class Renderer
     anariCommitParameters(m_device, frame);
     return frame;
   }
-  // Renders one more sample; returns its wall time in seconds.
-  double addSample(ANARIFrame frame) const
+  // Renders one more sample; returns its wall time in seconds and adds
+  // the CPU seconds of all threads to `cpuSeconds`.
+  double addSample(ANARIFrame frame, double &cpuSeconds) const
   {
+    const double cpuStart = processCpuSeconds();
     const auto start = Clock::now();
     anariRenderFrame(m_device, frame);
     anariFrameReady(m_device, frame, ANARI_WAIT);
-    return std::chrono::duration<double>(Clock::now() - start).count();
+    const double wall =
+        std::chrono::duration<double>(Clock::now() - start).count();
+    cpuSeconds += processCpuSeconds() - cpuStart;
+    return wall;
+  }
+  static double processCpuSeconds()
+  {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    const auto seconds = [](const timeval &t) {
+      return double(t.tv_sec) + 1e-6 * double(t.tv_usec);
+    };
+    return seconds(usage.ru_utime) + seconds(usage.ru_stime);
   }
   std::vector<float> color(ANARIFrame frame) const
   {
@@ -155,15 +178,17 @@ double rmse(const std::vector<float> &a, const std::vector<float> &b)
   return std::sqrt(sum / (3.0 * double(a.size() / 4)));
 }
 
-std::vector<float> reference(
-    const Renderer &renderer, const Options &options, const char *argv0)
+std::vector<float> reference(const Renderer &renderer,
+    const Options &options,
+    const std::string &sceneName,
+    const char *argv0)
 {
   std::filesystem::path folder = options.cache;
   if (folder.empty())
     folder = std::filesystem::absolute(argv0).parent_path() / "bench-cache";
   const std::filesystem::path path =
       folder
-      / ("cornell-box-" + std::to_string(options.width) + "x"
+      / (sceneName + "-" + std::to_string(options.width) + "x"
           + std::to_string(options.height) + "-depth"
           + std::to_string(options.maxPathLength) + "-"
           + std::to_string(options.referenceSamples) + "spp-seed"
@@ -181,8 +206,9 @@ std::vector<float> reference(
   std::fflush(stdout);
   renderer.useSeed(kReferenceSeed);
   ANARIFrame frame = renderer.newFrame();
+  double cpuSeconds = 0.0;
   for (uint32_t s = 0; s < options.referenceSamples; s++)
-    renderer.addSample(frame);
+    renderer.addSample(frame, cpuSeconds);
   image = renderer.color(frame);
   renderer.release(frame);
   renderer.useSeed(kMeasuredSeed);
@@ -196,7 +222,7 @@ std::vector<float> reference(
 struct Point
 {
   uint32_t samples;
-  double error, seconds;
+  double error, seconds, cpuSeconds;
 };
 
 // Least-squares slope of log(error) over log(samples), from 4 spp on
@@ -214,18 +240,20 @@ double slope(const std::vector<Point> &points)
   return n > 1 ? (n * sxy - sx * sy) / (n * sxx - sx * sx) : 0.0;
 }
 
-// Seconds until the error first falls to `level`, interpolated log-log
-// between the measured points; negative if never.
-double timeTo(const std::vector<Point> &points, double level)
+// Seconds (of `clock`: wall or CPU) until the error first falls to
+// `level`, interpolated log-log between the measured points; negative if
+// never.
+double timeTo(
+    const std::vector<Point> &points, double level, double Point::*clock)
 {
   for (size_t i = 0; i < points.size(); i++) {
     if (points[i].error > level)
       continue;
     if (i == 0)
-      return points[0].seconds;
+      return points[0].*clock;
     const Point &a = points[i - 1], &b = points[i];
     const double f = std::log(a.error / level) / std::log(a.error / b.error);
-    return std::exp(std::log(a.seconds) + f * std::log(b.seconds / a.seconds));
+    return std::exp(std::log(a.*clock) + f * std::log(b.*clock / a.*clock));
   }
   return -1.0;
 }
@@ -244,7 +272,7 @@ Options parseOptions(int argc, char **argv)
     const bool hasValue = i + 1 < argc;
     if (arg == "--quick") {
       options.width = options.height = 128;
-      options.maxSamples = 64;
+      options.maxSamples = 256;
       options.referenceSamples = 1024;
       options.runs = 1;
     } else if (arg == "--runs" && hasValue) {
@@ -255,6 +283,8 @@ Options parseOptions(int argc, char **argv)
       options.referenceSamples = uint32_t(std::max(16, std::atoi(argv[++i])));
     } else if (arg == "--max-path-length" && hasValue) {
       options.maxPathLength = std::max(1, std::atoi(argv[++i]));
+    } else if (arg == "--scene" && hasValue) {
+      options.scenes.push_back(argv[++i]);
     } else if (arg == "--cache" && hasValue) {
       options.cache = argv[++i];
     } else if (arg == "--size" && hasValue
@@ -266,59 +296,81 @@ Options parseOptions(int argc, char **argv)
       std::fprintf(stderr,
           "usage: prism-bench-convergence [--quick] [--runs N] [--size WxH] "
           "[--max-spp N] [--reference-spp N] [--max-path-length N] "
-          "[--cache FOLDER]\n");
+          "[--scene NAME]... [--cache FOLDER]\n");
       std::exit(2);
     }
   }
   return options;
 }
 
-} // namespace
-
-int main(int argc, char **argv)
+// Measures one scene: its runs, then the medians.
+void measure(
+    const Options &options, const std::string &sceneName, const char *argv0)
 {
-  const Options options = parseOptions(argc, argv);
-  std::printf(
-      "prism-bench-convergence: Cornell box %ux%u, maxPathLength %d, "
-      "%u hardware threads\n",
+  std::printf("\n== %s %ux%u, maxPathLength %d\n",
+      sceneName.c_str(),
       options.width,
       options.height,
-      options.maxPathLength,
-      std::thread::hardware_concurrency());
-  const Renderer renderer(options);
-  const std::vector<float> ref = reference(renderer, options, argv[0]);
+      options.maxPathLength);
+  const Renderer renderer(options, sceneName);
+  const std::vector<float> ref = reference(renderer, options, sceneName, argv0);
 
   std::vector<double> slopes;
-  std::vector<std::vector<double>> times(std::size(kLevels));
+  std::vector<std::vector<double>> times(std::size(kLevels)),
+      cpuTimes(std::size(kLevels));
   for (int run = 0; run < options.runs; run++) {
     std::vector<Point> points;
     ANARIFrame frame = renderer.newFrame();
-    double seconds = 0.0;
+    double seconds = 0.0, cpuSeconds = 0.0;
     for (uint32_t s = 1; s <= options.maxSamples; s++) {
-      seconds += renderer.addSample(frame);
+      seconds += renderer.addSample(frame, cpuSeconds);
       if ((s & (s - 1)) == 0)
-        points.push_back({s, rmse(renderer.color(frame), ref), seconds});
+        points.push_back(
+            {s, rmse(renderer.color(frame), ref), seconds, cpuSeconds});
     }
     renderer.release(frame);
-    std::printf("\nrun %d\n  spp      RMSE    seconds\n", run + 1);
+    std::printf("run %d\n  spp      RMSE    seconds  CPU seconds\n", run + 1);
     for (const Point &p : points)
-      std::printf("%5u  %8.5f  %9.3f\n", p.samples, p.error, p.seconds);
+      std::printf("%5u  %8.5f  %9.3f  %11.3f\n",
+          p.samples,
+          p.error,
+          p.seconds,
+          p.cpuSeconds);
     slopes.push_back(slope(points));
-    for (size_t l = 0; l < std::size(kLevels); l++)
-      times[l].push_back(timeTo(points, kLevels[l]));
+    for (size_t l = 0; l < std::size(kLevels); l++) {
+      times[l].push_back(timeTo(points, kLevels[l], &Point::seconds));
+      cpuTimes[l].push_back(timeTo(points, kLevels[l], &Point::cpuSeconds));
+    }
   }
-  std::printf("\nmedian of %d runs: slope %.3f (error ~ N^%.3f)\n",
+  std::printf("%s, median of %d runs: slope %.3f (error ~ N^%.3f)\n",
+      sceneName.c_str(),
       options.runs,
       median(slopes),
       median(slopes));
   for (size_t l = 0; l < std::size(kLevels); l++) {
-    const double t = median(times[l]);
+    const double t = median(times[l]), cpu = median(cpuTimes[l]);
     if (t < 0)
       std::printf("  RMSE %.3f: not reached within %u spp\n",
           kLevels[l],
           options.maxSamples);
     else
-      std::printf("  RMSE %.3f reached in %.2f s\n", kLevels[l], t);
+      std::printf("  RMSE %.3f reached in %.2f s wall, %.2f s CPU\n",
+          kLevels[l],
+          t,
+          cpu);
   }
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+  Options options = parseOptions(argc, argv);
+  if (options.scenes.empty())
+    options.scenes = prism::bench::convergenceSceneNames();
+  std::printf("prism-bench-convergence: %u hardware threads\n",
+      std::thread::hardware_concurrency());
+  for (const std::string &scene : options.scenes)
+    measure(options, scene, argv[0]);
   return 0;
 }

@@ -1,11 +1,15 @@
-// A surface whose material emits a constant radiance, as a light: next-event
-// estimation picks a point uniformly over its area (triangles and spheres in
-// world space). Rays that hit the surface are weighted against this sampling
-// where they hit it (pdfOfHit()); radianceAlong() gives nothing, as finding
-// the surface along a ray is the tracer's job.
+// A surface whose material emits a constant radiance, as a light (triangles
+// and spheres in world space). Next-event estimation picks one primitive
+// with a light tree (by power, distance and orientation from the shading
+// point), then a point on it: uniformly in the solid angle a triangle
+// subtends when that is large (spherical triangles), uniformly by area when
+// it is small or far. Rays that hit the surface are weighted against this
+// sampling where they hit it (pdfOfHit()); radianceAlong() gives nothing, as
+// finding the surface along a ray is the tracer's job.
 #pragma once
 
 #include "../geometry/EmitterShape.h"
+#include "LightTree.h"
 #include "PlacedLight.h"
 
 #include <vector>
@@ -28,7 +32,7 @@ class EmissiveSurface final : public PlacedLight
   }
   size_t primitiveCount() const
   {
-    return m_cdf.size();
+    return m_primitiveArea.size();
   }
   // What it was made of (a data-parallel device sends it to the other
   // processes, which make the same light of it).
@@ -46,15 +50,30 @@ class EmissiveSurface final : public PlacedLight
       float &distance,
       float &pdf) const override;
   float3 power() const override;
-  // The density (per steradian at the shading point) with which sample()
-  // picks the point at `distance` along a ray whose cosine with the
-  // surface's normal there is `cosine`.
-  float pdfOfHit(float distance, float cosine) const;
+  // The density (per steradian at `origin`) with which sample() from
+  // `origin` picks the point at `distance` along `direction`, where the ray
+  // hit the surface's primitive `primitiveId` (of its geometry: a quad is
+  // two triangles) with cosine `cosine` to its normal.
+  float pdfOfHit(const float3 &origin,
+      const float3 &direction,
+      uint32_t primitiveId,
+      float distance,
+      float cosine) const;
 
  private:
+  // Of triangle `index` from `point`: its solid angle when sampled by solid
+  // angle, else 0 (sampled by area).
+  float sampledSolidAngle(const float3 &point, size_t index) const;
+  // The emitter of the shape (triangles then spheres) a hit on
+  // `primitiveId` at `position` found.
+  size_t emitterOfHit(const float3 &position, uint32_t primitiveId) const;
+  float pdfOfPoint(
+      const float3 &origin, size_t index, float distance, float cosine) const;
+
   EmitterShape m_shape;
   float3 m_radiance;
-  std::vector<float> m_cdf; // over triangles then spheres, by area
+  std::vector<float> m_primitiveArea; // triangles then spheres
+  light::LightTree m_tree;
   float m_area{0.f};
 };
 

@@ -289,8 +289,10 @@ float PathTracer::emissionWeight(const RenderContext &context,
   const auto &emitter =
       static_cast<const EmissiveSurface &>(*world.lights()[size_t(index)]);
   const float cosine = std::abs(dot(surface.geometricNormal, ray.direction));
-  const float lightPdf = emitter.pdfOfHit(hit.t, cosine)
-                         * world.lightSelector().probability(size_t(index));
+  const float lightPdf =
+      emitter.pdfOfHit(
+          ray.origin, ray.direction, hit.primitiveId, hit.t, cosine)
+      * world.lightSelector().probability(size_t(index));
   return powerHeuristic(1, path.previousPdf, 1, lightPdf);
 }
 

@@ -1,6 +1,6 @@
 // How next-event estimation chooses lights (by power, a tenth uniformly)
-// and samples emissive surfaces (uniformly by area, with the pdf that
-// weighs rays hitting them).
+// and samples emissive surfaces (with the pdf that weighs rays hitting
+// them).
 #include "light/EmissiveSurface.h"
 #include "light/LightSelector.h"
 
@@ -97,48 +97,54 @@ TEST(LightSelector, WithoutPowerEveryLightIsEquallyLikely)
   EXPECT_TRUE(none.empty());
 }
 
-TEST(EmissiveSurface, SamplesEveryPointOfItsAreaWithTheHitPdf)
+TEST(EmissiveSurface, SamplesLieOnTheSurfaceWithTheHitPdf)
 {
-  // A unit square (two triangles) at z = 1 and a sphere of radius 0.5:
-  // area 1 + pi. Every sample lies on one of them with pdf = d^2 / (cos A).
-  EmitterShape shape;
-  shape.triangles = {
+  // A unit square (two triangles) at z = 1, seen from close (sampled by
+  // solid angle) and from far (by area), and a sphere of radius 0.5. Every
+  // sample lies on the surface and pdfOfHit() of the ray that would find it
+  // is the sample's pdf.
+  EmitterShape square;
+  square.triangles = {
       {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-  shape.spheres = {{3, 0, 0, 0.5f}};
-  const EmissiveSurface light(shape, {2.f, 2.f, 2.f});
-  const float area = 1.f + 3.14159265f;
-  EXPECT_NEAR(light.power().x, 2.f * 2.f * 3.14159265f * area, 1e-3f);
-  const float3 point{0.5f, 0.5f, 0.f};
-  int onSquare = 0;
-  const int n = 64;
-  for (int i = 0; i < n; i++) {
-    for (int j = 0; j < n; j++) {
-      const float2 u{(i + 0.5f) / n, (j + 0.5f) / n};
-      const LightSample s = light.sample(point, u);
-      ASSERT_GT(s.pdf, 0.f);
-      EXPECT_EQ(s.radiance, (float3{2.f, 2.f, 2.f}));
-      const float3 p = point + s.direction * s.distance;
-      float3 normal;
-      if (std::abs(p.z - 1.f) < 1e-4f) {
-        onSquare++;
-        EXPECT_GE(p.x, -1e-5f);
-        EXPECT_LE(p.x, 1.f + 1e-5f);
-        normal = {0.f, 0.f, 1.f};
-      } else {
-        const float3 fromCenter = p - float3{3.f, 0.f, 0.f};
-        EXPECT_NEAR(length(fromCenter), 0.5f, 1e-4f);
-        normal = normalize(fromCenter);
-      }
-      const float cosine = std::abs(dot(normal, s.direction));
-      if (cosine < 0.05f)
-        continue; // grazing: p's rounding dominates the check's cosine
-      EXPECT_NEAR(
-          s.pdf, s.distance * s.distance / (cosine * area), 1e-3f * s.pdf);
-      EXPECT_NEAR(light.pdfOfHit(s.distance, cosine), s.pdf, 1e-3f * s.pdf);
-    }
-  }
-  // The square's share of samples is its share of the area.
-  EXPECT_NEAR(float(onSquare) / (n * n), 1.f / area, 0.01f);
+  EmitterShape sphere;
+  sphere.spheres = {{3, 0, 0, 0.5f}};
+  const EmissiveSurface squareLight(square, {2.f, 2.f, 2.f});
+  const EmissiveSurface sphereLight(sphere, {2.f, 2.f, 2.f});
+  EXPECT_NEAR(squareLight.power().x, 2.f * 2.f * 3.14159265f, 1e-4f);
+  EXPECT_NEAR(
+      sphereLight.power().x, 2.f * 2.f * 3.14159265f * 3.14159265f, 1e-3f);
+  const int n = 48;
+  for (const float3 point : {float3{0.5f, 0.5f, 0.f}, float3{9.f, 4.f, -7.f}})
+    for (const EmissiveSurface *light : {&squareLight, &sphereLight})
+      for (int i = 0; i < n; i++)
+        for (int j = 0; j < n; j++) {
+          const float2 u{(i + 0.5f) / n, (j + 0.5f) / n};
+          const LightSample s = light->sample(point, u);
+          ASSERT_GT(s.pdf, 0.f);
+          EXPECT_EQ(s.radiance, (float3{2.f, 2.f, 2.f}));
+          const float3 p = point + s.direction * s.distance;
+          float3 normal{0.f, 0.f, 1.f};
+          uint32_t primitive = 0;
+          if (light == &squareLight) {
+            EXPECT_NEAR(p.z, 1.f, 1e-4f);
+            EXPECT_GE(p.x, -1e-4f);
+            EXPECT_LE(p.x, 1.f + 1e-4f);
+            EXPECT_GE(p.y, -1e-4f);
+            EXPECT_LE(p.y, 1.f + 1e-4f);
+            primitive = p.x >= p.y ? 0 : 1;
+          } else {
+            const float3 fromCenter = p - float3{3.f, 0.f, 0.f};
+            EXPECT_NEAR(length(fromCenter), 0.5f, 1e-4f);
+            normal = normalize(fromCenter);
+          }
+          const float cosine = std::abs(dot(normal, s.direction));
+          if (cosine < 0.05f)
+            continue; // grazing: p's rounding dominates the check's cosine
+          EXPECT_NEAR(light->pdfOfHit(
+                          point, s.direction, primitive, s.distance, cosine),
+              s.pdf,
+              2e-3f * s.pdf);
+        }
 }
 
 TEST(EmissiveSurface, WithoutAreaItIsEmptyAndSamplesNothing)
@@ -148,7 +154,7 @@ TEST(EmissiveSurface, WithoutAreaItIsEmptyAndSamplesNothing)
   const EmissiveSurface light(degenerate, {1.f, 1.f, 1.f});
   EXPECT_TRUE(light.isEmpty());
   EXPECT_EQ(light.sample({0, 0, 1}, {0.5f, 0.5f}).pdf, 0.f);
-  EXPECT_EQ(light.pdfOfHit(1.f, 1.f), 0.f);
+  EXPECT_EQ(light.pdfOfHit({0, 0, 1}, {0, 0, -1}, 0, 1.f, 1.f), 0.f);
 }
 
 } // namespace
