@@ -77,11 +77,13 @@ Scene buildCornellBox(ANARIDevice device)
   uint32_t id = 0;
   for (const Part &part : parts) {
     ANARIGeometry geometry = newTriangleGeometry(device, *part.mesh);
-    ANARISurface surface = anariNewSurface(device);
-    setObject(device, surface, "geometry", ANARI_GEOMETRY, geometry);
-    setObject(device, surface, "material", ANARI_MATERIAL, part.material);
-    anariSetParameter(device, surface, "id", ANARI_UINT32, &id);
-    anariCommitParameters(device, surface);
+    ANARISurface surface = newListedSurface(device,
+        scene.surfaces,
+        geometry,
+        "triangle",
+        part.material,
+        part.material == panelMaterial ? "physicallyBased" : "matte",
+        id);
     anariRelease(device, geometry);
     surfaces.push_back(surface);
     id++;

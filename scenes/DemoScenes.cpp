@@ -61,6 +61,7 @@ ANARILight newLightIfSupported(ANARIDevice device,
   }
   ANARILight light = anariNewLight(device, subtype);
   lights.push_back(light);
+  listLight(scene, light, subtype);
   return light;
 }
 

@@ -591,6 +591,8 @@ Scene buildFurnishedRoom(ANARIDevice device)
   for (const RoomPart &part : room.parts) {
     const PartMaterial &look = part.material;
     ANARIMaterial material = nullptr;
+    const char *materialSubtype =
+        look.kind == PartMaterial::Kind::Matte ? "matte" : "physicallyBased";
     if (look.kind == PartMaterial::Kind::Matte) {
       material = newMatte(device, look.color);
     } else {
@@ -612,11 +614,13 @@ Scene buildFurnishedRoom(ANARIDevice device)
       anariCommitParameters(device, material);
     }
     ANARIGeometry geometry = newTriangleGeometry(device, part.mesh);
-    ANARISurface surface = anariNewSurface(device);
-    setObject(device, surface, "geometry", ANARI_GEOMETRY, geometry);
-    setObject(device, surface, "material", ANARI_MATERIAL, material);
-    anariSetParameter(device, surface, "id", ANARI_UINT32, &id);
-    anariCommitParameters(device, surface);
+    ANARISurface surface = newListedSurface(device,
+        scene.surfaces,
+        geometry,
+        "triangle",
+        material,
+        materialSubtype,
+        id);
     anariRelease(device, geometry);
     anariRelease(device, material);
     surfaces.push_back(surface);

@@ -5,6 +5,7 @@
 #include <anari/anari.h>
 
 #include <array>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
@@ -41,6 +42,27 @@ struct Bounds
   void extend(const Bounds &other);
 };
 
+// One surface of the scene as the viewer's panels need it: its handles
+// (each retained by the scene, released by releaseScene), the subtypes their
+// parameters are introspected by, and the `id` the objectId channel reports
+// for it.
+struct SceneSurface
+{
+  ANARISurface surface{nullptr};
+  ANARIGeometry geometry{nullptr};
+  std::string geometrySubtype;
+  ANARIMaterial material{nullptr};
+  std::string materialSubtype;
+  uint32_t id{~0u};
+};
+
+// The subtype of one of the scene's `lights`.
+struct SceneLight
+{
+  ANARILight light{nullptr};
+  std::string subtype;
+};
+
 struct Scene
 {
   // Committed; the caller owns this reference and releases it (with the
@@ -68,12 +90,33 @@ struct Scene
   // demo's lamps), one reference each owned like `world`, so a tool can add
   // an environment to them (scene_io::addWorldLight).
   std::vector<ANARILight> lights;
+  // What the builder made the world of (listSurface, listLight); the
+  // surfaces inside instances are listed too, once each.
+  std::vector<SceneSurface> surfaces;
+  std::vector<SceneLight> lightSubtypes;
   // What the builder had to leave out on this device (e.g. lights), in
   // lower case without trailing period, for the application to report.
   std::vector<std::string> notes;
 };
 
-// Releases the scene's references (world and lights) and clears them.
+// Makes and commits a surface of `geometry` and `material` with user id
+// `id`, and lists it in `surfaces` (retaining the three handles); the caller
+// releases its own references as before. Every builder makes its surfaces
+// through this, so the list is complete.
+ANARISurface newListedSurface(ANARIDevice device,
+    std::vector<SceneSurface> &surfaces,
+    ANARIGeometry geometry,
+    const std::string &geometrySubtype,
+    ANARIMaterial material,
+    const std::string &materialSubtype,
+    uint32_t id);
+// Records the subtype of `light`, one of the scene's lights.
+void listLight(Scene &scene, ANARILight light, const std::string &subtype);
+// The listed subtype of `light`; empty when not listed.
+std::string lightSubtype(const Scene &scene, ANARILight light);
+
+// Releases the scene's references (world, lights, listed surfaces) and
+// clears them.
 void releaseScene(ANARIDevice device, Scene &scene);
 
 } // namespace prism::scenes

@@ -2536,16 +2536,14 @@ bool GltfImporter::buildPrimitive(int key,
   setTangents(d, gm, geometry);
   anariCommitParameters(m_device, geometry);
 
-  ANARISurface surface = anariNewSurface(m_device);
-  scenes::setObject(m_device, surface, "geometry", ANARI_GEOMETRY, geometry);
-  scenes::setObject(m_device,
-      surface,
-      "material",
-      ANARI_MATERIAL,
-      material(gm ? materialIndex : -1, vertexColors));
-  const uint32_t id = m_surfaceIds++;
-  anariSetParameter(m_device, surface, "id", ANARI_UINT32, &id);
-  anariCommitParameters(m_device, surface);
+  // Every material the importer makes is physicallyBased (material()).
+  ANARISurface surface = scenes::newListedSurface(m_device,
+      m_result.scene.surfaces,
+      geometry,
+      d.subtype,
+      material(gm ? materialIndex : -1, vertexColors),
+      "physicallyBased",
+      m_surfaceIds++);
   anariRelease(m_device, geometry);
   surfaces.push_back(surface);
   return true;
@@ -2715,6 +2713,7 @@ void GltfImporter::placeLights(std::vector<ANARIObject> &lights)
     }
     const Mat4 m = toFloat(placement.worldFromObject);
     ANARILight l = anariNewLight(m_device, subtype.c_str());
+    scenes::listLight(m_result.scene, l, subtype);
     Vec3 color{1.f, 1.f, 1.f};
     if (light.color.size() == 3)
       color = {

@@ -205,11 +205,13 @@ LoadResult ObjImporter::load()
 
     ANARIMaterial material =
         newMaterial(key > 0 ? &m_materials[size_t(key - 1)] : nullptr);
-    ANARISurface surface = anariNewSurface(m_device);
-    scenes::setObject(m_device, surface, "geometry", ANARI_GEOMETRY, geometry);
-    scenes::setObject(m_device, surface, "material", ANARI_MATERIAL, material);
-    anariSetParameter(m_device, surface, "id", ANARI_UINT32, &id);
-    anariCommitParameters(m_device, surface);
+    ANARISurface surface = scenes::newListedSurface(m_device,
+        scene.surfaces,
+        geometry,
+        "triangle",
+        material,
+        "physicallyBased",
+        id);
     anariRelease(m_device, geometry);
     anariRelease(m_device, material);
     surfaces.push_back(surface);
