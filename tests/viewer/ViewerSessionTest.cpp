@@ -6,7 +6,11 @@
 
 #include <gtest/gtest.h>
 
+#include "ImageIO.h"
+
+#include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <thread>
 
 namespace prism::viewer {
@@ -27,10 +31,15 @@ class ViewerSessionTest : public ::testing::Test
  protected:
   void SetUp() override
   {
-    m_options.renderer = "default";
+    open("default", 64, 48);
+  }
+
+  void open(const std::string &renderer, uint32_t width, uint32_t height)
+  {
+    m_options.renderer = renderer;
     m_session = std::make_unique<ViewerSession>(m_options);
     ASSERT_EQ(m_session->open(), "");
-    m_session->setViewport(64, 48, 1.f);
+    m_session->setViewport(width, height, 1.f);
   }
 
   ViewerOptions m_options;
@@ -134,6 +143,108 @@ TEST_F(ViewerSessionTest, FramesRefineAndPickingFindsTheBoxes)
   m_session->cameraChanged();
   EXPECT_EQ(pipeline.status().samples, 0u);
   pollUntil(*m_session, [&] { return pipeline.status().samples >= 1; });
+}
+
+// demo:cornell-box under the raycast renderer (one ray through each pixel
+// centre, color = baseColor * eye-light cosine term: linear in the color,
+// the same on every run) at 320x240, where pixel (70, 120) shows the red
+// wall (surface id 1, a matte 0.65 0.05 0.05).
+class PickedSurfaceTest : public ViewerSessionTest
+{
+ protected:
+  void SetUp() override
+  {
+    open("raycast", 320, 240);
+    ASSERT_EQ(m_session->loadScene("demo:cornell-box"), "");
+  }
+
+  LinearColorImage render()
+  {
+    FramePipeline &pipeline = m_session->pipeline();
+    pollUntil(*m_session, [&] { return pipeline.status().samples >= 1; });
+    pipeline.finish();
+    return pipeline.linearColor();
+  }
+};
+
+TEST_F(PickedSurfaceTest, TheSceneListsItsSurfacesAndLights)
+{
+  render();
+  ASSERT_TRUE(m_session->pick(70, 120));
+  const std::optional<SelectedSurface> &surface = m_session->selectedSurface();
+  ASSERT_TRUE(surface);
+  EXPECT_EQ(surface->label, "surface 1: triangle geometry, matte material");
+  const ParameterWidget *color = surface->material.find("color");
+  ASSERT_NE(color, nullptr);
+  EXPECT_EQ(color->kind, WidgetKind::Color);
+  EXPECT_NE(surface->geometry.find("vertex.position"), nullptr);
+  // The box's quad light, with its own panel (the raycast renderer gets no
+  // environment).
+  ASSERT_EQ(m_session->lights().size(), 1u);
+  EXPECT_EQ(m_session->lights()[0].label, "light 0 (quad)");
+  EXPECT_NE(m_session->lights()[0].parameters.find("edge1"), nullptr);
+  // Nothing picked: no surface to edit.
+  m_session->pick(1, 1);
+  EXPECT_FALSE(m_session->selectedSurface());
+  EXPECT_NE(
+      m_session->setParameter("material", 0, "color", {"1", "0", "0"}), "");
+}
+
+TEST_F(PickedSurfaceTest, EditingTheMaterialRecolorsThatSurfaceOnly)
+{
+  const LinearColorImage before = render();
+  ASSERT_TRUE(m_session->pick(70, 120));
+  ASSERT_EQ(m_session->selection()->objectId, 1u);
+  const std::vector<bool> wall =
+      pickedMask(m_session->pipeline().ids(), *m_session->selection());
+  // Red and blue swapped: each wall pixel's red and blue swap, as the
+  // color is linear in the base color; every other pixel stays.
+  ASSERT_EQ(
+      m_session->setParameter("material", 0, "color", {"0.05", "0.05", "0.65"}),
+      "");
+  EXPECT_EQ(m_session->pipeline().status().samples, 0u);
+  const LinearColorImage after = render();
+  ASSERT_EQ(after.pixels.size(), before.pixels.size());
+  ASSERT_EQ(wall.size() * 4, before.pixels.size());
+  size_t wallPixels = 0, others = 0, othersSame = 0;
+  for (size_t i = 0; i < wall.size(); ++i) {
+    const float *b = &before.pixels[4 * i], *a = &after.pixels[4 * i];
+    if (wall[i]) {
+      ++wallPixels;
+      EXPECT_GT(b[0], 2.f * b[2]) << i;
+      EXPECT_NEAR(a[0], b[2], 1e-5f + 1e-5f * b[2]) << i;
+      EXPECT_NEAR(a[1], b[1], 1e-5f + 1e-5f * b[1]) << i;
+      EXPECT_NEAR(a[2], b[0], 1e-5f + 1e-5f * b[0]) << i;
+    } else {
+      ++others;
+      othersSame += std::equal(a, a + 4, b);
+    }
+  }
+  EXPECT_GT(wallPixels, 320u * 240u / 20);
+  EXPECT_EQ(othersSame, others);
+}
+
+TEST_F(PickedSurfaceTest, ExrScreenshotsKeepTheLinearFloats)
+{
+  // A background of 4 2 0.5 shows in the corners: above what 8 bits hold.
+  ASSERT_EQ(m_session->setParameter(
+                "renderer", 0, "background", {"4", "2", "0.5", "1"}),
+      "");
+  const LinearColorImage shown = render();
+  const std::string path = ::testing::TempDir() + "viewer-hdr.exr";
+  ASSERT_EQ(m_session->screenshot(path), "");
+  const image::ReadResult read = image::read(path);
+  ASSERT_TRUE(read.ok()) << read.error;
+  ASSERT_EQ(read.image.width, 320u);
+  ASSERT_EQ(read.image.height, 240u);
+  for (size_t i = 0; i < read.image.pixels.size(); ++i)
+    for (int c = 0; c < 4; ++c)
+      ASSERT_EQ(read.image.pixels[i][c], shown.pixels[4 * i + c]) << i;
+  const image::Rgba &corner = read.image.pixels[0];
+  EXPECT_EQ(corner[0], 4.f);
+  EXPECT_EQ(corner[1], 2.f);
+  EXPECT_EQ(corner[2], 0.5f);
+  std::remove(path.c_str());
 }
 
 TEST_F(ViewerSessionTest, TheSampleLimitStopsRefinement)

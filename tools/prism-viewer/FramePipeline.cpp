@@ -10,7 +10,9 @@ ANARIDataType mappedType(Channel channel)
 {
   switch (channel) {
   case Channel::Color:
-    return ANARI_UFIXED8_RGBA_SRGB;
+    // Linear floats, so an EXR screenshot keeps what 8 bits would clip;
+    // the window shows them sRGB-encoded (ChannelView).
+    return ANARI_FLOAT32_VEC4;
   case Channel::Depth:
     return ANARI_FLOAT32;
   case Channel::Normal:
@@ -196,6 +198,13 @@ void FramePipeline::copyImage()
   const void *pixels =
       anariMapFrame(m_device, m_frame, name.c_str(), &w, &h, &type);
   Rgba8Image image = channelToRgba8(m_channel, pixels, type, w, h);
+  m_linearColor = {};
+  if (pixels && m_channel == Channel::Color && type == ANARI_FLOAT32_VEC4) {
+    m_linearColor.width = w;
+    m_linearColor.height = h;
+    m_linearColor.pixels.assign(
+        (const float *)pixels, (const float *)pixels + 4 * size_t(w) * h);
+  }
   if (pixels)
     anariUnmapFrame(m_device, m_frame, name.c_str());
   // A channel the device does not give shows (and saves) nothing rather

@@ -14,8 +14,18 @@
 #include <anari/anari.h>
 
 #include <cstdint>
+#include <vector>
 
 namespace prism::viewer {
+
+// The color channel as the device gave it (linear RGBA floats, row 0 at the
+// bottom); empty when the image shows another channel or the device maps
+// color otherwise.
+struct LinearColorImage
+{
+  uint32_t width{0}, height{0};
+  std::vector<float> pixels; // 4 floats a pixel
+};
 
 struct FrameStatus
 {
@@ -80,6 +90,10 @@ class FramePipeline
   {
     return m_image;
   }
+  const LinearColorImage &linearColor() const
+  {
+    return m_linearColor;
+  }
   // The channel image() shows (it follows setChannel with the next frame).
   Channel imageChannel() const
   {
@@ -123,6 +137,7 @@ class FramePipeline
   bool m_stale{true};     // the frame in flight predates a change
   bool m_idsWanted{true}; // the next finished frame's ids are read
   Rgba8Image m_image;
+  LinearColorImage m_linearColor;
   FrameIds m_ids;
   FrameStatus m_status;
 };

@@ -244,6 +244,20 @@ void drawSelection(ViewerSession &session)
       id(pick->objectId),
       id(pick->instanceId),
       id(pick->primitiveId));
+  std::optional<SelectedSurface> &surface = session.selectedSurface();
+  if (!surface) {
+    ImGui::TextDisabled("the scene does not list this surface");
+    return;
+  }
+  ImGui::TextUnformatted(surface->label.c_str());
+  if (ImGui::TreeNodeEx("Material", openFlags())) {
+    drawParameterSet(session, surface->material);
+    ImGui::TreePop();
+  }
+  if (ImGui::TreeNodeEx("Geometry", openFlags())) {
+    drawParameterSet(session, surface->geometry);
+    ImGui::TreePop();
+  }
 }
 
 void drawStatusBar(ViewerSession &session)

@@ -39,11 +39,22 @@ std::string parseArguments(const std::vector<std::string> &w, ScriptCommand &c)
       return "orbit takes one angle in degrees";
   } else if (verb == "set") {
     c.action = ScriptAction::Set;
+    c.target = n > 0 ? w[1] : std::string();
+    if (c.target == "material" || c.target == "geometry") {
+      // The picked surface's: there is one of each.
+      if (n < 3)
+        return "set " + c.target + " takes PARAM VALUE...";
+      c.parameter = w[2];
+      c.values.assign(w.begin() + 3, w.end());
+      return {};
+    }
     if (n < 4)
-      return "set takes renderer|camera|light N PARAM VALUE...";
-    c.target = w[1];
+      return "set takes renderer|camera|light N PARAM VALUE... or "
+             "material|geometry PARAM VALUE...";
     if (c.target != "renderer" && c.target != "camera" && c.target != "light")
-      return "set applies to renderer, camera or light, not '" + c.target + "'";
+      return "set applies to renderer, camera, light, material or geometry, "
+             "not '"
+             + c.target + "'";
     if (!number(w[2], c.index) || c.index < 0)
       return "'" + w[2] + "' is not an index";
     c.parameter = w[3];

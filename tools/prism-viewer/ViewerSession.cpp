@@ -6,6 +6,7 @@
 #include "Objects.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -27,6 +28,16 @@ constexpr float kRadians = std::numbers::pi_v<float> / 180.f;
 bool ignoresLights(const std::string &renderer)
 {
   return renderer == "raycast" || renderer == "ao" || renderer == "debug";
+}
+
+bool isExrPath(const std::string &path)
+{
+  if (path.size() < 4)
+    return false;
+  std::string extension = path.substr(path.size() - 4);
+  for (char &c : extension)
+    c = char(std::tolower((unsigned char)c));
+  return extension == ".exr";
 }
 
 bool oneFloat(const std::vector<std::string> &words, float &value)
@@ -168,6 +179,7 @@ void ViewerSession::releaseScene()
   m_lights.clear();
   m_environment = nullptr;
   m_selection.reset();
+  m_selectedSurface.reset();
   if (m_scene.world)
     scenes::releaseScene(m_session.device(), m_scene);
   m_scene = {};
@@ -279,15 +291,40 @@ void ViewerSession::lightScene()
   describeLights();
 }
 
-// Scenes hand over their lights without subtypes, so the panels list the
-// environment the viewer added, whose subtype it knows.
+// The environment the viewer added first (light 0 when there is one), then
+// the scene's own lights whose subtypes the scene lists.
 void ViewerSession::describeLights()
 {
   m_lights.clear();
   if (m_environment)
     m_lights.push_back({"environment (hdri)",
         ParameterSet(device(), m_environment, ANARI_LIGHT, "hdri")});
+  for (ANARILight light : m_scene.lights) {
+    const std::string subtype = scenes::lightSubtype(m_scene, light);
+    if (light == m_environment || subtype.empty())
+      continue;
+    m_lights.push_back(
+        {"light " + std::to_string(m_lights.size()) + " (" + subtype + ")",
+            ParameterSet(device(), light, ANARI_LIGHT, subtype)});
+  }
   observeParameters();
+}
+
+void ViewerSession::selectSurface()
+{
+  m_selectedSurface.reset();
+  if (!m_selection || m_selection->objectId == kNoId)
+    return;
+  for (const scenes::SceneSurface &s : m_scene.surfaces) {
+    if (s.id != m_selection->objectId)
+      continue;
+    m_selectedSurface = SelectedSurface{"surface " + std::to_string(s.id) + ": "
+                                            + s.geometrySubtype + " geometry, "
+                                            + s.materialSubtype + " material",
+        ParameterSet(device(), s.material, ANARI_MATERIAL, s.materialSubtype),
+        ParameterSet(device(), s.geometry, ANARI_GEOMETRY, s.geometrySubtype)};
+    return;
+  }
 }
 
 scenes::Bounds ViewerSession::worldBounds() const
@@ -386,6 +423,15 @@ std::string ViewerSession::setParameter(const std::string &target,
       return "there is one " + target + " (index 0), not "
              + std::to_string(index);
     set = target == "renderer" ? &m_rendererParameters : &m_cameraParameters;
+  } else if (target == "material" || target == "geometry") {
+    if (m_mirror)
+      return "the picked surface's " + target
+             + " is not shared with the other MPI processes yet";
+    if (!m_selectedSurface)
+      return "pick a surface the scene lists first (nothing picked, or the "
+             "scene does not list the picked surface)";
+    set = target == "material" ? &m_selectedSurface->material
+                               : &m_selectedSurface->geometry;
   } else if (target == "light") {
     if (index < 0 || size_t(index) >= m_lights.size())
       return "there is no light " + std::to_string(index) + " ("
@@ -393,7 +439,7 @@ std::string ViewerSession::setParameter(const std::string &target,
              + (m_lights.size() == 1 ? "" : "s") + " with known subtypes)";
     set = &m_lights[index].parameters;
   } else {
-    return "set applies to renderer, camera or light";
+    return "set applies to renderer, camera, light, material or geometry";
   }
   if (target == "camera" && isPoseParameter(name)) {
     // The pose owns these: it would overwrite them on the next move.
@@ -433,6 +479,7 @@ std::optional<Pick> ViewerSession::pick(int x, int y)
   std::optional<Pick> picked =
       pickAt(m_pipeline->ids(), x, y, m_width, m_height);
   m_selection = picked && picked->hit ? picked : std::nullopt;
+  selectSurface();
   return picked;
 }
 
@@ -467,11 +514,20 @@ std::string ViewerSession::screenshot(const std::string &path) const
     return std::string("the device gives no ")
            + channelName(m_pipeline->imageChannel()) + " channel to save";
   image::Image out(shown.width, shown.height);
-  for (size_t i = 0; i < out.pixels.size(); ++i)
-    for (int c = 0; c < 4; ++c) {
-      const float v = shown.pixels[4 * i + c] / 255.f;
-      out.pixels[i][c] = c == 3 ? v : image::linearFromSrgb(v);
-    }
+  const LinearColorImage &linear = m_pipeline->linearColor();
+  if (isExrPath(path) && linear.width == shown.width
+      && linear.height == shown.height && !linear.pixels.empty()) {
+    // HDR: the device's floats as they are, values above 1 included.
+    for (size_t i = 0; i < out.pixels.size(); ++i)
+      for (int c = 0; c < 4; ++c)
+        out.pixels[i][c] = linear.pixels[4 * i + c];
+  } else {
+    for (size_t i = 0; i < out.pixels.size(); ++i)
+      for (int c = 0; c < 4; ++c) {
+        const float v = shown.pixels[4 * i + c] / 255.f;
+        out.pixels[i][c] = c == 3 ? v : image::linearFromSrgb(v);
+      }
+  }
   const image::Status written = image::write(path, out);
   return written.ok() ? std::string() : written.error;
 }

@@ -28,6 +28,14 @@ struct ViewerLight
   ParameterSet parameters;
 };
 
+// The picked surface's material and geometry, as the scene lists them.
+struct SelectedSurface
+{
+  std::string label; // "surface 3: triangle geometry, matte material"
+  ParameterSet material;
+  ParameterSet geometry;
+};
+
 class ViewerSession
 {
  public:
@@ -90,8 +98,16 @@ class ViewerSession
   {
     return m_lights;
   }
-  // `set renderer|camera|light N PARAM VALUE...`: through the panels' sets;
-  // the error names the problem.
+  // The picked surface's parameter sets; nothing when nothing is picked or
+  // the scene does not list the picked surface (NSI streams, surfaces
+  // without an id).
+  std::optional<SelectedSurface> &selectedSurface()
+  {
+    return m_selectedSurface;
+  }
+  // `set renderer|camera|light N PARAM VALUE...` and `set material|geometry
+  // 0 PARAM VALUE...` (the picked surface's): through the panels' sets; the
+  // error names the problem.
   std::string setParameter(const std::string &target,
       int index,
       const std::string &name,
@@ -143,6 +159,7 @@ class ViewerSession
   void releaseScene();
   void lightScene();
   void describeLights();
+  void selectSurface();
   scenes::Bounds worldBounds() const;
   // Sends `line` when not inside another mirrored change; the scope ends
   // the change.
@@ -190,6 +207,7 @@ class ViewerSession
   std::vector<ViewerLight> m_lights;
   ANARILight m_environment{nullptr}; // the one the viewer added, if any
   std::optional<Pick> m_selection;
+  std::optional<SelectedSurface> m_selectedSurface;
   uint32_t m_width{0}, m_height{0};
   float m_scale{1.f};
   std::function<void(const std::string &)> m_mirror;
