@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Runs prism-viewer under Xvfb on a script and checks what it did.
 
-usage: check_viewer_run.py script|errors|library|panels|mpi VIEWER XVFB_RUN
+usage: check_viewer_run.py script|errors|library|panels|material|mpi VIEWER
+                          XVFB_RUN
                           WORKDIR [MPIEXEC]
 
 `script`: demo:cornell-box at 320x240 (its surfaces' ids: 0 white walls,
@@ -30,6 +31,7 @@ message (one "prism-viewer: error:" line naming the problem) and a
 non-zero status.
 `library`: the viewer on another ANARI library (library_test says which).
 `panels`: every panel section drawn (panels_test says how it is checked).
+`material`: the picked surface's material edited (material_test says how).
 `mpi`: rank 0's window followed by another process (mpi_test says how).
 """
 import os
@@ -275,6 +277,53 @@ def panels_test(viewer, xvfb, work):
           "image %s" % (outside,))
 
 
+def material_test(viewer, xvfb, work):
+    """The picked surface's material edited through the panels' code:
+    demo:cornell-box under the raycast renderer (one ray through each
+    pixel centre, color = baseColor times an eye-light term: linear in the
+    base color, the same on every run; one sample, as later ones move
+    within the pixel) with every panel open. The script
+    picks the red wall (id 1, matte 0.65 0.05 0.05) and sets its color to
+    0.05 0.05 0.65. Checks: on the wall's pixels (where the objectId
+    screenshot shows idColor(1)) the new image is the old one with red and
+    blue swapped (within 1 of 255, sRGB rounding); every other pixel is
+    unchanged; the wall covers at least 5 % of the image."""
+    lines = ["wait-samples 1", "channel objectId", "screenshot ids.png",
+             "channel color", "screenshot before.png", "pick 70 120",
+             "set material color 0.05 0.05 0.65", "wait-samples 1",
+             "screenshot after.png", "window-screenshot window.png", "quit"]
+    script = os.path.join(work, "material.txt")
+    with open(script, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    result = run([xvfb, "-a", "-s", "-screen 0 640x480x24", viewer,
+                  "demo:cornell-box", "--renderer", "raycast", "--spp-limit",
+                  "1", "--panels", "open", "--size", "%dx%d" % (WIDTH, HEIGHT), "--script",
+                  script], work)
+    check(result.returncode == 0, "the script ends with status 0")
+    check("objectId 1 " in result.stdout, "the pick finds the red wall")
+    paths = [os.path.join(work, n + ".png") for n in ["ids", "before",
+                                                       "after"]]
+    if not all(os.path.exists(p) for p in paths):
+        check(False, "the screenshots were written")
+        return
+    ids, before, after = [Image.open(p).convert("RGB") for p in paths]
+    wall = id_color(1)
+    on_wall = swapped = others = same = 0
+    for i, b, a in zip(ids.getdata(), before.getdata(), after.getdata()):
+        if i == wall:
+            on_wall += 1
+            swapped += all(abs(a[c] - b[2 - c]) <= 1 for c in range(3))
+        else:
+            others += 1
+            same += a == b
+    check(on_wall >= 0.05 * WIDTH * HEIGHT, "the wall covers %d pixels"
+          % on_wall)
+    check(swapped == on_wall, "the wall's red and blue swapped (%d of %d "
+          "pixels)" % (swapped, on_wall))
+    check(same == others, "the other pixels are unchanged (%d of %d)"
+          % (same, others))
+
+
 def mpi_test(viewer, xvfb, work):
     """Two processes under mpirun with prism_mpi: rank 0 shows the window
     and the other follows its changes (orbit, a renderer parameter) and
@@ -324,7 +373,7 @@ def main():
     os.makedirs(work, exist_ok=True)
     tests = {"script": script_test, "errors": errors_test,
              "library": library_test, "panels": panels_test,
-             "mpi": mpi_test}
+             "mpi": mpi_test, "material": material_test}
     tests[what](viewer, xvfb, work)
     if failures:
         print("%d check(s) failed" % len(failures))
