@@ -62,7 +62,7 @@ std::string lightSubtype(const Scene &scene, ANARILight light)
   return {};
 }
 
-void releaseScene(ANARIDevice device, Scene &scene)
+void releaseListedSurfaces(ANARIDevice device, Scene &scene)
 {
   for (const SceneSurface &listed : scene.surfaces)
     for (ANARIObject held : {(ANARIObject)listed.surface,
@@ -71,6 +71,11 @@ void releaseScene(ANARIDevice device, Scene &scene)
       if (held)
         anariRelease(device, held);
   scene.surfaces.clear();
+}
+
+void releaseScene(ANARIDevice device, Scene &scene)
+{
+  releaseListedSurfaces(device, scene);
   scene.lightSubtypes.clear();
   for (ANARILight light : scene.lights)
     anariRelease(device, light);

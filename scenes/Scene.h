@@ -115,6 +115,10 @@ void listLight(Scene &scene, ANARILight light, const std::string &subtype);
 // The listed subtype of `light`; empty when not listed.
 std::string lightSubtype(const Scene &scene, ANARILight light);
 
+// Releases the references of the listed surfaces and clears the list (for
+// tools that keep the world but have no use for the list).
+void releaseListedSurfaces(ANARIDevice device, Scene &scene);
+
 // Releases the scene's references (world, lights, listed surfaces) and
 // clears them.
 void releaseScene(ANARIDevice device, Scene &scene);

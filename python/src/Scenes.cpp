@@ -64,8 +64,9 @@ Loaded load(ANARIDevice device, const std::string &path, const LoadRequest &r)
   }
   out.view = scene_io::frameCamera(
       out.scene.camera, out.scene.bounds, r.aspect, {}, out.scene.outline);
-  // The world holds its lights; Python keeps the world alone.
+  // The world holds its lights and surfaces; Python keeps the world alone.
   out.world = out.scene.world;
+  scenes::releaseListedSurfaces(device, out.scene);
   for (ANARILight light : out.scene.lights)
     anariRelease(device, light);
   out.scene.lights.clear();

@@ -224,6 +224,7 @@ int RenderRun::loadScene()
   scene_io::LoadResult loaded =
       scene_io::loadScene(device, m_source, loadOptions(m_options));
   m_scene = loaded.scene;
+  scenes::releaseListedSurfaces(device, m_scene); // the viewer's, not needed
   m_session.keep(m_scene.world);
   if (interrupted())
     return fail("interrupted (Ctrl-C); no image written", kExitInterrupted);
