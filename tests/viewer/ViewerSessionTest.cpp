@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <thread>
 
@@ -352,6 +353,35 @@ TEST_F(ViewerSessionTest, TheFileCamerasAreViewedThrough)
   EXPECT_NE(error.find("the file has 1 camera"), std::string::npos) << error;
   EXPECT_EQ(m_session->fileCamera(), 0);
   EXPECT_EQ(m_session->sceneName(), file);
+}
+
+// mirrored-quads.gltf's orthographic camera at z = 3 over [-1, 1]^2 looks
+// at quads at z = 0 and z = 0.5 facing it: every ray is parallel, so the
+// depth of each quad is the same in all its pixels (in perspective it
+// would grow towards the edges), 3 or 2.5.
+TEST_F(ViewerSessionTest, OrthographicFileCamerasAreOrthographic)
+{
+  ASSERT_EQ(m_session->loadScene(
+                std::string(PRISM_VIEWER_TEST_DATA) + "/mirrored-quads.gltf"),
+      "");
+  EXPECT_EQ(m_session->cameraParameters().subtype(), "orthographic");
+  EXPECT_TRUE(m_session->camera().pose().orthographic);
+  EXPECT_FLOAT_EQ(m_session->camera().pose().height, 2.f);
+  FramePipeline &pipeline = m_session->pipeline();
+  pollUntil(*m_session, [&] { return pipeline.status().samples >= 1; });
+  pipeline.finish();
+  size_t hits = 0, onAQuad = 0;
+  for (float depth : pipeline.ids().depth) {
+    if (!std::isfinite(depth))
+      continue;
+    ++hits;
+    onAQuad += std::abs(depth - 3.f) < 1e-4f || std::abs(depth - 2.5f) < 1e-4f;
+  }
+  EXPECT_GT(hits, 64u * 48u / 4);
+  EXPECT_EQ(onAQuad, hits);
+  // Back to a perspective scene: a perspective camera again.
+  ASSERT_EQ(m_session->loadScene("demo:cornell-box"), "");
+  EXPECT_EQ(m_session->cameraParameters().subtype(), "perspective");
 }
 
 // The MPI mirror without MPI: what one session sends, another makes.

@@ -140,18 +140,24 @@ void drawFileCamera(ViewerSession &session, PanelState &state)
 void drawCameraControls(ViewerSession &session, PanelState &state)
 {
   OrbitCamera &camera = session.camera();
-  float fovy = camera.pose().fovyDegrees;
-  bool changed = ImGui::SliderFloat("fov (degrees)", &fovy, 5.f, 120.f);
-  if (changed)
-    camera.setFovy(fovy);
-  float aperture = camera.pose().apertureRadius;
-  const float scale = std::max(camera.distance(), 1e-6f);
-  if (ImGui::SliderFloat("aperture", &aperture, 0.f, 0.05f * scale)) {
-    camera.setAperture(aperture);
-    changed = true;
+  bool changed = false;
+  if (camera.pose().orthographic) {
+    // The file's orthographic camera: zooming scales its view height.
+    ImGui::Text("orthographic, view height %.3g", camera.pose().height);
+  } else {
+    float fovy = camera.pose().fovyDegrees;
+    changed = ImGui::SliderFloat("fov (degrees)", &fovy, 5.f, 120.f);
+    if (changed)
+      camera.setFovy(fovy);
+    float aperture = camera.pose().apertureRadius;
+    const float scale = std::max(camera.distance(), 1e-6f);
+    if (ImGui::SliderFloat("aperture", &aperture, 0.f, 0.05f * scale)) {
+      camera.setAperture(aperture);
+      changed = true;
+    }
+    ImGui::Text("focus distance %.3g (double-click to focus)",
+        camera.pose().focusDistance);
   }
-  ImGui::Text("focus distance %.3g (double-click to focus)",
-      camera.pose().focusDistance);
   if (ImGui::Button("Frame the scene (F)"))
     session.frameScene();
   else if (changed)

@@ -46,7 +46,8 @@ std::string poseLine(const CameraPose &pose)
   char text[512];
   std::snprintf(text,
       sizeof(text),
-      "pose %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g",
+      "pose %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %d "
+      "%.9g",
       pose.eye[0],
       pose.eye[1],
       pose.eye[2],
@@ -58,7 +59,9 @@ std::string poseLine(const CameraPose &pose)
       pose.up[2],
       pose.fovyDegrees,
       pose.apertureRadius,
-      pose.focusDistance);
+      pose.focusDistance,
+      pose.orthographic ? 1 : 0,
+      pose.height);
   return text;
 }
 
@@ -116,6 +119,9 @@ bool ViewerSession::applyMirrored(const std::string &line)
     args >> pose.eye[0] >> pose.eye[1] >> pose.eye[2] >> pose.at[0]
         >> pose.at[1] >> pose.at[2] >> pose.up[0] >> pose.up[1] >> pose.up[2]
         >> pose.fovyDegrees >> pose.apertureRadius >> pose.focusDistance;
+    int orthographic = 0;
+    args >> orthographic >> pose.height;
+    pose.orthographic = orthographic != 0;
     m_camera.setPose(pose);
     cameraChanged();
   } else if (verb == "set") {

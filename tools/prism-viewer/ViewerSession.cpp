@@ -58,6 +58,7 @@ bool isPoseParameter(const std::string &name)
            "up",
            "aspect",
            "fovy",
+           "height",
            "apertureRadius",
            "focusDistance"})
     if (name == owned)
@@ -251,8 +252,7 @@ std::string ViewerSession::load(const scene_io::SceneSource &source,
     loaded.error =
         "the device refused the scene '" + source.name + "' (see above)";
   if (!loaded.ok()) {
-    if (loaded.scene.world)
-      scenes::releaseScene(device, loaded.scene);
+    scenes::releaseScene(device, loaded.scene); // a partial one too
     return loaded.error;
   }
   m_pipeline->finish();
@@ -361,11 +361,30 @@ void ViewerSession::frameScene()
   cameraChanged();
 }
 
+void ViewerSession::useCameraSubtype(const std::string &subtype)
+{
+  if (m_cameraParameters.subtype() == subtype)
+    return;
+  ANARIDevice device = m_session.device();
+  if (m_pipeline)
+    m_pipeline->finish();
+  ANARICamera camera = anariNewCamera(device, subtype.c_str());
+  scenes::setObject(device, m_frame, "camera", ANARI_CAMERA, camera);
+  anariCommitParameters(device, m_frame);
+  anariRelease(device, m_cameraObject);
+  m_cameraObject = camera;
+  m_cameraParameters = ParameterSet(device, camera, ANARI_CAMERA, subtype);
+  observeParameters();
+}
+
 void ViewerSession::cameraChanged()
 {
   const MirrorScope scope = mirrored(poseLine(m_camera.pose()));
   ANARIDevice device = m_session.device();
   const CameraPose &pose = m_camera.pose();
+  // A file's orthographic camera is viewed as one (the pose keeps its
+  // height, which zooming scales).
+  useCameraSubtype(pose.orthographic ? "orthographic" : "perspective");
   const float aspect = m_width > 0 && m_height > 0
                            ? float(m_width) / float(m_height)
                            : 4.f / 3.f;
@@ -376,8 +395,15 @@ void ViewerSession::cameraChanged()
       scenes::normalize(pose.at - pose.eye));
   scenes::setVec3(device, m_cameraObject, "up", pose.up);
   scenes::setFloat(device, m_cameraObject, "aspect", aspect);
-  scenes::setFloat(device, m_cameraObject, "fovy", pose.fovyDegrees * kRadians);
-  if (pose.apertureRadius > 0.f || m_cameraParameters.find("apertureRadius")) {
+  if (pose.orthographic) {
+    scenes::setFloat(device, m_cameraObject, "height", pose.height);
+  } else {
+    scenes::setFloat(
+        device, m_cameraObject, "fovy", pose.fovyDegrees * kRadians);
+  }
+  if (!pose.orthographic
+      && (pose.apertureRadius > 0.f
+          || m_cameraParameters.find("apertureRadius"))) {
     scenes::setFloat(
         device, m_cameraObject, "apertureRadius", pose.apertureRadius);
     scenes::setFloat(

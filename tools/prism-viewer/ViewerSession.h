@@ -160,6 +160,8 @@ class ViewerSession
   void lightScene();
   void describeLights();
   void selectSurface();
+  // Replaces the camera object when the pose needs another subtype.
+  void useCameraSubtype(const std::string &subtype);
   scenes::Bounds worldBounds() const;
   // Sends `line` when not inside another mirrored change; the scope ends
   // the change.
@@ -216,7 +218,7 @@ class ViewerSession
 };
 
 // The camera parameters the viewer's pose sets on every move (position,
-// direction, up, aspect, fovy, apertureRadius, focusDistance).
+// direction, up, aspect, fovy or height, apertureRadius, focusDistance).
 bool isPoseParameter(const std::string &name);
 
 // The mirror's lines for a camera pose and a viewport.
