@@ -125,8 +125,16 @@ Scene buildMaterialBall(ANARIDevice device)
       newCylinder(device, {0.f, 0.15f, 0.f}, {0.f, 0.6f, 0.f}, 0.25f)};
   const ANARIMaterial materials[4] = {
       ballMaterial, floorMaterial, standMaterial, standMaterial};
+  const char *geometrySubtypes[4] = {
+      "triangle", "triangle", "cylinder", "cylinder"};
   for (int i = 0; i < 4; i++) {
-    surfaces.push_back(newSurface(device, geometries[i], materials[i]));
+    surfaces.push_back(newListedSurface(device,
+        scene.surfaces,
+        geometries[i],
+        geometrySubtypes[i],
+        materials[i],
+        "physicallyBased",
+        uint32_t(i)));
     anariRelease(device, geometries[i]);
   }
   for (ANARIMaterial m : {ballMaterial, floorMaterial, standMaterial})

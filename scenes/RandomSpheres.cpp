@@ -114,15 +114,33 @@ Scene buildRandomSpheres(ANARIDevice device)
 
   std::vector<ANARIObject> surfaces;
   ANARIGeometry groundGeometry = newTriangleGeometry(device, ground);
-  surfaces.push_back(newSurface(device, groundGeometry, groundMaterial));
+  uint32_t id = 0;
+  surfaces.push_back(newListedSurface(device,
+      scene.surfaces,
+      groundGeometry,
+      "triangle",
+      groundMaterial,
+      "matte",
+      id++));
   anariRelease(device, groundGeometry);
-  const std::pair<const SphereSet *, ANARIMaterial> sets[] = {
-      {&matte, matteMaterial},
-      {&metal, metalMaterial},
-      {&glass, glassMaterial}};
-  for (const auto &[set, material] : sets) {
-    ANARIGeometry geometry = newSpheres(device, *set);
-    surfaces.push_back(newSurface(device, geometry, material));
+  struct SphereSurface
+  {
+    const SphereSet *set;
+    ANARIMaterial material;
+    const char *materialSubtype;
+  };
+  const SphereSurface sets[] = {{&matte, matteMaterial, "matte"},
+      {&metal, metalMaterial, "physicallyBased"},
+      {&glass, glassMaterial, "physicallyBased"}};
+  for (const SphereSurface &s : sets) {
+    ANARIGeometry geometry = newSpheres(device, *s.set);
+    surfaces.push_back(newListedSurface(device,
+        scene.surfaces,
+        geometry,
+        "sphere",
+        s.material,
+        s.materialSubtype,
+        id++));
     anariRelease(device, geometry);
   }
   for (ANARIMaterial m :
