@@ -116,8 +116,7 @@ struct PacketShading
   alignas(32) float coverage[kLanes];
   alignas(32) float backR[kLanes], backG[kLanes], backB[kLanes], backA[kLanes];
   uint32_t objectId[kLanes], instanceId[kLanes];
-  bool otherwise[kLanes];
-  PixelSample samples[kLanes]; // the lanes shaded otherwise
+  bool otherwise[kLanes]; // shaded by other means into their PixelSample
 
   // Results of shadeFlat().
   alignas(32) float colorR[kLanes], colorG[kLanes], colorB[kLanes],
@@ -223,6 +222,61 @@ struct PacketShading
   }
 };
 
+// One packet of camera rays as Embree traced it, with what tracing
+// overwrites or does not keep. A local of each packet() call, as is the
+// packet's shading: the compiler then knows that stores into the frame's
+// buffers cannot change them, and need not reload them after each.
+struct TracedPacket
+{
+  static constexpr int kLanes = rt::kPacketSize;
+
+  rt::RayHitPacket rays;
+  int active[kLanes];
+  float rayTMax[kLanes]; // Embree overwrites the packet's with the hit's t
+  // The lanes whose rays cross a volume before their hit.
+  bool inVolume[kLanes] = {};
+
+  Ray laneRay(int i) const
+  {
+    return Ray{{rays.originX[i], rays.originY[i], rays.originZ[i]},
+        {rays.directionX[i], rays.directionY[i], rays.directionZ[i]},
+        rays.tMin[i],
+        rayTMax[i],
+        rays.time[i]};
+  }
+  rt::Hit laneHit(int i) const
+  {
+    rt::Hit hit;
+    hit.t = rays.tMax[i];
+    hit.u = rays.u[i];
+    hit.v = rays.v[i];
+    hit.geometricNormal = {rays.normalX[i], rays.normalY[i], rays.normalZ[i]};
+    hit.primitiveId = rays.primitiveId[i];
+    hit.geometryId = rays.geometryId[i];
+    hit.instanceId = rays.instanceId[i];
+    return hit;
+  }
+  // Marks the first `count` lanes whose rays cross a volume before what
+  // they hit; whether any does.
+  bool markVolumes(const World &world, int count)
+  {
+    bool any = false;
+    for (int i = 0; i < kLanes; i++) {
+      const float end =
+          rays.geometryId[i] == rt::kInvalidId ? rayTMax[i] : rays.tMax[i];
+      inVolume[i] =
+          i < count
+          && mayMeetVolumes(world,
+              {rays.originX[i], rays.originY[i], rays.originZ[i]},
+              {rays.directionX[i], rays.directionY[i], rays.directionZ[i]},
+              rays.tMin[i],
+              end);
+      any |= inVolume[i];
+    }
+    return any;
+  }
+};
+
 } // namespace
 
 void Raycast::commitParameters()
@@ -240,7 +294,8 @@ void Raycast::commitParameters()
 }
 
 // A tile's packets: traced whole, shaded by PacketShading, the lanes it
-// cannot shade (see-through, textured, in volumes) by shadeSample().
+// cannot shade (see-through, textured, in volumes) by shadeSample(). Holds
+// only what lasts the tile; each packet's state is local to packet().
 class Raycast::Packets final : public TileWork
 {
  public:
@@ -252,60 +307,29 @@ class Raycast::Packets final : public TileWork
         m_world(*context.world),
         m_buffers(buffers),
         m_primaryRays(context),
-        m_volumes(!m_world.volumes().empty())
-  {
-    if (renderer.uniformBackground())
-      m_shading.fillBackground(renderer.background(context, 0, 0));
-  }
+        m_volumes(!m_world.volumes().empty()),
+        m_uniformBackground(renderer.uniformBackground()),
+        m_background(m_uniformBackground ? renderer.background(context, 0, 0)
+                                         : float4{0.f, 0.f, 0.f, 0.f})
+  {}
 
   void packet(uint32_t x0, uint32_t y, int count) override;
 
  private:
   static constexpr int kLanes = rt::kPacketSize;
 
-  Ray laneRay(int i) const
-  {
-    return Ray{{m_packet.originX[i], m_packet.originY[i], m_packet.originZ[i]},
-        {m_packet.directionX[i],
-            m_packet.directionY[i],
-            m_packet.directionZ[i]},
-        m_packet.tMin[i],
-        m_rayTMax[i],
-        m_packet.time[i]};
-  }
-  rt::Hit laneHit(int i) const
-  {
-    rt::Hit hit;
-    hit.t = m_packet.tMax[i];
-    hit.u = m_packet.u[i];
-    hit.v = m_packet.v[i];
-    hit.geometricNormal = {
-        m_packet.normalX[i], m_packet.normalY[i], m_packet.normalZ[i]};
-    hit.primitiveId = m_packet.primitiveId[i];
-    hit.geometryId = m_packet.geometryId[i];
-    hit.instanceId = m_packet.instanceId[i];
-    return hit;
-  }
-  // Whether lane i's ray crosses a volume before what it hit.
-  bool meetsVolume(int i) const
-  {
-    const float end = m_packet.geometryId[i] == rt::kInvalidId
-                          ? m_rayTMax[i]
-                          : m_packet.tMax[i];
-    return mayMeetVolumes(m_world,
-        {m_packet.originX[i], m_packet.originY[i], m_packet.originZ[i]},
-        {m_packet.directionX[i],
-            m_packet.directionY[i],
-            m_packet.directionZ[i]},
-        m_packet.tMin[i],
-        end);
-  }
   // Lane i of the packet just traced for the straight loop: a miss, a hit
-  // on a flat constant surface, or a hit shaded here, the loop told to
-  // take it for a miss.
-  void prepareLane(int i, uint32_t x, uint32_t y);
-  // Fills the lanes' backgrounds when they differ from pixel to pixel.
-  void fillBackgrounds(uint32_t x0, uint32_t y, int count);
+  // on a flat constant surface, or a hit shaded here into m_samples[i],
+  // the loop told to take it for a miss.
+  void prepareLane(const TracedPacket &traced,
+      PacketShading &shading,
+      ConstantSurface &lastSurface,
+      int i,
+      uint32_t x0,
+      uint32_t y);
+  // The lanes' backgrounds.
+  void fillBackgrounds(
+      PacketShading &shading, uint32_t x0, uint32_t y, int count) const;
 
   const Raycast &m_renderer;
   const RenderContext &m_context;
@@ -313,37 +337,42 @@ class Raycast::Packets final : public TileWork
   FrameBuffers &m_buffers;
   const PrimaryRays m_primaryRays;
   const bool m_volumes;
-  ConstantSurface m_lastSurface;
+  const bool m_uniformBackground;
+  const float4 m_background;     // when uniform
+  ConstantSurface m_lastSurface; // carried from packet to packet
   SurfaceHit m_surface; // reused for hits whose normal the geometry resolves
-  rt::RayHitPacket m_packet;
-  int m_active[kLanes];
-  float m_rayTMax[kLanes]; // Embree overwrites the packet's with the hit's t
-  bool m_inVolume[kLanes] = {}; // per lane of the packet just traced
-  PacketShading m_shading;
+  PixelSample m_samples[kLanes]; // the lanes shaded otherwise
 };
 
-void Raycast::Packets::prepareLane(int i, uint32_t x, uint32_t y)
+void Raycast::Packets::prepareLane(const TracedPacket &traced,
+    PacketShading &shading,
+    ConstantSurface &lastSurface,
+    int i,
+    uint32_t x0,
+    uint32_t y)
 {
-  if (m_inVolume[i]) {
-    m_shading.setLane(i, m_lastSurface, false);
-    m_shading.otherwise[i] = true;
-    m_shading.samples[i] =
-        m_renderer.shadeSample(m_context, laneRay(i), laneHit(i), x, y);
+  const uint32_t x = x0 + uint32_t(i);
+  const rt::RayHitPacket &rays = traced.rays;
+  if (traced.inVolume[i]) {
+    shading.setLane(i, lastSurface, false);
+    shading.otherwise[i] = true;
+    m_samples[i] = m_renderer.shadeSample(
+        m_context, traced.laneRay(i), traced.laneHit(i), x, y);
     return;
   }
-  if (m_packet.geometryId[i] == rt::kInvalidId) {
-    m_shading.setLane(i, m_lastSurface, false);
+  if (rays.geometryId[i] == rt::kInvalidId) {
+    shading.setLane(i, lastSurface, false);
     return;
   }
   const ConstantSurface &constant = constantSurface(
-      m_world, m_packet.instanceId[i], m_packet.geometryId[i], m_lastSurface);
-  m_shading.setLane(i, constant, constant.flat);
+      m_world, rays.instanceId[i], rays.geometryId[i], lastSurface);
+  shading.setLane(i, constant, constant.flat);
   if (constant.flat)
     return;
-  m_shading.otherwise[i] = true;
-  const Ray ray = laneRay(i);
-  const rt::Hit hit = laneHit(i);
-  PixelSample &sample = m_shading.samples[i];
+  shading.otherwise[i] = true;
+  const Ray ray = traced.laneRay(i);
+  const rt::Hit hit = traced.laneHit(i);
+  PixelSample &sample = m_samples[i];
   if (!constant.constant
       || !resolveSurfaceHit(
           m_world, ray, hit, m_surface, HitDetail::ForMaterial)) {
@@ -357,10 +386,8 @@ void Raycast::Packets::prepareLane(int i, uint32_t x, uint32_t y)
       eyeLight(m_renderer.m_eyeLightBlendRatio,
           std::abs(dot(m_surface.shadingNormal, ray.direction))),
       constant.coverage);
-  sample.color = blend.over({m_shading.backR[i],
-      m_shading.backG[i],
-      m_shading.backB[i],
-      m_shading.backA[i]});
+  sample.color = blend.over(
+      {shading.backR[i], shading.backG[i], shading.backB[i], shading.backA[i]});
   sample.depth = hit.t;
   sample.normal = m_surface.shadingNormal;
   sample.albedo = constant.baseColor;
@@ -369,54 +396,58 @@ void Raycast::Packets::prepareLane(int i, uint32_t x, uint32_t y)
   sample.instanceId = constant.instanceId;
 }
 
-void Raycast::Packets::fillBackgrounds(uint32_t x0, uint32_t y, int count)
+void Raycast::Packets::fillBackgrounds(
+    PacketShading &shading, uint32_t x0, uint32_t y, int count) const
 {
-  if (m_renderer.uniformBackground())
+  if (m_uniformBackground) {
+    shading.fillBackground(m_background);
     return;
-  for (int i = 0; i < count; i++) {
-    const float4 b = m_renderer.background(m_context, x0 + i, y);
-    m_shading.backR[i] = b.x;
-    m_shading.backG[i] = b.y;
-    m_shading.backB[i] = b.z;
-    m_shading.backA[i] = b.w;
+  }
+  // Idle lanes repeat the last pixel's, as PrimaryRays does their rays.
+  for (int i = 0; i < kLanes; i++) {
+    const uint32_t x = x0 + uint32_t(std::min(i, count - 1));
+    const float4 b = m_renderer.background(m_context, x, y);
+    shading.backR[i] = b.x;
+    shading.backG[i] = b.y;
+    shading.backB[i] = b.z;
+    shading.backA[i] = b.w;
   }
 }
 
 void Raycast::Packets::packet(uint32_t x0, uint32_t y, int count)
 {
-  m_primaryRays.generate(x0, y, count, m_packet, m_active);
-  std::copy(m_packet.tMax, m_packet.tMax + kLanes, m_rayTMax);
-  m_world.intersect(m_packet, m_active);
-  fillBackgrounds(x0, y, count);
+  TracedPacket traced;
+  rt::RayHitPacket &rays = traced.rays;
+  m_primaryRays.generate(x0, y, count, rays, traced.active);
+  std::copy(rays.tMax, rays.tMax + kLanes, traced.rayTMax);
+  m_world.intersect(rays, traced.active);
+  PacketShading shading;
+  fillBackgrounds(shading, x0, y, count);
+  ConstantSurface lastSurface = m_lastSurface;
   // Mostly every lane misses or hits the surface the last hit did.
   bool anyHit = false, sameSurface = true;
   for (int i = 0; i < kLanes; i++) {
-    const bool isHit = m_packet.geometryId[i] != rt::kInvalidId;
+    const bool isHit = rays.geometryId[i] != rt::kInvalidId;
     anyHit |= isHit;
     sameSurface &= !isHit
-                   || (m_packet.geometryId[i] == m_lastSurface.geometryKey
-                       && m_packet.instanceId[i] == m_lastSurface.instanceKey);
+                   || (rays.geometryId[i] == lastSurface.geometryKey
+                       && rays.instanceId[i] == lastSurface.instanceKey);
   }
   // Lanes whose rays cross a volume are marched (only if any can).
-  bool anyVolume = false;
-  if (m_volumes) {
+  const bool anyVolume = m_volumes && traced.markVolumes(m_world, count);
+  if (sameSurface && (lastSurface.flat || !anyHit) && !anyVolume) {
     for (int i = 0; i < kLanes; i++)
-      anyVolume |= m_inVolume[i] = i < count && meetsVolume(i);
-  }
-  if (sameSurface && (m_lastSurface.flat || !anyHit) && !anyVolume) {
-    for (int i = 0; i < kLanes; i++) {
-      m_shading.setLane(
-          i, m_lastSurface, m_packet.geometryId[i] != rt::kInvalidId);
-    }
+      shading.setLane(i, lastSurface, rays.geometryId[i] != rt::kInvalidId);
   } else {
     for (int i = 0; i < kLanes; i++)
-      prepareLane(i, x0 + uint32_t(i), y);
+      prepareLane(traced, shading, lastSurface, i, x0, y);
+    m_lastSurface = lastSurface;
   }
-  m_shading.shadeFlat(m_packet, m_renderer.m_eyeLightBlendRatio);
-  m_shading.store(m_packet, m_buffers, m_context.width, x0, y, count);
+  shading.shadeFlat(rays, m_renderer.m_eyeLightBlendRatio);
+  shading.store(rays, m_buffers, m_context.width, x0, y, count);
   for (int i = 0; i < count; i++) {
-    if (m_shading.otherwise[i])
-      store(m_context, m_buffers, x0 + uint32_t(i), y, m_shading.samples[i]);
+    if (shading.otherwise[i])
+      store(m_context, m_buffers, x0 + uint32_t(i), y, m_samples[i]);
   }
 }
 
