@@ -121,15 +121,19 @@ LoopResult renderFrames(const FrameLoop &loop)
 uint32_t takeSamplesPerCall(ANARIDevice device,
     ANARIRenderer renderer,
     const std::string &subtype,
-    uint32_t samples)
+    uint32_t samples,
+    uint64_t pixels)
 {
   if (samples <= 1
       || rendererDeclares(device, subtype, "pixelSamples") != Declared::Yes)
     return 1;
-  // The fewest calls of at most the renderer's largest pixelSamples that
-  // take exactly `samples`.
-  constexpr uint32_t kMostPerCall = 65536;
-  uint32_t calls = (samples + kMostPerCall - 1) / kMostPerCall;
+  // At most 2^24 pixel samples a call (512x512 at 64 spp, seconds on
+  // simple scenes), so Ctrl-C, which waits for the call in flight, is
+  // answered soon; and at most the renderer's largest pixelSamples.
+  const uint64_t mostPerCall = std::clamp<uint64_t>(
+      (uint64_t(1) << 24) / std::max<uint64_t>(pixels, 1), 1, 65536);
+  // The fewest calls of at most that many that take exactly `samples`.
+  uint32_t calls = uint32_t((samples + mostPerCall - 1) / mostPerCall);
   while (samples % calls != 0)
     calls++;
   const int32_t perCall = int32_t(samples / calls);

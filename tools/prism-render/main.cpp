@@ -442,8 +442,11 @@ int RenderRun::makeFrame()
       anariSetParameter(device, m_frame, "accumulation", ANARI_BOOL, &on);
       // Bench runs time one-sample frames.
       if (m_options.benchFrames == 0) {
-        m_samplesPerFrame = takeSamplesPerCall(
-            device, m_renderer, m_options.renderer, m_options.samplesPerPixel);
+        m_samplesPerFrame = takeSamplesPerCall(device,
+            m_renderer,
+            m_options.renderer,
+            m_options.samplesPerPixel,
+            uint64_t(m_options.width) * m_options.height);
         anariCommitParameters(device, m_renderer);
       }
       m_frames = m_options.samplesPerPixel / m_samplesPerFrame;
