@@ -26,18 +26,7 @@ class Accumulation : public AnalyticTest
   }
   ANARIFrame frame(ANARIWorld w, ANARICamera c, ANARIRenderer r, uint32_t size)
   {
-    ANARIFrame f = anariNewFrame(m_device);
-    const uint32_t extent[2] = {size, size};
-    const ANARIDataType color = ANARI_FLOAT32_VEC4;
-    const uint8_t on = 1;
-    anariSetParameter(m_device, f, "world", ANARI_WORLD, &w);
-    anariSetParameter(m_device, f, "camera", ANARI_CAMERA, &c);
-    anariSetParameter(m_device, f, "renderer", ANARI_RENDERER, &r);
-    anariSetParameter(m_device, f, "size", ANARI_UINT32_VEC2, extent);
-    anariSetParameter(m_device, f, "channel.color", ANARI_DATA_TYPE, &color);
-    anariSetParameter(m_device, f, "accumulation", ANARI_BOOL, &on);
-    anariCommitParameters(m_device, f);
-    return f;
+    return colorFrame(w, c, r, size, size);
   }
   std::vector<float> renderSamples(ANARIFrame f, int samples)
   {
@@ -45,13 +34,7 @@ class Accumulation : public AnalyticTest
       anariRenderFrame(m_device, f);
       anariFrameReady(m_device, f, ANARI_WAIT);
     }
-    uint32_t w, h;
-    ANARIDataType type;
-    auto *p = (const float *)anariMapFrame(
-        m_device, f, "channel.color", &w, &h, &type);
-    std::vector<float> out(p, p + 4 * size_t(w) * h);
-    anariUnmapFrame(m_device, f, "channel.color");
-    return out;
+    return mappedColor(f);
   }
   float refinement(ANARIFrame f)
   {

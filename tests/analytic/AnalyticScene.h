@@ -133,16 +133,19 @@ class AnalyticTest : public PrismDeviceTest
     anariCommitParameters(m_device, r);
     return r;
   }
-  // channel.color (RGBA floats, row 0 at the bottom) after `frames`
-  // accumulated frames of a size x size image (releases nothing it was
-  // given).
-  std::vector<float> accumulatedColor(
-      ANARIWorld w, ANARICamera c, ANARIRenderer r, uint32_t size, int frames)
+  // A committed width x height frame of channel.color as RGBA floats,
+  // accumulating or not.
+  ANARIFrame colorFrame(ANARIWorld w,
+      ANARICamera c,
+      ANARIRenderer r,
+      uint32_t width,
+      uint32_t height,
+      bool accumulation = true)
   {
     ANARIFrame f = anariNewFrame(m_device);
-    const uint32_t extent[2] = {size, size};
+    const uint32_t extent[2] = {width, height};
     const ANARIDataType color = ANARI_FLOAT32_VEC4;
-    const uint8_t on = 1;
+    const uint8_t on = accumulation ? 1 : 0;
     anariSetParameter(m_device, f, "world", ANARI_WORLD, &w);
     anariSetParameter(m_device, f, "camera", ANARI_CAMERA, &c);
     anariSetParameter(m_device, f, "renderer", ANARI_RENDERER, &r);
@@ -150,8 +153,12 @@ class AnalyticTest : public PrismDeviceTest
     anariSetParameter(m_device, f, "channel.color", ANARI_DATA_TYPE, &color);
     anariSetParameter(m_device, f, "accumulation", ANARI_BOOL, &on);
     anariCommitParameters(m_device, f);
-    for (int i = 0; i < frames; i++)
-      anariRenderFrame(m_device, f);
+    return f;
+  }
+  // channel.color of `f` (RGBA floats, row 0 at the bottom; empty when
+  // not rendered), once its render in flight is done.
+  std::vector<float> mappedColor(ANARIFrame f)
+  {
     anariFrameReady(m_device, f, ANARI_WAIT);
     uint32_t width = 0, height = 0;
     ANARIDataType type;
@@ -161,6 +168,17 @@ class AnalyticTest : public PrismDeviceTest
     if (p)
       out.assign(p, p + 4 * size_t(width) * height);
     anariUnmapFrame(m_device, f, "channel.color");
+    return out;
+  }
+  // channel.color after `frames` accumulated frames of a size x size
+  // image (releases nothing it was given).
+  std::vector<float> accumulatedColor(
+      ANARIWorld w, ANARICamera c, ANARIRenderer r, uint32_t size, int frames)
+  {
+    ANARIFrame f = colorFrame(w, c, r, size, size);
+    for (int i = 0; i < frames; i++)
+      anariRenderFrame(m_device, f);
+    std::vector<float> out = mappedColor(f);
     anariRelease(m_device, f);
     return out;
   }

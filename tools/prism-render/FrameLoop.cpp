@@ -2,6 +2,7 @@
 
 #include "Interrupt.h"
 #include "Progress.h"
+#include "RendererParameters.h"
 
 #include <algorithm>
 #include <chrono>
@@ -37,21 +38,27 @@ double partialFrame(ANARIDevice device, ANARIFrame frame)
 // it short: a frame ends whole, so the image holds whole samples.
 void waitForFrame(const FrameLoop &loop, uint32_t index, Progress &progress)
 {
+  // The progress bar counts samples, of which a frame may take several.
+  auto samplesDone = [&](double frames) {
+    return frames * loop.samplesPerFrame;
+  };
   if (loop.completions) {
     // Woken by the device when the frame is done, and every 20 ms to move
     // the progress bar.
     while (!loop.completions->waitFor(index + 1, 20))
       if (loop.showProgress)
-        progress.update(index + partialFrame(loop.device, loop.frame));
+        progress.update(
+            samplesDone(index + partialFrame(loop.device, loop.frame)));
   } else if (loop.showProgress) {
     while (!anariFrameReady(loop.device, loop.frame, ANARI_NO_WAIT)) {
-      progress.update(index + partialFrame(loop.device, loop.frame));
+      progress.update(
+          samplesDone(index + partialFrame(loop.device, loop.frame)));
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
   }
   anariFrameReady(loop.device, loop.frame, ANARI_WAIT);
   if (loop.showProgress)
-    progress.update(index + 1);
+    progress.update(samplesDone(index + 1));
 }
 
 } // namespace
@@ -93,7 +100,8 @@ void callBackWhenDone(
 LoopResult renderFrames(const FrameLoop &loop)
 {
   LoopResult result;
-  Progress progress(loop.showProgress, loop.frames, loop.unit);
+  Progress progress(
+      loop.showProgress, loop.frames * loop.samplesPerFrame, loop.unit);
   const auto start = Clock::now();
   for (uint32_t i = 0; i < loop.frames; i++) {
     if (interrupted()) {
@@ -108,6 +116,29 @@ LoopResult renderFrames(const FrameLoop &loop)
   result.seconds = secondsSince(start);
   progress.finish();
   return result;
+}
+
+uint32_t takeSamplesPerCall(ANARIDevice device,
+    ANARIRenderer renderer,
+    const std::string &subtype,
+    uint32_t samples,
+    uint64_t pixels)
+{
+  if (samples <= 1
+      || rendererDeclares(device, subtype, "pixelSamples") != Declared::Yes)
+    return 1;
+  // At most 2^24 pixel samples a call (512x512 at 64 spp, seconds on
+  // simple scenes), so Ctrl-C, which waits for the call in flight, is
+  // answered soon; and at most the renderer's largest pixelSamples.
+  const uint64_t mostPerCall = std::clamp<uint64_t>(
+      (uint64_t(1) << 24) / std::max<uint64_t>(pixels, 1), 1, 65536);
+  // The fewest calls of at most that many that take exactly `samples`.
+  uint32_t calls = uint32_t((samples + mostPerCall - 1) / mostPerCall);
+  while (samples % calls != 0)
+    calls++;
+  const int32_t perCall = int32_t(samples / calls);
+  anariSetParameter(device, renderer, "pixelSamples", ANARI_INT32, &perCall);
+  return uint32_t(perCall);
 }
 
 std::string benchSummary(const std::vector<double> &frameSeconds)

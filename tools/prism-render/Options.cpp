@@ -671,7 +671,8 @@ Output
   -o, --output FILE      image to write: .png (8-bit sRGB), .exr or .pfm
                          (float); default <scene name>.png
   --size WxH             image size in pixels (default 1024x768)
-  --spp N                samples per pixel, as N accumulated frames
+  --spp N                samples per pixel, accumulated (in one render call
+                         where the renderer has pixelSamples)
   --depth FILE           also write the depth channel (distance to the camera;
                          PNG: normalised, near is bright; EXR/PFM: the
                          distances, 0 where nothing was hit)

@@ -130,6 +130,7 @@ class RenderRun
   ANARIRenderer m_renderer{nullptr};
   ANARIFrame m_frame{nullptr};
   uint32_t m_frames{1};
+  uint32_t m_samplesPerFrame{1}; // the renderer's pixelSamples
   FrameCompletions m_completions;
   bool m_watchCompletion{false};
   LoopResult m_loop;
@@ -440,7 +441,16 @@ int RenderRun::makeFrame()
     if (m_session.has("ANARI_KHR_FRAME_ACCUMULATION")) {
       const bool on = true;
       anariSetParameter(device, m_frame, "accumulation", ANARI_BOOL, &on);
-      m_frames = m_options.samplesPerPixel;
+      // Bench runs time one-sample frames.
+      if (m_options.benchFrames == 0) {
+        m_samplesPerFrame = takeSamplesPerCall(device,
+            m_renderer,
+            m_options.renderer,
+            m_options.samplesPerPixel,
+            uint64_t(m_options.width) * m_options.height);
+        anariCommitParameters(device, m_renderer);
+      }
+      m_frames = m_options.samplesPerPixel / m_samplesPerFrame;
     } else {
       console::warning(
           "the device does not implement frame accumulation "
@@ -467,6 +477,7 @@ int RenderRun::render()
   loop.device = device;
   loop.frame = m_frame;
   loop.frames = m_frames;
+  loop.samplesPerFrame = m_samplesPerFrame;
   loop.completions = m_watchCompletion ? &m_completions : nullptr;
   loop.showProgress = !m_options.quiet && console::stderrIsTerminal();
   loop.unit = m_options.benchFrames > 0 ? "frames" : "samples";
@@ -487,10 +498,11 @@ int RenderRun::render()
         "the device reported errors while rendering (see above); no image "
         "written");
   if (m_loop.interrupted)
-    console::warning("interrupted (Ctrl-C) after "
-                     + std::to_string(m_loop.frameSeconds.size()) + " of "
-                     + std::to_string(m_frames) + " " + loop.unit
-                     + "; writing what was rendered");
+    console::warning(
+        "interrupted (Ctrl-C) after "
+        + std::to_string(m_loop.frameSeconds.size() * m_samplesPerFrame)
+        + " of " + std::to_string(m_frames * m_samplesPerFrame) + " "
+        + loop.unit + "; writing what was rendered");
   return kContinue;
 }
 
@@ -572,7 +584,7 @@ void RenderRun::printSummary(const std::vector<OutputImage> &images)
       unsigned(frames),
       frames == 1 ? "" : "s",
       formatDuration(m_loop.seconds).c_str(),
-      m_options.benchFrames > 0 ? 1u : unsigned(frames));
+      m_options.benchFrames > 0 ? 1u : unsigned(frames * m_samplesPerFrame));
 }
 
 int run(int argc, char **argv)

@@ -14,10 +14,13 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <climits>
 #include <cstring>
+#include <memory>
 
 namespace prism {
 namespace {
@@ -38,6 +41,16 @@ const std::map<std::string, std::vector<ANARIDataType>> &channelFormats()
   };
   return formats;
 }
+
+// The samples of one tile are rendered in order by whichever thread owns
+// the tile at that moment: claiming a (tile, sample) pair adds one to the
+// tile's pending count, and the thread that raised it from zero renders
+// samples until none is pending. No thread ever waits for another.
+struct TileSamples
+{
+  std::atomic<uint32_t> pending{0};
+  uint32_t next{0}; // touched by the owner only
+};
 
 } // namespace
 
@@ -134,8 +147,15 @@ void Frame::renderAsync()
   const uint32_t limit = m_renderer->sampleLimit();
   const bool converged = m_accumulation && limit > 0 && m_sampleIndex >= limit
                          && !m_accumulated.color.empty();
+  // pixelSamples per render, never past the sampleLimit.
+  m_samplesThisRender = m_renderer->pixelSamples();
+  if (m_accumulation && limit > 0 && !converged)
+    m_samplesThisRender =
+        std::min(m_samplesThisRender, limit - std::min(limit, m_sampleIndex));
+  m_samplesThisRender = std::max(m_samplesThisRender, 1u);
+  m_averaging = m_accumulation || m_samplesThisRender > 1;
   m_cancel = false;
-  m_tilesDone = 0;
+  m_tileSamplesDone = 0;
   m_start = std::chrono::steady_clock::now();
   device().frameStarted();
   // The callback is the one committed now: a commit may replace it while
@@ -166,7 +186,9 @@ size_t Frame::bytesNeeded() const
   // Working buffers for every channel besides color, as a bound.
   size_t working = sizeof(float4) + sizeof(float) + 2 * sizeof(float3)
                    + 3 * sizeof(uint32_t);
-  perPixel += working * (m_accumulation ? 2 : 1);
+  const bool averages =
+      m_accumulation || (m_renderer && m_renderer->pixelSamples() > 1);
+  perPixel += working * (averages ? 2 : 1);
   if (m_renderer && m_renderer->denoise())
     perPixel += 4 * sizeof(float4);
   return size_t(m_width) * m_height * perPixel;
@@ -212,7 +234,7 @@ void Frame::render()
   if (m_buffers.width != m_width || m_buffers.height != m_height
       || !(m_buffers.needs == needs))
     m_buffers.resize(m_width, m_height, needs);
-  if (m_accumulation
+  if (m_averaging
       && (m_accumulated.width != m_width || m_accumulated.height != m_height
           || !(m_accumulated.needs == needs))) {
     m_accumulated.resize(m_width, m_height, needs);
@@ -224,7 +246,7 @@ void Frame::render()
 
   const uint32_t tilesX = (m_width + kTileSize - 1) / kTileSize;
   const uint32_t tilesY = (m_height + kTileSize - 1) / kTileSize;
-  m_tilesTotal = tilesX * tilesY;
+  m_tileSamplesTotal = uint64_t(tilesX) * tilesY * m_samplesThisRender;
   const std::unique_ptr<RayTransport> transport =
       device().transportFor(*m_world);
   RenderContext context{m_camera,
@@ -236,60 +258,99 @@ void Frame::render()
       m_sharing.omitBackground};
   context.seed = m_renderer->seed();
   m_renderer->beginFrame(context);
-  // Each tile is rendered, folded into the accumulation and converted to
-  // the channels' types while it is still in cache.
-  auto renderTileAt = [&](uint32_t index) {
-    if (m_cancel)
-      return;
-    const uint32_t tx = index % tilesX, ty = index / tilesX;
-    if (ty % m_sharing.tileRowParts != m_sharing.tileRowPart) {
-      m_tilesDone.fetch_add(1, std::memory_order_release);
-      return; // another process renders this row of tiles
-    }
-    Tile tile{tx * kTileSize,
-        ty * kTileSize,
-        std::min((tx + 1) * kTileSize, m_width),
-        std::min((ty + 1) * kTileSize, m_height)};
-    m_renderer->renderTile(context, tile, m_buffers, m_cancel);
-    if (m_accumulation)
-      accumulate(tile);
-    resolve(tile);
-    m_tilesDone.fetch_add(1, std::memory_order_release);
-  };
-  if (m_sharing.lockstep) {
-    // A row of tiles at a time, in order: one wavefront large enough to be
-    // traced and shaded on all the process's threads between two of the
-    // transport's collectives (and fewer, larger messages). A process
-    // stopping on its own would leave the others waiting in a collective:
-    // in lockstep every row is rendered.
-    const std::atomic<bool> never{false};
-    for (uint32_t ty = 0; ty < tilesY; ty++) {
-      const Tile row{
-          0, ty * kTileSize, m_width, std::min((ty + 1) * kTileSize, m_height)};
-      m_renderer->renderTile(context, row, m_buffers, never);
-      tbb::parallel_for(uint32_t(0), tilesX, [&](uint32_t tx) {
-        const Tile tile{tx * kTileSize,
-            row.y0,
-            std::min((tx + 1) * kTileSize, m_width),
-            row.y1};
-        if (m_accumulation)
-          accumulate(tile);
-        resolve(tile);
-      });
-      m_tilesDone.fetch_add(tilesX, std::memory_order_release);
-    }
-  } else {
-    tbb::parallel_for(uint32_t(0), m_tilesTotal, renderTileAt);
-  }
+  if (m_sharing.lockstep)
+    renderInLockstep(context, tilesX, tilesY);
+  else
+    renderTileSamples(context, tilesX, tilesY);
   // Every tile's pixels happen before this (the increments form one
   // release sequence), in the C++ memory model itself rather than through
   // TBB's join, which ThreadSanitizer cannot see.
-  (void)m_tilesDone.load(std::memory_order_acquire);
+  (void)m_tileSamplesDone.load(std::memory_order_acquire);
   if (m_cancel) {
     m_samplesDone = 0; // a partial sample must not enter the average
     m_accumulatedVersion = ~0ull;
-  } else if (m_accumulation) {
-    m_samplesDone++;
+  } else if (m_averaging) {
+    m_samplesDone += m_samplesThisRender;
+  }
+}
+
+Tile Frame::tileAt(uint32_t tx, uint32_t ty) const
+{
+  return Tile{tx * kTileSize,
+      ty * kTileSize,
+      std::min((tx + 1) * kTileSize, m_width),
+      std::min((ty + 1) * kTileSize, m_height)};
+}
+
+void Frame::renderTileSamples(
+    const RenderContext &context, uint32_t tilesX, uint32_t tilesY)
+{
+  const uint32_t tiles = tilesX * tilesY;
+  // Sample k of tile t is rendered, folded into the average and, at the
+  // last sample, converted to the channels' types while still in cache.
+  auto renderSample = [&](uint32_t index, uint32_t k) {
+    const uint32_t tx = index % tilesX, ty = index / tilesX;
+    if (!m_cancel && ty % m_sharing.tileRowParts == m_sharing.tileRowPart) {
+      const Tile tile = tileAt(tx, ty);
+      RenderContext sample = context;
+      sample.sampleIndex = m_sampleIndex + k;
+      m_renderer->renderTile(sample, tile, m_buffers, m_cancel);
+      if (m_averaging)
+        accumulate(tile, m_samplesDone + k);
+      if (k + 1 == m_samplesThisRender)
+        resolve(tile);
+    } // else another process renders this row of tiles
+    m_tileSamplesDone.fetch_add(1, std::memory_order_release);
+  };
+  std::unique_ptr<TileSamples[]> queues(new TileSamples[tiles]);
+  auto claim = [&](uint64_t pair) {
+    TileSamples &queue = queues[pair % tiles];
+    if (queue.pending.fetch_add(1, std::memory_order_acq_rel) != 0)
+      return; // the owner renders it after the tile's earlier samples
+    do {
+      renderSample(uint32_t(pair % tiles), queue.next++);
+    } while (queue.pending.fetch_sub(1, std::memory_order_acq_rel) != 1);
+  };
+  // Pairs are claimed sample after sample, so the threads stay busy
+  // across sample boundaries: no barrier until the render's last tile.
+  const uint64_t pairs = uint64_t(tiles) * m_samplesThisRender;
+  std::atomic<uint64_t> cursor{0};
+  const int workers = std::max(tbb::this_task_arena::max_concurrency(), 1);
+  tbb::parallel_for(
+      tbb::blocked_range<int>(0, workers, 1),
+      [&](const tbb::blocked_range<int> &) {
+        for (uint64_t pair; !m_cancel && (pair = cursor++) < pairs;)
+          claim(pair);
+      },
+      tbb::simple_partitioner());
+}
+
+void Frame::renderInLockstep(
+    const RenderContext &context, uint32_t tilesX, uint32_t tilesY)
+{
+  // A row of tiles at a time, in order: one wavefront large enough to be
+  // traced and shaded on all the process's threads between two of the
+  // transport's collectives (and fewer, larger messages). A process
+  // stopping on its own would leave the others waiting in a collective:
+  // in lockstep every row of every sample is rendered.
+  const std::atomic<bool> never{false};
+  for (uint32_t k = 0; k < m_samplesThisRender; k++) {
+    RenderContext sample = context;
+    sample.sampleIndex = m_sampleIndex + k;
+    const bool last = k + 1 == m_samplesThisRender;
+    for (uint32_t ty = 0; ty < tilesY; ty++) {
+      const Tile row{
+          0, ty * kTileSize, m_width, std::min((ty + 1) * kTileSize, m_height)};
+      m_renderer->renderTile(sample, row, m_buffers, never);
+      tbb::parallel_for(uint32_t(0), tilesX, [&](uint32_t tx) {
+        const Tile tile = tileAt(tx, ty);
+        if (m_averaging)
+          accumulate(tile, m_samplesDone + k);
+        if (last)
+          resolve(tile);
+      });
+      m_tileSamplesDone.fetch_add(tilesX, std::memory_order_release);
+    }
   }
 }
 
@@ -300,12 +361,12 @@ uint64_t Frame::sceneVersion() const
          + (uint64_t(m_width) << 40) + (uint64_t(m_height) << 20);
 }
 
-void Frame::accumulate(const Tile &tile)
+void Frame::accumulate(const Tile &tile, uint32_t samplesBefore)
 {
   FrameBuffers &sum = m_accumulated;
   const FrameBuffers &sample = m_buffers;
-  const bool first = m_samplesDone == 0;
-  const float weight = 1.f / float(m_samplesDone + 1);
+  const bool first = samplesBefore == 0;
+  const float weight = 1.f / float(samplesBefore + 1);
   for (uint32_t y = tile.y0; y < tile.y1; y++) {
     const size_t begin = size_t(y) * m_width + tile.x0;
     const size_t end = size_t(y) * m_width + tile.x1;
@@ -342,7 +403,7 @@ void Frame::accumulate(const Tile &tile)
 void Frame::resolve(const Tile &tile)
 {
   // With accumulation the channels show the average so far.
-  const FrameBuffers &source = m_accumulation ? m_accumulated : m_buffers;
+  const FrameBuffers &source = m_averaging ? m_accumulated : m_buffers;
   const size_t count = tile.x1 - tile.x0;
   for (uint32_t y = tile.y0; y < tile.y1; y++) {
     const size_t begin = size_t(y) * m_width + tile.x0;
@@ -373,7 +434,7 @@ void Frame::denoiseColor()
   if (!m_denoise || it == m_channels.end() || m_denoisedRender == m_renders)
     return;
   m_denoisedRender = m_renders;
-  const FrameBuffers &source = m_accumulation ? m_accumulated : m_buffers;
+  const FrameBuffers &source = m_averaging ? m_accumulated : m_buffers;
   if (source.color.empty())
     return;
   auto guide = [](const auto &v) {
@@ -386,7 +447,7 @@ void Frame::denoiseColor()
                          guide(source.albedo),
                          guide(source.normal),
                          guide(source.depth),
-                         m_accumulation ? std::max(m_samplesDone, 1u) : 1u},
+                         m_averaging ? std::max(m_samplesDone, 1u) : 1u},
       filtered.data());
   writeColorPixels(it->second.type,
       filtered.data(),
@@ -491,9 +552,9 @@ bool Frame::samplesProperty(
     waitUntilDone();
   else if (!ready(ANARI_NO_WAIT))
     return false; // the count changes under a render in flight
-  // Without accumulation the channels hold one sample once rendered.
+  // Without accumulation the channels hold one render's samples.
   const uint32_t samples =
-      m_accumulation ? m_samplesDone : (m_renders > 0 ? 1u : 0u);
+      m_averaging ? m_samplesDone : (m_renders > 0 ? 1u : 0u);
   if (type == ANARI_INT32) {
     const int32_t value = int32_t(std::min<uint32_t>(samples, INT32_MAX));
     std::memcpy(mem, &value, sizeof(value));
@@ -520,7 +581,7 @@ void Frame::restartAccumulation()
 const FrameBuffers &Frame::linearPixels()
 {
   waitUntilDone();
-  return m_accumulation ? m_accumulated : m_buffers;
+  return m_averaging ? m_accumulated : m_buffers;
 }
 
 bool Frame::getProperty(const std::string &name,
@@ -550,8 +611,10 @@ bool Frame::getProperty(const std::string &name,
                 1.f, float(m_samplesDone) / float(std::max(target, 1u)))
                            : 1.f;
   } else if (name == "renderProgress") {
-    value = m_tilesTotal ? float(m_tilesDone) / float(m_tilesTotal) : 0.f;
-    if (ready(ANARI_NO_WAIT) && m_tilesTotal)
+    value = m_tileSamplesTotal
+                ? float(m_tileSamplesDone) / float(m_tileSamplesTotal)
+                : 0.f;
+    if (ready(ANARI_NO_WAIT) && m_tileSamplesTotal)
       value = 1.f;
   } else {
     return false;

@@ -16,6 +16,7 @@ namespace prism {
 
 class Camera;
 class Renderer;
+struct RenderContext;
 class World;
 
 class Frame : public Object
@@ -119,11 +120,20 @@ class Frame : public Object
     std::vector<unsigned char> pixels;
   };
   void render();
+  // The render's (tile, sample) pairs on all threads, each tile's samples
+  // in order; or, in lockstep, sample after sample, a row of tiles at a
+  // time.
+  void renderTileSamples(
+      const RenderContext &context, uint32_t tilesX, uint32_t tilesY);
+  void renderInLockstep(
+      const RenderContext &context, uint32_t tilesX, uint32_t tilesY);
+  Tile tileAt(uint32_t tx, uint32_t ty) const;
   bool samplesProperty(
       ANARIDataType type, void *mem, uint64_t size, ANARIWaitMask mask);
-  // Folds one tile of this frame's sample into the accumulation
-  // (KHR_FRAME_ACCUMULATION), then converts it to the channels' types.
-  void accumulate(const Tile &tile);
+  // Folds one tile of a sample into the average of the `samplesBefore`
+  // samples before it (KHR_FRAME_ACCUMULATION, or pixelSamples > 1).
+  void accumulate(const Tile &tile, uint32_t samplesBefore);
+  // Converts one tile to the channels' types.
   void resolve(const Tile &tile);
   // Filters the color shown by channel.color (once per render).
   void denoiseColor();
@@ -156,7 +166,11 @@ class Frame : public Object
   FrameBuffers m_buffers;
   Sharing m_sharing;
   bool m_accumulation{false};
-  uint32_t m_sampleIndex{0}; // of the render in flight
+  uint32_t m_sampleIndex{0};       // the first of the render in flight
+  uint32_t m_samplesThisRender{1}; // the renderer's pixelSamples, limited
+  // Whether the channels show m_accumulated: with accumulation, or when
+  // one render takes several samples.
+  bool m_averaging{false};
   uint32_t m_samplesDone{0}; // accumulated into m_accumulated
   uint64_t m_accumulatedVersion{~0ull};
   FrameBuffers m_accumulated; // averages (depth: minimum) over samples
@@ -171,8 +185,9 @@ class Frame : public Object
   std::condition_variable m_doneCondition;
   bool m_rendering{false};
   std::atomic<bool> m_cancel{false};
-  std::atomic<uint32_t> m_tilesDone{0};
-  uint32_t m_tilesTotal{0};
+  // (tile, sample) pairs of the render in flight, for renderProgress.
+  std::atomic<uint64_t> m_tileSamplesDone{0};
+  uint64_t m_tileSamplesTotal{0};
   float m_duration{0.f};
   std::chrono::steady_clock::time_point m_start;
 };

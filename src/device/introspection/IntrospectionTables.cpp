@@ -2758,6 +2758,12 @@ alignas(4) constexpr int8_t kDefault28_denoise[] = {0, 0, 0, 0};
 constexpr int32_t kDefault28_sampleLimit[] = {0};
 // sampleLimit minimum: ANARI_INT32
 constexpr int32_t kMinimum28_sampleLimit[] = {0};
+// pixelSamples default: ANARI_INT32
+constexpr int32_t kDefault28_pixelSamples[] = {1};
+// pixelSamples minimum: ANARI_INT32
+constexpr int32_t kMinimum28_pixelSamples[] = {1};
+// pixelSamples maximum: ANARI_INT32
+constexpr int32_t kMaximum28_pixelSamples[] = {65536};
 // aoSamples default: ANARI_INT32
 constexpr int32_t kDefault28_aoSamples[] = {1};
 // aoSamples minimum: ANARI_INT32
@@ -2813,6 +2819,16 @@ constexpr ParameterEntry kParameters28[] = {
         .defaultValue = kDefault28_sampleLimit,
         .minimum = kMinimum28_sampleLimit,
         .extension = kPrismRenderers},
+    {.name = "pixelSamples",
+        .types = {kTypeList40, 1},
+        .description = "samples per pixel one anariRenderFrame takes (with "
+                       "accumulation they add to those gathered so far; "
+                       "without it the frame shows their average); the image "
+                       "equals that of as many one-sample frames",
+        .defaultValue = kDefault28_pixelSamples,
+        .minimum = kMinimum28_pixelSamples,
+        .maximum = kMaximum28_pixelSamples,
+        .extension = kPrismRenderers},
     {.name = "aoSamples",
         .types = {kTypeList40, 1},
         .description = "occlusion rays per pixel per frame",
@@ -2857,6 +2873,12 @@ alignas(4) constexpr int8_t kDefault29_denoise[] = {0, 0, 0, 0};
 constexpr int32_t kDefault29_sampleLimit[] = {0};
 // sampleLimit minimum: ANARI_INT32
 constexpr int32_t kMinimum29_sampleLimit[] = {0};
+// pixelSamples default: ANARI_INT32
+constexpr int32_t kDefault29_pixelSamples[] = {1};
+// pixelSamples minimum: ANARI_INT32
+constexpr int32_t kMinimum29_pixelSamples[] = {1};
+// pixelSamples maximum: ANARI_INT32
+constexpr int32_t kMaximum29_pixelSamples[] = {65536};
 // clang-format on
 constexpr ValueEntry kValues29_mode[] = {{"Ns", ANARI_UNKNOWN, kPrismRenderers},
     {"Ng", ANARI_UNKNOWN, kPrismRenderers},
@@ -2917,6 +2939,16 @@ constexpr ParameterEntry kParameters29[] = {
         .defaultValue = kDefault29_sampleLimit,
         .minimum = kMinimum29_sampleLimit,
         .extension = kPrismRenderers},
+    {.name = "pixelSamples",
+        .types = {kTypeList40, 1},
+        .description = "samples per pixel one anariRenderFrame takes (with "
+                       "accumulation they add to those gathered so far; "
+                       "without it the frame shows their average); the image "
+                       "equals that of as many one-sample frames",
+        .defaultValue = kDefault29_pixelSamples,
+        .minimum = kMinimum29_pixelSamples,
+        .maximum = kMaximum29_pixelSamples,
+        .extension = kPrismRenderers},
     {.name = "mode",
         .types = {kTypeList0, 1},
         .description =
@@ -2948,6 +2980,12 @@ alignas(4) constexpr int8_t kDefault30_denoise[] = {0, 0, 0, 0};
 constexpr int32_t kDefault30_sampleLimit[] = {0};
 // sampleLimit minimum: ANARI_INT32
 constexpr int32_t kMinimum30_sampleLimit[] = {0};
+// pixelSamples default: ANARI_INT32
+constexpr int32_t kDefault30_pixelSamples[] = {1};
+// pixelSamples minimum: ANARI_INT32
+constexpr int32_t kMinimum30_pixelSamples[] = {1};
+// pixelSamples maximum: ANARI_INT32
+constexpr int32_t kMaximum30_pixelSamples[] = {65536};
 // maxPathLength default: ANARI_INT32
 constexpr int32_t kDefault30_maxPathLength[] = {8};
 // maxPathLength minimum: ANARI_INT32
@@ -3001,6 +3039,16 @@ constexpr ParameterEntry kParameters30[] = {
         .defaultValue = kDefault30_sampleLimit,
         .minimum = kMinimum30_sampleLimit,
         .extension = kPrismRenderers},
+    {.name = "pixelSamples",
+        .types = {kTypeList40, 1},
+        .description = "samples per pixel one anariRenderFrame takes (with "
+                       "accumulation they add to those gathered so far; "
+                       "without it the frame shows their average); the image "
+                       "equals that of as many one-sample frames",
+        .defaultValue = kDefault30_pixelSamples,
+        .minimum = kMinimum30_pixelSamples,
+        .maximum = kMaximum30_pixelSamples,
+        .extension = kPrismRenderers},
     {.name = "maxPathLength",
         .types = {kTypeList40, 1},
         .description = "the most surfaces a path meets (1: direct light only)",
@@ -3047,6 +3095,12 @@ alignas(4) constexpr int8_t kDefault31_denoise[] = {0, 0, 0, 0};
 constexpr int32_t kDefault31_sampleLimit[] = {0};
 // sampleLimit minimum: ANARI_INT32
 constexpr int32_t kMinimum31_sampleLimit[] = {0};
+// pixelSamples default: ANARI_INT32
+constexpr int32_t kDefault31_pixelSamples[] = {1};
+// pixelSamples minimum: ANARI_INT32
+constexpr int32_t kMinimum31_pixelSamples[] = {1};
+// pixelSamples maximum: ANARI_INT32
+constexpr int32_t kMaximum31_pixelSamples[] = {65536};
 // eyeLightBlendRatio default: ANARI_FLOAT32
 constexpr float kDefault31_eyeLightBlendRatio[] = {0.5f};
 // eyeLightBlendRatio minimum: ANARI_FLOAT32
@@ -3109,6 +3163,16 @@ constexpr ParameterEntry kParameters31[] = {
             "unchanged (hdAnari's convergence control)",
         .defaultValue = kDefault31_sampleLimit,
         .minimum = kMinimum31_sampleLimit,
+        .extension = kPrismRenderers},
+    {.name = "pixelSamples",
+        .types = {kTypeList40, 1},
+        .description = "samples per pixel one anariRenderFrame takes (with "
+                       "accumulation they add to those gathered so far; "
+                       "without it the frame shows their average); the image "
+                       "equals that of as many one-sample frames",
+        .defaultValue = kDefault31_pixelSamples,
+        .minimum = kMinimum31_pixelSamples,
+        .maximum = kMaximum31_pixelSamples,
         .extension = kPrismRenderers},
     {.name = "eyeLightBlendRatio",
         .types = {kTypeList6, 1},
@@ -4207,7 +4271,7 @@ const ObjectEntry kObjects[] = {
                        "fraction of the hemisphere",
         .extension = kPrismRenderers,
         .contributors = {kContributors28, 4},
-        .parameters = {kParameters28, 10},
+        .parameters = {kParameters28, 11},
         .properties = {kProperties28, 1}},
     // ANARI_RENDERER "debug"
     {.type = ANARI_RENDERER,
@@ -4215,7 +4279,7 @@ const ObjectEntry kObjects[] = {
         .description = "false-color views of geometry, ids and attributes",
         .extension = kPrismRenderers,
         .contributors = {kContributors29, 4},
-        .parameters = {kParameters29, 8},
+        .parameters = {kParameters29, 9},
         .properties = {kProperties29, 1}},
     // ANARI_RENDERER "pathtracer"
     {.type = ANARI_RENDERER,
@@ -4225,7 +4289,7 @@ const ObjectEntry kObjects[] = {
                        "path per pixel per frame",
         .extension = kPrismRenderers,
         .contributors = {kContributors30, 4},
-        .parameters = {kParameters30, 10},
+        .parameters = {kParameters30, 11},
         .properties = {kProperties30, 2}},
     // ANARI_RENDERER "raycast"
     {.type = ANARI_RENDERER,
@@ -4235,7 +4299,7 @@ const ObjectEntry kObjects[] = {
                        "(empty space skipped): the fast preview",
         .extension = kPrismRenderers,
         .contributors = {kContributors31, 4},
-        .parameters = {kParameters31, 11},
+        .parameters = {kParameters31, 12},
         .properties = {kProperties31, 1}},
     // ANARI_SURFACE
     {.type = ANARI_SURFACE,

@@ -120,6 +120,11 @@ class Renderer : public Object
   {
     return m_sampleLimit;
   }
+  // The 'pixelSamples': how many samples per pixel one render takes.
+  uint32_t pixelSamples() const
+  {
+    return m_pixelSamples;
+  }
   // Samples per pixel after which accumulating more changes little
   // (refinementProgress reaches 1 there).
   virtual uint32_t convergedSampleCount() const
@@ -181,6 +186,7 @@ class Renderer : public Object
 
   bool m_denoise{false};
   uint32_t m_sampleLimit{0};
+  uint32_t m_pixelSamples{1};
   uint32_t m_seed{0}; // read by the renderers that declare `seed`
   float3 m_ambientColor{1, 1, 1};
   float m_ambientRadiance{0.f};
