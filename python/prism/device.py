@@ -22,9 +22,9 @@ _SAMPLES_PER_RENDER = ("pixelSamples", "spp", "samplesPerPixel")
 
 
 class Renderer(Object):
-    """A renderer. pixelSamples (as other devices take it) sets how many
-    samples each Frame.render() accumulates when the device has no such
-    parameter (the prism device renders one per frame)."""
+    """A renderer. pixelSamples (or spp, samplesPerPixel) sets how many
+    samples each Frame.render() accumulates; a renderer that does not
+    declare it gets that many one-sample frames instead."""
 
     def setParameter(self, name, *args):
         if name in _SAMPLES_PER_RENDER and not self._declared_types(name):
