@@ -12,6 +12,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <numbers>
 
 namespace prism::scene_io {
 namespace {
@@ -98,7 +99,7 @@ void placeCamera(const nsi::ResolvedScene &resolved, scenes::Scene &scene)
   camera.orthographic = item.orthographic;
   camera.height = framing.height;
   if (!item.orthographic)
-    camera.fovyDegrees = float(framing.fovy * 180.0 / M_PI);
+    camera.fovyDegrees = float(framing.fovy * 180.0 / std::numbers::pi);
 }
 
 std::string failure(const std::string &fileName, const Problems &problems)
