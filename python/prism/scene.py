@@ -1,7 +1,7 @@
 """prism.load_scene(device, path): scene files (glTF/GLB, OBJ, raw volumes,
-NanoVDB) and demo scenes ("demo:cornell-box") as a world and a camera,
-through the scene loaders prism-render uses (src/scene-io), lit and framed
-by the same rules."""
+NanoVDB, NSI streams) and demo scenes ("demo:cornell-box") as a world and a
+camera, through the scene loaders prism-render uses (src/scene-io), lit and
+framed by the same rules."""
 
 from . import _native
 from .objects import Object

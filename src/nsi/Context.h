@@ -29,6 +29,11 @@ class Context
   }
   void report(int level, const std::string &message) const;
   ReportFunction reporter() const;
+  // The node graph, for loaders that resolve it themselves (scene-io).
+  const Graph &graph() const
+  {
+    return m_graph;
+  }
 
   // Re-entrant: an included stream calls back into the API on this thread.
   std::recursive_mutex mutex;

@@ -2,6 +2,9 @@
 
 #include "GltfLoader.h"
 #include "NanoVdbLoader.h"
+#ifdef PRISM_SCENE_IO_HAS_NSI
+#include "NsiLoader.h"
+#endif
 #include "ObjLoader.h"
 
 namespace prism::scene_io {
@@ -58,11 +61,15 @@ LoadResult loadScene(
     return loadNanoVdb(
         device, source.path, options.gridName, options.transferFunction);
   case SceneFormat::Nsi:
+#ifdef PRISM_SCENE_IO_HAS_NSI
+    return loadNsi(device, source.path);
+#else
     break;
+#endif
   }
   result.error = "'" + source.path
-                 + "' is an NSI stream: libnsi renders it (nsi-render, or "
-                   "prism-render), it is not loaded into a world";
+                 + "' is an NSI stream, and this build has no libnsi to "
+                   "load it with";
   return result;
 }
 

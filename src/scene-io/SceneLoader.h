@@ -28,8 +28,8 @@ struct LoadOptions
   TransferFunctionOptions transferFunction; // volumes' colors
 };
 
-// Builds the scene on `device`. NSI streams are not loaded into a world
-// (libnsi renders them itself): their source is an error here.
+// Builds the scene on `device`. NSI streams load through libnsi's reader
+// and world builder (NsiLoader.h) where libnsi is built.
 LoadResult loadScene(ANARIDevice device,
     const SceneSource &source,
     const LoadOptions &options = {});

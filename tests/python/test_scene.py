@@ -2,11 +2,13 @@
 uses, lit and framed by the same rules, in a few lines."""
 
 import os
+import subprocess
 
 import numpy as np
 import pytest
 
 import prism
+from conftest import build_dir
 
 DATA = os.path.join(os.path.dirname(__file__), "..", "cli", "data")
 
@@ -100,3 +102,45 @@ def test_what_cannot_be_loaded_is_a_value_error(device):
     with pytest.raises(ValueError, match="is not finite"):
         prism.load_scene(device, os.path.join(DATA, "animated-bar.gltf"),
                          time=float("nan"))
+
+
+# NSI streams: libnsi's reader and world builder (src/scene-io/NsiLoader.h)
+# build the world on the caller's device; the stream's camera is the scene's.
+def test_nsi_stream_renders_lit_through_its_camera(device):
+    scene = prism.load_scene(device, os.path.join(DATA, "floor-lamp.nsi"),
+                             aspect=48 / 36)
+    # The stream's camera: at (0, 1, 6), fov 45 degrees.
+    assert scene.view["position"] == pytest.approx((0, 1, 6), abs=1e-5)
+    assert scene.view["fovy_degrees"] == pytest.approx(45, abs=0.5)
+    image = np.asarray(render(device, scene, size=(48, 36), spp=8))
+    # Row 0 at the bottom: the floor there, lit by the hidden lamp (the C++
+    # test measured a mean of 0.147); the top rows see the black background.
+    assert image[:10].mean() > 0.05
+    assert image[-6:].mean() < 0.005
+
+
+def test_nsi_stream_matches_prism_render(device, tmp_path):
+    """prism-render renders the stream through libnsi's own render control
+    (48 x 36, 8 samples a pixel, an sRGB PNG); the loaded world through the
+    same camera, sRGB-encoded, differs by 0.002 on average (measured; noise
+    of both renders), asserted below 0.01."""
+    subprocess.run([os.path.join(build_dir(), "bin", "prism-render"),
+                    os.path.join(DATA, "floor-lamp.nsi")], cwd=tmp_path,
+                   check=True, capture_output=True)
+    from PIL import Image
+    reference = np.asarray(Image.open(tmp_path / "floor-lamp.png")
+                           .convert("RGB"), dtype=np.float64) / 255
+    scene = prism.load_scene(device, os.path.join(DATA, "floor-lamp.nsi"),
+                             aspect=48 / 36)
+    linear = np.clip(np.asarray(render(device, scene, size=(48, 36), spp=32),
+                                dtype=np.float64)[::-1], 0, 1)
+    encoded = np.where(linear <= 0.0031308, 12.92 * linear,
+                       1.055 * linear ** (1 / 2.4) - 0.055)
+    assert reference.shape == encoded.shape == (36, 48, 3)
+    assert reference[-10:].mean() > 0.2  # prism-render's floor is lit
+    assert np.abs(encoded - reference).mean() < 0.01
+
+
+def test_broken_nsi_stream_raises_one_error(device):
+    with pytest.raises(ValueError, match="broken.nsi:3: expected a statement"):
+        prism.load_scene(device, os.path.join(DATA, "broken.nsi"))

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Runs prism-viewer under Xvfb on a script and checks what it did.
 
-usage: check_viewer_run.py script|errors|library|panels|material|mpi VIEWER
+usage: check_viewer_run.py script|errors|library|panels|material|mpi|nsi VIEWER
                           XVFB_RUN
                           WORKDIR [MPIEXEC]
 
@@ -33,6 +33,7 @@ non-zero status.
 `panels`: every panel section drawn (panels_test says how it is checked).
 `material`: the picked surface's material edited (material_test says how).
 `mpi`: rank 0's window followed by another process (mpi_test says how).
+`nsi`: an NSI stream opened through its own camera (nsi_test says how).
 """
 import os
 import subprocess
@@ -244,6 +245,30 @@ def library_test(viewer, xvfb, work):
           "the screenshot was written")
 
 
+def nsi_test(viewer, xvfb, work):
+    """tests/cli/data/floor-lamp.nsi (a floor lit by a hidden quad lamp, seen
+    from its camera at (0, 1, 6)) at 160x120: the script ends with status 0
+    and its screenshot shows the lit floor in the lower half (mean above 20
+    of 255) under the black background at the top (mean below 3)."""
+    stream = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..",
+                          "cli", "data", "floor-lamp.nsi")
+    script = os.path.join(work, "nsi.txt")
+    with open(script, "w") as f:
+        f.write("wait-samples 2\nscreenshot floor.png\nquit\n")
+    result = run([xvfb, "-a", viewer, stream, "--size", "160x120",
+                  "--script", script], work)
+    check(result.returncode == 0, "the script ends with status 0")
+    path = os.path.join(work, "floor.png")
+    check(os.path.exists(path), "the screenshot was written")
+    if not os.path.exists(path):
+        return
+    image = Image.open(path).convert("RGB")
+    floor = sum(region_mean(image, 80, 105, 8)) / 3
+    sky = sum(region_mean(image, 80, 8, 6)) / 3
+    check(floor > 20, "the floor is lit (mean %.1f)" % floor)
+    check(sky < 3, "the background above is black (mean %.1f)" % sky)
+
+
 def panels_test(viewer, xvfb, work):
     """Every panel section open (--panels open) with the debug renderer
     on demo:cornell-box at 480x720: the panels generated from
@@ -373,7 +398,7 @@ def main():
     os.makedirs(work, exist_ok=True)
     tests = {"script": script_test, "errors": errors_test,
              "library": library_test, "panels": panels_test,
-             "mpi": mpi_test, "material": material_test}
+             "mpi": mpi_test, "material": material_test, "nsi": nsi_test}
     tests[what](viewer, xvfb, work)
     if failures:
         print("%d check(s) failed" % len(failures))

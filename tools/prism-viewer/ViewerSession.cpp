@@ -192,10 +192,6 @@ std::string ViewerSession::loadScene(const std::string &text)
   const scene_io::SourceResult source = scene_io::identifySceneSource(text);
   if (!source.ok())
     return source.error;
-  if (source.source.format == scene_io::SceneFormat::Nsi)
-    return "'" + text
-           + "' is an NSI stream, which names its own camera and outputs: "
-             "render it with nsi-render";
   scene_io::LoadOptions options;
   options.gltfCamera = m_options.cameraIndex;
   const std::string error = load(source.source, options, true);
