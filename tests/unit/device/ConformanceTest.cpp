@@ -244,8 +244,9 @@ bool enforcesDefinitions(ANARIDataType type)
 std::vector<unsigned char> beyond(
     ANARIDataType type, const void *bytes, int step)
 {
-  std::vector<unsigned char> out(
-      (const unsigned char *)bytes, (const unsigned char *)bytes + 128);
+  // Exactly the value's bytes: the definitions' tables hold no more.
+  std::vector<unsigned char> out((const unsigned char *)bytes,
+      (const unsigned char *)bytes + anari::sizeOf(type));
   const bool isFloat =
       int(type) >= ANARI_FLOAT32 && int(type) <= ANARI_FLOAT32_VEC4;
   for (int i = 0; i < anari::componentsOf(type); i++) {
