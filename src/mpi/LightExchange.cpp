@@ -41,7 +41,11 @@ bool writeValue(const std::string &name,
     return true;
   }
   if (anari::isObject(type)) {
-    const auto *array = dynamic_cast<const Array *>(value.object());
+    // An object whose own type is an array type is an Array.
+    const Object *object = value.object();
+    const auto *array = object && isArrayType(object->type())
+                            ? static_cast<const Array *>(object)
+                            : nullptr;
     if (!isArrayType(type) || !array || array->isObjectArray()) {
       problem = "its '" + name + "' (" + anari::toString(type)
                 + ") cannot be sent to other processes";
