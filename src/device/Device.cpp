@@ -810,6 +810,12 @@ void Device::flushCommitsLocked()
   }
   for (Object *object : unique)
     object->applyCommit();
+  // What the commits read may have changed since it was committed itself
+  // (an array the application released now reads a private copy): brought
+  // up to date before anything is built on it.
+  const uint64_t generation = ++m_refreshGeneration;
+  for (Object *object : unique)
+    object->refreshDependencies(generation);
   for (Object *object : unique) {
     try {
       object->finalize();

@@ -203,15 +203,20 @@ void Object::refresh(uint64_t generation)
   if (m_refreshedGeneration == generation)
     return; // shared children and reference cycles are visited once
   m_refreshedGeneration = generation;
+  refreshDependencies(generation);
   bool changed = false;
-  for (auto &[object, epoch] : m_dependencies) {
-    object->refresh(generation);
+  for (const auto &[object, epoch] : m_dependencies)
     changed |= object->epoch() != epoch;
-  }
   if (changed) {
     applyCommit();
     finalize();
   }
+}
+
+void Object::refreshDependencies(uint64_t generation)
+{
+  for (auto &dependency : m_dependencies)
+    dependency.object->refresh(generation);
 }
 
 const introspection::ParameterDefinition *Object::declaration(const char *name)

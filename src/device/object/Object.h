@@ -140,6 +140,9 @@ class Object
   // was unmapped, a child that was recommitted) changed since; children
   // first. Runs at most once per `generation` (one per frame start).
   void refresh(uint64_t generation);
+  // refresh() of every object this one read, but not of this one: what a
+  // commit just read is brought up to date before finalize() builds on it.
+  void refreshDependencies(uint64_t generation);
 
   // Reports a message naming this object, its type and subtype.
   void report(ANARIStatusSeverity severity,
