@@ -20,6 +20,10 @@ timeout=${PRISM_FUZZ_TIMEOUT:-30}
 seed=${PRISM_FUZZ_SEED:-1}
 
 export CC=clang CXX=clang++
+# Every target, however its own defaults read: no __tls_get_addr
+# interception, whose misreading of dynamic TLS blocks crashes
+# LeakSanitizer's tracer (see scripts/test.sh).
+export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}intercept_tls_get_addr=0"
 PRISM_BUILD_DIR="$build" "$root/scripts/build.sh" \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPRISM_SANITIZE=address,undefined \
   -DPRISM_BUILD_FUZZERS=ON -DPRISM_BUILD_TOOLS=ON \
@@ -45,14 +49,10 @@ for name in api loader nsi trace; do
   echo "== fuzz_$name for ${budget}s from $(ls "$scratch" | wc -l) inputs"
   start=$(date +%s)
   # Fuzzing (a budget of 0 skips it), then every input of the grown corpus
-  # once more with leak checks. LeakSanitizer stops every thread for each
-  # check, and its tracer itself crashes now and then ("Tracer caught
-  # signal 11" in ScanRangeForPointers: seen mid-run with TBB's workers
-  # coming and going, and in the check at exit after a long run), so the
-  # fuzzing runs with no leak check at all (not even at exit) and leaks are
-  # looked for in the replay, which runs again if only the tracer
-  # failed. libFuzzer exits non-zero on a crash, leak, timeout or OOM; its
-  # per-input progress lines are left out of the log (pulses stay).
+  # once more with leak checks (each check stops every thread, so the
+  # fuzzing runs without them). libFuzzer exits
+  # non-zero on a crash, leak, timeout or OOM; its per-input progress lines
+  # are left out of the log (pulses stay).
   status=0
   set +e
   if [ "$budget" -gt 0 ]; then
@@ -61,26 +61,11 @@ for name in api loader nsi trace; do
       | grep --line-buffered -v -E '^#[0-9]+.*(NEW|REDUCE) '
     status=${PIPESTATUS[0]}
   fi
-  # Every input once more with leak checks, and again (twice at most) if
-  # only LeakSanitizer's tracer failed: a rehearsal saw it crash twice in a
-  # row in the debug layer's replay. The arguments prefix the fuzzer (env
-  # and an environment).
-  replay() {
-    local log="$build/fuzz-work/$name-replay.log"
-    for attempt in 1 2 3; do
-      [ "$status" = 0 ] || return
-      "$@" "$fuzzer" "${options[@]}" -runs=0 "$scratch" 2>&1 \
-        | grep --line-buffered -v -E '^#[0-9]+.*(NEW|REDUCE) ' \
-        | tee "$log"
-      status=${PIPESTATUS[0]}
-      if [ "$status" != 0 ] && [ "$attempt" -lt 3 ] \
-        && grep -q "LeakSanitizer has encountered a fatal error" "$log"; then
-        echo "== fuzz_$name: LeakSanitizer's tracer crashed; replaying again"
-        status=0
-        continue
-      fi
-      return
-    done
+  replay() { # the arguments prefix the fuzzer (env and an environment)
+    [ "$status" = 0 ] || return
+    "$@" "$fuzzer" "${options[@]}" -runs=0 "$scratch" 2>&1 \
+      | grep --line-buffered -v -E '^#[0-9]+.*(NEW|REDUCE) '
+    status=${PIPESTATUS[0]}
   }
   replay env
   # The API inputs once more through the debug layer wrapped around prism.
