@@ -4,8 +4,11 @@
 // of its own (computed once, cached in the build tree) is printed with the
 // wall and CPU time spent so far, then the log-log slope of error over
 // samples and the time to reach fixed RMSE levels, as medians over runs.
-// CPU seconds beside wall seconds show what idle threads cost. Never a
-// test: it prints.
+// CPU seconds beside wall seconds show what idle threads cost. With
+// --error-threshold T the renderer samples adaptively (errorThreshold) and
+// the mean samples per pixel actually taken are printed too: reaching a
+// level with fewer of them than a uniform run is what adaptivity buys.
+// Never a test: it prints.
 // The reference is rendered with another renderer `seed`: independent
 // sequences. A reference continuing the measured samples' own sequence
 // shares their first N samples and so scores their error too low.
@@ -37,6 +40,7 @@ struct Options
   uint32_t referenceSamples{4096};
   int runs{3};
   int maxPathLength{8};
+  float errorThreshold{0.f}; // of the measured runs; 0: uniform
   std::string cache; // folder for the reference; default beside the binary
   std::vector<std::string> scenes; // default: all of them
 };
@@ -87,11 +91,27 @@ class Renderer
         &options.maxPathLength);
     anariCommitParameters(m_device, m_renderer);
   }
-  // Later frames draw their samples from the sequences of this seed.
-  void useSeed(int32_t seed) const
+  // Later frames draw their samples from the sequences of this seed,
+  // stopping tiles at `errorThreshold` (0: every pixel every sample).
+  void useSeed(int32_t seed, float errorThreshold) const
   {
     anariSetParameter(m_device, m_renderer, "seed", ANARI_INT32, &seed);
+    anariSetParameter(
+        m_device, m_renderer, "errorThreshold", ANARI_FLOAT32, &errorThreshold);
     anariCommitParameters(m_device, m_renderer);
+  }
+  // The pixels the frame's next sample will take (adaptive sampling).
+  uint64_t activePixels(ANARIFrame frame) const
+  {
+    uint64_t pixels = 0;
+    anariGetProperty(m_device,
+        frame,
+        "activePixels",
+        ANARI_UINT64,
+        &pixels,
+        sizeof(pixels),
+        ANARI_WAIT);
+    return pixels;
   }
   ~Renderer()
   {
@@ -204,14 +224,13 @@ std::vector<float> reference(const Renderer &renderer,
       options.referenceSamples,
       path.c_str());
   std::fflush(stdout);
-  renderer.useSeed(kReferenceSeed);
+  renderer.useSeed(kReferenceSeed, 0.f);
   ANARIFrame frame = renderer.newFrame();
   double cpuSeconds = 0.0;
   for (uint32_t s = 0; s < options.referenceSamples; s++)
     renderer.addSample(frame, cpuSeconds);
   image = renderer.color(frame);
   renderer.release(frame);
-  renderer.useSeed(kMeasuredSeed);
   std::filesystem::create_directories(folder);
   std::ofstream(path, std::ios::binary)
       .write((const char *)image.data(),
@@ -223,6 +242,7 @@ struct Point
 {
   uint32_t samples;
   double error, seconds, cpuSeconds;
+  double meanSamples; // per pixel, taken: fewer than `samples` if adaptive
 };
 
 // Least-squares slope of log(error) over log(samples), from 4 spp on
@@ -283,6 +303,8 @@ Options parseOptions(int argc, char **argv)
       options.referenceSamples = uint32_t(std::max(16, std::atoi(argv[++i])));
     } else if (arg == "--max-path-length" && hasValue) {
       options.maxPathLength = std::max(1, std::atoi(argv[++i]));
+    } else if (arg == "--error-threshold" && hasValue) {
+      options.errorThreshold = std::max(0.f, float(std::atof(argv[++i])));
     } else if (arg == "--scene" && hasValue) {
       options.scenes.push_back(argv[++i]);
     } else if (arg == "--cache" && hasValue) {
@@ -296,7 +318,7 @@ Options parseOptions(int argc, char **argv)
       std::fprintf(stderr,
           "usage: prism-bench-convergence [--quick] [--runs N] [--size WxH] "
           "[--max-spp N] [--reference-spp N] [--max-path-length N] "
-          "[--scene NAME]... [--cache FOLDER]\n");
+          "[--error-threshold T] [--scene NAME]... [--cache FOLDER]\n");
       std::exit(2);
     }
   }
@@ -307,39 +329,54 @@ Options parseOptions(int argc, char **argv)
 void measure(
     const Options &options, const std::string &sceneName, const char *argv0)
 {
-  std::printf("\n== %s %ux%u, maxPathLength %d\n",
+  std::printf("\n== %s %ux%u, maxPathLength %d, errorThreshold %g\n",
       sceneName.c_str(),
       options.width,
       options.height,
-      options.maxPathLength);
+      options.maxPathLength,
+      double(options.errorThreshold));
   const Renderer renderer(options, sceneName);
   const std::vector<float> ref = reference(renderer, options, sceneName, argv0);
+  renderer.useSeed(kMeasuredSeed, options.errorThreshold);
+  const double pixels = double(options.width) * options.height;
 
   std::vector<double> slopes;
   std::vector<std::vector<double>> times(std::size(kLevels)),
-      cpuTimes(std::size(kLevels));
+      cpuTimes(std::size(kLevels)), samplesTo(std::size(kLevels));
   for (int run = 0; run < options.runs; run++) {
     std::vector<Point> points;
     ANARIFrame frame = renderer.newFrame();
-    double seconds = 0.0, cpuSeconds = 0.0;
+    double seconds = 0.0, cpuSeconds = 0.0, taken = 0.0;
+    uint64_t active = uint64_t(pixels);
     for (uint32_t s = 1; s <= options.maxSamples; s++) {
       seconds += renderer.addSample(frame, cpuSeconds);
+      taken += double(active);
+      if (options.errorThreshold > 0.f)
+        active = renderer.activePixels(frame);
       if ((s & (s - 1)) == 0)
-        points.push_back(
-            {s, rmse(renderer.color(frame), ref), seconds, cpuSeconds});
+        points.push_back({s,
+            rmse(renderer.color(frame), ref),
+            seconds,
+            cpuSeconds,
+            taken / pixels});
     }
     renderer.release(frame);
-    std::printf("run %d\n  spp      RMSE    seconds  CPU seconds\n", run + 1);
+    std::printf(
+        "run %d\n  spp      RMSE    seconds  CPU seconds  mean spp "
+        "taken\n",
+        run + 1);
     for (const Point &p : points)
-      std::printf("%5u  %8.5f  %9.3f  %11.3f\n",
+      std::printf("%5u  %8.5f  %9.3f  %11.3f  %14.1f\n",
           p.samples,
           p.error,
           p.seconds,
-          p.cpuSeconds);
+          p.cpuSeconds,
+          p.meanSamples);
     slopes.push_back(slope(points));
     for (size_t l = 0; l < std::size(kLevels); l++) {
       times[l].push_back(timeTo(points, kLevels[l], &Point::seconds));
       cpuTimes[l].push_back(timeTo(points, kLevels[l], &Point::cpuSeconds));
+      samplesTo[l].push_back(timeTo(points, kLevels[l], &Point::meanSamples));
     }
   }
   std::printf("%s, median of %d runs: slope %.3f (error ~ N^%.3f)\n",
@@ -348,16 +385,19 @@ void measure(
       median(slopes),
       median(slopes));
   for (size_t l = 0; l < std::size(kLevels); l++) {
-    const double t = median(times[l]), cpu = median(cpuTimes[l]);
+    const double t = median(times[l]), cpu = median(cpuTimes[l]),
+                 spp = median(samplesTo[l]);
     if (t < 0)
       std::printf("  RMSE %.3f: not reached within %u spp\n",
           kLevels[l],
           options.maxSamples);
     else
-      std::printf("  RMSE %.3f reached in %.2f s wall, %.2f s CPU\n",
+      std::printf(
+          "  RMSE %.3f reached in %.2f s wall, %.2f s CPU, %.1f spp taken\n",
           kLevels[l],
           t,
-          cpu);
+          cpu,
+          spp);
   }
 }
 

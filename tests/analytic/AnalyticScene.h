@@ -107,6 +107,17 @@ class AnalyticTest : public PrismDeviceTest
     anariCommitParameters(m_device, w);
     return w;
   }
+  // A box corner without lights: a grey floor, a green wall, a red ball
+  // (bounces, shadows and occlusion once lit).
+  ANARIWorld boxCorner()
+  {
+    return world({surface(geometry(
+                              "quad", {-3, -3, 0, 3, -3, 0, 3, 3, 0, -3, 3, 0}),
+                      matte(0.8f, 0.8f, 0.8f)),
+        surface(geometry("quad", {-3, 1, 0, 3, 1, 0, 3, 1, 3, -3, 1, 3}),
+            matte(0.2f, 0.7f, 0.3f)),
+        surface(geometry("sphere", {0, 0, 0.5f}), matte(0.9f, 0.3f, 0.2f))});
+  }
   ANARICamera perspective(const float eye[3], const float dir[3], float fovy)
   {
     ANARICamera c = anariNewCamera(m_device, "perspective");

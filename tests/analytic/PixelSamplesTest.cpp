@@ -16,12 +16,7 @@ class PixelSamples : public AnalyticTest
   {
     AnalyticTest::SetUp();
     // A lit box corner: bounces, shadows, occlusion and light sampling.
-    m_world = world({surface(geometry("quad",
-                                 {-3, -3, 0, 3, -3, 0, 3, 3, 0, -3, 3, 0}),
-                         matte(0.8f, 0.8f, 0.8f)),
-        surface(geometry("quad", {-3, 1, 0, 3, 1, 0, 3, 1, 3, -3, 1, 3}),
-            matte(0.2f, 0.7f, 0.3f)),
-        surface(geometry("sphere", {0, 0, 0.5f}), matte(0.9f, 0.3f, 0.2f))});
+    m_world = boxCorner();
     ANARILight light = anariNewLight(m_device, "point");
     const float position[3] = {1, -1, 3}, intensity = 10.f;
     anariSetParameter(

@@ -240,6 +240,16 @@ void Frame::render()
     m_accumulated.resize(m_width, m_height, needs);
     m_samplesDone = 0;
   }
+  // A new average (restarted, resized, or every render without
+  // accumulation) samples every tile again. In lockstep every process
+  // renders every row, so there tiles never stop.
+  if (m_samplesDone == 0) {
+    m_convergence.reset(m_width,
+        m_height,
+        kTileSize,
+        m_averaging && !m_sharing.lockstep ? m_renderer->errorThreshold()
+                                           : 0.f);
+  }
   const size_t pixels = size_t(m_width) * m_height;
   for (auto &[name, channel] : m_channels)
     channel.pixels.resize(pixels * anari::sizeOf(channel.type));
@@ -292,11 +302,20 @@ void Frame::renderTileSamples(
     const uint32_t tx = index % tilesX, ty = index / tilesX;
     if (!m_cancel && ty % m_sharing.tileRowParts == m_sharing.tileRowPart) {
       const Tile tile = tileAt(tx, ty);
-      RenderContext sample = context;
-      sample.sampleIndex = m_sampleIndex + k;
-      m_renderer->renderTile(sample, tile, m_buffers, m_cancel);
-      if (m_averaging)
-        accumulate(tile, m_samplesDone + k);
+      if (m_convergence.active(index)) {
+        RenderContext sample = context;
+        sample.sampleIndex = m_sampleIndex + k;
+        m_renderer->renderTile(sample, tile, m_buffers, m_cancel);
+        if (m_averaging) {
+          // An active tile has taken every sample so far.
+          accumulate(tile, m_samplesDone + k);
+          m_convergence.update(index,
+              tile,
+              m_samplesDone + k,
+              m_buffers.color,
+              m_accumulated.color);
+        }
+      }
       if (k + 1 == m_samplesThisRender)
         resolve(tile);
     } // else another process renders this row of tiles
@@ -584,6 +603,20 @@ const FrameBuffers &Frame::linearPixels()
   return m_averaging ? m_accumulated : m_buffers;
 }
 
+bool Frame::activePixelsProperty(
+    ANARIDataType type, void *mem, uint64_t size, ANARIWaitMask mask)
+{
+  if (type != ANARI_UINT64 || !mem || size < sizeof(uint64_t))
+    return false;
+  if (mask & ANARI_WAIT)
+    waitUntilDone();
+  else if (!ready(ANARI_NO_WAIT))
+    return false; // tiles stop under a render in flight
+  const uint64_t pixels = m_renders > 0 ? m_convergence.activePixels() : 0;
+  std::memcpy(mem, &pixels, sizeof(pixels));
+  return true;
+}
+
 bool Frame::getProperty(const std::string &name,
     ANARIDataType type,
     void *mem,
@@ -592,6 +625,8 @@ bool Frame::getProperty(const std::string &name,
 {
   if (name == "numSamples")
     return samplesProperty(type, mem, size, mask);
+  if (name == "activePixels")
+    return activePixelsProperty(type, mem, size, mask);
   if (type != ANARI_FLOAT32 || !mem || size < sizeof(float))
     return false;
   float value;

@@ -5,6 +5,7 @@
 #include "../denoise/Denoiser.h"
 #include "../object/Object.h"
 #include "../renderer/FrameBuffers.h"
+#include "TileConvergence.h"
 
 #include <atomic>
 #include <chrono>
@@ -103,7 +104,10 @@ class Frame : public Object
 
   // Besides the spec's duration and progress: "numSamples" (INT32 or
   // UINT32), the samples per pixel the channels hold (accumulated so far;
-  // 1 after a render without accumulation), as hdAnari asks.
+  // 1 after a render without accumulation), as hdAnari asks; with
+  // adaptive sampling, those of the tiles sampled longest.
+  // "activePixels" (UINT64): the pixels the next render would sample (all
+  // of them but with the renderer's errorThreshold; 0 before a render).
   bool getProperty(const std::string &name,
       ANARIDataType type,
       void *mem,
@@ -129,6 +133,8 @@ class Frame : public Object
       const RenderContext &context, uint32_t tilesX, uint32_t tilesY);
   Tile tileAt(uint32_t tx, uint32_t ty) const;
   bool samplesProperty(
+      ANARIDataType type, void *mem, uint64_t size, ANARIWaitMask mask);
+  bool activePixelsProperty(
       ANARIDataType type, void *mem, uint64_t size, ANARIWaitMask mask);
   // Folds one tile of a sample into the average of the `samplesBefore`
   // samples before it (KHR_FRAME_ACCUMULATION, or pixelSamples > 1).
@@ -173,7 +179,8 @@ class Frame : public Object
   bool m_averaging{false};
   uint32_t m_samplesDone{0}; // accumulated into m_accumulated
   uint64_t m_accumulatedVersion{~0ull};
-  FrameBuffers m_accumulated; // averages (depth: minimum) over samples
+  FrameBuffers m_accumulated;    // averages (depth: minimum) over samples
+  TileConvergence m_convergence; // which tiles still take samples
   // KHR_RENDERER_DENOISE: filtered when color is mapped, not every frame
   // (the filter costs far more than a sample).
   Denoiser m_denoiser;

@@ -2758,6 +2758,10 @@ alignas(4) constexpr int8_t kDefault28_denoise[] = {0, 0, 0, 0};
 constexpr int32_t kDefault28_sampleLimit[] = {0};
 // sampleLimit minimum: ANARI_INT32
 constexpr int32_t kMinimum28_sampleLimit[] = {0};
+// errorThreshold default: ANARI_FLOAT32
+constexpr float kDefault28_errorThreshold[] = {0.f};
+// errorThreshold minimum: ANARI_FLOAT32
+constexpr float kMinimum28_errorThreshold[] = {0.f};
 // pixelSamples default: ANARI_INT32
 constexpr int32_t kDefault28_pixelSamples[] = {1};
 // pixelSamples minimum: ANARI_INT32
@@ -2819,6 +2823,19 @@ constexpr ParameterEntry kParameters28[] = {
         .defaultValue = kDefault28_sampleLimit,
         .minimum = kMinimum28_sampleLimit,
         .extension = kPrismRenderers},
+    {.name = "errorThreshold",
+        .types = {kTypeList6, 1},
+        .description =
+            "adaptive sampling: with accumulation (or pixelSamples above 1) a "
+            "32x32 tile stops taking samples once the estimated RMS error of "
+            "its average colour, from the difference between the average and "
+            "that of its even-numbered samples, is below this; at least 8 "
+            "samples first; 0 (the default) samples every pixel alike, so "
+            "images stay reproducible; the frame property activePixels counts "
+            "the pixels still sampled",
+        .defaultValue = kDefault28_errorThreshold,
+        .minimum = kMinimum28_errorThreshold,
+        .extension = kPrismRenderers},
     {.name = "pixelSamples",
         .types = {kTypeList40, 1},
         .description = "samples per pixel one anariRenderFrame takes (with "
@@ -2873,6 +2890,10 @@ alignas(4) constexpr int8_t kDefault29_denoise[] = {0, 0, 0, 0};
 constexpr int32_t kDefault29_sampleLimit[] = {0};
 // sampleLimit minimum: ANARI_INT32
 constexpr int32_t kMinimum29_sampleLimit[] = {0};
+// errorThreshold default: ANARI_FLOAT32
+constexpr float kDefault29_errorThreshold[] = {0.f};
+// errorThreshold minimum: ANARI_FLOAT32
+constexpr float kMinimum29_errorThreshold[] = {0.f};
 // pixelSamples default: ANARI_INT32
 constexpr int32_t kDefault29_pixelSamples[] = {1};
 // pixelSamples minimum: ANARI_INT32
@@ -2939,6 +2960,19 @@ constexpr ParameterEntry kParameters29[] = {
         .defaultValue = kDefault29_sampleLimit,
         .minimum = kMinimum29_sampleLimit,
         .extension = kPrismRenderers},
+    {.name = "errorThreshold",
+        .types = {kTypeList6, 1},
+        .description =
+            "adaptive sampling: with accumulation (or pixelSamples above 1) a "
+            "32x32 tile stops taking samples once the estimated RMS error of "
+            "its average colour, from the difference between the average and "
+            "that of its even-numbered samples, is below this; at least 8 "
+            "samples first; 0 (the default) samples every pixel alike, so "
+            "images stay reproducible; the frame property activePixels counts "
+            "the pixels still sampled",
+        .defaultValue = kDefault29_errorThreshold,
+        .minimum = kMinimum29_errorThreshold,
+        .extension = kPrismRenderers},
     {.name = "pixelSamples",
         .types = {kTypeList40, 1},
         .description = "samples per pixel one anariRenderFrame takes (with "
@@ -2980,6 +3014,10 @@ alignas(4) constexpr int8_t kDefault30_denoise[] = {0, 0, 0, 0};
 constexpr int32_t kDefault30_sampleLimit[] = {0};
 // sampleLimit minimum: ANARI_INT32
 constexpr int32_t kMinimum30_sampleLimit[] = {0};
+// errorThreshold default: ANARI_FLOAT32
+constexpr float kDefault30_errorThreshold[] = {0.f};
+// errorThreshold minimum: ANARI_FLOAT32
+constexpr float kMinimum30_errorThreshold[] = {0.f};
 // pixelSamples default: ANARI_INT32
 constexpr int32_t kDefault30_pixelSamples[] = {1};
 // pixelSamples minimum: ANARI_INT32
@@ -3039,6 +3077,19 @@ constexpr ParameterEntry kParameters30[] = {
         .defaultValue = kDefault30_sampleLimit,
         .minimum = kMinimum30_sampleLimit,
         .extension = kPrismRenderers},
+    {.name = "errorThreshold",
+        .types = {kTypeList6, 1},
+        .description =
+            "adaptive sampling: with accumulation (or pixelSamples above 1) a "
+            "32x32 tile stops taking samples once the estimated RMS error of "
+            "its average colour, from the difference between the average and "
+            "that of its even-numbered samples, is below this; at least 8 "
+            "samples first; 0 (the default) samples every pixel alike, so "
+            "images stay reproducible; the frame property activePixels counts "
+            "the pixels still sampled",
+        .defaultValue = kDefault30_errorThreshold,
+        .minimum = kMinimum30_errorThreshold,
+        .extension = kPrismRenderers},
     {.name = "pixelSamples",
         .types = {kTypeList40, 1},
         .description = "samples per pixel one anariRenderFrame takes (with "
@@ -3095,6 +3146,10 @@ alignas(4) constexpr int8_t kDefault31_denoise[] = {0, 0, 0, 0};
 constexpr int32_t kDefault31_sampleLimit[] = {0};
 // sampleLimit minimum: ANARI_INT32
 constexpr int32_t kMinimum31_sampleLimit[] = {0};
+// errorThreshold default: ANARI_FLOAT32
+constexpr float kDefault31_errorThreshold[] = {0.f};
+// errorThreshold minimum: ANARI_FLOAT32
+constexpr float kMinimum31_errorThreshold[] = {0.f};
 // pixelSamples default: ANARI_INT32
 constexpr int32_t kDefault31_pixelSamples[] = {1};
 // pixelSamples minimum: ANARI_INT32
@@ -3163,6 +3218,19 @@ constexpr ParameterEntry kParameters31[] = {
             "unchanged (hdAnari's convergence control)",
         .defaultValue = kDefault31_sampleLimit,
         .minimum = kMinimum31_sampleLimit,
+        .extension = kPrismRenderers},
+    {.name = "errorThreshold",
+        .types = {kTypeList6, 1},
+        .description =
+            "adaptive sampling: with accumulation (or pixelSamples above 1) a "
+            "32x32 tile stops taking samples once the estimated RMS error of "
+            "its average colour, from the difference between the average and "
+            "that of its even-numbered samples, is below this; at least 8 "
+            "samples first; 0 (the default) samples every pixel alike, so "
+            "images stay reproducible; the frame property activePixels counts "
+            "the pixels still sampled",
+        .defaultValue = kDefault31_errorThreshold,
+        .minimum = kMinimum31_errorThreshold,
         .extension = kPrismRenderers},
     {.name = "pixelSamples",
         .types = {kTypeList40, 1},
@@ -4271,7 +4339,7 @@ const ObjectEntry kObjects[] = {
                        "fraction of the hemisphere",
         .extension = kPrismRenderers,
         .contributors = {kContributors28, 4},
-        .parameters = {kParameters28, 11},
+        .parameters = {kParameters28, 12},
         .properties = {kProperties28, 1}},
     // ANARI_RENDERER "debug"
     {.type = ANARI_RENDERER,
@@ -4279,7 +4347,7 @@ const ObjectEntry kObjects[] = {
         .description = "false-color views of geometry, ids and attributes",
         .extension = kPrismRenderers,
         .contributors = {kContributors29, 4},
-        .parameters = {kParameters29, 9},
+        .parameters = {kParameters29, 10},
         .properties = {kProperties29, 1}},
     // ANARI_RENDERER "pathtracer"
     {.type = ANARI_RENDERER,
@@ -4289,7 +4357,7 @@ const ObjectEntry kObjects[] = {
                        "path per pixel per frame",
         .extension = kPrismRenderers,
         .contributors = {kContributors30, 4},
-        .parameters = {kParameters30, 11},
+        .parameters = {kParameters30, 12},
         .properties = {kProperties30, 2}},
     // ANARI_RENDERER "raycast"
     {.type = ANARI_RENDERER,
@@ -4299,7 +4367,7 @@ const ObjectEntry kObjects[] = {
                        "(empty space skipped): the fast preview",
         .extension = kPrismRenderers,
         .contributors = {kContributors31, 4},
-        .parameters = {kParameters31, 12},
+        .parameters = {kParameters31, 13},
         .properties = {kProperties31, 1}},
     // ANARI_SURFACE
     {.type = ANARI_SURFACE,

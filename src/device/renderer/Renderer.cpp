@@ -32,6 +32,7 @@ void Renderer::commitParameters()
   m_denoise = param<bool>("denoise");
   m_sampleLimit = uint32_t(param<int32_t>("sampleLimit"));
   m_pixelSamples = uint32_t(std::max(param<int32_t>("pixelSamples"), 1));
+  m_errorThreshold = param<float>("errorThreshold");
   m_backgroundColor = {0, 0, 0, 1};
   m_backgroundImage.clear();
   m_backgroundWidth = m_backgroundHeight = 0;

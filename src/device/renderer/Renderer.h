@@ -125,6 +125,13 @@ class Renderer : public Object
   {
     return m_pixelSamples;
   }
+  // The 'errorThreshold' (adaptive sampling, frame/TileConvergence.h): a
+  // tile whose average's estimated RMS error is below it takes no more
+  // samples until the accumulation restarts; 0 samples every tile.
+  float errorThreshold() const
+  {
+    return m_errorThreshold;
+  }
   // Samples per pixel after which accumulating more changes little
   // (refinementProgress reaches 1 there).
   virtual uint32_t convergedSampleCount() const
@@ -187,6 +194,7 @@ class Renderer : public Object
   bool m_denoise{false};
   uint32_t m_sampleLimit{0};
   uint32_t m_pixelSamples{1};
+  float m_errorThreshold{0.f};
   uint32_t m_seed{0}; // read by the renderers that declare `seed`
   float3 m_ambientColor{1, 1, 1};
   float m_ambientRadiance{0.f};
