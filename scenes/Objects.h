@@ -11,6 +11,7 @@
 
 #include <cstring>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace prism::scenes {
@@ -42,16 +43,40 @@ ANARIArray1D newArray1D(
   return newArray1D(device, type, elements.data(), elements.size(), sizeof(T));
 }
 
+// A shared array over `elements` themselves, no copy: the device owns them
+// from here and frees them when it no longer reads them. `count` elements
+// of `type` (as many bytes as `elements` hold; by default one per T).
+template <typename T>
+ANARIArray1D newArray1D(ANARIDevice device,
+    ANARIDataType type,
+    std::vector<T> &&elements,
+    uint64_t count = ~0ull)
+{
+  if (count == ~0ull)
+    count = elements.size();
+  auto *owned = new std::vector<T>(std::move(elements));
+  return anariNewArray1D(
+      device,
+      owned->data(),
+      [](const void *userPtr, const void *) {
+        delete static_cast<const std::vector<T> *>(userPtr);
+      },
+      owned,
+      type,
+      count);
+}
+
 // Sets array parameter `name` of `object` to a new array and releases the
 // helper's reference (the object keeps its own).
-template <typename T>
+template <typename Elements>
 void setArray(ANARIDevice device,
     ANARIObject object,
     const char *name,
     ANARIDataType type,
-    const std::vector<T> &elements)
+    Elements &&elements)
 {
-  ANARIArray1D array = newArray1D(device, type, elements);
+  ANARIArray1D array =
+      newArray1D(device, type, std::forward<Elements>(elements));
   anariSetParameter(device, object, name, ANARI_ARRAY1D, &array);
   anariRelease(device, array);
 }

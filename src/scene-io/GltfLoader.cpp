@@ -553,14 +553,13 @@ bool readWholeFile(std::vector<unsigned char> *out,
     void *user)
 {
   auto *access = static_cast<FileAccess *>(user);
-  std::string bytes, why = "external files are not read here";
-  if (!access->options->readExternalFiles || !readSceneFile(path, bytes, why)) {
+  std::string why = "external files are not read here";
+  if (!access->options->readExternalFiles || !readSceneFile(path, *out, why)) {
     access->unreadableFiles[path] = why;
     if (error)
       *error += "cannot read '" + path + "': " + why + "\n";
     return false;
   }
-  out->assign(bytes.begin(), bytes.end());
   return true;
 }
 
@@ -2350,13 +2349,7 @@ bool GltfImporter::readPrimitive(
 void GltfImporter::setShape(
     const PrimitiveData &d, ANARIGeometry geometry, scenes::Bounds &bounds)
 {
-  const std::vector<float> placed = d.arranged(d.positions, 3);
-  scenes::setArray(m_device,
-      geometry,
-      "vertex.position",
-      ANARI_FLOAT32_VEC3,
-      std::vector<Vec3>((const Vec3 *)placed.data(),
-          (const Vec3 *)placed.data() + d.geometryVertices));
+  std::vector<float> placed = d.arranged(d.positions, 3);
   const float radius = d.points  ? m_objectRadius * kPointOverLineRadius
                        : d.lines ? m_objectRadius
                                  : 0.f;
@@ -2373,6 +2366,12 @@ void GltfImporter::setShape(
       bounds.extend(Vec3{placed[3 * v] + side,
           placed[3 * v + 1] + side,
           placed[3 * v + 2] + side});
+  // Handed over, not copied: the device reads these very floats.
+  ANARIArray1D positions = scenes::newArray1D(
+      m_device, ANARI_FLOAT32_VEC3, std::move(placed), d.geometryVertices);
+  anariSetParameter(
+      m_device, geometry, "vertex.position", ANARI_ARRAY1D, &positions);
+  anariRelease(m_device, positions);
 }
 
 bool GltfImporter::setVertexAttributes(
@@ -2415,12 +2414,10 @@ bool GltfImporter::setVertexAttributes(
     if (o.direction && !d.skins.empty())
       applySkin(d.skins, true, components, values);
     const ANARIDataType type = ANARIDataType(ANARI_FLOAT32 + components - 1);
-    const std::vector<float> data = d.arranged(values, size_t(components));
     ANARIArray1D array = scenes::newArray1D(m_device,
         type,
-        data.data(),
-        d.geometryVertices,
-        sizeof(float) * size_t(components));
+        d.arranged(values, size_t(components)),
+        d.geometryVertices);
     anariSetParameter(m_device, geometry, o.anari, ANARI_ARRAY1D, &array);
     anariRelease(m_device, array);
   }
@@ -2500,7 +2497,7 @@ bool GltfImporter::setVertexColors(const PrimitiveData &d,
           * (i < components ? ordered[v * size_t(components) + size_t(i)]
                             : 1.f);
   scenes::setArray(
-      m_device, geometry, "vertex.color", ANARI_FLOAT32_VEC4, rgba);
+      m_device, geometry, "vertex.color", ANARI_FLOAT32_VEC4, std::move(rgba));
   vertexColors = true;
   return true;
 }

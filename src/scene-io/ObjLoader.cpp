@@ -176,31 +176,35 @@ LoadResult ObjImporter::load()
           batch.positions.size(),
           scene.outline);
     ANARIGeometry geometry = anariNewGeometry(m_device, "triangle");
+    // The batch's arrays are handed over, not copied.
     scenes::setArray(m_device,
         geometry,
         "vertex.position",
         ANARI_FLOAT32_VEC3,
-        batch.positions);
+        std::move(batch.positions));
     if (batch.allNormals)
       scenes::setArray(m_device,
           geometry,
           "vertex.normal",
           ANARI_FLOAT32_VEC3,
-          batch.normals);
+          std::move(batch.normals));
     if (batch.allUvs)
       scenes::setArray(m_device,
           geometry,
           "vertex.attribute0",
           ANARI_FLOAT32_VEC2,
-          batch.uvs);
+          std::move(batch.uvs));
     if (m_hasColors)
-      scenes::setArray(
-          m_device, geometry, "vertex.color", ANARI_FLOAT32_VEC3, batch.colors);
+      scenes::setArray(m_device,
+          geometry,
+          "vertex.color",
+          ANARI_FLOAT32_VEC3,
+          std::move(batch.colors));
     scenes::setArray(m_device,
         geometry,
         "primitive.index",
         ANARI_UINT32_VEC3,
-        batch.triangles);
+        std::move(batch.triangles));
     anariCommitParameters(m_device, geometry);
 
     ANARIMaterial material =

@@ -15,8 +15,10 @@ bool isRegularFile(const std::string &path)
   return ::stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode);
 }
 
-bool readSceneFile(
-    const std::string &path, std::string &bytes, std::string &error)
+namespace {
+
+template <typename Bytes>
+bool readWhole(const std::string &path, Bytes &bytes, std::string &error)
 {
   struct stat info;
   if (::stat(path.c_str(), &info) != 0) {
@@ -33,15 +35,36 @@ bool readSceneFile(
     error = std::strerror(errno);
     return false;
   }
-  bytes.clear();
-  char buffer[1 << 16];
-  for (size_t n; (n = std::fread(buffer, 1, sizeof(buffer), file.get())) > 0;)
-    bytes.append(buffer, n);
+  // The size stat gave, then whatever a file still being written adds.
+  bytes.resize(size_t(info.st_size));
+  size_t size = std::fread(bytes.data(), 1, bytes.size(), file.get());
+  if (size == bytes.size()) {
+    unsigned char buffer[1 << 16];
+    for (size_t n; (n = std::fread(buffer, 1, sizeof(buffer), file.get())) > 0;
+         size += n)
+      bytes.insert(bytes.end(), buffer, buffer + n);
+  }
+  bytes.resize(size);
   if (std::ferror(file.get())) {
     error = std::strerror(errno);
     return false;
   }
   return true;
+}
+
+} // namespace
+
+bool readSceneFile(
+    const std::string &path, std::string &bytes, std::string &error)
+{
+  return readWhole(path, bytes, error);
+}
+
+bool readSceneFile(const std::string &path,
+    std::vector<unsigned char> &bytes,
+    std::string &error)
+{
+  return readWhole(path, bytes, error);
 }
 
 std::string directoryOf(const std::string &path)

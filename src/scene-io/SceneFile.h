@@ -5,13 +5,18 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace prism::scene_io {
 
-// Reads `path` into `bytes`; false with `error` ("No such file or
-// directory", "not a regular file", ...) when it cannot.
+// Reads `path` into `bytes` (sized from the file, then one read: no
+// growing copies of a file of gigabytes); false with `error` ("No such
+// file or directory", "not a regular file", ...) when it cannot.
 bool readSceneFile(
     const std::string &path, std::string &bytes, std::string &error);
+bool readSceneFile(const std::string &path,
+    std::vector<unsigned char> &bytes,
+    std::string &error);
 
 // Whether `path` is a regular file (following symbolic links).
 bool isRegularFile(const std::string &path);
