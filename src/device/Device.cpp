@@ -779,17 +779,18 @@ try {
 void Device::flushCommits()
 {
   std::lock_guard lock(m_flushMutex);
-  flushCommitsLocked();
+  flushCommitsLocked(++m_refreshGeneration);
 }
 
 void Device::flushCommitsAndRefresh(Object &object)
 {
   std::lock_guard lock(m_flushMutex);
-  flushCommitsLocked();
-  object.refresh(++m_refreshGeneration);
+  const uint64_t generation = ++m_refreshGeneration;
+  flushCommitsLocked(generation);
+  object.refresh(generation);
 }
 
-void Device::flushCommitsLocked()
+void Device::flushCommitsLocked(uint64_t generation)
 {
   waitForFrames();
   std::vector<Object *> pending;
@@ -813,7 +814,6 @@ void Device::flushCommitsLocked()
   // What the commits read may have changed since it was committed itself
   // (an array the application released now reads a private copy): brought
   // up to date before anything is built on it.
-  const uint64_t generation = ++m_refreshGeneration;
   for (Object *object : unique)
     object->refreshDependencies(generation);
   for (Object *object : unique) {
@@ -1039,9 +1039,11 @@ try {
   // NOTE: one flush-and-start at a time, so no thread's frame starts between
   // another thread's flush and the commits it applies.
   std::lock_guard lock(m_flushMutex);
-  flushCommitsLocked();
-  // Rebuild what depends on arrays or children changed since their commit.
-  frame->refresh(++m_refreshGeneration);
+  // Rebuild what depends on arrays or children changed since their commit;
+  // what the flush brought up to date is not walked again.
+  const uint64_t generation = ++m_refreshGeneration;
+  flushCommitsLocked(generation);
+  frame->refresh(generation);
   frame->renderAsync();
 } catch (...) {
   reportException("anariRenderFrame");

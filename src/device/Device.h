@@ -203,7 +203,10 @@ class Device : public anari::DeviceImpl, public DeviceState
   // The application released its last handle to `array` while objects of
   // the device still use it.
   void keepArrayAfterRelease(Array *array);
-  void flushCommitsLocked();
+  // Applies the pending commits, refreshing what they read with
+  // `generation` (Object::refresh), which the refresh that follows may
+  // share.
+  void flushCommitsLocked(uint64_t generation);
 
   HandleTable m_handles;
   SubtypeRegistry m_subtypes;

@@ -125,6 +125,20 @@ TEST_F(AdaptiveSampling, OffByDefaultEveryPixelIsSampled)
   for (int sample = 0; sample < 12; sample++)
     renderOnce(f);
   EXPECT_EQ(activePixels(f), 70u * 40u);
+  // Asked as another type, or into too small a buffer: not written.
+  float asFloat = -1.f;
+  EXPECT_FALSE(anariGetProperty(m_device,
+      f,
+      "activePixels",
+      ANARI_FLOAT32,
+      &asFloat,
+      sizeof(asFloat),
+      ANARI_WAIT));
+  EXPECT_EQ(asFloat, -1.f);
+  uint64_t small = 7;
+  EXPECT_FALSE(anariGetProperty(
+      m_device, f, "activePixels", ANARI_UINT64, &small, 4, ANARI_WAIT));
+  EXPECT_EQ(small, 7u);
   anariRelease(m_device, f);
   anariRelease(m_device, r);
   anariRelease(m_device, empty);
