@@ -8,6 +8,10 @@
 // --error-threshold T the renderer samples adaptively (errorThreshold) and
 // the mean samples per pixel actually taken are printed too: reaching a
 // level with fewer of them than a uniform run is what adaptivity buys.
+// --samples-per-call N takes N samples per anariRenderFrame (the renderer's
+// pixelSamples, as prism-render --spp does), so no thread waits at a
+// sample's end; the frame's numSamples says how many it holds, so a device
+// without pixelSamples is measured too (one sample a call).
 // Never a test: it prints.
 // The reference is rendered with another renderer `seed`: independent
 // sequences. A reference continuing the measured samples' own sequence
@@ -18,6 +22,7 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -41,6 +46,7 @@ struct Options
   int runs{3};
   int maxPathLength{8};
   float errorThreshold{0.f}; // of the measured runs; 0: uniform
+  int32_t samplesPerCall{1}; // the renderer's pixelSamples
   std::string cache; // folder for the reference; default beside the binary
   std::vector<std::string> scenes; // default: all of them
 };
@@ -89,6 +95,12 @@ class Renderer
         "maxPathLength",
         ANARI_INT32,
         &options.maxPathLength);
+    if (options.samplesPerCall > 1)
+      anariSetParameter(m_device,
+          m_renderer,
+          "pixelSamples",
+          ANARI_INT32,
+          &options.samplesPerCall);
     anariCommitParameters(m_device, m_renderer);
   }
   // Later frames draw their samples from the sequences of this seed,
@@ -112,6 +124,21 @@ class Renderer
         sizeof(pixels),
         ANARI_WAIT);
     return pixels;
+  }
+  // The samples per pixel the frame holds; `otherwise` if the device does
+  // not say.
+  uint32_t numSamples(ANARIFrame frame, uint32_t otherwise) const
+  {
+    uint32_t samples = 0;
+    if (!anariGetProperty(m_device,
+            frame,
+            "numSamples",
+            ANARI_UINT32,
+            &samples,
+            sizeof(samples),
+            ANARI_WAIT))
+      return otherwise;
+    return samples;
   }
   ~Renderer()
   {
@@ -139,9 +166,9 @@ class Renderer
     anariCommitParameters(m_device, frame);
     return frame;
   }
-  // Renders one more sample; returns its wall time in seconds and adds
-  // the CPU seconds of all threads to `cpuSeconds`.
-  double addSample(ANARIFrame frame, double &cpuSeconds) const
+  // Renders one more call's samples; returns its wall time in seconds and
+  // adds the CPU seconds of all threads to `cpuSeconds`.
+  double addSamples(ANARIFrame frame, double &cpuSeconds) const
   {
     const double cpuStart = processCpuSeconds();
     const auto start = Clock::now();
@@ -227,8 +254,10 @@ std::vector<float> reference(const Renderer &renderer,
   renderer.useSeed(kReferenceSeed, 0.f);
   ANARIFrame frame = renderer.newFrame();
   double cpuSeconds = 0.0;
-  for (uint32_t s = 0; s < options.referenceSamples; s++)
-    renderer.addSample(frame, cpuSeconds);
+  for (uint32_t s = 0; s < options.referenceSamples;) {
+    renderer.addSamples(frame, cpuSeconds);
+    s = renderer.numSamples(frame, s + 1);
+  }
   image = renderer.color(frame);
   renderer.release(frame);
   std::filesystem::create_directories(folder);
@@ -305,6 +334,8 @@ Options parseOptions(int argc, char **argv)
       options.maxPathLength = std::max(1, std::atoi(argv[++i]));
     } else if (arg == "--error-threshold" && hasValue) {
       options.errorThreshold = std::max(0.f, float(std::atof(argv[++i])));
+    } else if (arg == "--samples-per-call" && hasValue) {
+      options.samplesPerCall = std::clamp(std::atoi(argv[++i]), 1, 65536);
     } else if (arg == "--scene" && hasValue) {
       options.scenes.push_back(argv[++i]);
     } else if (arg == "--cache" && hasValue) {
@@ -318,7 +349,8 @@ Options parseOptions(int argc, char **argv)
       std::fprintf(stderr,
           "usage: prism-bench-convergence [--quick] [--runs N] [--size WxH] "
           "[--max-spp N] [--reference-spp N] [--max-path-length N] "
-          "[--error-threshold T] [--scene NAME]... [--cache FOLDER]\n");
+          "[--error-threshold T] [--samples-per-call N] [--scene NAME]... "
+          "[--cache FOLDER]\n");
       std::exit(2);
     }
   }
@@ -329,12 +361,15 @@ Options parseOptions(int argc, char **argv)
 void measure(
     const Options &options, const std::string &sceneName, const char *argv0)
 {
-  std::printf("\n== %s %ux%u, maxPathLength %d, errorThreshold %g\n",
+  std::printf(
+      "\n== %s %ux%u, maxPathLength %d, errorThreshold %g, %d samples a "
+      "call\n",
       sceneName.c_str(),
       options.width,
       options.height,
       options.maxPathLength,
-      double(options.errorThreshold));
+      double(options.errorThreshold),
+      options.samplesPerCall);
   const Renderer renderer(options, sceneName);
   const std::vector<float> ref = reference(renderer, options, sceneName, argv0);
   renderer.useSeed(kMeasuredSeed, options.errorThreshold);
@@ -348,12 +383,17 @@ void measure(
     ANARIFrame frame = renderer.newFrame();
     double seconds = 0.0, cpuSeconds = 0.0, taken = 0.0;
     uint64_t active = uint64_t(pixels);
-    for (uint32_t s = 1; s <= options.maxSamples; s++) {
-      seconds += renderer.addSample(frame, cpuSeconds);
-      taken += double(active);
+    for (uint32_t s = 0; s < options.maxSamples;) {
+      seconds += renderer.addSamples(frame, cpuSeconds);
+      const uint32_t before = s;
+      s = std::max(renderer.numSamples(frame, s + 1), s + 1);
+      // Pixels active before a call of several samples may stop within
+      // it: then this overcounts what was taken.
+      taken += double(active) * double(s - before);
       if (options.errorThreshold > 0.f)
         active = renderer.activePixels(frame);
-      if ((s & (s - 1)) == 0)
+      // A point where the count reached or passed a power of two.
+      if (std::bit_floor(s) > before)
         points.push_back({s,
             rmse(renderer.color(frame), ref),
             seconds,
