@@ -1,16 +1,18 @@
-// Adaptive sampling (the renderers' errorThreshold): a tile stops taking
-// samples once the RMS error of its average, estimated from the average of
-// its even-numbered samples, is below the threshold. Checked against an
-// independent reference (other seeds, many samples): the tiles that
-// stopped are as close to it as the threshold says; the frame counts the
-// pixels still sampled; off by default.
+// Adaptive sampling (the renderers' errorThreshold): an 8x8 block of
+// pixels stops taking samples once the RMS error of its average, estimated
+// from the average of its even-numbered samples, is below the threshold.
+// Checked against an independent reference (other seeds, many samples):
+// the blocks that stopped are as close to it as the threshold says; the
+// frame counts the pixels still sampled; off by default.
 #include "AnalyticScene.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace {
 
-constexpr uint32_t kTile = 32; // the frame's tile size
+constexpr uint32_t kBlock = 8; // TileConvergence::kBlockSize
 
 class AdaptiveSampling : public AnalyticTest
 {
@@ -65,17 +67,18 @@ class AdaptiveSampling : public AnalyticTest
     anariFrameReady(m_device, f, ANARI_WAIT);
   }
   // The RMS difference of two RGBA images over one tile's RGB values.
-  static double tileRmse(const std::vector<float> &a,
+  static double blockRmse(const std::vector<float> &a,
       const std::vector<float> &b,
       uint32_t width,
       uint32_t height,
-      uint32_t tx,
-      uint32_t ty)
+      uint32_t bx,
+      uint32_t by)
   {
     double sum = 0.0;
     size_t values = 0;
-    for (uint32_t y = ty * kTile; y < std::min((ty + 1) * kTile, height); y++) {
-      for (uint32_t x = tx * kTile; x < std::min((tx + 1) * kTile, width);
+    for (uint32_t y = by * kBlock; y < std::min((by + 1) * kBlock, height);
+         y++) {
+      for (uint32_t x = bx * kBlock; x < std::min((bx + 1) * kBlock, width);
            x++) {
         for (int c = 0; c < 3; c++) {
           const double d = a[(size_t(y) * width + x) * 4 + c]
@@ -145,12 +148,12 @@ TEST_F(AdaptiveSampling, OffByDefaultEveryPixelIsSampled)
   EXPECT_TRUE(problems().empty());
 }
 
-// The tiles that stopped are within the threshold of an independent
-// reference (1024 samples of another seed), and stopped tiles no longer
+// The blocks that stopped are within the threshold of an independent
+// reference (1024 samples of another seed), and stopped blocks no longer
 // change.
-TEST_F(AdaptiveSampling, StoppedTilesMeetTheThreshold)
+TEST_F(AdaptiveSampling, StoppedBlocksMeetTheThreshold)
 {
-  const uint32_t width = 96, height = 64; // 3 x 2 tiles
+  const uint32_t width = 96, height = 64; // 3 x 2 tiles, 12 x 8 blocks
   const float threshold = 0.02f;
   ANARIRenderer reference = pathTracer(0.f, 256, 7);
   ANARIFrame rf = colorFrame(m_world, m_camera, reference, width, height);
@@ -168,27 +171,45 @@ TEST_F(AdaptiveSampling, StoppedTilesMeetTheThreshold)
     renderOnce(f);
     images.push_back(mappedColor(f));
     const uint64_t now = activePixels(f);
-    EXPECT_LE(now, active); // tiles never start again by themselves
+    EXPECT_LE(now, active); // blocks never start again by themselves
     active = now;
   }
-  EXPECT_LT(active, uint64_t(width) * height); // some tiles stopped
-  // A stopped tile's pixels no longer change; its error is the threshold's.
+  EXPECT_LT(active, uint64_t(width) * height); // some blocks stopped
+  // A stopped block's pixels no longer change; its error is the
+  // threshold's.
   const std::vector<float> &last = images.back();
   const std::vector<float> &earlier = images[images.size() / 2];
-  int stopped = 0;
-  for (uint32_t ty = 0; ty < 2; ty++) {
-    for (uint32_t tx = 0; tx < 3; tx++) {
-      if (tileRmse(last, earlier, width, height, tx, ty) != 0.0)
-        continue; // still sampling at the halfway image
-      stopped++;
-      const double error = tileRmse(last, truth, width, height, tx, ty);
-      // The estimate is conservative (the path tracer's samples are
-      // stratified, so the whole sequence beats its halves): 0.3-0.45 of
-      // the threshold here.
-      EXPECT_LT(error, threshold) << "tile " << tx << "," << ty;
+  int sampling = 0;
+  std::vector<double> errors;
+  for (uint32_t by = 0; by < height / kBlock; by++) {
+    for (uint32_t bx = 0; bx < width / kBlock; bx++) {
+      if (blockRmse(last, earlier, width, height, bx, by) != 0.0) {
+        sampling++; // still sampling at the halfway image
+        continue;
+      }
+      errors.push_back(blockRmse(last, truth, width, height, bx, by));
     }
   }
-  EXPECT_GT(stopped, 0);
+  // Blocks stop at different times: some early, some later.
+  ASSERT_GT(errors.size(), 8u);
+  EXPECT_GT(sampling, 0);
+  // The estimate is conservative (the path tracer's samples are
+  // stratified, so the whole sequence beats its halves): the median
+  // stopped block is well within the threshold (0.43 of it here). One
+  // block's estimate, from 192 values, is itself uncertain by about 10 %,
+  // and the reference a little: no block beyond 1.25 of it (0.96 the
+  // largest here).
+  std::sort(errors.begin(), errors.end());
+  const double median = errors[errors.size() / 2];
+  std::printf(
+      "%zu blocks stopped by the halfway image, %d later; error "
+      "against the reference: median %.4f, largest %.4f\n",
+      errors.size(),
+      sampling,
+      median,
+      errors.back());
+  EXPECT_LT(median, 0.6 * threshold);
+  EXPECT_LT(errors.back(), 1.25 * threshold);
   anariRelease(m_device, f);
   anariRelease(m_device, r);
   EXPECT_TRUE(problems().empty());

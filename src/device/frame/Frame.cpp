@@ -246,7 +246,6 @@ void Frame::render()
   if (m_samplesDone == 0) {
     m_convergence.reset(m_width,
         m_height,
-        kTileSize,
         m_averaging && !m_sharing.lockstep ? m_renderer->errorThreshold()
                                            : 0.f);
   }
@@ -302,20 +301,17 @@ void Frame::renderTileSamples(
     const uint32_t tx = index % tilesX, ty = index / tilesX;
     if (!m_cancel && ty % m_sharing.tileRowParts == m_sharing.tileRowPart) {
       const Tile tile = tileAt(tx, ty);
-      if (m_convergence.active(index)) {
+      m_convergence.forEachActiveSpan(tile, [&](const Tile &span) {
         RenderContext sample = context;
         sample.sampleIndex = m_sampleIndex + k;
-        m_renderer->renderTile(sample, tile, m_buffers, m_cancel);
+        m_renderer->renderTile(sample, span, m_buffers, m_cancel);
         if (m_averaging) {
-          // An active tile has taken every sample so far.
-          accumulate(tile, m_samplesDone + k);
-          m_convergence.update(index,
-              tile,
-              m_samplesDone + k,
-              m_buffers.color,
-              m_accumulated.color);
+          // An active block has taken every sample so far.
+          accumulate(span, m_samplesDone + k);
+          m_convergence.update(
+              span, m_samplesDone + k, m_buffers.color, m_accumulated.color);
         }
-      }
+      });
       if (k + 1 == m_samplesThisRender)
         resolve(tile);
     } // else another process renders this row of tiles

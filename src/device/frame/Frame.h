@@ -45,6 +45,7 @@ class Frame : public Object
 
   // Square tiles a render is split into, in pixels.
   static constexpr uint32_t kTileSize = 32;
+  static_assert(kTileSize % TileConvergence::kBlockSize == 0);
   // The committed size, renderer and camera (the data-parallel device
   // compares them across processes before a collective render).
   uint32_t width() const
@@ -180,7 +181,7 @@ class Frame : public Object
   uint32_t m_samplesDone{0}; // accumulated into m_accumulated
   uint64_t m_accumulatedVersion{~0ull};
   FrameBuffers m_accumulated;    // averages (depth: minimum) over samples
-  TileConvergence m_convergence; // which tiles still take samples
+  TileConvergence m_convergence; // which blocks still take samples
   // KHR_RENDERER_DENOISE: filtered when color is mapped, not every frame
   // (the filter costs far more than a sample).
   Denoiser m_denoiser;

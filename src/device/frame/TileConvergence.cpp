@@ -5,37 +5,34 @@
 
 namespace prism {
 
-void TileConvergence::reset(
-    uint32_t width, uint32_t height, uint32_t tileSize, float threshold)
+void TileConvergence::reset(uint32_t width, uint32_t height, float threshold)
 {
   m_threshold = std::isfinite(threshold) && threshold > 0.f ? threshold : 0.f;
   m_width = width;
   m_height = height;
-  m_tileSize = tileSize;
+  m_blocksX = (width + kBlockSize - 1) / kBlockSize;
+  m_blocksY = (height + kBlockSize - 1) / kBlockSize;
   if (!enabled()) {
     std::vector<float3>().swap(m_evenHalf);
     std::vector<uint8_t>().swap(m_active);
     return;
   }
-  const uint32_t tilesX = (width + tileSize - 1) / tileSize;
-  const uint32_t tilesY = (height + tileSize - 1) / tileSize;
   m_evenHalf.assign(size_t(width) * height, float3{0.f, 0.f, 0.f});
-  m_active.assign(size_t(tilesX) * tilesY, 1);
+  m_active.assign(size_t(m_blocksX) * m_blocksY, 1);
 }
 
-void TileConvergence::update(uint32_t tileIndex,
-    const Tile &tile,
+void TileConvergence::update(const Tile &span,
     uint32_t ordinal,
     const std::vector<float4> &sample,
     const std::vector<float4> &average)
 {
-  if (!enabled() || !m_active[tileIndex])
+  if (!enabled())
     return;
   if (ordinal % 2 == 0) {
     const float weight = 1.f / float(ordinal / 2 + 1);
-    for (uint32_t y = tile.y0; y < tile.y1; y++) {
-      for (size_t i = size_t(y) * m_width + tile.x0,
-                  end = size_t(y) * m_width + tile.x1;
+    for (uint32_t y = span.y0; y < span.y1; y++) {
+      for (size_t i = size_t(y) * m_width + span.x0,
+                  end = size_t(y) * m_width + span.x1;
            i < end;
            i++) {
         const float3 s{sample[i].x, sample[i].y, sample[i].z};
@@ -44,18 +41,27 @@ void TileConvergence::update(uint32_t tileIndex,
     }
     return; // the halves are equal only after an odd ordinal
   }
-  const uint32_t samples = ordinal + 1;
-  if (samples >= kMinimumSamples && errorOf(tile, average) < m_threshold)
-    m_active[tileIndex] = 0;
+  if (ordinal + 1 < kMinimumSamples)
+    return;
+  for (uint32_t by = span.y0 / kBlockSize; by * kBlockSize < span.y1; by++) {
+    for (uint32_t bx = span.x0 / kBlockSize; bx * kBlockSize < span.x1; bx++) {
+      const Tile block{bx * kBlockSize,
+          by * kBlockSize,
+          std::min((bx + 1) * kBlockSize, m_width),
+          std::min((by + 1) * kBlockSize, m_height)};
+      if (errorOf(block, average) < m_threshold)
+        m_active[size_t(by) * m_blocksX + bx] = 0;
+    }
+  }
 }
 
 float TileConvergence::errorOf(
-    const Tile &tile, const std::vector<float4> &average) const
+    const Tile &block, const std::vector<float4> &average) const
 {
   double sum = 0.0;
-  for (uint32_t y = tile.y0; y < tile.y1; y++) {
-    for (size_t i = size_t(y) * m_width + tile.x0,
-                end = size_t(y) * m_width + tile.x1;
+  for (uint32_t y = block.y0; y < block.y1; y++) {
+    for (size_t i = size_t(y) * m_width + block.x0,
+                end = size_t(y) * m_width + block.x1;
          i < end;
          i++) {
       // Relative above 1: a highlight of 20 need not be known to 0.01.
@@ -69,8 +75,8 @@ float TileConvergence::errorOf(
     }
   }
   const double values =
-      3.0 * double(tile.x1 - tile.x0) * double(tile.y1 - tile.y0);
-  // NaN (a NaN sample) compares false: such a tile keeps sampling.
+      3.0 * double(block.x1 - block.x0) * double(block.y1 - block.y0);
+  // NaN (a NaN sample) compares false: such a block keeps sampling.
   return float(std::sqrt(sum / values));
 }
 
@@ -78,16 +84,13 @@ uint64_t TileConvergence::activePixels() const
 {
   if (!enabled())
     return uint64_t(m_width) * m_height;
-  const uint32_t tilesX = (m_width + m_tileSize - 1) / m_tileSize;
   uint64_t pixels = 0;
-  for (size_t t = 0; t < m_active.size(); t++) {
-    if (!m_active[t])
-      continue;
-    const uint32_t tx = uint32_t(t % tilesX), ty = uint32_t(t / tilesX);
-    const uint32_t x0 = tx * m_tileSize, y0 = ty * m_tileSize;
-    pixels += uint64_t(std::min(x0 + m_tileSize, m_width) - x0)
-              * (std::min(y0 + m_tileSize, m_height) - y0);
-  }
+  for (uint32_t by = 0; by < m_blocksY; by++)
+    for (uint32_t bx = 0; bx < m_blocksX; bx++)
+      if (active(bx, by))
+        pixels +=
+            uint64_t(std::min((bx + 1) * kBlockSize, m_width) - bx * kBlockSize)
+            * (std::min((by + 1) * kBlockSize, m_height) - by * kBlockSize);
   return pixels;
 }
 

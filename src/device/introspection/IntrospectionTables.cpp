@@ -2826,13 +2826,13 @@ constexpr ParameterEntry kParameters28[] = {
     {.name = "errorThreshold",
         .types = {kTypeList6, 1},
         .description =
-            "adaptive sampling: with accumulation (or pixelSamples above 1) a "
-            "32x32 tile stops taking samples once the estimated RMS error of "
-            "its average colour, from the difference between the average and "
-            "that of its even-numbered samples, is below this; at least 8 "
-            "samples first; 0 (the default) samples every pixel alike, so "
-            "images stay reproducible; the frame property activePixels counts "
-            "the pixels still sampled",
+            "adaptive sampling: with accumulation (or pixelSamples above 1) "
+            "each 8x8 block of pixels stops taking samples once the estimated "
+            "RMS error of its average colour, from the difference between the "
+            "average and that of its even-numbered samples, is below this; at "
+            "least 8 samples first; 0 (the default) samples every pixel alike, "
+            "so images stay reproducible; the frame property activePixels "
+            "counts the pixels still sampled",
         .defaultValue = kDefault28_errorThreshold,
         .minimum = kMinimum28_errorThreshold,
         .extension = kPrismRenderers},
@@ -2963,13 +2963,13 @@ constexpr ParameterEntry kParameters29[] = {
     {.name = "errorThreshold",
         .types = {kTypeList6, 1},
         .description =
-            "adaptive sampling: with accumulation (or pixelSamples above 1) a "
-            "32x32 tile stops taking samples once the estimated RMS error of "
-            "its average colour, from the difference between the average and "
-            "that of its even-numbered samples, is below this; at least 8 "
-            "samples first; 0 (the default) samples every pixel alike, so "
-            "images stay reproducible; the frame property activePixels counts "
-            "the pixels still sampled",
+            "adaptive sampling: with accumulation (or pixelSamples above 1) "
+            "each 8x8 block of pixels stops taking samples once the estimated "
+            "RMS error of its average colour, from the difference between the "
+            "average and that of its even-numbered samples, is below this; at "
+            "least 8 samples first; 0 (the default) samples every pixel alike, "
+            "so images stay reproducible; the frame property activePixels "
+            "counts the pixels still sampled",
         .defaultValue = kDefault29_errorThreshold,
         .minimum = kMinimum29_errorThreshold,
         .extension = kPrismRenderers},
@@ -3080,13 +3080,13 @@ constexpr ParameterEntry kParameters30[] = {
     {.name = "errorThreshold",
         .types = {kTypeList6, 1},
         .description =
-            "adaptive sampling: with accumulation (or pixelSamples above 1) a "
-            "32x32 tile stops taking samples once the estimated RMS error of "
-            "its average colour, from the difference between the average and "
-            "that of its even-numbered samples, is below this; at least 8 "
-            "samples first; 0 (the default) samples every pixel alike, so "
-            "images stay reproducible; the frame property activePixels counts "
-            "the pixels still sampled",
+            "adaptive sampling: with accumulation (or pixelSamples above 1) "
+            "each 8x8 block of pixels stops taking samples once the estimated "
+            "RMS error of its average colour, from the difference between the "
+            "average and that of its even-numbered samples, is below this; at "
+            "least 8 samples first; 0 (the default) samples every pixel alike, "
+            "so images stay reproducible; the frame property activePixels "
+            "counts the pixels still sampled",
         .defaultValue = kDefault30_errorThreshold,
         .minimum = kMinimum30_errorThreshold,
         .extension = kPrismRenderers},
@@ -3222,13 +3222,13 @@ constexpr ParameterEntry kParameters31[] = {
     {.name = "errorThreshold",
         .types = {kTypeList6, 1},
         .description =
-            "adaptive sampling: with accumulation (or pixelSamples above 1) a "
-            "32x32 tile stops taking samples once the estimated RMS error of "
-            "its average colour, from the difference between the average and "
-            "that of its even-numbered samples, is below this; at least 8 "
-            "samples first; 0 (the default) samples every pixel alike, so "
-            "images stay reproducible; the frame property activePixels counts "
-            "the pixels still sampled",
+            "adaptive sampling: with accumulation (or pixelSamples above 1) "
+            "each 8x8 block of pixels stops taking samples once the estimated "
+            "RMS error of its average colour, from the difference between the "
+            "average and that of its even-numbered samples, is below this; at "
+            "least 8 samples first; 0 (the default) samples every pixel alike, "
+            "so images stay reproducible; the frame property activePixels "
+            "counts the pixels still sampled",
         .defaultValue = kDefault31_errorThreshold,
         .minimum = kMinimum31_errorThreshold,
         .extension = kPrismRenderers},

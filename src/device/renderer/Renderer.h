@@ -126,8 +126,9 @@ class Renderer : public Object
     return m_pixelSamples;
   }
   // The 'errorThreshold' (adaptive sampling, frame/TileConvergence.h): a
-  // tile whose average's estimated RMS error is below it takes no more
-  // samples until the accumulation restarts; 0 samples every tile.
+  // block of pixels whose average's estimated RMS error is below it takes
+  // no more samples until the accumulation restarts; 0 samples every
+  // pixel.
   float errorThreshold() const
   {
     return m_errorThreshold;
