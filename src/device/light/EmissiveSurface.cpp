@@ -108,12 +108,18 @@ float EmissiveSurface::sampledSolidAngle(
 
 LightSample EmissiveSurface::sample(const float3 &point, const float2 &u) const
 {
+  return sampleFacing(point, float3{0.f, 0.f, 0.f}, u);
+}
+
+LightSample EmissiveSurface::sampleFacing(
+    const float3 &point, const float3 &receiverNormal, const float2 &u) const
+{
   LightSample out;
   if (isEmpty())
     return out;
   // The tree consumes u.x and leaves a fresh uniform number in it.
   float u0 = u.x, chosen = 0.f;
-  const size_t index = m_tree.pick(point, u0, chosen);
+  const size_t index = m_tree.pick(point, receiverNormal, u0, chosen);
   const size_t triangles = m_shape.triangles.size() / 3;
   float3 position, normal;
   if (index < triangles) {
@@ -204,10 +210,13 @@ size_t EmissiveSurface::emitterOfHit(
   return best;
 }
 
-float EmissiveSurface::pdfOfPoint(
-    const float3 &origin, size_t index, float distance, float cosine) const
+float EmissiveSurface::pdfOfPoint(const float3 &origin,
+    const float3 &normal,
+    size_t index,
+    float distance,
+    float cosine) const
 {
-  const float chosen = m_tree.probability(origin, uint32_t(index));
+  const float chosen = m_tree.probability(origin, normal, uint32_t(index));
   if (!(chosen > 0.f))
     return 0.f;
   if (index < m_shape.triangles.size() / 3) {
@@ -221,6 +230,7 @@ float EmissiveSurface::pdfOfPoint(
 }
 
 float EmissiveSurface::pdfOfHit(const float3 &origin,
+    const float3 &normal,
     const float3 &direction,
     uint32_t primitiveId,
     float distance,
@@ -231,7 +241,7 @@ float EmissiveSurface::pdfOfHit(const float3 &origin,
   const size_t index = emitterOfHit(origin + direction * distance, primitiveId);
   if (index >= m_primitiveArea.size())
     return 0.f;
-  return pdfOfPoint(origin, index, distance, cosine);
+  return pdfOfPoint(origin, normal, index, distance, cosine);
 }
 
 } // namespace prism

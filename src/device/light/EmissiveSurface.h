@@ -45,16 +45,20 @@ class EmissiveSurface final : public PlacedLight
     return m_radiance;
   }
   LightSample sample(const float3 &point, const float2 &u) const override;
+  LightSample sampleFacing(const float3 &point,
+      const float3 &normal,
+      const float2 &u) const override;
   float3 radianceAlong(const float3 &point,
       const float3 &direction,
       float &distance,
       float &pdf) const override;
   float3 power() const override;
-  // The density (per steradian at `origin`) with which sample() from
-  // `origin` picks the point at `distance` along `direction`, where the ray
-  // hit the surface's primitive `primitiveId` (of its geometry: a quad is
-  // two triangles) with cosine `cosine` to its normal.
+  // The density (per steradian at `origin`) with which sampleFacing() from
+  // `origin` with `normal` picks the point at `distance` along `direction`,
+  // where the ray hit the surface's primitive `primitiveId` (of its
+  // geometry: a quad is two triangles) with cosine `cosine` to its normal.
   float pdfOfHit(const float3 &origin,
+      const float3 &normal,
       const float3 &direction,
       uint32_t primitiveId,
       float distance,
@@ -67,8 +71,11 @@ class EmissiveSurface final : public PlacedLight
   // The emitter of the shape (triangles then spheres) a hit on
   // `primitiveId` at `position` found.
   size_t emitterOfHit(const float3 &position, uint32_t primitiveId) const;
-  float pdfOfPoint(
-      const float3 &origin, size_t index, float distance, float cosine) const;
+  float pdfOfPoint(const float3 &origin,
+      const float3 &normal,
+      size_t index,
+      float distance,
+      float cosine) const;
 
   EmitterShape m_shape;
   float3 m_radiance;

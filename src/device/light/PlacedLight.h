@@ -39,6 +39,16 @@ class PlacedLight
   // A direction towards the light from `point` (world space), chosen with
   // `u` uniform in [0,1)^2.
   virtual LightSample sample(const float3 &point, const float2 &u) const = 0;
+  // The same, for a receiver that takes light only from the side its unit
+  // `normal` faces (zero: from every side, as in a medium or through a
+  // transmissive surface): a light made of many parts can then prefer
+  // those above the receiver's horizon. Others sample as without it.
+  virtual LightSample sampleFacing(
+      const float3 &point, const float3 &normal, const float2 &u) const
+  {
+    (void)normal;
+    return sample(point, u);
+  }
   // What a ray leaving `point` along the unit `direction` receives from
   // this light if nothing occludes it: the radiance, the distance at which
   // it reaches the light (+inf for distant lights and misses) and the pdf

@@ -289,10 +289,13 @@ float PathTracer::emissionWeight(const RenderContext &context,
   const auto &emitter =
       static_cast<const EmissiveSurface &>(*world.lights()[size_t(index)]);
   const float cosine = std::abs(dot(surface.geometricNormal, ray.direction));
-  const float lightPdf =
-      emitter.pdfOfHit(
-          ray.origin, ray.direction, hit.primitiveId, hit.t, cosine)
-      * world.lightSelector().probability(size_t(index));
+  const float lightPdf = emitter.pdfOfHit(ray.origin,
+                             path.previousNormal,
+                             ray.direction,
+                             hit.primitiveId,
+                             hit.t,
+                             cosine)
+                         * world.lightSelector().probability(size_t(index));
   return powerHeuristic(1, path.previousPdf, 1, lightPdf);
 }
 
@@ -630,8 +633,9 @@ void PathTracer::nextEvent(const RenderContext &context,
   float pickProbability = 0.f;
   const PlacedLight &light = *context.world->lights()[selector.pick(
       decisions.lightPick(b.rayIndex), pickProbability)];
-  const LightSample ls =
-      light.sample(b.surface.position, decisions.lightPoint(b.rayIndex));
+  const LightSample ls = light.sampleFacing(b.surface.position,
+      receiverNormal(b, bsdf),
+      decisions.lightPoint(b.rayIndex));
   if (!(ls.pdf > 0.f) || !(maxComponent(ls.radiance) > 0.f))
     return;
   const float3 wi = scattering.frame.toLocal(ls.direction);
@@ -658,6 +662,14 @@ void PathTracer::nextEvent(const RenderContext &context,
       path.throughput * f * ls.radiance * (std::abs(wi.z) * weight / pdf));
 }
 
+float3 PathTracer::receiverNormal(const Bounce &b, const Bsdf &bsdf)
+{
+  if (bsdf.hasTransmission() || bsdf.isVolumeBoundary())
+    return float3{0.f, 0.f, 0.f};
+  const float3 ng = b.surface.geometricNormal;
+  return dot(b.ray.direction, ng) < 0.f ? ng : ng * -1.f;
+}
+
 void PathTracer::scatter(Bounce &b,
     const Scattering &scattering,
     const BounceDecisions &decisions,
@@ -674,6 +686,7 @@ void PathTracer::scatter(Bounce &b,
     return;
   path.throughput = path.throughput * bs.weight;
   path.previousPdf = bs.pdf;
+  path.previousNormal = receiverNormal(b, bsdf);
   path.previousDelta = bs.isDelta();
   path.ambientVisibility = b.shading->occlusion;
   const float3 normal = scattering.frame.z;

@@ -151,6 +151,10 @@ class PathTracer : public Renderer
       const Scattering &scattering,
       const BounceDecisions &decisions,
       rt::RayQueue &next) const;
+  // The side a surface receives light on, for light sampling: the
+  // geometric normal turned towards the viewer, or zero where light passes
+  // through (transmission, a volume's boundary).
+  static float3 receiverNormal(const Bounce &b, const Bsdf &bsdf);
   // `u`: the bounce's roulette decision.
   bool survivesRoulette(PathState &path, float u) const;
   // Radiance arriving along a ray from lights it reaches within (tMin,

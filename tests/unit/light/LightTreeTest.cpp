@@ -4,6 +4,8 @@
 #include "light/EmissiveSurface.h"
 #include "light/LightTree.h"
 
+#include "SquareOfCells.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -47,79 +49,120 @@ std::vector<light::TreeEmitter> emittersOf(const std::vector<float3> &corners)
 
 const float3 kPoints[] = {
     {0.5f, 0.5f, 0.3f}, {6.f, -2.f, 1.f}, {3.f, 0.1f, -0.5f}, {40, 3, 2}};
+// Receiver normals: none (every side), facing the row, turned away, edge-on.
+const float3 kNormals[] = {{0, 0, 0}, {0, 0, -1}, {0, 0.6f, 0.8f}, {1, 0, 0}};
 
 TEST(LightTree, ProbabilitiesSumToOneAndAreWhatPickChoosesWith)
 {
-  for (int count : {1, 2, 3, 7, 16}) {
-    light::LightTree tree;
-    tree.build(emittersOf(triangleRow(count)));
-    for (const float3 &point : kPoints) {
-      double sum = 0.0;
-      for (int i = 0; i < count; i++) {
-        const float p = tree.probability(point, uint32_t(i));
-        EXPECT_GT(p, 0.f) << "every emitter that can light the point";
-        sum += p;
+  // One leaf (up to 16), one level of nodes, and several.
+  for (int count : {1, 2, 7, 16, 17, 70, 300})
+    for (const float3 &normal : kNormals) {
+      light::LightTree tree;
+      tree.build(emittersOf(triangleRow(count)));
+      for (const float3 &point : kPoints) {
+        double sum = 0.0;
+        for (int i = 0; i < count; i++) {
+          const float p = tree.probability(point, normal, uint32_t(i));
+          EXPECT_GT(p, 0.f) << "every emitter that can light the point";
+          sum += p;
+        }
+        EXPECT_NEAR(sum, 1.0, 1e-5) << count << " emitters";
+        // Counting: the frequency of each choice over stratified u.
+        const int n = count > 16 ? 400000 : 100000;
+        std::vector<int> chosen(size_t(count), 0);
+        for (int k = 0; k < n; k++) {
+          float u = (k + 0.5f) / n, probability = 0.f;
+          const uint32_t e = tree.pick(point, normal, u, probability);
+          ASSERT_LT(e, uint32_t(count));
+          EXPECT_GE(u, 0.f);
+          EXPECT_LT(u, 1.f);
+          EXPECT_FLOAT_EQ(probability, tree.probability(point, normal, e));
+          chosen[e]++;
+        }
+        for (int i = 0; i < count; i++)
+          EXPECT_NEAR(double(chosen[size_t(i)]) / n,
+              tree.probability(point, normal, uint32_t(i)),
+              2e-4)
+              << "emitter " << i << " of " << count;
       }
-      EXPECT_NEAR(sum, 1.0, 1e-5) << count << " emitters";
-      // Counting: the frequency of each choice over stratified u.
-      const int n = 200000;
-      std::vector<int> chosen(size_t(count), 0);
-      for (int k = 0; k < n; k++) {
-        float u = (k + 0.5f) / n, probability = 0.f;
-        const uint32_t e = tree.pick(point, u, probability);
-        ASSERT_LT(e, uint32_t(count));
-        EXPECT_GE(u, 0.f);
-        EXPECT_LT(u, 1.f);
-        EXPECT_FLOAT_EQ(probability, tree.probability(point, e));
-        chosen[e]++;
-      }
-      for (int i = 0; i < count; i++)
-        EXPECT_NEAR(double(chosen[size_t(i)]) / n,
-            tree.probability(point, uint32_t(i)),
-            1e-4)
-            << "emitter " << i << " of " << count;
     }
-  }
 }
 
 TEST(LightTree, PrefersNearEmitters)
 {
-  // Four unit triangles just below the point and four equal ones far off
-  // (a leaf's worth each).
+  // Sixteen unit triangles just below the point and sixteen equal ones
+  // far off (a leaf's worth each).
   std::vector<float3> corners;
-  for (float x : {0.f, 1.f, 2.f, 3.f, 50.f, 51.f, 52.f, 53.f})
+  for (int i = 0; i < 32; i++) {
+    const float x = float(i % 16) * 0.25f + (i < 16 ? 0.f : 50.f);
     for (float3 c : {float3{x, 0, 0}, float3{x + 1, 0, 0}, float3{x, 1, 0}})
       corners.push_back(c);
+  }
   light::LightTree tree;
   tree.build(emittersOf(corners));
-  const float3 point{1.5f, 0.3f, 1.f};
+  const float3 point{1.5f, 0.3f, 1.f}, none{0.f, 0.f, 0.f};
   float near = 0.f;
-  for (uint32_t i = 0; i < 4; i++)
-    near += tree.probability(point, i);
+  for (uint32_t i = 0; i < 16; i++)
+    near += tree.probability(point, none, i);
   EXPECT_GT(near, 0.99f);
-  for (uint32_t i = 4; i < 8; i++) {
-    EXPECT_GT(tree.probability(point, i), 0.f);
-    EXPECT_LT(tree.probability(point, i), 0.01f);
+  for (uint32_t i = 16; i < 32; i++) {
+    EXPECT_GT(tree.probability(point, none, i), 0.f);
+    EXPECT_LT(tree.probability(point, none, i), 0.01f);
   }
+}
+
+TEST(LightTree, PrefersEmittersAboveTheReceiversHorizon)
+{
+  // Two walls of 64 emitters each, at x = -4 and x = +4, facing the
+  // receiver between them. A receiver facing +x takes light only from the
+  // wall at +4: the tree gives that wall nearly all its choices, and
+  // every emitter of the other a share still above zero.
+  std::vector<float3> corners;
+  for (float wall : {-4.f, 4.f})
+    for (int i = 0; i < 64; i++) {
+      const float y = float(i % 8) * 0.25f - 1.f,
+                  z = float(i / 8) * 0.25f - 1.f;
+      for (float3 c : {float3{wall, y, z},
+               float3{wall, y + 0.2f, z},
+               float3{wall, y, z + 0.2f}})
+        corners.push_back(c);
+    }
+  light::LightTree tree;
+  tree.build(emittersOf(corners));
+  const float3 point{0.f, 0.f, 0.f};
+  float facing = 0.f, evenly = 0.f;
+  for (uint32_t i = 64; i < 128; i++) {
+    facing += tree.probability(point, {1.f, 0.f, 0.f}, i);
+    evenly += tree.probability(point, {0.f, 0.f, 0.f}, i);
+  }
+  EXPECT_NEAR(evenly, 0.5f, 0.02f) << "without a normal, both walls alike";
+  EXPECT_GT(facing, 0.99f);
+  for (uint32_t i = 0; i < 64; i++)
+    EXPECT_GT(tree.probability(point, {1.f, 0.f, 0.f}, i), 0.f);
 }
 
 TEST(LightTree, LeftoverNumberIsUniform)
 {
   // What pick() leaves of u is uniform: its mean and variance over
   // stratified u are those of U[0,1) for each emitter.
-  light::LightTree tree;
-  tree.build(emittersOf(triangleRow(5)));
-  const int n = 100000;
-  std::vector<double> sum(5, 0.0), sum2(5, 0.0), count(5, 0.0);
-  for (int k = 0; k < n; k++) {
-    float u = (k + 0.5f) / n, probability = 0.f;
-    const uint32_t e = tree.pick(kPoints[0], u, probability);
-    sum[e] += u, sum2[e] += double(u) * u, count[e] += 1.0;
-  }
-  for (int e = 0; e < 5; e++) {
-    ASSERT_GT(count[size_t(e)], 100.0);
-    EXPECT_NEAR(sum[size_t(e)] / count[size_t(e)], 0.5, 0.01);
-    EXPECT_NEAR(sum2[size_t(e)] / count[size_t(e)], 1.0 / 3.0, 0.01);
+  // Within a leaf (5 emitters) and through nodes (40): each emitter
+  // chosen often enough to tell.
+  for (int emitters : {5, 40}) {
+    light::LightTree tree;
+    tree.build(emittersOf(triangleRow(emitters)));
+    const int n = 400000;
+    const float3 point{20.f, 0.5f, 40.f}, normal{0.f, 0.f, -1.f};
+    std::vector<double> sum(size_t(emitters), 0.0), sum2 = sum, count = sum;
+    for (int k = 0; k < n; k++) {
+      float u = (k + 0.5f) / n, probability = 0.f;
+      const uint32_t e = tree.pick(point, normal, u, probability);
+      sum[e] += u, sum2[e] += double(u) * u, count[e] += 1.0;
+    }
+    for (size_t e = 0; e < size_t(emitters); e++) {
+      ASSERT_GT(count[e], 300.0) << e << " of " << emitters;
+      EXPECT_NEAR(sum[e] / count[e], 0.5, 0.01);
+      EXPECT_NEAR(sum2[e] / count[e], 1.0 / 3.0, 0.01);
+    }
   }
 }
 
@@ -140,8 +183,10 @@ double lambertIrradiance(
 }
 
 // Monte Carlo irradiance at `point` (normal +z) with next-event samples
-// of `light`: the mean of L cos / pdf over stratified, jittered samples.
-double sampledIrradiance(const EmissiveSurface &light, const float3 &point)
+// of `light` chosen for a receiver facing `normal`: the mean of
+// L cos / pdf over stratified, jittered samples.
+double sampledIrradiance(
+    const EmissiveSurface &light, const float3 &point, const float3 &normal)
 {
   std::mt19937 random(7);
   std::uniform_real_distribution<float> jitter(0.f, 1.f);
@@ -151,7 +196,7 @@ double sampledIrradiance(const EmissiveSurface &light, const float3 &point)
     for (int j = 0; j < n; j++) {
       const float2 u{std::min((i + jitter(random)) / n, 0.99999994f),
           std::min((j + jitter(random)) / n, 0.99999994f)};
-      const LightSample s = light.sample(point, u);
+      const LightSample s = light.sampleFacing(point, normal, u);
       if (s.pdf > 0.f && s.direction.z > 0.f)
         sum += double(s.radiance.x) * s.direction.z / s.pdf;
     }
@@ -163,22 +208,8 @@ TEST(EmissiveSurface, IrradianceMatchesLambertsFormula)
   // A 2x2 square at z = 1 split into 8x8 cells of two triangles each,
   // radiance 3: near (solid-angle sampling of the big cells' triangles
   // under the point), off to the side and far (by area).
-  const int cells = 8;
-  std::vector<float3> corners;
-  for (int y = 0; y < cells; y++)
-    for (int x = 0; x < cells; x++) {
-      const float x0 = -1.f + 2.f * x / cells,
-                  x1 = -1.f + 2.f * (x + 1) / cells;
-      const float y0 = -1.f + 2.f * y / cells,
-                  y1 = -1.f + 2.f * (y + 1) / cells;
-      for (float3 c : {float3{x0, y0, 1},
-               float3{x1, y0, 1},
-               float3{x1, y1, 1},
-               float3{x0, y0, 1},
-               float3{x1, y1, 1},
-               float3{x0, y1, 1}})
-        corners.push_back(c);
-    }
+  const std::vector<float3> corners =
+      test::squareOfCells(-1.f, -1.f, 2.f, 1.f, 8);
   const std::vector<float3> square = {
       {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
   EmitterShape mesh;
@@ -193,10 +224,15 @@ TEST(EmissiveSurface, IrradianceMatchesLambertsFormula)
              float3{1.5f, -0.5f, 0.4f},
              float3{3.f, 2.f, -6.f}}) {
       const double expected = lambertIrradiance(square, point, 3.0);
-      // 0.5 %: several standard errors of 160,000 stratified samples.
-      EXPECT_NEAR(sampledIrradiance(light, point), expected, 5e-3 * expected)
-          << "at " << point.x << ", " << point.y << ", " << point.z << " with "
-          << shape->triangles.size() / 3 << " triangles";
+      // 0.5 %: several standard errors of 160,000 stratified samples;
+      // with the receiver's normal (+z, the side the square is on) or
+      // without, the estimate is the same.
+      for (const float3 normal : {float3{0, 0, 0}, float3{0, 0, 1}})
+        EXPECT_NEAR(
+            sampledIrradiance(light, point, normal), expected, 5e-3 * expected)
+            << "at " << point.x << ", " << point.y << ", " << point.z
+            << " with " << shape->triangles.size() / 3 << " triangles, normal "
+            << normal.z;
     }
   }
 }

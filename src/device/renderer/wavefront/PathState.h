@@ -18,6 +18,9 @@ struct PathState
   // The pdf of the BSDF sample that started the current ray, and whether
   // it was a delta lobe (such rays weigh the light they reach fully).
   float previousPdf{0.f};
+  // The receiver normal the light sample at that surface was chosen for
+  // (PathTracer::receiverNormal), so hitting a light weighs it alike.
+  float3 previousNormal{0.f, 0.f, 0.f};
   bool previousDelta{true};
   bool recordedFirstHit{false};
   // How much of the ambient light the last surface lets reach it (its
