@@ -5,7 +5,10 @@
 // (as instance transform arrays), each side runs in a child process of
 // its own (peak RSS is per process): it makes the data in its own memory,
 // hands it over (prism: shared arrays; Embree: shared geometry buffers),
-// builds and traces one 256x256 frame of camera rays. Printed per side:
+// builds and traces one 256x256 frame of camera rays. Spheres and curves
+// reach prism in Embree's xyzr layout (vertex.positionRadius,
+// PRISM_GEOMETRY_POSITION_RADIUS) unless --layout apart gives them as
+// ANARI's positions and radii, which prism converts. Printed per side:
 // peak RSS per primitive (data included) and above the process's start
 // (library and device loaded), Embree's bytes from its memory monitor
 // (prism: the world's prism.embreePeakBytes), and the time to first pixel
@@ -55,6 +58,7 @@ struct SceneData
   std::vector<uint32_t> indices;
   std::vector<float> radii; // curves for prism: per vertex
   float radius{0.f};
+  bool packed{false}; // spheres and curves: xyzr, vertex.positionRadius
   // Instances: 100 small meshes (positions + indices above, 1 per mesh
   // range) and per mesh a transform array.
   size_t meshes{0};
@@ -180,10 +184,15 @@ void makeInstances(SceneData &data,
   data.primitives = instances;
 }
 
-SceneData makeData(const std::string &kind, double scale, bool forEmbree)
+// `forEmbree`: Embree's layouts; `packed`: prism given spheres and curves
+// in Embree's xyzr layout too.
+SceneData makeData(
+    const std::string &kind, double scale, bool forEmbree, bool packed = false)
 {
   SceneData data;
   data.kind = kind;
+  data.packed = packed && !forEmbree && (kind == "spheres" || kind == "curves");
+  forEmbree = forEmbree || data.packed;
   auto count = [&](double n) {
     return size_t(std::max(1.0, n * scale));
   };
@@ -399,15 +408,22 @@ class PrismSide
                                                   : "triangle";
     ANARIGeometry g = anariNewGeometry(m_device, subtype);
     const size_t vertices = data.vertices;
-    setArray(g,
-        "vertex.position",
-        shared(data.positions.data(), ANARI_FLOAT32_VEC3, vertices));
-    if (data.kind == "spheres")
+    if (data.packed) {
+      setArray(g,
+          "vertex.positionRadius",
+          shared(data.positions.data(), ANARI_FLOAT32_VEC4, vertices));
+    } else {
+      setArray(g,
+          "vertex.position",
+          shared(data.positions.data(), ANARI_FLOAT32_VEC3, vertices));
+    }
+    if (data.kind == "spheres" && !data.packed)
       anariSetParameter(m_device, g, "radius", ANARI_FLOAT32, &data.radius);
     if (data.kind == "curves") {
-      setArray(g,
-          "vertex.radius",
-          shared(data.radii.data(), ANARI_FLOAT32, vertices));
+      if (!data.packed)
+        setArray(g,
+            "vertex.radius",
+            shared(data.radii.data(), ANARI_FLOAT32, vertices));
       setArray(g,
           "primitive.index",
           shared(data.indices.data(), ANARI_UINT32, data.indices.size()));
@@ -541,7 +557,8 @@ class PrismSide
   ANARIArray1D m_firstTransforms{nullptr};
 };
 
-Figures runPrism(const std::string &kind, double scale, const char *quality)
+Figures runPrism(
+    const std::string &kind, double scale, const char *quality, bool packed)
 {
   Figures figures;
   SceneData data; // the application's memory outlives the device
@@ -549,7 +566,7 @@ Figures runPrism(const std::string &kind, double scale, const char *quality)
   if (!prism.ok())
     return figures;
   figures.startRss = peakRssBytes();
-  data = makeData(kind, scale, false);
+  data = makeData(kind, scale, false, packed);
   figures.primitives = double(data.primitives);
   const auto start = Clock::now();
   ANARIWorld w = prism.world(data);
@@ -660,6 +677,7 @@ int main(int argc, char **argv)
   const char *quality = nullptr; // prism's default; Embree: medium
   RTCBuildQuality embreeQuality = RTC_BUILD_QUALITY_MEDIUM;
   bool edit = false;
+  bool packed = true;
   for (int i = 1; i < argc; i++) {
     const std::string arg = argv[i];
     if (arg == "--quick") {
@@ -672,6 +690,8 @@ int main(int argc, char **argv)
       kinds.push_back("instances");
     } else if (arg == "--only" && i + 1 < argc) {
       kinds = {argv[++i]};
+    } else if (arg == "--layout" && i + 1 < argc) {
+      packed = std::string(argv[++i]) != "apart";
     } else if (arg == "--quality" && i + 1 < argc) {
       quality = argv[++i];
       embreeQuality = std::string(quality) == "high" ? RTC_BUILD_QUALITY_HIGH
@@ -684,6 +704,7 @@ int main(int argc, char **argv)
           "[--edit]\n"
           "  [--only triangles|spheres|curves|instances] [--quality "
           "low|medium|high]\n"
+          "  [--layout packed|apart]\n"
           "  peak RSS, Embree bytes and time to first pixel per primitive,\n"
           "  prism (shared arrays) against raw Embree on the same data;\n"
           "  --edit: one transform moved in a 1M-instance world\n");
@@ -700,11 +721,16 @@ int main(int argc, char **argv)
   }
   for (const std::string &kind : kinds) {
     const Figures prism =
-        inChild([&] { return runPrism(kind, scale, quality); });
+        inChild([&] { return runPrism(kind, scale, quality, packed); });
     const Figures embree =
         inChild([&] { return runEmbree(kind, scale, embreeQuality); });
     const double primitives = std::max(prism.primitives, embree.primitives);
-    std::printf("%s: %.0f\n", kind.c_str(), primitives);
+    std::printf("%s: %.0f%s\n",
+        kind.c_str(),
+        primitives,
+        kind == "spheres" || kind == "curves" ? (
+            packed ? " (prism given xyzr)" : " (prism given xyz and r apart)")
+                                              : "");
     print("prism", prism, primitives);
     print("embree", embree, primitives);
     std::printf("  prism / embree: peak RSS %.2fx, first pixel %.2fx\n",

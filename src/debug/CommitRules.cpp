@@ -50,12 +50,16 @@ void Rules::checkRequired(Findings &f, const ObjectRecord &object)
       continue;
     const auto *def = m_catalog.findParameter(object.type, subtype, list->name);
     // Time-keyed values (motion deformation's `motion.vertex.position`)
-    // stand in for the parameter they animate.
-    const std::string keyed = std::string("motion.") + list->name;
-    const bool given =
-        object.parameters.count(list->name)
-        || (object.parameters.count(keyed)
-            && m_catalog.findParameter(object.type, subtype, keyed.c_str()));
+    // stand in for the parameter they animate, and PRISM_GEOMETRY_
+    // POSITION_RADIUS's packed vertices for the positions they hold.
+    auto standsIn = [&](const std::string &name) {
+      return object.parameters.count(name)
+             && m_catalog.findParameter(object.type, subtype, name.c_str());
+    };
+    const bool given = object.parameters.count(list->name)
+                       || standsIn(std::string("motion.") + list->name)
+                       || (std::string(list->name) == "vertex.position"
+                           && standsIn("vertex.positionRadius"));
     if (def && def->requiredByObject && !given) {
       f.error(std::string("required parameter '") + list->name
                   + "' is not set; the object is invalid",
@@ -68,6 +72,8 @@ void Rules::checkGeometryArrays(
     Findings &f, const ObjectRecord &object, ObjectTable &table)
 {
   auto position = object.parameters.find("vertex.position");
+  if (position == object.parameters.end())
+    position = object.parameters.find("vertex.positionRadius");
   uint64_t vertices = 0;
   const bool hasVertices = position != object.parameters.end()
                            && elementCount(position->second, table, vertices);
@@ -81,9 +87,8 @@ void Rules::checkGeometryArrays(
     if (!elementCount(p, table, count))
       continue;
     if (hasVertices && startsWith(name, "vertex.") && count != vertices) {
-      f.error("'" + name + "' has " + std::to_string(count)
-              + " elements but 'vertex.position' has "
-              + std::to_string(vertices));
+      f.error("'" + name + "' has " + std::to_string(count) + " elements but '"
+              + position->first + "' has " + std::to_string(vertices));
     }
     if (indexed && startsWith(name, "primitive.") && name != "primitive.index"
         && count != primitives) {

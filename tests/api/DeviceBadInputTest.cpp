@@ -172,6 +172,73 @@ TEST_F(DeviceBadInput, WrongParameterTypeNamesAcceptedTypes)
   expectStillRenders();
 }
 
+TEST_F(DeviceBadInput, PackedPositionsOfAWrongTypeOrBesideOthers)
+{
+  // PRISM_GEOMETRY_POSITION_RADIUS: vertex.positionRadius must hold
+  // FLOAT32_VEC4 (an error names the accepted type, the geometry is
+  // invalid), replaces vertex.position and the radii (each warned about
+  // when also set), and a curve needs two vertices.
+  // Sets `name` (and commits): the device reports at the next flush.
+  auto commitWith = [&](ANARIGeometry geometry,
+                        const char *name,
+                        ANARIDataType type,
+                        const void *value) {
+    anariSetParameter(m_device, geometry, name, type, value);
+    anariCommitParameters(m_device, geometry);
+    uint64_t bytes = 0;
+    anariGetProperty(m_device,
+        geometry,
+        "prism.copiedBytes",
+        ANARI_UINT64,
+        &bytes,
+        sizeof(bytes),
+        ANARI_WAIT);
+  };
+  const float three[6] = {0, 0, 0, 1, 0, 0};
+  const float four[8] = {0, 0, 0, 0.5f, 1, 0, 0, 0.5f};
+  ANARIArray1D vec3 =
+      anariNewArray1D(m_device, three, nullptr, nullptr, ANARI_FLOAT32_VEC3, 2);
+  ANARIArray1D vec4 =
+      anariNewArray1D(m_device, four, nullptr, nullptr, ANARI_FLOAT32_VEC4, 2);
+  ANARIArray1D one =
+      anariNewArray1D(m_device, four, nullptr, nullptr, ANARI_FLOAT32_VEC4, 1);
+
+  ANARIGeometry sphere = anariNewGeometry(m_device, "sphere");
+  commitWith(sphere, "vertex.positionRadius", ANARI_ARRAY1D, &vec3);
+  EXPECT_TRUE(reported(ANARI_SEVERITY_ERROR,
+      ANARI_STATUS_INVALID_ARGUMENT,
+      "'vertex.positionRadius' has element type ANARI_FLOAT32_VEC3; "
+      "accepted: ANARI_FLOAT32_VEC4"));
+
+  const float radius = 2.f;
+  anariSetParameter(
+      m_device, sphere, "vertex.positionRadius", ANARI_ARRAY1D, &vec4);
+  commitWith(sphere, "radius", ANARI_FLOAT32, &radius);
+  EXPECT_TRUE(reported(ANARI_SEVERITY_WARNING,
+      ANARI_STATUS_INVALID_ARGUMENT,
+      "'radius' is ignored: 'vertex.positionRadius' is set"));
+
+  ANARIGeometry curve = anariNewGeometry(m_device, "curve");
+  commitWith(curve, "vertex.positionRadius", ANARI_ARRAY1D, &one);
+  EXPECT_TRUE(reported(ANARI_SEVERITY_ERROR,
+      ANARI_STATUS_INVALID_ARGUMENT,
+      "'vertex.positionRadius' has 1 elements; at least 2 are needed"));
+  anariSetParameter(
+      m_device, curve, "vertex.positionRadius", ANARI_ARRAY1D, &vec4);
+  commitWith(curve, "vertex.position", ANARI_ARRAY1D, &vec3);
+  EXPECT_TRUE(reported(ANARI_SEVERITY_WARNING,
+      ANARI_STATUS_INVALID_ARGUMENT,
+      "'vertex.position' is ignored: 'vertex.positionRadius' is set"));
+
+  for (ANARIObject o : {(ANARIObject)sphere,
+           (ANARIObject)curve,
+           (ANARIObject)vec3,
+           (ANARIObject)vec4,
+           (ANARIObject)one})
+    anariRelease(m_device, o);
+  expectStillRenders();
+}
+
 TEST_F(DeviceBadInput, ArrayMappingMisuse)
 {
   ANARIArray1D array =

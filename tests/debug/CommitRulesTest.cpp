@@ -42,6 +42,35 @@ TEST_F(DebugCommit, RequiredParameterMissing)
   EXPECT_TRUE(silent());
 }
 
+TEST_F(DebugCommit, PackedPositionsStandInForPositions)
+{
+  // PRISM_GEOMETRY_POSITION_RADIUS's vertex.positionRadius holds the
+  // sphere's positions: no "required" error, and vertex attributes are
+  // counted against it.
+  const float packed[8] = {0, 0, 0, 0.5f, 1, 0, 0, 0.5f};
+  ANARIGeometry spheres = anariNewGeometry(m_device, "sphere");
+  ANARIArray1D positionRadius = anariNewArray1D(
+      m_device, packed, nullptr, nullptr, ANARI_FLOAT32_VEC4, 2);
+  anariSetParameter(m_device,
+      spheres,
+      "vertex.positionRadius",
+      ANARI_ARRAY1D,
+      &positionRadius);
+  anariCommitParameters(m_device, spheres);
+  EXPECT_TRUE(silent());
+  const float colors[12] = {};
+  ANARIArray1D three = anariNewArray1D(
+      m_device, colors, nullptr, nullptr, ANARI_FLOAT32_VEC4, 3);
+  anariSetParameter(m_device, spheres, "vertex.color", ANARI_ARRAY1D, &three);
+  anariCommitParameters(m_device, spheres);
+  EXPECT_TRUE(onlyLayerReported(ANARI_SEVERITY_ERROR,
+      ANARI_STATUS_INVALID_ARGUMENT,
+      "'vertex.color' has 3 elements but 'vertex.positionRadius' has 2"));
+  for (ANARIObject o :
+      {(ANARIObject)spheres, (ANARIObject)positionRadius, (ANARIObject)three})
+    anariRelease(m_device, o);
+}
+
 TEST_F(DebugCommit, IndexOutOfRange)
 {
   ANARIGeometry geometry = anariNewGeometry(m_device, "triangle");

@@ -232,4 +232,95 @@ TEST_F(SharedArrays, SpheresConvertOnlyToEmbreesLayout)
       "shared vs managed spheres");
 }
 
+TEST_F(SharedArrays, PackedSpheresAreReadInPlace)
+{
+  // PRISM_GEOMETRY_POSITION_RADIUS: centres and radii as one FLOAT32_VEC4
+  // array, Embree's layout: no copy, the same picture as positions and
+  // radii apart, and an edit renders the new values.
+  std::vector<Vec4> packed = {{-0.8f, 0, 0, 0.4f}, {0.3f, 0.2f, 0, 0.25f}};
+  ANARIArray1D shared = sharedArray(ANARI_FLOAT32_VEC4, packed.data(), 2);
+  ANARIGeometry spheres = newGeometry("sphere");
+  setObject(spheres, "vertex.positionRadius", ANARI_ARRAY1D, shared);
+  ANARIWorld world = newWorld({newSurface(spheres, newMatte(kOrange))});
+  const prism::image::Image inPlace = draw(world);
+  EXPECT_EQ(copiedBytes(spheres), 0u);
+  EXPECT_TRUE(orangeAt(inPlace, 8));   // x = -0.8
+  EXPECT_FALSE(orangeAt(inPlace, 40)); // x = 1.0
+
+  ANARIGeometry apart = newGeometry("sphere");
+  setArray(apart,
+      "vertex.position",
+      ANARI_FLOAT32_VEC3,
+      std::vector<Vec3>{{-0.8f, 0, 0}, {0.3f, 0.2f, 0}});
+  setArray(
+      apart, "vertex.radius", ANARI_FLOAT32, std::vector<float>{0.4f, 0.25f});
+  expectSameImage(inPlace,
+      draw(newWorld({newSurface(apart, newMatte(kOrange))})),
+      "packed vs apart");
+
+  auto *mapped = (Vec4 *)anariMapArray(device(), shared);
+  ASSERT_EQ(mapped, packed.data());
+  mapped[1] = {1.0f, 0, 0, 0.3f};
+  anariUnmapArray(device(), shared);
+  const prism::image::Image edited = draw(world);
+  EXPECT_TRUE(orangeAt(edited, 40));
+  EXPECT_EQ(copiedBytes(spheres), 0u);
+
+  // Indexed spheres are gathered: Embree has no index buffer for them.
+  ANARIGeometry indexed = newGeometry("sphere");
+  setObject(indexed, "vertex.positionRadius", ANARI_ARRAY1D, shared);
+  setArray(indexed, "primitive.index", ANARI_UINT32, std::vector<uint32_t>{1});
+  const prism::image::Image one =
+      draw(newWorld({newSurface(indexed, newMatte(kOrange))}));
+  EXPECT_EQ(copiedBytes(indexed), sizeof(Vec4));
+  EXPECT_TRUE(orangeAt(one, 40));
+  EXPECT_FALSE(orangeAt(one, 8));
+}
+
+TEST_F(SharedArrays, PackedCurvesAreReadInPlaceUnlessAtAPagesEnd)
+{
+  // A curve's segments read one vertex past their end: an application's
+  // array is used in place when those bytes are in its last element's
+  // page, copied when it ends a page; both draw what positions and radii
+  // apart do.
+  const Vec4 packed[3] = {
+      {-1.2f, -0.5f, 0, 0.2f}, {0, 0.5f, 0, 0.3f}, {1.2f, -0.5f, 0, 0.2f}};
+  ANARIGeometry apart = newGeometry("curve");
+  setArray(apart,
+      "vertex.position",
+      ANARI_FLOAT32_VEC3,
+      std::vector<Vec3>{{-1.2f, -0.5f, 0}, {0, 0.5f, 0}, {1.2f, -0.5f, 0}});
+  setArray(apart,
+      "vertex.radius",
+      ANARI_FLOAT32,
+      std::vector<float>{0.2f, 0.3f, 0.2f});
+  const prism::image::Image expected =
+      draw(newWorld({newSurface(apart, newMatte(kOrange))}));
+  EXPECT_TRUE(orangeAt(expected, 14)); // x = -0.6: the first segment
+
+  // Two pages: the array at the start of the second, and one ending the
+  // first.
+  const long page = sysconf(_SC_PAGESIZE);
+  m_block = std::aligned_alloc(size_t(page), 2 * size_t(page));
+  ASSERT_NE(m_block, nullptr);
+  auto *pageStart = (Vec4 *)((char *)m_block + page);
+  auto *pageEnd = pageStart - 3;
+  std::memcpy(pageStart, packed, sizeof(packed));
+  std::memcpy(pageEnd, packed, sizeof(packed));
+  for (Vec4 *memory : {pageStart, pageEnd}) {
+    const bool inPlace = memory == pageStart;
+    ANARIGeometry curve = newGeometry("curve");
+    setObject(curve,
+        "vertex.positionRadius",
+        ANARI_ARRAY1D,
+        sharedArray(ANARI_FLOAT32_VEC4, memory, 3));
+    expectSameImage(draw(newWorld({newSurface(curve, newMatte(kOrange))})),
+        expected,
+        inPlace ? "packed curve in place" : "packed curve copied");
+    // Implied indices are the geometry's own either way.
+    EXPECT_EQ(copiedBytes(curve),
+        2 * sizeof(uint32_t) + (inPlace ? 0 : 4 * sizeof(Vec4)));
+  }
+}
+
 } // namespace

@@ -1,15 +1,21 @@
 #include "Curve.h"
 
+#include "../array/Array.h"
 #include "../rt/Scene.h"
+
+#include <cstring>
 
 namespace prism {
 
 void Curve::readShape()
 {
   const bool indexed = readIndices(1, m_indices);
-  const std::vector<float> radii = readFloats("vertex.radius");
-  const float radius = read<float>("radius", ANARI_FLOAT32, 1.f);
-  if (!readPositions(2))
+  m_positionRadius.clear();
+  const bool packed = isSet("vertex.positionRadius");
+  const std::vector<float> radii =
+      packed ? std::vector<float>() : readFloats("vertex.radius");
+  const float radius = packed ? 1.f : read<float>("radius", ANARI_FLOAT32, 1.f);
+  if (packed ? !readPositionRadiusShape() : !readPositions(2))
     return;
   if (!indexed)
     generateIndices(m_indices, m_vertexCount - 1);
@@ -21,14 +27,32 @@ void Curve::readShape()
         m_vertexCount);
   if (!isValid())
     return;
+  setPrimitiveCount(uint32_t(m_indices.size()));
+  if (packed)
+    return;
   // Embree's layout, the one conversion curves need.
-  std::vector<float4>(m_vertexCount + 1).swap(m_positionRadius);
+  float4 *positionRadius = m_positionRadius.own(m_vertexCount, 1);
   for (size_t i = 0; i < m_vertexCount; i++) {
     const float3 &p = m_positions[i];
-    m_positionRadius[i] =
+    positionRadius[i] =
         float4{p.x, p.y, p.z, radii.empty() ? radius : radii[i]};
   }
-  setPrimitiveCount(uint32_t(m_indices.size()));
+}
+
+bool Curve::readPositionRadiusShape()
+{
+  const Array *packed = readPositionRadius(2);
+  if (!packed)
+    return false;
+  const auto *given = (const float4 *)packed->begin();
+  if (uintptr_t(given) % alignof(float) == 0
+      && packed->readableAfterEnd(sizeof(float4))) {
+    m_positionRadius.share(given, m_vertexCount);
+  } else {
+    float4 *copy = m_positionRadius.own(m_vertexCount, 1);
+    std::memcpy(copy, given, m_vertexCount * sizeof(float4));
+  }
+  return true;
 }
 
 void Curve::addTo(rt::Scene &scene, uint32_t id) const
@@ -42,7 +66,7 @@ void Curve::addTo(rt::Scene &scene, uint32_t id) const
 
 size_t Curve::copiedBytes() const
 {
-  return Geometry::copiedBytes() + m_positionRadius.capacity() * sizeof(float4);
+  return Geometry::copiedBytes() + m_positionRadius.copiedBytes();
 }
 
 Geometry::Corners Curve::cornersAt(uint32_t primitive, float u, float) const

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "Geometry.h"
+#include "SharedElements.h"
 
 namespace prism {
 
@@ -18,7 +19,11 @@ class Curve : public Geometry
   size_t copiedBytes() const override;
 
  private:
-  std::vector<float4> m_positionRadius; // per vertex (+1 padding)
+  // 'vertex.positionRadius' in place, when Embree may read one element
+  // past its end.
+  bool readPositionRadiusShape();
+
+  SharedElements<float4> m_positionRadius; // per vertex (+1 padding)
 };
 
 } // namespace prism

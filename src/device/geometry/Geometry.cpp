@@ -169,6 +169,32 @@ bool Geometry::readPositions(size_t minimumCount)
   return true;
 }
 
+const Array *Geometry::readPositionRadius(size_t minimumCount)
+{
+  const Array *packed =
+      readArray("vertex.positionRadius", {ANARI_FLOAT32_VEC4}, true);
+  if (!packed)
+    return nullptr;
+  for (const char *replaced : {"vertex.position", "vertex.radius", "radius"}) {
+    if (isSet(replaced)) {
+      readAny(replaced);
+      report(ANARI_SEVERITY_WARNING,
+          ANARI_STATUS_INVALID_ARGUMENT,
+          "'%s' is ignored: 'vertex.positionRadius' is set",
+          replaced);
+    }
+  }
+  m_vertexCount = packed->count();
+  if (m_vertexCount < minimumCount) {
+    invalidate(
+        "'vertex.positionRadius' has %zu elements; at least %zu are needed",
+        m_vertexCount,
+        minimumCount);
+    return nullptr;
+  }
+  return packed;
+}
+
 bool Geometry::readDeformablePositions(size_t minimumCount)
 {
   const Array *positions = readArray("motion.vertex.position", {ANARI_ARRAY1D});

@@ -112,6 +112,11 @@ class Geometry : public Object
   // Positions (FLOAT32_VEC3) with Embree's read padding, read in place
   // when the array's memory allows it; false if missing.
   bool readPositions(size_t minimumCount);
+  // PRISM_GEOMETRY_POSITION_RADIUS (spheres, curves): 'vertex.positionRadius'
+  // (FLOAT32_VEC4, the radius in w), Embree's own layout, which replaces
+  // vertex.position and the radii (ignored, with a warning, if also set);
+  // NULL if unset or unusable (then reported). Sets m_vertexCount.
+  const Array *readPositionRadius(size_t minimumCount);
   // Meshes: motion.vertex.* keys (deformation motion blur) if set, else
   // vertex.position as readPositions(); false if neither is usable.
   bool readDeformablePositions(size_t minimumCount);

@@ -1,18 +1,26 @@
 #include "Sphere.h"
 
+#include "../array/Array.h"
 #include "../rt/Scene.h"
+
+#include <cstring>
 
 namespace prism {
 
 void Sphere::readShape()
 {
   const bool indexed = readIndices(1, m_indices);
+  m_indexed = indexed;
+  m_centerRadius.clear();
+  if (isSet("vertex.positionRadius")) {
+    readPositionRadiusShape();
+    return;
+  }
   const std::vector<float> radii = readFloats("vertex.radius");
   const float radius = read<float>("radius", ANARI_FLOAT32, 1.f);
   if (!readPositions(1))
     return;
   // Without indices, sphere i is vertex i (no index array is made).
-  m_indexed = indexed;
   requireVertexIndicesBelow(m_vertexCount, m_indices);
   if (!radii.empty() && radii.size() < m_vertexCount)
     invalidate("'vertex.radius' has %zu elements but there are %zu vertices",
@@ -22,14 +30,33 @@ void Sphere::readShape()
     return;
   // Embree's layout, the one conversion spheres need.
   const size_t count = indexed ? m_indices.size() : m_vertexCount;
-  std::vector<float4>(count).swap(m_centerRadius);
+  float4 *centerRadius = m_centerRadius.own(count);
   for (size_t i = 0; i < count; i++) {
     const uint32_t v = vertexOf(uint32_t(i));
     const float3 &c = m_positions[v];
-    m_centerRadius[i] =
-        float4{c.x, c.y, c.z, radii.empty() ? radius : radii[v]};
+    centerRadius[i] = float4{c.x, c.y, c.z, radii.empty() ? radius : radii[v]};
   }
   setPrimitiveCount(uint32_t(count));
+}
+
+void Sphere::readPositionRadiusShape()
+{
+  const Array *packed = readPositionRadius(1);
+  if (!packed)
+    return;
+  requireVertexIndicesBelow(m_vertexCount, m_indices);
+  if (!isValid())
+    return;
+  const auto *given = (const float4 *)packed->begin();
+  if (!m_indexed && uintptr_t(given) % alignof(float) == 0) {
+    m_centerRadius.share(given, m_vertexCount); // Embree's layout already
+  } else {
+    // Embree has no index buffer for spheres: gather them.
+    float4 *gathered = m_centerRadius.own(m_indices.size());
+    for (size_t i = 0; i < m_indices.size(); i++)
+      std::memcpy(&gathered[i], &given[m_indices[i]], sizeof(float4));
+  }
+  setPrimitiveCount(uint32_t(m_centerRadius.size()));
 }
 
 void Sphere::addTo(rt::Scene &scene, uint32_t id) const
@@ -51,7 +78,7 @@ float3 Sphere::surfaceNormal(
 
 size_t Sphere::copiedBytes() const
 {
-  return Geometry::copiedBytes() + m_centerRadius.capacity() * sizeof(float4);
+  return Geometry::copiedBytes() + m_centerRadius.copiedBytes();
 }
 
 void Sphere::appendEmitterShape(EmitterShape &shape) const

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "Geometry.h"
+#include "SharedElements.h"
 
 namespace prism {
 
@@ -30,8 +31,11 @@ class Sphere : public Geometry
     return m_indexed ? m_indices[sphere] : sphere;
   }
 
+  // 'vertex.positionRadius': read in place unless indexed.
+  void readPositionRadiusShape();
+
   bool m_indexed{false};
-  std::vector<float4> m_centerRadius; // per sphere, for Embree
+  SharedElements<float4> m_centerRadius; // per sphere, for Embree
 };
 
 } // namespace prism

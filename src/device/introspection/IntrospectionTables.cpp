@@ -84,12 +84,13 @@ enum : int {
   kKhrSpatialFieldUnstructured = 61,
   kKhrVolumeTransferFunction1d = 62,
   kPrismBvhQuality = 63,
-  kPrismLightDecay = 64,
-  kPrismMaterialAnisotropy = 65,
-  kPrismMaterialBaseColorFactor = 66,
-  kPrismMaterialDoubleSided = 67,
-  kPrismMaterialUnlit = 68,
-  kPrismRenderers = 69,
+  kPrismGeometryPositionRadius = 64,
+  kPrismLightDecay = 65,
+  kPrismMaterialAnisotropy = 66,
+  kPrismMaterialBaseColorFactor = 67,
+  kPrismMaterialDoubleSided = 68,
+  kPrismMaterialUnlit = 69,
+  kPrismRenderers = 70,
 };
 
 // Type lists, ANARI_UNKNOWN-terminated.
@@ -1047,7 +1048,14 @@ constexpr ParameterEntry kParameters9[] = {
         .types = {kTypeList6, 1},
         .description = "global radius",
         .defaultValue = kDefault9_radius,
-        .extension = kKhrGeometryCurve}};
+        .extension = kKhrGeometryCurve},
+    {.name = "vertex.positionRadius",
+        .types = {kTypeList7, 1},
+        .elementTypes = {kTypeList18, 1},
+        .description = "curve vertices (xyz) and radii (w); replaces "
+                       "vertex.position, vertex.radius and radius",
+        .extension = kPrismGeometryPositionRadius}};
+constexpr int kContributors9[] = {kPrismGeometryPositionRadius};
 
 // ANARI_GEOMETRY "cylinder": ANARI_KHR_GEOMETRY_CYLINDER
 // clang-format off
@@ -1500,7 +1508,14 @@ constexpr ParameterEntry kParameters13[] = {
         .types = {kTypeList6, 1},
         .description = "global sphere radius",
         .defaultValue = kDefault13_radius,
-        .extension = kKhrGeometrySphere}};
+        .extension = kKhrGeometrySphere},
+    {.name = "vertex.positionRadius",
+        .types = {kTypeList7, 1},
+        .elementTypes = {kTypeList18, 1},
+        .description = "sphere centres (xyz) and radii (w); replaces "
+                       "vertex.position, vertex.radius and radius",
+        .extension = kPrismGeometryPositionRadius}};
+constexpr int kContributors13[] = {kPrismGeometryPositionRadius};
 
 // ANARI_GEOMETRY "triangle": ANARI_KHR_GEOMETRY_TRIANGLE
 // clang-format off
@@ -4120,13 +4135,14 @@ const char *const kExtensions[] = {"ANARI_EXT_SAMPLER_COMPRESSED_FORMAT_ASTC",
     "ANARI_KHR_SPATIAL_FIELD_UNSTRUCTURED",
     "ANARI_KHR_VOLUME_TRANSFER_FUNCTION1D",
     "ANARI_PRISM_BVH_QUALITY",
+    "ANARI_PRISM_GEOMETRY_POSITION_RADIUS",
     "ANARI_PRISM_LIGHT_DECAY",
     "ANARI_PRISM_MATERIAL_ANISOTROPY",
     "ANARI_PRISM_MATERIAL_BASE_COLOR_FACTOR",
     "ANARI_PRISM_MATERIAL_DOUBLE_SIDED",
     "ANARI_PRISM_MATERIAL_UNLIT",
     "ANARI_PRISM_RENDERERS"};
-const size_t kExtensionCount = 70;
+const size_t kExtensionCount = 71;
 
 const char *const kAttributes[] = {"color",
     "worldPosition",
@@ -4205,7 +4221,8 @@ const ObjectEntry kObjects[] = {
         .subtype = "curve",
         .description = "curve geometry object",
         .extension = kKhrGeometryCurve,
-        .parameters = {kParameters9, 20}},
+        .contributors = {kContributors9, 1},
+        .parameters = {kParameters9, 21}},
     // ANARI_GEOMETRY "cylinder"
     {.type = ANARI_GEOMETRY,
         .subtype = "cylinder",
@@ -4230,7 +4247,8 @@ const ObjectEntry kObjects[] = {
         .subtype = "sphere",
         .description = "sphere geometry object",
         .extension = kKhrGeometrySphere,
-        .parameters = {kParameters13, 20}},
+        .contributors = {kContributors13, 1},
+        .parameters = {kParameters13, 21}},
     // ANARI_GEOMETRY "triangle"
     {.type = ANARI_GEOMETRY,
         .subtype = "triangle",
