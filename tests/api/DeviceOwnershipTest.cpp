@@ -218,6 +218,96 @@ TEST_F(DeviceOwnership, SharedVerticesFreedAfterAFrameThenWorldRecommitted)
   EXPECT_TRUE(problems().empty());
 }
 
+TEST_F(DeviceOwnership, SharedTransformArrayFreedAfterAFrame)
+{
+  // KHR_INSTANCE_TRANSFORM_ARRAY: the device reads the transforms and ids
+  // where the application keeps them; released after a frame and unmapped,
+  // they must have been copied first (a read would fault in any build).
+  const size_t bytes = 4096;
+  auto *page = (unsigned char *)mmap(nullptr,
+      bytes,
+      PROT_READ | PROT_WRITE,
+      MAP_PRIVATE | MAP_ANONYMOUS,
+      -1,
+      0);
+  ASSERT_NE(page, MAP_FAILED);
+  // Two placements, half size, left and right of the centre (column-major
+  // 4x4), and their ids.
+  const float transforms[32] = {0.5f,
+      0,
+      0,
+      0,
+      0,
+      0.5f,
+      0,
+      0,
+      0,
+      0,
+      0.5f,
+      0,
+      -0.6f,
+      0,
+      0,
+      1,
+      0.5f,
+      0,
+      0,
+      0,
+      0,
+      0.5f,
+      0,
+      0,
+      0,
+      0,
+      0.5f,
+      0,
+      0.6f,
+      0,
+      0,
+      1};
+  const uint32_t ids[2] = {7, 9};
+  std::memcpy(page, transforms, sizeof(transforms));
+  std::memcpy(page + sizeof(transforms), ids, sizeof(ids));
+  ANARIArray1D transformArray =
+      anariNewArray1D(m_device, page, nullptr, nullptr, ANARI_FLOAT32_MAT4, 2);
+  ANARIArray1D idArray = anariNewArray1D(
+      m_device, page + sizeof(transforms), nullptr, nullptr, ANARI_UINT32, 2);
+  Scene scene = newScene(newTriangle(false));
+  ANARIGroup group = anariNewGroup(m_device);
+  anariSetParameter(m_device, group, "surface", ANARI_ARRAY1D, &scene.surfaces);
+  anariCommitParameters(m_device, group);
+  ANARIInstance instance = anariNewInstance(m_device, "transform");
+  anariSetParameter(m_device, instance, "group", ANARI_GROUP, &group);
+  anariSetParameter(
+      m_device, instance, "transform", ANARI_ARRAY1D, &transformArray);
+  anariSetParameter(m_device, instance, "id", ANARI_ARRAY1D, &idArray);
+  anariCommitParameters(m_device, instance);
+  ANARIArray1D instances =
+      anariNewArray1D(m_device, &instance, nullptr, nullptr, ANARI_INSTANCE, 1);
+  anariUnsetParameter(m_device, scene.world, "surface");
+  anariSetParameter(
+      m_device, scene.world, "instance", ANARI_ARRAY1D, &instances);
+  anariCommitParameters(m_device, scene.world);
+  ANARIFrame frame = newSceneFrame(scene.world, "raycast");
+  const std::vector<float> before = render(frame);
+  EXPECT_EQ(centre(before)[0], 0.25f) << "nothing at the centre";
+  anariRelease(m_device, transformArray);
+  anariRelease(m_device, idArray);
+  munmap(page, bytes);
+  anariCommitParameters(m_device, scene.world);
+  EXPECT_EQ(render(frame), before);
+  const std::vector<float> image = before;
+  EXPECT_NE(image, std::vector<float>(image.size(), image[0]))
+      << "the placements are in view";
+  for (ANARIObject o : {(ANARIObject)frame,
+           (ANARIObject)instances,
+           (ANARIObject)instance,
+           (ANARIObject)group})
+    anariRelease(m_device, o);
+  releaseScene(scene);
+  EXPECT_TRUE(problems().empty());
+}
+
 // Defect: a world kept raw pointers to surfaces named by an object array;
 // remapping the array after the surface's release freed the surface.
 TEST_F(DeviceOwnership, RemappedObjectArrayKeepsReleasedSurfaces)

@@ -19,7 +19,7 @@ bool tangentFrame(const SurfaceHit &surface,
   const float3 t{objectTangent.x, objectTangent.y, objectTangent.z};
   tangent = surface.placement->identity
                 ? t
-                : transformDirection(surface.placement->worldFromObject, t);
+                : transformDirection(surface.placement->worldFromObject(), t);
   tangent = tangent - normal * dot(normal, tangent);
   if (!(lengthSquared(tangent) > 1e-20f))
     return false;

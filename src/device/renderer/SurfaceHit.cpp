@@ -29,7 +29,9 @@ bool resolveSurfaceHit(const World &world,
       placement.instance->applyAttributes(out.attributes);
   }
   // Where a moving instance was when the ray passed.
-  const mat3x4 objectFromWorld = placement.objectFromWorldAt(ray.time);
+  const mat3x4 objectFromWorld = placement.identity
+                                     ? kIdentityMat3x4
+                                     : placement.objectFromWorldAt(ray.time);
   const float3 objectPosition =
       placement.identity ? out.position
                          : transformPoint(objectFromWorld, out.position);

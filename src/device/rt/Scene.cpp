@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <limits>
 
 namespace prism::rt {
@@ -484,13 +485,17 @@ bool Scene::moveInstance(
 {
   if (!placesInstance(id, child))
     return false;
+  RTCGeometry g = rtcGetGeometry(m_scene, id);
+  mat3x4 current;
+  rtcGetGeometryTransform(g, 0.f, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, &current);
+  if (std::memcmp(&current, &worldFromObject, sizeof(mat3x4)) == 0)
+    return true; // not moved
   // rayRange() is the smallest over all placements: a move that would
   // lower it needs a rebuild; one that raises the moved instance's own
   // leaves it where it was (at worst smaller than needed, never beyond
   // what Embree can trace).
   if (worldRayRange(inverse(worldFromObject)) < m_rayRange)
     return false;
-  RTCGeometry g = rtcGetGeometry(m_scene, id);
   rtcSetGeometryTransform(
       g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, &worldFromObject);
   rtcCommitGeometry(g);

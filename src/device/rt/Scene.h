@@ -95,7 +95,8 @@ class Scene
 
   // Moves instance `id` (added by addInstance with a fixed transform) to
   // `worldFromObject`, keeping its Embree geometry: an edit commit()
-  // then rebuilds only this scene's BVH. False, changing nothing, when
+  // then rebuilds only this scene's BVH (true and nothing done when it is
+  // there already). False, changing nothing, when
   // `id` is not such an instance of `child` as built now (the child was
   // rebuilt since) or the move would lower rayRange().
   bool moveInstance(

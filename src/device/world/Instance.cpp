@@ -34,14 +34,16 @@ void Instance::commitParameters()
     report(ANARI_SEVERITY_WARNING,
         ANARI_STATUS_INVALID_ARGUMENT,
         "required parameter 'group' is not set; the instance is empty");
-  m_worldFromObject.clear();
-  m_ids.clear();
+  m_transforms = nullptr;
+  m_transformCount = 0;
+  m_ids = nullptr;
   for (int a = 0; a < 5; a++) {
     m_hasAttribute[a] = isSet(kAttributeNames[a]);
     m_attributes[a] =
         read<float4>(kAttributeNames[a], ANARI_FLOAT32_VEC4, {0, 0, 0, 1});
   }
 
+  size_t idCount = 0;
   const Parameter *ids = readAny("id");
   if (ids && ids->type() == ANARI_UINT32) {
     m_id = ids->as<uint32_t>();
@@ -49,8 +51,8 @@ void Instance::commitParameters()
              && ((const Array *)ids->object())->elementType() == ANARI_UINT32) {
     auto *array = (const Array *)ids->object();
     dependOn(ids->object());
-    m_ids.assign((const uint32_t *)array->begin(),
-        (const uint32_t *)array->begin() + array->count());
+    m_ids = (const unsigned char *)array->begin();
+    idCount = array->count();
     m_id = ~0u;
   } else {
     if (ids)
@@ -68,10 +70,9 @@ void Instance::commitParameters()
     dependOn(transform->object());
     if (array->elementType() != ANARI_FLOAT32_MAT4) {
       wrongType("transform", transform->type(), {ANARI_FLOAT32_MAT4});
-    } else {
-      const auto *matrices = (const mat4 *)array->begin();
-      for (uint64_t i = 0; i < array->count(); i++)
-        m_worldFromObject.push_back(affinePart(matrices[i]));
+    } else if (array->count() > 0) {
+      m_transforms = (const unsigned char *)array->begin();
+      m_transformCount = array->count();
     }
   } else if (transform) {
     wrongType("transform", transform->type(), {ANARI_FLOAT32_MAT4});
@@ -82,19 +83,38 @@ void Instance::commitParameters()
     m_motion = readMotion(kMatrixKeys);
   else if (subtype() != "transform")
     m_motion = readMotion(kDecomposedKeys);
-  if (m_motion.isSet())
-    m_worldFromObject.assign(1, m_motion.at(0.5f));
-  if (m_worldFromObject.empty())
-    m_worldFromObject.push_back(single);
-
-  if (!m_ids.empty() && m_ids.size() < m_worldFromObject.size()) {
+  m_single = single;
+  if (m_motion.isSet()) {
+    m_transforms = nullptr;
+    m_single = m_motion.at(0.5f);
+  }
+  if (m_ids && idCount < placementCount()) {
     report(ANARI_SEVERITY_WARNING,
         ANARI_STATUS_INVALID_ARGUMENT,
         "'id' array has %zu elements for %zu transforms; ids are ignored",
-        m_ids.size(),
-        m_worldFromObject.size());
-    m_ids.clear();
+        idCount,
+        placementCount());
+    m_ids = nullptr;
   }
+}
+
+mat3x4 Instance::worldFromObject(size_t placement) const
+{
+  if (!m_transforms)
+    return m_single;
+  // An application's memory need not be aligned for mat4.
+  mat4 m;
+  std::memcpy(&m, m_transforms + placement * sizeof(mat4), sizeof(mat4));
+  return affinePart(m);
+}
+
+uint32_t Instance::id(size_t placement) const
+{
+  if (!m_ids)
+    return m_id;
+  uint32_t id;
+  std::memcpy(&id, m_ids + placement * sizeof(uint32_t), sizeof(id));
+  return id;
 }
 
 void Instance::applyAttributes(AttributeValues &attributes) const
@@ -111,7 +131,16 @@ box3 Instance::bounds() const
   if (!m_group || isEmpty(m_group->bounds()))
     return out;
   const box3 local = m_group->bounds();
-  std::vector<mat3x4> placements = m_worldFromObject;
+  auto add = [&](const mat3x4 &m) {
+    for (int corner = 0; corner < 8; corner++) {
+      const float3 p{corner & 1 ? local.upper.x : local.lower.x,
+          corner & 2 ? local.upper.y : local.lower.y,
+          corner & 4 ? local.upper.z : local.lower.z};
+      out = extend(out, transformPoint(m, p));
+    }
+  };
+  for (size_t i = 0; i < placementCount(); i++)
+    add(worldFromObject(i));
   if (const MotionTransform *keys = motion()) {
     // Every key and, as rotations bulge between keys, points between them.
     const KeyTimeline &timeline = keys->timeline();
@@ -119,17 +148,9 @@ box3 Instance::bounds() const
     for (uint32_t k = 0; k + 1 < timeline.keyCount; k++) {
       for (uint32_t i = 0; i <= kBetween; i++) {
         const float t = float(i) / float(kBetween);
-        placements.push_back(keys->at(
+        add(keys->at(
             timeline.keyTime(k) * (1.f - t) + timeline.keyTime(k + 1) * t));
       }
-    }
-  }
-  for (const mat3x4 &m : placements) {
-    for (int corner = 0; corner < 8; corner++) {
-      const float3 p{corner & 1 ? local.upper.x : local.lower.x,
-          corner & 2 ? local.upper.y : local.lower.y,
-          corner & 4 ? local.upper.z : local.lower.z};
-      out = extend(out, transformPoint(m, p));
     }
   }
   return out;

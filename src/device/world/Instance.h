@@ -18,7 +18,7 @@ class Instance : public MovingObject
 
   bool isValid() const override
   {
-    return m_group && !m_worldFromObject.empty();
+    return m_group != nullptr;
   }
   const Group *group() const
   {
@@ -27,22 +27,18 @@ class Instance : public MovingObject
   // How many placements of the group (1, or the transform array's size).
   size_t placementCount() const
   {
-    return m_worldFromObject.size();
+    return m_transforms ? m_transformCount : 1;
   }
-  // At the shutter midpoint (time 0.5) for a moving instance.
-  const mat3x4 &worldFromObject(size_t placement) const
-  {
-    return m_worldFromObject[placement];
-  }
+  // At the shutter midpoint (time 0.5) for a moving instance. A transform
+  // array is read where it lies (ten million instances would otherwise
+  // hold a second copy of every transform).
+  mat3x4 worldFromObject(size_t placement) const;
   // The transform keys of a moving instance (one placement), or NULL.
   const MotionTransform *motion() const
   {
     return m_motion.isMoving() ? &m_motion : nullptr;
   }
-  uint32_t id(size_t placement) const
-  {
-    return m_ids.empty() ? m_id : m_ids[placement];
-  }
+  uint32_t id(size_t placement) const;
   // Sets the instance's uniform attributes (beneath the geometry's own).
   void applyAttributes(AttributeValues &attributes) const;
   box3 bounds() const;
@@ -58,9 +54,13 @@ class Instance : public MovingObject
 
  private:
   Group *m_group{nullptr};
-  std::vector<mat3x4> m_worldFromObject;
+  // The transform array's FLOAT32_MAT4 elements in place, or NULL: then
+  // the one placement is m_single.
+  const unsigned char *m_transforms{nullptr};
+  size_t m_transformCount{0};
+  mat3x4 m_single{kIdentityMat3x4};
   MotionTransform m_motion;
-  std::vector<uint32_t> m_ids;
+  const unsigned char *m_ids{nullptr}; // the id array's UINT32s in place
   uint32_t m_id{~0u};
   bool m_hasAttribute[5]{};
   float4 m_attributes[5]{};

@@ -160,8 +160,10 @@ void World::finalize()
   previous.swap(m_placements);
   auto place = [&](const Group *group,
                    const Instance *instance,
-                   const mat3x4 &transform,
+                   uint32_t index,
                    uint32_t id) {
+    const mat3x4 transform =
+        instance ? instance->worldFromObject(index) : kIdentityMat3x4;
     const mat3x4 objectFromWorld = inverse(transform);
     bool invertible = true;
     for (const float3 &c : objectFromWorld.col)
@@ -188,25 +190,19 @@ void World::finalize()
           double(rt::kLargestCoordinate));
       return;
     }
-    const auto embreeId = uint32_t(m_placements.size());
     const MotionTransform *motion = instance ? instance->motion() : nullptr;
     const bool identity =
         !motion
         && std::memcmp(&transform, &kIdentityMat3x4, sizeof(mat3x4)) == 0;
-    m_placements.push_back(
-        {group, instance, transform, objectFromWorld, id, identity, motion});
+    m_placements.push_back({group, instance, index, id, identity});
   };
   if (!isEmpty(m_implicitGroup->bounds()))
-    place(m_implicitGroup, nullptr, kIdentityMat3x4, ~0u);
+    place(m_implicitGroup, nullptr, 0, ~0u);
   for (const Instance *instance : m_instances) {
     if (!instance->isValid() || isEmpty(instance->group()->bounds()))
       continue;
-    for (size_t i = 0; i < instance->placementCount(); i++) {
-      place(instance->group(),
-          instance,
-          instance->worldFromObject(i),
-          instance->id(i));
-    }
+    for (size_t i = 0; i < instance->placementCount(); i++)
+      place(instance->group(), instance, uint32_t(i), instance->id(i));
   }
   if (!moveInstancesInPlace(previous))
     rebuildScene();
@@ -229,20 +225,16 @@ bool World::moveInstancesInPlace(const std::vector<Placement> &previous)
     const Placement &now = m_placements[i];
     const Placement &before = previous[i];
     if (now.group != before.group || now.instance != before.instance
-        || now.instanceId != before.instanceId || now.motion || before.motion)
+        || now.instanceId != before.instanceId || now.motion()
+        || before.motion())
       return false;
   }
+  // Each placement to its transform (unchanged ones are left alone); a
+  // group rebuilt since is caught here too: a full rebuild follows.
   for (size_t i = 0; i < m_placements.size(); i++) {
     const Placement &now = m_placements[i];
-    const bool moved =
-        std::memcmp(
-            &now.worldFromObject, &previous[i].worldFromObject, sizeof(mat3x4))
-        != 0;
-    // A group rebuilt since is caught here too: a full rebuild follows.
-    const auto id = uint32_t(i);
-    if (moved ? !m_scene->moveInstance(
-            id, now.group->scene(), now.worldFromObject)
-              : !m_scene->placesInstance(id, now.group->scene()))
+    if (!m_scene->moveInstance(
+            uint32_t(i), now.group->scene(), now.worldFromObject()))
       return false;
   }
   return true;
@@ -253,10 +245,10 @@ void World::rebuildScene()
   m_scene->clear();
   for (size_t i = 0; i < m_placements.size(); i++) {
     const Placement &p = m_placements[i];
-    if (p.motion)
-      m_scene->addInstance(uint32_t(i), p.group->scene(), *p.motion);
+    if (const MotionTransform *keys = p.motion())
+      m_scene->addInstance(uint32_t(i), p.group->scene(), *keys);
     else
-      m_scene->addInstance(uint32_t(i), p.group->scene(), p.worldFromObject);
+      m_scene->addInstance(uint32_t(i), p.group->scene(), p.worldFromObject());
   }
 }
 
@@ -392,7 +384,8 @@ uint64_t World::declaredLightsHash() const
     if (!instance->isValid() || instance->group()->lights().empty())
       continue;
     for (size_t i = 0; i < instance->placementCount(); i++) {
-      hash.add(&instance->worldFromObject(i), sizeof(mat3x4));
+      const mat3x4 worldFromObject = instance->worldFromObject(i);
+      hash.add(&worldFromObject, sizeof(mat3x4));
       addLights(instance->group()->lights());
     }
   }
@@ -446,11 +439,11 @@ void World::placeEmitters()
   constexpr size_t kMaxEmitters = 1u << 16;
   constexpr size_t kMaxEmitterPrimitives = 1u << 22;
   size_t emitters = 0, primitives = 0;
-  m_emitterLights.assign(m_placements.size(), {});
+  std::vector<std::vector<int32_t>>().swap(m_emitterLights);
   for (size_t p = 0; p < m_placements.size(); p++) {
     const Placement &placement = m_placements[p];
     // Moving instances' emitters are found by rays alone.
-    if (placement.motion)
+    if (placement.motion())
       continue;
     const Group &group = *placement.group;
     for (uint32_t g = 0; g < group.surfaceCount(); g++) {
@@ -468,13 +461,15 @@ void World::placeEmitters()
       EmitterShape shape;
       surface->geometry()->appendEmitterShape(shape);
       if (!placement.identity)
-        shape = placedEmitterShape(shape, placement.worldFromObject);
+        shape = placedEmitterShape(shape, placement.worldFromObject());
       auto light =
           std::make_unique<EmissiveSurface>(std::move(shape), radiance);
       if (light->isEmpty())
         continue;
       emitters++;
       primitives += light->primitiveCount();
+      if (m_emitterLights.empty())
+        m_emitterLights.resize(m_placements.size());
       m_emitterLights[p].resize(group.surfaceCount(), -1);
       m_emitterLights[p][g] = int32_t(m_placedLights.size());
       m_placedLights.push_back(std::move(light));

@@ -24,25 +24,35 @@ class World : public Object
   explicit World(DeviceState &device);
   ~World() override;
 
-  // One placed group: what an Embree instance id stands for.
+  // One placed group: what an Embree instance id stands for. There may be
+  // ten million, so a placement keeps 32 bytes: its transform is read from
+  // the instance, which holds it, and inverted where a hit needs it.
   struct Placement
   {
     const Group *group;
     const Instance *instance; // NULL for surfaces placed in the world
-    mat3x4 worldFromObject;
-    mat3x4 objectFromWorld;
-    uint32_t instanceId; // the user's id (~0u when unset)
-    bool identity;       // worldFromObject is the identity (skip transforms)
-    // Keys of a moving instance (then the transforms above hold at the
-    // shutter midpoint only), or NULL.
-    const MotionTransform *motion{nullptr};
+    uint32_t index;           // among the instance's transforms
+    uint32_t instanceId;      // the user's id (~0u when unset)
+    bool identity; // worldFromObject is the identity (skip transforms)
 
+    // At the shutter midpoint for a moving instance.
+    mat3x4 worldFromObject() const
+    {
+      return instance ? instance->worldFromObject(index) : kIdentityMat3x4;
+    }
+    // Keys of a moving instance, or NULL.
+    const MotionTransform *motion() const
+    {
+      return instance ? instance->motion() : nullptr;
+    }
     // objectFromWorld at `time`, in the shutter's [0, 1].
     mat3x4 objectFromWorldAt(float time) const
     {
-      return motion ? inverse(motion->at(time)) : objectFromWorld;
+      const MotionTransform *keys = motion();
+      return inverse(keys ? keys->at(time) : worldFromObject());
     }
   };
+  static_assert(sizeof(Placement) <= 32, "a placement per instance");
 
   const Placement &placement(uint32_t instanceId) const
   {
@@ -222,7 +232,8 @@ class World : public Object
   std::vector<Placement> m_placements;
   std::vector<std::unique_ptr<PlacedLight>> m_placedLights;
   LightSelector m_lightSelector;
-  // Per placement, per geometry id: see emitterLight().
+  // Per placement, per geometry id: see emitterLight(). Empty in a world
+  // without emitters (a vector per placement of ten million would not be).
   std::vector<std::vector<int32_t>> m_emitterLights;
   size_t m_declaredLightCount{0};
   // While sharing emitters: this world's own, out of lights(), and where
