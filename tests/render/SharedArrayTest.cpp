@@ -266,6 +266,22 @@ TEST_F(SharedArrays, PackedSpheresAreReadInPlace)
   EXPECT_TRUE(orangeAt(edited, 40));
   EXPECT_EQ(copiedBytes(spheres), 0u);
 
+  // An array not 16-byte aligned is copied.
+  const long page = sysconf(_SC_PAGESIZE);
+  m_block = std::aligned_alloc(size_t(page), size_t(page));
+  ASSERT_NE(m_block, nullptr);
+  auto *misaligned = (Vec4 *)((char *)m_block + 8);
+  std::memcpy(misaligned, packed.data(), 2 * sizeof(Vec4));
+  ANARIGeometry copied = newGeometry("sphere");
+  setObject(copied,
+      "vertex.positionRadius",
+      ANARI_ARRAY1D,
+      sharedArray(ANARI_FLOAT32_VEC4, misaligned, 2));
+  expectSameImage(draw(newWorld({newSurface(copied, newMatte(kOrange))})),
+      edited,
+      "misaligned packed spheres");
+  EXPECT_EQ(copiedBytes(copied), 2 * sizeof(Vec4));
+
   // Indexed spheres are gathered: Embree has no index buffer for them.
   ANARIGeometry indexed = newGeometry("sphere");
   setObject(indexed, "vertex.positionRadius", ANARI_ARRAY1D, shared);
@@ -298,16 +314,18 @@ TEST_F(SharedArrays, PackedCurvesAreReadInPlaceUnlessAtAPagesEnd)
       draw(newWorld({newSurface(apart, newMatte(kOrange))}));
   EXPECT_TRUE(orangeAt(expected, 14)); // x = -0.6: the first segment
 
-  // Two pages: the array at the start of the second, and one ending the
-  // first.
+  // Two pages: the array at the start of the second, one ending the first
+  // and one 8 bytes past a 16-byte boundary (where malloc puts blocks;
+  // Embree's curve builder faulted on such an array).
   const long page = sysconf(_SC_PAGESIZE);
   m_block = std::aligned_alloc(size_t(page), 2 * size_t(page));
   ASSERT_NE(m_block, nullptr);
   auto *pageStart = (Vec4 *)((char *)m_block + page);
   auto *pageEnd = pageStart - 3;
-  std::memcpy(pageStart, packed, sizeof(packed));
-  std::memcpy(pageEnd, packed, sizeof(packed));
-  for (Vec4 *memory : {pageStart, pageEnd}) {
+  auto *misaligned = (Vec4 *)((char *)m_block + 1032);
+  for (Vec4 *memory : {pageStart, pageEnd, misaligned})
+    std::memcpy(memory, packed, sizeof(packed));
+  for (Vec4 *memory : {pageStart, pageEnd, misaligned}) {
     const bool inPlace = memory == pageStart;
     ANARIGeometry curve = newGeometry("curve");
     setObject(curve,
@@ -317,6 +335,9 @@ TEST_F(SharedArrays, PackedCurvesAreReadInPlaceUnlessAtAPagesEnd)
     expectSameImage(draw(newWorld({newSurface(curve, newMatte(kOrange))})),
         expected,
         inPlace ? "packed curve in place" : "packed curve copied");
+    if (memory == misaligned)
+      EXPECT_EQ(copiedBytes(curve), 2 * sizeof(uint32_t) + 4 * sizeof(Vec4))
+          << "not 16-byte aligned";
     // Implied indices are the geometry's own either way.
     EXPECT_EQ(copiedBytes(curve),
         2 * sizeof(uint32_t) + (inPlace ? 0 : 4 * sizeof(Vec4)));

@@ -45,7 +45,7 @@ bool Curve::readPositionRadiusShape()
   if (!packed)
     return false;
   const auto *given = (const float4 *)packed->begin();
-  if (uintptr_t(given) % alignof(float) == 0
+  if (uintptr_t(given) % kEmbreeFloat4Alignment == 0
       && packed->readableAfterEnd(sizeof(float4))) {
     m_positionRadius.share(given, m_vertexCount);
   } else {

@@ -112,6 +112,10 @@ class Geometry : public Object
   // Positions (FLOAT32_VEC3) with Embree's read padding, read in place
   // when the array's memory allows it; false if missing.
   bool readPositions(size_t minimumCount);
+  // Embree loads FLOAT4 vertices 16 bytes at a time, aligned: a shared
+  // array elsewhere is copied (malloc's 8-byte-aligned blocks crash its
+  // curve builder).
+  static constexpr uintptr_t kEmbreeFloat4Alignment = 16;
   // PRISM_GEOMETRY_POSITION_RADIUS (spheres, curves): 'vertex.positionRadius'
   // (FLOAT32_VEC4, the radius in w), Embree's own layout, which replaces
   // vertex.position and the radii (ignored, with a warning, if also set);

@@ -48,13 +48,15 @@ void Sphere::readPositionRadiusShape()
   if (!isValid())
     return;
   const auto *given = (const float4 *)packed->begin();
-  if (!m_indexed && uintptr_t(given) % alignof(float) == 0) {
+  if (!m_indexed && uintptr_t(given) % kEmbreeFloat4Alignment == 0) {
     m_centerRadius.share(given, m_vertexCount); // Embree's layout already
   } else {
-    // Embree has no index buffer for spheres: gather them.
-    float4 *gathered = m_centerRadius.own(m_indices.size());
-    for (size_t i = 0; i < m_indices.size(); i++)
-      std::memcpy(&gathered[i], &given[m_indices[i]], sizeof(float4));
+    // Indexed (Embree has no index buffer for spheres) or misaligned:
+    // gathered into the device's own.
+    const size_t count = m_indexed ? m_indices.size() : m_vertexCount;
+    float4 *gathered = m_centerRadius.own(count);
+    for (size_t i = 0; i < count; i++)
+      std::memcpy(&gathered[i], &given[vertexOf(uint32_t(i))], sizeof(float4));
   }
   setPrimitiveCount(uint32_t(m_centerRadius.size()));
 }

@@ -513,6 +513,27 @@ void writeGeometries(Corpus &corpus)
     corpus.write("geometry-curve", m.s.bytes());
   }
   {
+    // PRISM_GEOMETRY_POSITION_RADIUS: centres and radii in one shared
+    // FLOAT32_VEC4 array, read in place.
+    Manual m("sphere");
+    m.s.setFresh(m.geometry,
+        "vertex.positionRadius",
+        ANARI_ARRAY1D,
+        {0, 4, 0, 0, 1},
+        floats({0, 0, 0, 0.5, 1, 0, 0, 0.25, 0, 1, 0, 0.75, -1, 0, 0, 0.5}));
+    m.finish("matte", "raycast");
+    m.s.render(0);
+    corpus.write("geometry-sphere-packed", m.s.bytes());
+  }
+  {
+    Manual m("curve");
+    m.s.setFresh(
+        m.geometry, "vertex.positionRadius", ANARI_ARRAY1D, {0, 6, 0, 0, 1});
+    m.finish("matte", "pathtracer");
+    m.s.render(0);
+    corpus.write("geometry-curve-packed", m.s.bytes());
+  }
+  {
     // Motion-deformed triangles: an array of per-time-step vertex arrays.
     Manual m("triangle");
     m.s.setFresh(m.geometry, "vertex.position", ANARI_ARRAY1D, {0, 5, 0, 0, 0});
