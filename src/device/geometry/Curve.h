@@ -19,8 +19,8 @@ class Curve : public Geometry
   size_t copiedBytes() const override;
 
  private:
-  // 'vertex.positionRadius' in place, when Embree may read one element
-  // past its end.
+  // 'vertex.positionRadius' in place when 16-byte aligned and Embree may
+  // read one element past its end, else copied.
   bool readPositionRadiusShape();
 
   SharedElements<float4> m_positionRadius; // per vertex (+1 padding)

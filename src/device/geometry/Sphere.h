@@ -31,7 +31,8 @@ class Sphere : public Geometry
     return m_indexed ? m_indices[sphere] : sphere;
   }
 
-  // 'vertex.positionRadius': read in place unless indexed.
+  // 'vertex.positionRadius': read in place unless indexed or not 16-byte
+  // aligned (then gathered).
   void readPositionRadiusShape();
 
   bool m_indexed{false};
