@@ -171,15 +171,20 @@ TEST_F(DeviceOwnership, SharedArraysReleasedAndFreedRenderAsIfKept)
 TEST_F(DeviceOwnership, SharedVerticesFreedAfterAFrameThenWorldRecommitted)
 {
   // Each covers the image's centre.
+  // The last two: PRISM_GEOMETRY_POSITION_RADIUS's packed vertices, read
+  // in place like positions.
   const struct
   {
     const char *subtype;
     std::vector<float> positions;
-  } shapes[] = {{"triangle", {-1, -1, 0, 1, -1, 0, 0, 1, 0}},
-      {"cylinder", {-1, 0, 0, 1, 0, 0}},
-      {"sphere", {0, 0, 0}}};
-  for (const auto &[subtype, shape] : shapes) {
-    SCOPED_TRACE(subtype);
+    bool packed;
+  } shapes[] = {{"triangle", {-1, -1, 0, 1, -1, 0, 0, 1, 0}, false},
+      {"cylinder", {-1, 0, 0, 1, 0, 0}, false},
+      {"sphere", {0, 0, 0}, false},
+      {"sphere", {0, 0, 0, 0.25f}, true},
+      {"curve", {-1, 0, 0, 0.25f, 1, 0, 0, 0.25f}, true}};
+  for (const auto &[subtype, shape, packed] : shapes) {
+    SCOPED_TRACE(std::string(subtype) + (packed ? " packed" : ""));
     // A page of its own, unmapped once released: a read after that faults
     // in any build, not only under AddressSanitizer.
     const size_t bytes = 4096;
@@ -195,13 +200,16 @@ TEST_F(DeviceOwnership, SharedVerticesFreedAfterAFrameThenWorldRecommitted)
         positions,
         nullptr,
         nullptr,
-        ANARI_FLOAT32_VEC3,
-        shape.size() / 3);
+        packed ? ANARI_FLOAT32_VEC4 : ANARI_FLOAT32_VEC3,
+        shape.size() / (packed ? 4 : 3));
     ANARIGeometry geometry = anariNewGeometry(m_device, subtype);
-    anariSetParameter(
-        m_device, geometry, "vertex.position", ANARI_ARRAY1D, &array);
+    anariSetParameter(m_device,
+        geometry,
+        packed ? "vertex.positionRadius" : "vertex.position",
+        ANARI_ARRAY1D,
+        &array);
     const float radius = 0.25f;
-    if (std::string(subtype) != "triangle")
+    if (!packed && std::string(subtype) != "triangle")
       anariSetParameter(m_device, geometry, "radius", ANARI_FLOAT32, &radius);
     anariCommitParameters(m_device, geometry);
     Scene scene = newScene(geometry);
