@@ -678,6 +678,7 @@ int main(int argc, char **argv)
   RTCBuildQuality embreeQuality = RTC_BUILD_QUALITY_MEDIUM;
   bool edit = false;
   bool packed = true;
+  std::string sides = "both"; // or one of them alone, for a profiler
   for (int i = 1; i < argc; i++) {
     const std::string arg = argv[i];
     if (arg == "--quick") {
@@ -692,6 +693,8 @@ int main(int argc, char **argv)
       kinds = {argv[++i]};
     } else if (arg == "--layout" && i + 1 < argc) {
       packed = std::string(argv[++i]) != "apart";
+    } else if (arg == "--side" && i + 1 < argc) {
+      sides = argv[++i];
     } else if (arg == "--quality" && i + 1 < argc) {
       quality = argv[++i];
       embreeQuality = std::string(quality) == "high" ? RTC_BUILD_QUALITY_HIGH
@@ -704,7 +707,7 @@ int main(int argc, char **argv)
           "[--edit]\n"
           "  [--only triangles|spheres|curves|instances] [--quality "
           "low|medium|high]\n"
-          "  [--layout packed|apart]\n"
+          "  [--layout packed|apart] [--side prism|embree]\n"
           "  peak RSS, Embree bytes and time to first pixel per primitive,\n"
           "  prism (shared arrays) against raw Embree on the same data;\n"
           "  --edit: one transform moved in a 1M-instance world\n");
@@ -720,10 +723,12 @@ int main(int argc, char **argv)
     return 0;
   }
   for (const std::string &kind : kinds) {
-    const Figures prism =
-        inChild([&] { return runPrism(kind, scale, quality, packed); });
-    const Figures embree =
-        inChild([&] { return runEmbree(kind, scale, embreeQuality); });
+    const Figures prism = sides == "embree" ? Figures{} : inChild([&] {
+      return runPrism(kind, scale, quality, packed);
+    });
+    const Figures embree = sides == "prism" ? Figures{} : inChild([&] {
+      return runEmbree(kind, scale, embreeQuality);
+    });
     const double primitives = std::max(prism.primitives, embree.primitives);
     std::printf("%s: %.0f%s\n",
         kind.c_str(),
