@@ -30,7 +30,7 @@ void fingerprintWorld(const World &world, FrameDescriptor &d)
       bounds.upper.z};
   std::memcpy(d.worldBounds, corners, sizeof(corners));
   for (uint32_t i = 0; i < world.placementCount(); i++) {
-    const Group &group = *world.placement(i).group;
+    const Group &group = *world.placement(i).group();
     for (uint32_t s = 0; s < group.surfaceCount(); s++) {
       const Surface *surface = group.surface(s);
       if (surface && surface->geometry())

@@ -1,7 +1,8 @@
 // Editing a world in place: moving one instance keeps the other instances'
 // Embree geometry and every group's BVH (World::moveInstancesInPlace), and
 // the picture must be the one a world built afresh with the new
-// transforms draws; an edit to a group after that rebuilds as before.
+// transforms draws; an edit to a group after that rebuilds as before, and
+// so does an instance given another group or one that stops moving.
 #include "RenderTest.h"
 
 namespace {
@@ -11,8 +12,10 @@ const Vec3 kOrange{0.9f, 0.5f, 0.1f};
 class WorldEdits : public RenderTest
 {
  protected:
-  // A unit square of two triangles at the origin, as a committed group.
-  ANARIGroup square(float size, ANARIGeometry *geometryOut = nullptr)
+  // A square of two triangles at the origin, as a committed group.
+  ANARIGroup square(float size,
+      ANARIGeometry *geometryOut = nullptr,
+      const Vec3 &color = kOrange)
   {
     ANARIGeometry g = newGeometry("triangle");
     setArray(g,
@@ -26,7 +29,7 @@ class WorldEdits : public RenderTest
         std::vector<uint32_t>{0, 1, 2, 0, 2, 3});
     if (geometryOut)
       *geometryOut = g;
-    return newGroup({newSurface(g, newMatte(kOrange))});
+    return newGroup({newSurface(g, newMatte(color))});
   }
   ANARIInstance placed(ANARIGroup group, const Vec3 &offset)
   {
@@ -82,6 +85,63 @@ TEST_F(WorldEdits, MovingOneInstanceDrawsWhatAFreshWorldDraws)
       draw(newWorld(
           {}, {placed(square(0.8f), moved), placed(square(0.8f), offsets[1])})),
       "grown group vs built afresh");
+}
+
+// Two instances trade groups and one moves: the placements are the same
+// instances' in the same order, so only the groups' scenes tell the edit
+// apart from a move.
+TEST_F(WorldEdits, InstancesTradingGroupsDrawWhatAFreshWorldDraws)
+{
+  const Vec3 blue{0.1f, 0.3f, 0.9f};
+  ANARIGroup small = square(0.5f);
+  ANARIGroup large = square(0.9f, nullptr, blue);
+  const Vec3 left{-1.2f, -0.4f, 0}, right{0.2f, -0.4f, 0};
+  ANARIInstance first = placed(small, left);
+  ANARIInstance second = placed(large, right);
+  ANARIWorld world = newWorld({}, {first, second});
+  draw(world);
+
+  setObject(first, "group", ANARI_GROUP, large);
+  setMat4(first, "transform", translation({-1.2f, -0.2f, 0}));
+  anariCommitParameters(device(), first);
+  setObject(second, "group", ANARI_GROUP, small);
+  anariCommitParameters(device(), second);
+  const prism::image::Image traded = draw(world);
+  expectSameImage(traded,
+      draw(newWorld(
+          {}, {placed(large, {-1.2f, -0.2f, 0}), placed(small, right)})),
+      "traded in place vs built afresh");
+  EXPECT_GT(traded.at(12, 28).b, 0.5f); // the large blue square, left
+  EXPECT_GT(traded.at(31, 21).r, 0.5f); // the small orange one, right
+}
+
+// A moving instance whose keys are unset stands still where its transform
+// puts it: Embree's instance had time steps, so it is built anew.
+TEST_F(WorldEdits, AnInstanceThatStopsMovingDrawsWhatAFreshWorldDraws)
+{
+  ANARIGroup group = square(0.5f);
+  ANARIInstance moving = keep(anariNewInstance(device(), "motionTransform"));
+  setObject(moving, "group", ANARI_GROUP, group);
+  setArray(moving,
+      "motion.transform",
+      ANARI_FLOAT32_MAT4,
+      std::vector<Mat4>{
+          translation({-1.2f, -1.2f, 0}), translation({0.6f, -1.2f, 0})});
+  anariCommitParameters(device(), moving);
+  ANARIWorld world = newWorld({}, {moving, placed(group, {0.2f, 0.4f, 0})});
+  draw(world);
+
+  const Vec3 still{-1.2f, 0.6f, 0};
+  anariUnsetParameter(device(), moving, "motion.transform");
+  setMat4(moving, "transform", translation(still));
+  anariCommitParameters(device(), moving);
+  const prism::image::Image after = draw(world);
+  expectSameImage(after,
+      draw(
+          newWorld({}, {placed(group, still), placed(group, {0.2f, 0.4f, 0})})),
+      "stopped in place vs built afresh");
+  EXPECT_GT(after.at(8, 36).r, 0.1f);
+  EXPECT_LT(after.at(8, 8).r, 0.05f);
 }
 
 } // namespace

@@ -128,7 +128,7 @@ PixelSample Debug::shadeSample(const RenderContext &context,
     c = idColor(surface.surface->id());
     break;
   case Mode::InstanceId:
-    c = idColor(surface.placement->instanceId);
+    c = idColor(surface.placement->instanceId());
     break;
   case Mode::GeometricNormal:
     c = surface.geometricNormal * 0.5f + float3{0.5f, 0.5f, 0.5f};

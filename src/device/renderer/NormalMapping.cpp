@@ -17,7 +17,7 @@ bool tangentFrame(const SurfaceHit &surface,
     return true;
   }
   const float3 t{objectTangent.x, objectTangent.y, objectTangent.z};
-  tangent = surface.placement->identity
+  tangent = surface.placement->identity()
                 ? t
                 : transformDirection(surface.placement->worldFromObject(), t);
   tangent = tangent - normal * dot(normal, tangent);

@@ -85,7 +85,7 @@ const ConstantSurface &constantSurface(const World &world,
   last.instanceKey = instanceKey;
   last.geometryKey = geometryKey;
   const World::Placement &placement = world.placement(instanceKey);
-  const Surface *surface = placement.group->surface(geometryKey);
+  const Surface *surface = placement.group()->surface(geometryKey);
   if (!surface || surface->material()->colorReadsAttributes())
     return last;
   const Material &material = *surface->material();
@@ -95,10 +95,10 @@ const ConstantSurface &constantSurface(const World &world,
   LayerBlend first;
   first.add(last.baseColor, 1.f, last.coverage);
   last.constant = first.opaque();
-  last.flat =
-      last.constant && placement.identity && surface->geometry()->flatShaded();
+  last.flat = last.constant && placement.identity()
+              && surface->geometry()->flatShaded();
   last.objectId = surface->id();
-  last.instanceId = placement.instanceId;
+  last.instanceId = placement.instanceId();
   return last;
 }
 

@@ -11,7 +11,7 @@ bool resolveSurfaceHit(const World &world,
   if (!hit.found())
     return false;
   const World::Placement &placement = world.placement(hit.instanceId);
-  const Surface *surface = placement.group->surface(hit.geometryId);
+  const Surface *surface = placement.group()->surface(hit.geometryId);
   if (!surface)
     return false;
   out.surface = surface;
@@ -25,25 +25,25 @@ bool resolveSurfaceHit(const World &world,
       || (detail == HitDetail::ForShading && material.readsAttributes());
   if (interpolate) {
     out.attributes = AttributeValues{};
-    if (placement.instance)
-      placement.instance->applyAttributes(out.attributes);
+    if (const Instance *instance = placement.instance())
+      instance->applyAttributes(out.attributes);
   }
   // Where a moving instance was when the ray passed.
-  const mat3x4 objectFromWorld = placement.identity
+  const mat3x4 objectFromWorld = placement.identity()
                                      ? kIdentityMat3x4
                                      : placement.objectFromWorldAt(ray.time);
   const float3 objectPosition =
-      placement.identity ? out.position
-                         : transformPoint(objectFromWorld, out.position);
+      placement.identity() ? out.position
+                           : transformPoint(objectFromWorld, out.position);
   const float3 objectNormal = surface->geometry()->attributesAt(
       hit, objectPosition, out.attributes, interpolate, ray.time);
-  float3 geometric = placement.identity ? hit.geometricNormal
-                                        : transformNormal(objectFromWorld,
-                                            hit.geometricNormal);
+  float3 geometric = placement.identity() ? hit.geometricNormal
+                                          : transformNormal(objectFromWorld,
+                                              hit.geometricNormal);
   geometric = normalize(geometric);
   // The geometry returns its shading normal normalised already.
   float3 shading =
-      placement.identity
+      placement.identity()
           ? objectNormal
           : normalize(transformNormal(objectFromWorld, objectNormal));
   out.backFacing = dot(geometric, ray.direction) > 0.f;
@@ -70,7 +70,7 @@ void recordSurfaceChannels(PixelSample &sample,
   sample.albedo = albedo;
   sample.primitiveId = surface.attributes.primitiveId;
   sample.objectId = surface.surface->id();
-  sample.instanceId = surface.placement->instanceId;
+  sample.instanceId = surface.placement->instanceId();
 }
 
 } // namespace prism

@@ -309,7 +309,6 @@ void Scene::clear()
   m_rayRange = kLargestCoordinate;
   m_interpolatedVertices.clear();
   m_attached.clear();
-  m_instanced.clear();
   m_scene = m_context.isValid() ? rtcNewScene(m_context.handle()) : nullptr;
   if (m_scene) {
     rtcSetSceneBuildQuality(m_scene, embreeQuality(m_context.buildQuality()));
@@ -473,11 +472,20 @@ void Scene::addInstance(
   rtcSetGeometryInstancedScene(g, child.m_scene);
   rtcSetGeometryTransform(
       g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, &worldFromObject);
+  // The child this instance places, for moveInstance(), kept where Embree
+  // keeps the instance (ten million ids need no table of their own); the
+  // instance holds a reference to it, so no other scene can take its
+  // address while it is placed. Moving instances leave it NULL.
+  rtcSetGeometryUserData(g, child.m_scene);
   attach(g, id);
   m_rayRange = std::min(m_rayRange, worldRayRange(inverse(worldFromObject)));
-  if (id >= m_instanced.size())
-    m_instanced.resize(size_t(id) + 1, nullptr);
-  m_instanced[id] = child.m_scene;
+}
+
+bool Scene::placesInstance(uint32_t id, const Scene &child) const
+{
+  if (!child.m_scene || !isAttached(id))
+    return false;
+  return rtcGetGeometryUserData(rtcGetGeometry(m_scene, id)) == child.m_scene;
 }
 
 bool Scene::moveInstance(
@@ -553,10 +561,15 @@ void Scene::attach(RTCGeometry geometry, uint32_t id)
   m_attached[id] = true;
 }
 
+bool Scene::isAttached(uint32_t id) const
+{
+  return m_scene && id < m_attached.size() && m_attached[id];
+}
+
 void Scene::cullBackFaces(uint32_t id)
 {
   // Geometry that added nothing (empty, invalid) has no Embree geometry.
-  if (!m_scene || id >= m_attached.size() || !m_attached[id])
+  if (!isAttached(id))
     return;
   RTCGeometry geometry = rtcGetGeometry(m_scene, id);
   rtcSetGeometryIntersectFilterFunction(geometry, rejectBackFaces);

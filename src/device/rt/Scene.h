@@ -103,11 +103,7 @@ class Scene
       uint32_t id, const Scene &child, const mat3x4 &worldFromObject);
   // Whether geometry `id` is a fixed-transform instance of `child` as
   // built now.
-  bool placesInstance(uint32_t id, const Scene &child) const
-  {
-    return m_scene && child.m_scene && id < m_instanced.size()
-           && m_instanced[id] == child.m_scene;
-  }
+  bool placesInstance(uint32_t id, const Scene &child) const;
 
   // Builds the BVH; call after adding everything.
   void commit();
@@ -140,6 +136,8 @@ class Scene
  private:
   // Commits `geometry` and attaches it as `id`, handing over our reference.
   void attach(RTCGeometryTy *geometry, uint32_t id);
+  // Whether geometry `id` added an Embree geometry.
+  bool isAttached(uint32_t id) const;
   // Marks the queue's rays beyond rayRange() untraceable.
   void confine(RayQueue &queue) const;
   // The queue's ray arrays from ray `i` on, as Embree's stream API takes
@@ -160,9 +158,6 @@ class Scene
   // between them; kept until clear().
   std::vector<std::vector<float3>> m_interpolatedVertices;
   std::vector<bool> m_attached; // by geometry id
-  // By geometry id: the child scene a fixed-transform instance places, for
-  // moveInstance() (NULL for other geometry).
-  std::vector<const RTCSceneTy *> m_instanced;
 };
 
 } // namespace prism::rt

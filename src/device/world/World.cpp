@@ -150,7 +150,7 @@ void World::finalize()
   };
   placeLights(m_lights, kIdentityMat3x4);
   for (const Instance *instance : m_instances) {
-    if (!instance->isValid())
+    if (!instance->isValid() || instance->group()->lights().empty())
       continue;
     for (size_t i = 0; i < instance->placementCount(); i++)
       placeLights(instance->group()->lights(), instance->worldFromObject(i));
@@ -160,8 +160,7 @@ void World::finalize()
   previous.swap(m_placements);
   auto place = [&](const Group *group,
                    const Instance *instance,
-                   uint32_t index,
-                   uint32_t id) {
+                   uint32_t index) {
     const mat3x4 transform =
         instance ? instance->worldFromObject(index) : kIdentityMat3x4;
     const mat3x4 objectFromWorld = inverse(transform);
@@ -190,51 +189,55 @@ void World::finalize()
           double(rt::kLargestCoordinate));
       return;
     }
-    const MotionTransform *motion = instance ? instance->motion() : nullptr;
+    if (!instance) {
+      m_placements.emplace_back(group);
+      return;
+    }
     const bool identity =
-        !motion
+        !instance->motion()
         && std::memcmp(&transform, &kIdentityMat3x4, sizeof(mat3x4)) == 0;
-    m_placements.push_back({group, instance, index, id, identity});
+    m_placements.emplace_back(instance, index, identity);
   };
+  size_t placements = 1;
+  for (const Instance *instance : m_instances)
+    placements += instance->placementCount();
+  m_placements.reserve(placements);
   if (!isEmpty(m_implicitGroup->bounds()))
-    place(m_implicitGroup, nullptr, 0, ~0u);
+    place(m_implicitGroup, nullptr, 0);
   for (const Instance *instance : m_instances) {
     if (!instance->isValid() || isEmpty(instance->group()->bounds()))
       continue;
     for (size_t i = 0; i < instance->placementCount(); i++)
-      place(instance->group(), instance, uint32_t(i), instance->id(i));
+      place(instance->group(), instance, uint32_t(i));
   }
   if (!moveInstancesInPlace(previous))
     rebuildScene();
   m_scene->commit();
   m_bounds = m_scene->bounds();
   placeVolumes();
-  const bool single = m_placements.size() == 1 && m_placements[0].identity;
-  m_traced = single ? &m_placements[0].group->scene() : m_scene.get();
+  const bool single = m_placements.size() == 1 && m_placements[0].identity();
+  m_traced = single ? &m_placements[0].group()->scene() : m_scene.get();
   placeEmitters();
   indexLights(sceneRadius(m_bounds));
 }
 
 bool World::moveInstancesInPlace(const std::vector<Placement> &previous)
 {
-  // The same groups (their scenes as built now), instances and ids in the
-  // same order, none moving over the shutter: only transforms changed.
+  // The same instances' placements in the same order, none moving over the
+  // shutter: only transforms changed. (Ids are read at hits.)
   if (previous.size() != m_placements.size() || m_placements.empty())
     return false;
   for (size_t i = 0; i < m_placements.size(); i++) {
-    const Placement &now = m_placements[i];
-    const Placement &before = previous[i];
-    if (now.group != before.group || now.instance != before.instance
-        || now.instanceId != before.instanceId || now.motion()
-        || before.motion())
+    if (!m_placements[i].samePlacer(previous[i]) || m_placements[i].motion())
       return false;
   }
-  // Each placement to its transform (unchanged ones are left alone); a
-  // group rebuilt since is caught here too: a full rebuild follows.
+  // Each placement to its transform (unchanged ones are left alone); an
+  // instance given another group, a group rebuilt since, or one that
+  // moved over the shutter before is caught here: a full rebuild follows.
   for (size_t i = 0; i < m_placements.size(); i++) {
     const Placement &now = m_placements[i];
     if (!m_scene->moveInstance(
-            uint32_t(i), now.group->scene(), now.worldFromObject()))
+            uint32_t(i), now.group()->scene(), now.worldFromObject()))
       return false;
   }
   return true;
@@ -246,9 +249,10 @@ void World::rebuildScene()
   for (size_t i = 0; i < m_placements.size(); i++) {
     const Placement &p = m_placements[i];
     if (const MotionTransform *keys = p.motion())
-      m_scene->addInstance(uint32_t(i), p.group->scene(), *keys);
+      m_scene->addInstance(uint32_t(i), p.group()->scene(), *keys);
     else
-      m_scene->addInstance(uint32_t(i), p.group->scene(), p.worldFromObject());
+      m_scene->addInstance(
+          uint32_t(i), p.group()->scene(), p.worldFromObject());
   }
 }
 
@@ -421,7 +425,7 @@ void World::placeVolumes()
   };
   place(*m_implicitGroup, kIdentityMat3x4, ~0u);
   for (const Instance *instance : m_instances) {
-    if (!instance->isValid())
+    if (!instance->isValid() || instance->group()->volumes().empty())
       continue;
     // A moving instance's volumes stay where the shutter's middle puts
     // them.
@@ -445,7 +449,7 @@ void World::placeEmitters()
     // Moving instances' emitters are found by rays alone.
     if (placement.motion())
       continue;
-    const Group &group = *placement.group;
+    const Group &group = *placement.group();
     for (uint32_t g = 0; g < group.surfaceCount(); g++) {
       // A surface recommitted since its group was (the group refreshes
       // before the frame renders) may have lost its geometry or material.
@@ -460,7 +464,7 @@ void World::placeEmitters()
         continue;
       EmitterShape shape;
       surface->geometry()->appendEmitterShape(shape);
-      if (!placement.identity)
+      if (!placement.identity())
         shape = placedEmitterShape(shape, placement.worldFromObject());
       auto light =
           std::make_unique<EmissiveSurface>(std::move(shape), radiance);

@@ -25,25 +25,50 @@ class World : public Object
   ~World() override;
 
   // One placed group: what an Embree instance id stands for. There may be
-  // ten million, so a placement keeps 32 bytes: its transform is read from
-  // the instance, which holds it, and inverted where a hit needs it.
-  struct Placement
+  // ten million, so a placement keeps 16 bytes: its group, transform and
+  // id are read from the instance that holds them, and the transform is
+  // inverted where a hit needs it.
+  class Placement
   {
-    const Group *group;
-    const Instance *instance; // NULL for surfaces placed in the world
-    uint32_t index;           // among the instance's transforms
-    uint32_t instanceId;      // the user's id (~0u when unset)
-    bool identity; // worldFromObject is the identity (skip transforms)
+   public:
+    // The world's own surfaces, placed where they are.
+    explicit Placement(const Group *worldGroup)
+        : m_worldGroup(worldGroup),
+          m_index(0),
+          m_identity(true),
+          m_byInstance(false)
+    {}
+    Placement(const Instance *instance, uint32_t index, bool identity)
+        : m_instance(instance),
+          m_index(index),
+          m_identity(identity),
+          m_byInstance(true)
+    {}
 
+    const Group *group() const
+    {
+      return m_byInstance ? m_instance->group() : m_worldGroup;
+    }
+    // NULL for surfaces placed in the world.
+    const Instance *instance() const
+    {
+      return m_byInstance ? m_instance : nullptr;
+    }
+    // The user's id (~0u when unset).
+    uint32_t instanceId() const
+    {
+      return m_byInstance ? m_instance->id(m_index) : ~0u;
+    }
     // At the shutter midpoint for a moving instance.
     mat3x4 worldFromObject() const
     {
-      return instance ? instance->worldFromObject(index) : kIdentityMat3x4;
+      return m_byInstance ? m_instance->worldFromObject(m_index)
+                          : kIdentityMat3x4;
     }
     // Keys of a moving instance, or NULL.
     const MotionTransform *motion() const
     {
-      return instance ? instance->motion() : nullptr;
+      return m_byInstance ? m_instance->motion() : nullptr;
     }
     // objectFromWorld at `time`, in the shutter's [0, 1].
     mat3x4 objectFromWorldAt(float time) const
@@ -51,8 +76,30 @@ class World : public Object
       const MotionTransform *keys = motion();
       return inverse(keys ? keys->at(time) : worldFromObject());
     }
+    // worldFromObject is the identity (skip transforms).
+    bool identity() const
+    {
+      return m_identity;
+    }
+    // Whether both place by the same instance's same transform.
+    bool samePlacer(const Placement &other) const
+    {
+      return m_byInstance == other.m_byInstance && m_index == other.m_index
+             && (m_byInstance ? m_instance == other.m_instance
+                              : m_worldGroup == other.m_worldGroup);
+    }
+
+   private:
+    union
+    {
+      const Instance *m_instance;
+      const Group *m_worldGroup;
+    };
+    uint32_t m_index; // among the instance's transforms
+    bool m_identity;
+    bool m_byInstance;
   };
-  static_assert(sizeof(Placement) <= 32, "a placement per instance");
+  static_assert(sizeof(Placement) <= 16, "a placement per instance");
 
   const Placement &placement(uint32_t instanceId) const
   {
