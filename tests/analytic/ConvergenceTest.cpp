@@ -90,12 +90,13 @@ TEST_F(Convergence, ErrorFallsFasterThanOneOverTheSquareRootOfSamples)
     errors.push_back(rmse(render(w, false, samples), reference));
     std::printf("%3d spp: RMSE %.5f\n", samples, errors.back());
   }
-  // Stratified (low-discrepancy) samples: the error falls at least as fast
-  // as N^-0.6 over the range, where independent samples give N^-0.5 (4x
-  // the samples: 2.30x less error instead of 2x). Stated tolerance: each
-  // step between 1.9x and 3.2x, the overall slope at most -0.6 (measured
-  // -0.601 against the independent reference; -0.623 against one that
-  // continued these samples' sequences, which scored 256 spp 9 % low).
+  // Stratified (low-discrepancy) samples: the error falls faster than
+  // N^-0.5, what independent samples give (4x the samples: 2x less
+  // error). Stated tolerance: each step between 1.9x and 3.2x, the overall
+  // slope at most -0.57 (measured -0.591 against the independent
+  // reference: RMSE 0.0143, 0.0059, 0.0027, 0.0012; with a centred first
+  // sample, before the path tracer's sequences kept their first points,
+  // -0.601 from a higher start: 0.0149, 0.0059, 0.0027, 0.0012).
   for (size_t i = 1; i < errors.size(); i++) {
     const float ratio = errors[i - 1] / errors[i];
     EXPECT_GT(ratio, 1.9f) << "step " << i;
@@ -104,7 +105,7 @@ TEST_F(Convergence, ErrorFallsFasterThanOneOverTheSquareRootOfSamples)
   const float slope =
       std::log(errors.back() / errors.front()) / std::log(256.f / 4.f);
   std::printf("slope %.3f\n", slope);
-  EXPECT_LT(slope, -0.6f);
+  EXPECT_LT(slope, -0.57f);
   EXPECT_GT(slope, -1.1f);
   anariRelease(m_device, w);
   EXPECT_TRUE(problems().empty());

@@ -266,6 +266,7 @@ void Frame::render()
       m_sampleIndex,
       m_sharing.omitBackground};
   context.seed = m_renderer->seed();
+  context.centresFirstSample = m_renderer->centresFirstSample();
   m_renderer->beginFrame(context);
   if (m_sharing.lockstep)
     renderInLockstep(context, tilesX, tilesY);

@@ -29,9 +29,9 @@ void PrimaryRays::generate(uint32_t x0,
         time[rt::kPacketSize];
     const float invWidth = m_invWidth;
     const float height = float(m_context.height);
-    if (sampleIndex == 0) {
+    if (m_context.centredSample()) {
       // Every pixel's first sample is at the same offset (its centre).
-      const float2 offset = pixelOffset(x0, y, 0, m_context.seed);
+      const float2 offset{0.5f, 0.5f};
       for (int i = 0; i < rt::kPacketSize; i++) {
         const uint32_t x = x0 + uint32_t(std::min(i, count - 1));
         sx[i] = (float(x) + offset.x) * invWidth;
@@ -65,17 +65,20 @@ void PrimaryRays::generate(uint32_t x0,
     }
     return;
   }
+  const bool centred = m_context.centredSample();
   for (int i = 0; i < rt::kPacketSize; i++) {
     const uint32_t x = x0 + uint32_t(std::min(i, count - 1));
-    const float2 offset = pixelOffset(x, y, sampleIndex, m_context.seed);
+    const float2 offset = centred
+                              ? float2{0.5f, 0.5f}
+                              : pixelOffset(x, y, sampleIndex, m_context.seed);
     const float2 screen{(float(x) + offset.x) * m_invWidth,
         (float(y) + offset.y) / float(m_context.height)};
     // The lens point: its own stream, decorrelated from the pixel offset.
-    const float2 lens = sampleIndex == 0 || !m_context.camera->hasDepthOfField()
+    const float2 lens = centred || !m_context.camera->hasDepthOfField()
                             ? float2{0.5f, 0.5f}
                             : lensSample(x, y, sampleIndex, m_context.seed);
-    const float rayTime = m_context.camera->rayTime(
-        screen, exposureSample(x, y, sampleIndex, m_context.seed));
+    const float rayTime = m_context.camera->rayTime(screen,
+        centred ? 0.5f : exposureSample(x, y, sampleIndex, m_context.seed));
     const Ray ray = m_context.camera->generateRay(screen,
         lens,
         rayTime,

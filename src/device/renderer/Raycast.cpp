@@ -475,7 +475,7 @@ PixelSample Raycast::shadeSample(const RenderContext &context,
   // within their steps from frame to frame, so accumulation converges.
   MarchSettings march;
   march.samplingRate = m_volumeSamplingRate;
-  march.offset = context.sampleIndex == 0
+  march.offset = context.centredSample()
                      ? 0.5f
                      : hashedSample2D(x, y, context.sampleIndex, 7).x;
   // Without the majorant grid: the reference marcher, every step sampled.

@@ -174,19 +174,21 @@ void Renderer::tracePrimary(const RenderContext &context,
 Ray Renderer::cameraRay(
     const RenderContext &context, uint32_t x, uint32_t y) const
 {
-  const float2 offset = pixelOffset(x, y, context.sampleIndex, context.seed);
+  const bool centred = context.centredSample();
+  const float2 offset =
+      centred ? float2{0.5f, 0.5f}
+              : pixelOffset(x, y, context.sampleIndex, context.seed);
   // Multiplying by the reciprocal, as the pinhole fast path does, keeps
   // both paths' rays identical.
   const float2 screen{(float(x) + offset.x) * (1.f / float(context.width)),
       (float(y) + offset.y) / float(context.height)};
   // The lens point: its own stream, decorrelated from the pixel offset;
   // a camera without a lens ignores it.
-  const float2 lens =
-      context.sampleIndex == 0 || !context.camera->hasDepthOfField()
-          ? float2{0.5f, 0.5f}
-          : lensSample(x, y, context.sampleIndex, context.seed);
-  const float time = context.camera->rayTime(
-      screen, exposureSample(x, y, context.sampleIndex, context.seed));
+  const float2 lens = centred || !context.camera->hasDepthOfField()
+                          ? float2{0.5f, 0.5f}
+                          : lensSample(x, y, context.sampleIndex, context.seed);
+  const float time = context.camera->rayTime(screen,
+      centred ? 0.5f : exposureSample(x, y, context.sampleIndex, context.seed));
   return context.camera->generateRay(
       screen, lens, time, float(context.width) / float(context.height));
 }

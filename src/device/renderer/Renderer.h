@@ -29,8 +29,8 @@ struct RenderContext
   const RayTransport *transport;
   uint32_t width;
   uint32_t height;
-  // Which accumulated sample this frame renders (0: the first, through
-  // pixel centres); seeds every random choice with the pixel.
+  // Which accumulated sample this frame renders (0: the first); seeds every
+  // random choice with the pixel.
   uint32_t sampleIndex;
   // Render as if the background were transparent black: a compositing
   // device blends the processes' pixels first and the background under
@@ -39,6 +39,15 @@ struct RenderContext
   bool transparentBackground{false};
   // The renderer's `seed`: which scrambling of the sample sequences.
   uint32_t seed{0};
+  // Whether the first sample is centred (Renderer::centresFirstSample()).
+  bool centresFirstSample{true};
+
+  // Whether this sample looks through pixel centres, the lens's centre and
+  // the middle of the exposure rather than its sequences' points.
+  bool centredSample() const
+  {
+    return sampleIndex == 0 && centresFirstSample;
+  }
 };
 
 // One tile's work as the tile loop, runTile(), drives it:
@@ -132,6 +141,15 @@ class Renderer : public Object
   float errorThreshold() const
   {
     return m_errorThreshold;
+  }
+  // Whether the first sample looks through pixel centres (the lens's
+  // centre, the middle of the exposure), so single-sample images are exact
+  // (no sample jitter): true but for renderers that accumulate many
+  // samples, whose sequences stay stratified only with their own first
+  // points (RenderContext::centredSample()).
+  virtual bool centresFirstSample() const
+  {
+    return true;
   }
   // Samples per pixel after which accumulating more changes little
   // (refinementProgress reaches 1 there).

@@ -49,16 +49,14 @@ inline float2 hashedSample2D(
       float(h >> 8) * (1.f / 16777216.f), float(g >> 8) * (1.f / 16777216.f)};
 }
 
-// Where in its exposure sample n of pixel (x, y) falls, in [0, 1): the
-// middle for the first sample, then a van der Corput sequence rotated per
-// pixel, so n samples cover the exposure evenly (error ~1/n, not
-// ~1/sqrt(n), for motion blur) without pixels sharing times; the
-// renderer's seed chooses the rotations.
+// Where in its exposure sample n of pixel (x, y) falls, in [0, 1): a van
+// der Corput sequence rotated per pixel, so n samples cover the exposure
+// evenly (error ~1/n, not ~1/sqrt(n), for motion blur) without pixels
+// sharing times; the renderer's seed chooses the rotations. (A centred
+// sample, RenderContext::centredSample(), is at the middle instead.)
 inline float exposureSample(
     uint32_t x, uint32_t y, uint32_t sample, uint32_t rendererSeed)
 {
-  if (sample == 0)
-    return 0.5f;
   uint32_t bits = sample;
   bits = (bits << 16) | (bits >> 16);
   bits = ((bits & 0x00ff00ffu) << 8) | ((bits & 0xff00ff00u) >> 8);

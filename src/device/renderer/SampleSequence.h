@@ -115,15 +115,13 @@ inline uint32_t sequenceSeed(
   return mixBits(x * 0x9e3779b9u ^ mixBits(y ^ decision));
 }
 
-// Where in pixel (x, y) sample `sample` looks, in [0,1)^2: the pixel centre
-// for the first sample so single-sample images stay exact, then the
-// pixel's sequence.
+// Where in pixel (x, y) sample `sample` of the pixel's sequence looks, in
+// [0,1)^2 (a centred sample, RenderContext::centredSample(), looks through
+// the centre instead).
 inline float2 pixelOffset(
     uint32_t x, uint32_t y, uint32_t sample, uint32_t rendererSeed)
 {
-  return sample == 0 ? float2{0.5f, 0.5f}
-                     : sobolSample2D(
-                         sample, sequenceSeed(x, y, 0xffff0000u, rendererSeed));
+  return sobolSample2D(sample, sequenceSeed(x, y, 0xffff0000u, rendererSeed));
 }
 
 // The point on the lens (depth of field) sample `sample` of pixel (x, y)
