@@ -12,6 +12,8 @@
 #include <initializer_list>
 #include <limits>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include <sys/wait.h>
 
@@ -479,6 +481,39 @@ int replayCrafted(const std::string &name,
 }
 
 } // namespace
+
+// Each device of a process writes its own trace (FILE, FILE.2, ...), also
+// when the program unloads the layer's library and loads it again: the
+// second device's trace must not overwrite the first's.
+TEST(TraceNumbering, ALibraryLoadedAgainKeepsCounting)
+{
+  const std::string path = "reloaded-library.trace";
+  auto traces = [&] {
+    std::vector<std::string> found;
+    for (int n = 1; n <= 64; n++) {
+      const std::string name = n == 1 ? path : path + "." + std::to_string(n);
+      if (std::ifstream(name).good())
+        found.push_back(name);
+    }
+    return found;
+  };
+  for (const std::string &old : traces())
+    std::remove(old.c_str());
+  ASSERT_EQ(setenv("ANARI_DEBUG_TRACE", path.c_str(), 1), 0);
+  for (int load = 0; load < 2; load++) {
+    ANARILibrary library = anariLoadLibrary("debug", nullptr, nullptr);
+    ASSERT_NE(library, nullptr);
+    ANARIDevice device = anariNewDevice(library, "default");
+    ASSERT_NE(device, nullptr);
+    anariRelease(device, device);
+    anariUnloadLibrary(library);
+  }
+  unsetenv("ANARI_DEBUG_TRACE");
+  const std::vector<std::string> written = traces();
+  ASSERT_EQ(written.size(), 2u) << "two devices, two traces";
+  for (const std::string &name : written)
+    expectInTrace(readFile(name), {"\nDevice \"default\""});
+}
 
 // Sizes, counts and handles in a trace are checked before use: each of
 // these once overflowed the heap, threw out of main or let the layer read
