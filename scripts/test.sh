@@ -33,10 +33,8 @@ if [ "${PRISM_SKIP_SANITIZERS:-0}" != 1 ]; then
     -DPRISM_BUILD_TOOLS=OFF -DPRISM_BUILD_BENCHMARKS=OFF \
     -DPRISM_BUILD_IMAGE_TESTS=OFF
   run_suite "$root/build-asan" -L "unit|api|debug" -LE slow
-  # The analytic tests run under ASan+UBSan without leak checks: those were
-  # turned off here for the tracer crash that intercept_tls_get_addr=0 now
-  # avoids, and are not back yet; leaks are the unit and API tests' above.
-  ASAN_OPTIONS=detect_leaks=0:abort_on_error=1:intercept_tls_get_addr=0 run_suite "$root/build-asan" -L analytic
+  # The analytic tests too, slow ones included, with leak checks.
+  run_suite "$root/build-asan" -L analytic
 
   # TBB is not instrumented, so its own synchronisation is invisible and
   # tests/tsan.supp drops races inside libtbb; with the default history
