@@ -131,6 +131,7 @@ class RenderRun
   ANARIFrame m_frame{nullptr};
   uint32_t m_frames{1};
   uint32_t m_samplesPerFrame{1}; // the renderer's pixelSamples
+  bool m_accumulates{false};     // frames add to one image (--spp > 1)
   FrameCompletions m_completions;
   bool m_watchCompletion{false};
   LoopResult m_loop;
@@ -441,6 +442,7 @@ int RenderRun::makeFrame()
     if (m_session.has("ANARI_KHR_FRAME_ACCUMULATION")) {
       const bool on = true;
       anariSetParameter(device, m_frame, "accumulation", ANARI_BOOL, &on);
+      m_accumulates = true;
       // Bench runs time one-sample frames.
       if (m_options.benchFrames == 0) {
         m_samplesPerFrame = takeSamplesPerCall(device,
@@ -578,13 +580,18 @@ void RenderRun::printSummary(const std::vector<OutputImage> &images)
         image.image.width,
         image.image.height);
   const size_t frames = m_loop.frameSeconds.size();
+  // What the written image holds: bench frames take one sample each, and
+  // add up only when --spp turned accumulation on.
+  const size_t samples = m_options.benchFrames == 0 ? frames * m_samplesPerFrame
+                         : m_accumulates            ? frames
+                                                    : 1;
   std::printf("scene %s in %s, %u frame%s in %s (%u spp)\n",
       scene,
       formatDuration(m_loadSeconds).c_str(),
       unsigned(frames),
       frames == 1 ? "" : "s",
       formatDuration(m_loop.seconds).c_str(),
-      m_options.benchFrames > 0 ? 1u : unsigned(frames * m_samplesPerFrame));
+      unsigned(samples));
 }
 
 int run(int argc, char **argv)
