@@ -92,7 +92,7 @@ void AmbientOcclusion::Wavefront::packet(uint32_t x0, uint32_t y, int count)
   for (int k = 0; k < count; k++) {
     const uint32_t x = x0 + uint32_t(k);
     const size_t i = indexOf(x, y);
-    const Ray ray = m_renderer.cameraRay(m_context, x, y);
+    const Ray ray = m_context.cameraRay(x, y);
     m_times[i] = ray.time;
     m_rays.push(
         ray.origin, ray.direction, ray.tMin, ray.tMax, ray.time, uint32_t(i));

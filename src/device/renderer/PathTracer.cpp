@@ -188,7 +188,7 @@ void PathTracer::Wavefront::packet(uint32_t x0, uint32_t y, int count)
     path.y = pixel.y;
     path.seed = sequenceSeed(path.x, path.y, 0, m_context.seed);
     path.sampleIndex = m_context.sampleIndex;
-    cameraRays[i] = m_renderer.cameraRay(m_context, path.x, path.y);
+    cameraRays[i] = m_context.cameraRay(path.x, path.y);
     path.time = cameraRays[i].time;
   }
 }

@@ -1,7 +1,5 @@
 #include "PrimaryRays.h"
 
-#include "SampleSequence.h"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -21,7 +19,6 @@ void PrimaryRays::generate(uint32_t x0,
     rt::RayHitPacket &packet,
     int active[rt::kPacketSize]) const
 {
-  const uint32_t sampleIndex = m_context.sampleIndex;
   if (m_isPinhole) {
     // The common camera: screen positions first, then the directions in
     // one straight loop the compiler vectorises.
@@ -29,24 +26,13 @@ void PrimaryRays::generate(uint32_t x0,
         time[rt::kPacketSize];
     const float invWidth = m_invWidth;
     const float height = float(m_context.height);
-    if (m_context.centredSample()) {
-      // Every pixel's first sample is at the same offset (its centre).
-      const float2 offset{0.5f, 0.5f};
-      for (int i = 0; i < rt::kPacketSize; i++) {
-        const uint32_t x = x0 + uint32_t(std::min(i, count - 1));
-        sx[i] = (float(x) + offset.x) * invWidth;
-        sy[i] = (float(y) + offset.y) / height;
-        time[i] = m_context.camera->rayTime({sx[i], sy[i]}, 0.5f);
-      }
-    } else {
-      for (int i = 0; i < rt::kPacketSize; i++) {
-        const uint32_t x = x0 + uint32_t(std::min(i, count - 1));
-        const float2 offset = pixelOffset(x, y, sampleIndex, m_context.seed);
-        sx[i] = (float(x) + offset.x) * invWidth;
-        sy[i] = (float(y) + offset.y) / height;
-        time[i] = m_context.camera->rayTime(
-            {sx[i], sy[i]}, exposureSample(x, y, sampleIndex, m_context.seed));
-      }
+    for (int i = 0; i < rt::kPacketSize; i++) {
+      const uint32_t x = x0 + uint32_t(std::min(i, count - 1));
+      const float2 offset = m_context.offsetInPixel(x, y);
+      sx[i] = (float(x) + offset.x) * invWidth;
+      sy[i] = (float(y) + offset.y) / height;
+      time[i] = m_context.camera->rayTime(
+          {sx[i], sy[i]}, m_context.exposureTime(x, y));
     }
     const Camera::Pinhole p = m_pinhole; // a copy the stores cannot alias
     for (int i = 0; i < rt::kPacketSize; i++) {
@@ -65,24 +51,9 @@ void PrimaryRays::generate(uint32_t x0,
     }
     return;
   }
-  const bool centred = m_context.centredSample();
   for (int i = 0; i < rt::kPacketSize; i++) {
     const uint32_t x = x0 + uint32_t(std::min(i, count - 1));
-    const float2 offset = centred
-                              ? float2{0.5f, 0.5f}
-                              : pixelOffset(x, y, sampleIndex, m_context.seed);
-    const float2 screen{(float(x) + offset.x) * m_invWidth,
-        (float(y) + offset.y) / float(m_context.height)};
-    // The lens point: its own stream, decorrelated from the pixel offset.
-    const float2 lens = centred || !m_context.camera->hasDepthOfField()
-                            ? float2{0.5f, 0.5f}
-                            : lensSample(x, y, sampleIndex, m_context.seed);
-    const float rayTime = m_context.camera->rayTime(screen,
-        centred ? 0.5f : exposureSample(x, y, sampleIndex, m_context.seed));
-    const Ray ray = m_context.camera->generateRay(screen,
-        lens,
-        rayTime,
-        float(m_context.width) / float(m_context.height));
+    const Ray ray = m_context.cameraRay(x, y);
     packet.originX[i] = ray.origin.x;
     packet.originY[i] = ray.origin.y;
     packet.originZ[i] = ray.origin.z;

@@ -1,7 +1,6 @@
 #include "Renderer.h"
 
 #include "PrimaryRays.h"
-#include "SampleSequence.h"
 #include "TileLoop.h"
 
 #include "../array/Array.h"
@@ -171,26 +170,18 @@ void Renderer::tracePrimary(const RenderContext &context,
   }
 }
 
-Ray Renderer::cameraRay(
-    const RenderContext &context, uint32_t x, uint32_t y) const
+Ray RenderContext::cameraRay(uint32_t x, uint32_t y) const
 {
-  const bool centred = context.centredSample();
-  const float2 offset =
-      centred ? float2{0.5f, 0.5f}
-              : pixelOffset(x, y, context.sampleIndex, context.seed);
+  const float2 offset = offsetInPixel(x, y);
   // Multiplying by the reciprocal, as the pinhole fast path does, keeps
   // both paths' rays identical.
-  const float2 screen{(float(x) + offset.x) * (1.f / float(context.width)),
-      (float(y) + offset.y) / float(context.height)};
+  const float2 screen{(float(x) + offset.x) * (1.f / float(width)),
+      (float(y) + offset.y) / float(height)};
   // The lens point: its own stream, decorrelated from the pixel offset;
   // a camera without a lens ignores it.
-  const float2 lens = centred || !context.camera->hasDepthOfField()
-                          ? float2{0.5f, 0.5f}
-                          : lensSample(x, y, context.sampleIndex, context.seed);
-  const float time = context.camera->rayTime(screen,
-      centred ? 0.5f : exposureSample(x, y, context.sampleIndex, context.seed));
-  return context.camera->generateRay(
-      screen, lens, time, float(context.width) / float(context.height));
+  const float2 lens = lensPoint(x, y, camera->hasDepthOfField());
+  const float time = camera->rayTime(screen, exposureTime(x, y));
+  return camera->generateRay(screen, lens, time, float(width) / float(height));
 }
 
 rt::Hit Renderer::traceBeyond(

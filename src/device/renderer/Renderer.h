@@ -7,6 +7,7 @@
 #include "../object/Object.h"
 #include "../rt/Scene.h"
 #include "FrameBuffers.h"
+#include "SampleSequence.h"
 #include "SurfaceHit.h"
 
 #include <atomic>
@@ -48,6 +49,27 @@ struct RenderContext
   {
     return sampleIndex == 0 && centresFirstSample;
   }
+  // Where this sample of pixel (x, y) looks within the pixel, in [0,1)^2.
+  float2 offsetInPixel(uint32_t x, uint32_t y) const
+  {
+    return centredSample() ? float2{0.5f, 0.5f}
+                           : pixelOffset(x, y, sampleIndex, seed);
+  }
+  // The point on the lens it passes through, in [0,1)^2 (the centre for a
+  // camera without depth of field).
+  float2 lensPoint(uint32_t x, uint32_t y, bool depthOfField) const
+  {
+    return centredSample() || !depthOfField
+               ? float2{0.5f, 0.5f}
+               : lensSample(x, y, sampleIndex, seed);
+  }
+  // When in the exposure it looks, in [0, 1).
+  float exposureTime(uint32_t x, uint32_t y) const
+  {
+    return centredSample() ? 0.5f : exposureSample(x, y, sampleIndex, seed);
+  }
+  // The camera ray of pixel (x, y) for this sample.
+  Ray cameraRay(uint32_t x, uint32_t y) const;
 };
 
 // One tile's work as the tile loop, runTile(), drives it:
@@ -197,9 +219,6 @@ class Renderer : public Object
       int count,
       Ray rays[rt::kPacketSize],
       rt::Hit hits[rt::kPacketSize]) const;
-  // The camera ray of pixel (x, y) for this frame's sample (jittered in
-  // the pixel and on the lens after the first sample).
-  Ray cameraRay(const RenderContext &context, uint32_t x, uint32_t y) const;
   // The next hit along `ray` beyond `previous` (for see-through surfaces).
   static rt::Hit traceBeyond(
       const World &world, const Ray &ray, const rt::Hit &previous);
