@@ -693,7 +693,9 @@ int main(int argc, char **argv)
       kinds = {argv[++i]};
     } else if (arg == "--layout" && i + 1 < argc) {
       packed = std::string(argv[++i]) != "apart";
-    } else if (arg == "--side" && i + 1 < argc) {
+    } else if (arg == "--side" && i + 1 < argc
+               && (std::string(argv[i + 1]) == "prism"
+                   || std::string(argv[i + 1]) == "embree")) {
       sides = argv[++i];
     } else if (arg == "--quality" && i + 1 < argc) {
       quality = argv[++i];
