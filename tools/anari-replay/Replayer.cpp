@@ -579,7 +579,7 @@ bool Replayer::arrayData(const Tokens &t)
   } else {
     memory = anariMapArray(m_device, (ANARIArray)array);
   }
-  if (memory && !none)
+  if (memory && !bytes.empty()) // an empty vector's data() may be null
     std::memcpy(memory, bytes.data(), bytes.size());
   anariUnmapArray(m_device, (ANARIArray)array);
   return true;
