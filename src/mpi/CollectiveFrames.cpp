@@ -61,6 +61,7 @@ try {
       state = &it->second;
     state->assembled.clear();
     state->bytesSent = 0;
+    state->activePixels.reset();
   }
   descriptor.frameIndex = state->index;
   descriptor.renderIndex = state->renders;
@@ -232,6 +233,16 @@ void DataParallelDevice::renderReplicated(
   MPI_Comm_size(communicator, &ranks);
   uint64_t bytesSent = 0;
   renderer.renderTileRows(handle, uint32_t(rank), uint32_t(ranks));
+  // Each process knows its own rows' blocks only: the frame's count is
+  // the sum (every process reduces, even one whose frame could not say).
+  uint64_t active = 0;
+  device.getProperty(handle,
+      "activePixels",
+      ANARI_UINT64,
+      &active,
+      sizeof(active),
+      ANARI_WAIT);
+  MPI_Allreduce(MPI_IN_PLACE, &active, 1, MPI_UINT64_T, MPI_SUM, communicator);
   politeBarrier(communicator);
   std::map<std::string, MappedChannel> assembled;
   for (int c = 0; c < kChannelCount; c++) {
@@ -265,6 +276,7 @@ void DataParallelDevice::renderReplicated(
   std::lock_guard lock(m_stateMutex);
   state.assembled = std::move(assembled);
   state.bytesSent = bytesSent;
+  state.activePixels = active;
 }
 
 // Pathtracer mode ////////////////////////////////////////////////////////////

@@ -284,6 +284,12 @@ int DataParallelDevice::getFrameProperty(ANARIObject object,
     std::memcpy(mem, &it->second.bytesSent, sizeof(uint64_t));
     return 1;
   }
+  const std::optional<uint64_t> &active = it->second.activePixels;
+  if (property == "activePixels" && type == ANARI_UINT64
+      && size >= sizeof(uint64_t) && active) {
+    std::memcpy(mem, &*active, sizeof(uint64_t));
+    return 1;
+  }
   if ((property == "mpiRank" || property == "mpiSize") && type == ANARI_INT32
       && size >= sizeof(int32_t) && m_session.usable()) {
     int value = 0;

@@ -21,6 +21,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -92,6 +93,9 @@ class DataParallelDevice : public ForwardingDevice
     uint32_t width{0};
     uint32_t height{0};
     uint64_t bytesSent{0}; // by this process in the last collective render
+    // Replicated mode: the pixels every process's rows still sample
+    // (adaptive sampling), summed over the processes.
+    std::optional<uint64_t> activePixels;
     bool denoiseWarned{false};
     std::map<std::string, MappedChannel> assembled; // rank 0 only
   };

@@ -973,6 +973,19 @@ void scenarioLights()
 // restart with it, or their paths would start from different samples and
 // the lockstep break. Two samples after the commit make the single-process
 // image of two samples.
+void releaseFrameAndScene(ANARIDevice d,
+    ANARIFrame frame,
+    ANARIRenderer renderer,
+    ANARICamera camera,
+    ANARIWorld world)
+{
+  for (ANARIObject o : {(ANARIObject)frame,
+           (ANARIObject)renderer,
+           (ANARIObject)camera,
+           (ANARIObject)world})
+    anariRelease(d, o);
+}
+
 void scenarioAccumulationRestart()
 {
   const int rank = worldRank(), ranks = worldSize();
@@ -1011,11 +1024,7 @@ void scenarioAccumulationRestart()
         &traced.bytesSent,
         sizeof(traced.bytesSent),
         ANARI_WAIT);
-    for (ANARIObject o : {(ANARIObject)frame,
-             (ANARIObject)renderer,
-             (ANARIObject)camera,
-             (ANARIObject)world})
-      anariRelease(d, o);
+    releaseFrameAndScene(d, frame, renderer, camera, world);
   }
   for (const std::string &e : status.take())
     check(false, "accumulation restart: unexpected error: " + e);
@@ -1024,6 +1033,69 @@ void scenarioAccumulationRestart()
       MPI_COMM_WORLD,
       "accumulation restarted by one process",
       Lighting{true, 2});
+}
+
+// Adaptive sampling in replicated mode: each process samples its own rows
+// of tiles and knows only their blocks, so the frame's activePixels is
+// the sum over the processes. With a threshold every estimate meets, every
+// block stops after the minimum of eight samples: all pixels are active
+// before, none after, as every process reads it (rank 0 once counted the
+// others' rows as active for ever).
+void scenarioAdaptiveReplicated()
+{
+  const int ranks = worldSize();
+  const std::vector<int> owners = boxOwners(ranks, 7);
+  Status status;
+  {
+    Device mpi("prism_mpi", status);
+    if (!mpi.device)
+      return;
+    const ANARIDevice d = mpi.device;
+    anariSetParameter(d, d, "mode", ANARI_STRING, "replicated");
+    anariCommitParameters(d, d);
+    ANARIWorld world = newBoxesWorld(d, boxesOf(owners, -1));
+    addSunlight(d, world);
+    ANARICamera camera = newCamera(d, kEyeA, 1.f);
+    ANARIRenderer renderer = newRenderer(d, "pathtracer");
+    const float threshold = 1e30f;
+    anariSetParameter(d, renderer, "errorThreshold", ANARI_FLOAT32, &threshold);
+    anariCommitParameters(d, renderer);
+    // Three rows of 32-pixel tiles: every process of up to three has some.
+    ANARIFrame frame =
+        newFrame(d, world, camera, renderer, kTracedSize, kTracedSize);
+    const bool accumulate = true;
+    anariSetParameter(d, frame, "accumulation", ANARI_BOOL, &accumulate);
+    anariCommitParameters(d, frame);
+    auto activeAfter = [&](int renders) {
+      for (int i = 0; i < renders; i++) {
+        anariRenderFrame(d, frame);
+        anariFrameReady(d, frame, ANARI_WAIT);
+      }
+      uint64_t active = ~0ull;
+      check(anariGetProperty(d,
+                frame,
+                "activePixels",
+                ANARI_UINT64,
+                &active,
+                sizeof(active),
+                ANARI_WAIT)
+                == 1,
+          "adaptive replicated: activePixels is answered");
+      return active;
+    };
+    const uint64_t all = uint64_t(kTracedSize) * kTracedSize;
+    const uint64_t afterSeven = activeAfter(7);
+    check(afterSeven == all,
+        "adaptive replicated: every pixel active after 7 samples, not "
+            + std::to_string(afterSeven));
+    const uint64_t afterEight = activeAfter(1);
+    check(afterEight == 0,
+        "adaptive replicated: no pixel active after 8 samples, not "
+            + std::to_string(afterEight));
+    releaseFrameAndScene(d, frame, renderer, camera, world);
+  }
+  for (const std::string &e : status.take())
+    check(false, "adaptive replicated: unexpected error: " + e);
 }
 
 // Runs `scenario(communicator, half)` on the even and the odd ranks of
@@ -1784,6 +1856,8 @@ int main(int argc, char **argv)
     scenarioLights();
   else if (scenario == "accumulation-restart")
     scenarioAccumulationRestart();
+  else if (scenario == "adaptive-replicated")
+    scenarioAdaptiveReplicated();
   else if (scenario == "mismatch")
     scenarioMismatch();
   else if (scenario == "absent")

@@ -609,7 +609,11 @@ bool Frame::activePixelsProperty(
     waitUntilDone();
   else if (!ready(ANARI_NO_WAIT))
     return false; // tiles stop under a render in flight
-  const uint64_t pixels = m_renders > 0 ? m_convergence.activePixels() : 0;
+  // A process sharing the frame counts the rows it renders.
+  const uint64_t pixels =
+      m_renders > 0 ? m_convergence.activePixels(
+          kTileSize, m_sharing.tileRowPart, m_sharing.tileRowParts)
+                    : 0;
   std::memcpy(mem, &pixels, sizeof(pixels));
   return true;
 }

@@ -80,17 +80,25 @@ float TileConvergence::errorOf(
   return float(std::sqrt(sum / values));
 }
 
-uint64_t TileConvergence::activePixels() const
+uint64_t TileConvergence::activePixels(
+    uint32_t rowHeight, uint32_t rowPart, uint32_t rowParts) const
 {
-  if (!enabled())
+  rowHeight = std::max(rowHeight, 1u);
+  rowParts = std::max(rowParts, 1u);
+  if (!enabled() && rowParts == 1)
     return uint64_t(m_width) * m_height;
   uint64_t pixels = 0;
-  for (uint32_t by = 0; by < m_blocksY; by++)
+  for (uint32_t by = 0; by < m_blocksY; by++) {
+    // Tiles start on a block's corner: a block lies in one row of tiles.
+    const uint32_t y0 = by * kBlockSize;
+    if (y0 >= m_height || (y0 / rowHeight) % rowParts != rowPart)
+      continue;
+    const uint64_t rows = std::min(y0 + kBlockSize, m_height) - y0;
     for (uint32_t bx = 0; bx < m_blocksX; bx++)
-      if (active(bx, by))
+      if (!enabled() || active(bx, by))
         pixels +=
-            uint64_t(std::min((bx + 1) * kBlockSize, m_width) - bx * kBlockSize)
-            * (std::min((by + 1) * kBlockSize, m_height) - by * kBlockSize);
+            rows * (std::min((bx + 1) * kBlockSize, m_width) - bx * kBlockSize);
+  }
   return pixels;
 }
 

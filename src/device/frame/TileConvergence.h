@@ -51,7 +51,15 @@ class TileConvergence
       const std::vector<float4> &sample,
       const std::vector<float4> &average);
   // Pixels of the blocks still taking samples (all of them when off).
-  uint64_t activePixels() const;
+  uint64_t activePixels() const
+  {
+    return activePixels(kBlockSize, 0, 1);
+  }
+  // The same in the rows of `rowHeight`-pixel tiles whose index modulo
+  // `rowParts` is `rowPart`: the rows this process renders when processes
+  // share a frame.
+  uint64_t activePixels(
+      uint32_t rowHeight, uint32_t rowPart, uint32_t rowParts) const;
 
  private:
   bool active(uint32_t bx, uint32_t by) const
