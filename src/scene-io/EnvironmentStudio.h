@@ -1,9 +1,9 @@
 // The neutral studio prism-render lights files with by default (see
 // Environment.h), as float radiance: a sky over a floor with two soft
 // lights. Smooth everywhere, and fine enough (1024 x 512, 0.35 degrees a
-// texel) that the device's nearest-texel lookups show no bands: the hdri
-// light reads texels as they are, so a coarse image or a step in the
-// function is seen as stripes on the background and in reflections.
+// texel) that mirror reflections show no texel structure: the hdri light
+// filters bilinearly, but a coarse image still blurs and a step in the
+// function still shows on the background and in reflections.
 #pragma once
 
 #include "Math.h"

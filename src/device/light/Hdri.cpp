@@ -6,7 +6,9 @@
 
 #include "anari/frontend/type_utility.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <exception>
 #include <limits>
 
@@ -14,6 +16,7 @@ namespace prism::light {
 namespace {
 
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
+constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
 
 // The spec's FLOAT32_VEC3 and the other float layouts HDR images come in
 // (alpha is ignored).
@@ -41,7 +44,17 @@ class PlacedHdri : public PlacedLight
   LightSample sample(const float3 &, const float2 &u) const override
   {
     float pdfImage = 0.f;
-    const float2 st = m_image->distribution.sample(u, pdfImage);
+    const float2 cell = m_image->distribution.sample(u, pdfImage);
+    // The texel the distribution chose and where in it, uniformly, which
+    // becomes a point in proportion to the filtered radiance.
+    const float x = cell.x * float(m_image->width);
+    const float y = cell.y * float(m_image->height);
+    const float i = std::min(std::floor(x), float(m_image->width - 1));
+    const float j = std::min(std::floor(y), float(m_image->height - 1));
+    const float2 st = m_image->sampleInTexel(int64_t(i),
+        int64_t(j),
+        {std::clamp(x - i, 0.f, kOneMinusEpsilon),
+            std::clamp(y - j, 0.f, kOneMinusEpsilon)});
     const float theta = kPi * st.y;
     const float phi = 2.f * kPi * (st.x - 0.5f);
     const float sinTheta = std::sin(theta);
@@ -83,15 +96,12 @@ class PlacedHdri : public PlacedLight
     const float phi =
         std::atan2(dot(direction, m_right), dot(direction, m_forward));
     const float2 st{phi / (2.f * kPi) + 0.5f, std::acos(cosTheta) / kPi};
+    const float3 radiance = m_image->filtered(st);
     // (s, t) covers the sphere with dw = 2 pi^2 sin(theta) ds dt.
     pdf = sinTheta > 0.f
-              ? m_image->distribution.pdf(st) / (2.f * kPi * kPi * sinTheta)
+              ? m_image->density(st, radiance) / (2.f * kPi * kPi * sinTheta)
               : 0.f;
-    const size_t i = std::min(
-        size_t(max(st.x, 0.f) * float(m_image->width)), m_image->width - 1);
-    const size_t j = std::min(
-        size_t(max(st.y, 0.f) * float(m_image->height)), m_image->height - 1);
-    return m_color * m_image->texels[i + j * m_image->width];
+    return m_color * radiance;
   }
 
   std::shared_ptr<const HdriImage> m_image;
@@ -100,6 +110,123 @@ class PlacedHdri : public PlacedLight
 };
 
 } // namespace
+
+const float3 &HdriImage::texel(int64_t i, int64_t j) const
+{
+  const auto w = int64_t(width), h = int64_t(height);
+  // Callers reach at most a texel past either side: no division for them.
+  i += i < 0 ? w : 0;
+  i -= i >= w ? w : 0;
+  if (i < 0 || i >= w)
+    i = (i % w + w) % w;
+  j = std::clamp<int64_t>(j, 0, h - 1);
+  return texels[size_t(i + j * w)];
+}
+
+float3 HdriImage::filtered(const float2 &st) const
+{
+  // Texel centres sit at half-integer coordinates; (s, t) strays from
+  // [0, 1] by rounding only (max after min: NaN gives -1).
+  const float x =
+      std::max(-1.f, std::min(st.x * float(width) - 0.5f, float(width)));
+  const float y =
+      std::max(-1.f, std::min(st.y * float(height) - 0.5f, float(height)));
+  // Truncating a positive number floors it (no floor instruction in
+  // baseline x86-64).
+  const auto i = int64_t(x + 1.f) - 1, j = int64_t(y + 1.f) - 1;
+  const float fx = x - float(i), fy = y - float(j);
+  return (texel(i, j) * (1.f - fx) + texel(i + 1, j) * fx) * (1.f - fy)
+         + (texel(i, j + 1) * (1.f - fx) + texel(i + 1, j + 1) * fx) * fy;
+}
+
+float3 HdriImage::texelAverage(int64_t i, int64_t j) const
+{
+  // Over the texel, the filter weighs it 3/4 and each neighbour along an
+  // axis 1/8 (a quarter of each half of the texel), per axis.
+  constexpr float kWeights[3] = {0.125f, 0.75f, 0.125f};
+  float3 sum{0.f, 0.f, 0.f};
+  for (int b = 0; b < 3; b++)
+    for (int a = 0; a < 3; a++)
+      sum = sum + texel(i + a - 1, j + b - 1) * (kWeights[a] * kWeights[b]);
+  return sum;
+}
+
+namespace {
+
+// Filtered luminance at texel (i, j)'s corners, edge midpoints and centre:
+// grid[b][a] at (a / 2, b / 2) in the texel. Between texel centres the
+// filter is linear, so a corner is the mean of the four texels around it
+// and an edge's midpoint the mean of the two on either side.
+void luminanceGrid(
+    const HdriImage &image, int64_t i, int64_t j, float grid[3][3])
+{
+  float l[3][3]; // the texel and its eight neighbours
+  for (int b = 0; b < 3; b++)
+    for (int a = 0; a < 3; a++)
+      l[b][a] = luminance(image.texel(i + a - 1, j + b - 1));
+  // Along each axis: 0 the texel's edge before it, 1 its centre, 2 after.
+  constexpr int kFirst[3] = {0, 1, 1}, kLast[3] = {1, 1, 2};
+  for (int b = 0; b < 3; b++) {
+    for (int a = 0; a < 3; a++) {
+      grid[b][a] = 0.25f
+                   * (l[kFirst[b]][kFirst[a]] + l[kFirst[b]][kLast[a]]
+                       + l[kLast[b]][kFirst[a]] + l[kLast[b]][kLast[a]]);
+    }
+  }
+}
+
+// x in [0, 1] with density in proportion to (1 - x) a + x b (a, b >= 0).
+float sampleLinear(float u, float a, float b)
+{
+  if (!(std::abs(a - b) > 1e-6f * (a + b)))
+    return u;
+  const float x =
+      (a - std::sqrt(std::max(0.f, (1.f - u) * a * a + u * b * b))) / (a - b);
+  return std::clamp(x, 0.f, 1.f);
+}
+
+} // namespace
+
+float2 HdriImage::sampleInTexel(int64_t i, int64_t j, float2 u) const
+{
+  float grid[3][3];
+  luminanceGrid(*this, i, j, grid);
+  // Each quarter of the texel lies in one bilinear patch: choose one by
+  // its average, then a point in it by the patch's density.
+  float quarter[4], total = 0.f;
+  for (int q = 0; q < 4; q++) {
+    const int a = q & 1, b = q >> 1;
+    quarter[q] =
+        grid[b][a] + grid[b][a + 1] + grid[b + 1][a] + grid[b + 1][a + 1];
+    total += quarter[q];
+  }
+  if (!(total > 0.f))
+    return u;
+  float target = u.x * total;
+  int q = 0;
+  while (q < 3 && (target >= quarter[q] || !(quarter[q] > 0.f))) {
+    target -= quarter[q];
+    q++;
+  }
+  const float ux = std::clamp(target / quarter[q], 0.f, kOneMinusEpsilon);
+  const int a = q & 1, b = q >> 1;
+  const float c00 = grid[b][a], c10 = grid[b][a + 1];
+  const float c01 = grid[b + 1][a], c11 = grid[b + 1][a + 1];
+  const float x = sampleLinear(ux, c00 + c01, c10 + c11);
+  const float y =
+      sampleLinear(u.y, c00 + (c10 - c00) * x, c01 + (c11 - c01) * x);
+  return {(float(i) + 0.5f * (float(a) + x)) / float(width),
+      (float(j) + 0.5f * (float(b) + y)) / float(height)};
+}
+
+float HdriImage::density(const float2 &st, const float3 &radiance) const
+{
+  if (!(meanWeight > 0.0))
+    return 1.f; // a black image: sampled uniformly
+  const float y = st.y * float(height);
+  const size_t j = y > 0.f ? std::min(size_t(y), height - 1) : 0;
+  return float(double(luminance(radiance)) * texelSolidAngle[j] / meanWeight);
+}
 
 Hdri::Hdri(DeviceState &device) : Light(device, "hdri") {}
 
@@ -151,27 +278,36 @@ void Hdri::finalize()
         array->elementType(), array->begin(), count, 0, image->texels.data());
 
     size_t unusable = 0;
+    for (float3 &texel : image->texels) {
+      for (int c = 0; c < 3; c++) {
+        if (!(std::isfinite(texel[c]) && texel[c] >= 0.f)) {
+          texel[c] = 0.f;
+          unusable++;
+        }
+      }
+      texel = texel * m_scale;
+    }
     std::vector<float> weights(count);
+    image->texelSolidAngle.resize(image->height);
+    double weightSum = 0.0;
     double3 weightedSum{0.0, 0.0, 0.0};
     for (size_t j = 0; j < image->height; j++) {
       // Row j spans theta in [j, j + 1] * pi / height; its texels' solid
       // angle is 2 pi / width * (cos(top) - cos(bottom)).
       const double top = kPiDouble * double(j) / double(image->height);
       const double bottom = kPiDouble * double(j + 1) / double(image->height);
-      const double texelSolidAngle = 2.0 * kPiDouble / double(image->width)
-                                     * (std::cos(top) - std::cos(bottom));
+      const float texelSolidAngle = float(2.0 * kPiDouble / double(image->width)
+                                          * (std::cos(top) - std::cos(bottom)));
+      image->texelSolidAngle[j] = texelSolidAngle;
       for (size_t i = 0; i < image->width; i++) {
-        float3 &texel = image->texels[i + j * image->width];
-        for (int c = 0; c < 3; c++) {
-          if (!(std::isfinite(texel[c]) && texel[c] >= 0.f)) {
-            texel[c] = 0.f;
-            unusable++;
-          }
-        }
-        texel = texel * m_scale;
-        weights[i + j * image->width] =
-            float(luminance(texel) * texelSolidAngle);
-        weightedSum = weightedSum + vecCast<double>(texel) * texelSolidAngle;
+        const float3 average = image->texelAverage(int64_t(i), int64_t(j));
+        float &weight = weights[i + j * image->width];
+        weight = luminance(average) * texelSolidAngle;
+        if (!std::isfinite(weight))
+          weight = 0.f; // as the distribution would count it
+        weightSum += weight;
+        weightedSum =
+            weightedSum + vecCast<double>(average) * double(texelSolidAngle);
       }
     }
     if (unusable) {
@@ -182,6 +318,7 @@ void Hdri::finalize()
     }
     image->distribution =
         Distribution2D(weights.data(), image->width, image->height);
+    image->meanWeight = weightSum / double(count);
     image->averageRadiance = vecCast<float>(weightedSum / (4.0 * kPiDouble));
     m_image = std::move(image);
   } catch (const std::exception &) {

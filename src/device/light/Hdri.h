@@ -2,14 +2,20 @@
 // (W/sr/m^2) around the scene at infinity. Column s of the image runs
 // around `up` with the image's center column towards `direction` and s
 // increasing to the right of a viewer looking that way; row t runs from
-// `up` (first row) to -up (last row). Importance sampled by a
-// piecewise-constant density over the texels, proportional to luminance
-// times solid angle; radiance is looked up nearest-texel, so the density
-// and the radiance a renderer sees agree texel by texel.
+// `up` (first row) to -up (last row). Radiance is filtered bilinearly
+// between texel centres (wrapping around `up`, held at the poles), so a
+// small image seen behind the scene is smooth, not blocky. Importance
+// sampling picks a texel in proportion to the filtered luminance's average
+// over it times its solid angle, then a point in it in proportion to the
+// filtered luminance itself (a quarter of the texel, then the bilinear
+// patch that quarter lies in): the density follows the radiance within a
+// texel too, so a sun of a few texels is sampled as sharply as it is lit.
 #pragma once
 
 #include "Distribution2D.h"
 #include "Light.h"
+
+#include <cstdint>
 
 namespace prism::light {
 
@@ -18,8 +24,25 @@ struct HdriImage
 {
   std::vector<float3> texels; // (i, j) at i + j * width, scale applied
   size_t width{0}, height{0};
-  Distribution2D distribution;
+  Distribution2D distribution;        // of luminance x solid angle per texel
+  std::vector<float> texelSolidAngle; // per row
+  double meanWeight{0.0};             // of the distribution's; 0: it is uniform
   float3 averageRadiance{0.f, 0.f, 0.f}; // over the sphere of directions
+
+  // Texel (i, j), i wrapping around and j held to the image.
+  const float3 &texel(int64_t i, int64_t j) const;
+  // The bilinear filter at image coordinates `st` in [0, 1]^2.
+  float3 filtered(const float2 &st) const;
+  // The filtered image's average over texel (i, j).
+  float3 texelAverage(int64_t i, int64_t j) const;
+  // A point of [0, 1)^2 in texel (i, j) for a uniform `u`, with density in
+  // proportion to the filtered luminance (uniform where it is all 0).
+  float2 sampleInTexel(int64_t i, int64_t j, float2 u) const;
+  // The density over [0, 1)^2 of the points the distribution and
+  // sampleInTexel choose, at `st` where the filtered radiance is
+  // `radiance`: the texel's probability times the density in it is the
+  // filtered luminance times the texel's solid angle over the mean weight.
+  float density(const float2 &st, const float3 &radiance) const;
 };
 
 class Hdri : public Light

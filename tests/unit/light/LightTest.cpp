@@ -20,6 +20,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -73,6 +74,36 @@ double irradiance(const PlacedLight &light,
     }
   }
   return sum / (double(n) * n);
+}
+
+// Irradiance on a plane facing `normal` from an environment light,
+// integrated over `sub` x `sub` cells of each of its width x height
+// texels through the hdri's documented mapping (theta = pi t from `up`,
+// phi = 2 pi (s - 0.5) from `forward` towards the right).
+double integratedIrradiance(const PlacedLight &light,
+    float3 up,
+    float3 forward,
+    float3 normal,
+    uint64_t width,
+    uint64_t height,
+    int sub = 8)
+{
+  const float3 right = cross(forward, up);
+  const uint64_t columns = width * sub, rows = height * sub;
+  double sum = 0.0;
+  for (uint64_t b = 0; b < rows; b++) {
+    const float theta = float(kPiD * (b + 0.5) / rows);
+    for (uint64_t a = 0; a < columns; a++) {
+      const float phi = float(2.0 * kPiD * ((a + 0.5) / columns - 0.5));
+      const float3 w = normalize(
+          (forward * std::cos(phi) + right * std::sin(phi)) * std::sin(theta)
+          + up * std::cos(theta));
+      float distance, pdf;
+      sum += light.radianceAlong({0, 0, 0}, w, distance, pdf).x
+             * std::max(0.f, dot(w, normal)) * std::sin(theta);
+    }
+  }
+  return sum * 2.0 * kPiD * kPiD / (double(columns) * rows);
 }
 
 // Integral of radianceAlong()'s pdf over the cone around the unit `axis`
@@ -216,6 +247,20 @@ class LightTest : public ::testing::Test
     object.snapshotForCommit();
     object.applyCommit();
     object.finalize();
+  }
+  // `texels` (width x height) as an hdri's radiance, up +z, its center
+  // towards +y.
+  void commitHdri(light::Hdri &light,
+      const std::vector<float3> &texels,
+      uint64_t width,
+      uint64_t height)
+  {
+    setArray(light,
+        "radiance",
+        array(ANARI_FLOAT32_VEC3, texels.data(), width, height));
+    setVec3(light, "up", {0, 0, 1});
+    setVec3(light, "direction", {0, 1, 0});
+    commit(light);
   }
   // A managed array holding a copy of `values`.
   Array *array(
@@ -1025,67 +1070,91 @@ TEST_F(LightTest, HdriPdfMatchesRadianceAlongAndIntegratesToOne)
   EXPECT_GT(checked, 4000);
   EXPECT_NEAR(pdfIntegral(*placed, {0, 0, 0}, {0, 0, 1}, 2.f, 2000), 1.0, 5e-3);
 
-  // Importance sampling still integrates the environment: irradiance on a
-  // plane against a sum over sub-cells of every texel, through the
-  // documented mapping (theta = pi t from up, phi = 2 pi (s - 0.5) from
-  // direction towards the right).
+  // Importance sampling still integrates the environment.
   const float3 up = transformDirection(turn, {0, 1, 0});
   const float3 forward = transformDirection(turn, {0, 0, -1});
-  const float3 right = cross(forward, up);
   const float3 normal = normalize(float3{0.2f, 1, 0.4f});
-  const int sub = 8;
-  const uint64_t columns = width * sub, rows = height * sub;
-  double expected = 0.0;
-  for (uint64_t b = 0; b < rows; b++) {
-    const double t = (b + 0.5) / rows;
-    const float theta = float(kPiD * t);
-    for (uint64_t a = 0; a < columns; a++) {
-      const float phi = float(2.0 * kPiD * ((a + 0.5) / columns - 0.5));
-      const float3 w = normalize(
-          (forward * std::cos(phi) + right * std::sin(phi)) * std::sin(theta)
-          + up * std::cos(theta));
-      float distance, pdf;
-      expected += placed->radianceAlong({0, 0, 0}, w, distance, pdf).x
-                  * std::max(0.f, dot(w, normal)) * std::sin(theta);
-    }
-  }
-  expected *= 2.0 * kPiD * kPiD / (double(columns) * rows);
+  const double expected =
+      integratedIrradiance(*placed, up, forward, normal, width, height);
   EXPECT_NEAR(
       irradiance(*placed, {0, 0, 0}, normal), expected, 1e-2 * expected);
+}
+
+// One bright texel in a black image: the filter spreads it over its
+// neighbours, where the texel itself is black; sampling finds that light
+// too (a density built from the texels alone would have none there and
+// fall short by about a quarter).
+TEST_F(LightTest, HdriSamplesTheLightItsFilterSpreads)
+{
+  const uint64_t width = 16, height = 8;
+  std::vector<float3> texels(width * height, float3{0, 0, 0});
+  texels[5 + 3 * width] = {100, 100, 100};
+  light::Hdri light(m_device);
+  commitHdri(light, texels, width, height);
+  const auto placed = place(light);
+  int checked = 0;
+  EXPECT_EQ(inconsistentSamples(*placed, {0, 0, 0}, checked), 0);
+  for (const float3 normal :
+      {float3{0, 0, 1}, normalize(float3{-1, 0.3f, 0.2f})}) {
+    const double expected = integratedIrradiance(
+        *placed, {0, 0, 1}, {0, 1, 0}, normal, width, height, 32);
+    EXPECT_GT(expected, 0.0);
+    EXPECT_NEAR(
+        irradiance(*placed, {0, 0, 0}, normal), expected, 1e-2 * expected);
+  }
 }
 
 TEST_F(LightTest, HdriMapsTheImageCenterToDirectionAndRowZeroToUp)
 {
   const uint64_t width = 8, height = 4;
   std::vector<float3> texels(width * height, float3{0, 0, 0});
-  texels[4 + 2 * width] = {7, 7, 7}; // holds the image center (0.5, 0.5)
+  texels[4 + 2 * width] = {7, 7, 7}; // just right of and below the center
   for (uint64_t i = 0; i < width; i++)
     texels[i] = {1, 1, 1};           // row 0
-  texels[6 + 2 * width] = {3, 3, 3}; // s = 0.8: right of the center
+  texels[6 + 2 * width] = {3, 3, 3}; // s = 0.8125: right of the center
+  texels[0 + 1 * width] = {8, 8, 8}; // the first and last columns meet
   light::Hdri light(m_device);
-  setArray(light,
-      "radiance",
-      array(ANARI_FLOAT32_VEC3, texels.data(), width, height));
-  setVec3(light, "up", {0, 0, 1});
-  setVec3(light, "direction", {0, 1, 0});
-  commit(light);
+  commitHdri(light, texels, width, height);
   float distance, pdf;
+  // Image coordinates (s, t) as a direction: theta = pi t from up (+z),
+  // phi = 2 pi (s - 0.5) from direction (+y) towards the right, which for
+  // a viewer looking along +y with +z up is +x.
+  auto towards = [](float s, float t) {
+    const float theta = kPi * t, phi = 2.f * kPi * (s - 0.5f);
+    return float3{std::sin(phi) * std::sin(theta),
+        std::cos(phi) * std::sin(theta),
+        std::cos(theta)};
+  };
   auto radiance = [&](const PlacedLight &placed, float3 w) {
-    return placed.radianceAlong({0, 0, 0}, normalize(w), distance, pdf).x;
+    return placed.radianceAlong({0, 0, 0}, w, distance, pdf).x;
+  };
+  // Texel (i, j)'s centre is at ((i + 0.5) / width, (j + 0.5) / height).
+  auto centre = [&](uint64_t i, uint64_t j) {
+    return towards((i + 0.5f) / width, (j + 0.5f) / height);
   };
   const auto placed = place(light);
-  // Just below the equator so the direction is inside row 2's texels.
-  EXPECT_EQ(radiance(*placed, {0.01f, 1, -0.05f}), 7.f);
+  // At a texel's centre the filter gives the texel itself.
+  EXPECT_NEAR(radiance(*placed, centre(4, 2)), 7.f, 1e-4f);
   EXPECT_TRUE(std::isinf(distance));
-  EXPECT_EQ(radiance(*placed, {0, 0.1f, 1}), 1.f);
-  // A viewer looking along +y with +z up has +x on the right (phi = 0.6 pi
-  // for s = 0.8).
-  const float phi = 0.6f * kPi;
-  EXPECT_EQ(radiance(*placed, {std::sin(phi), std::cos(phi), -0.05f}), 3.f);
+  EXPECT_NEAR(radiance(*placed, centre(6, 2)), 3.f, 1e-4f);
+  EXPECT_NEAR(radiance(*placed, centre(2, 0)), 1.f, 1e-4f);
+  EXPECT_NEAR(radiance(*placed, centre(1, 2)), 0.f, 1e-4f);
+  // Halfway between centres, the mean of the two (bilinear); around `up`
+  // the image wraps: column 0 meets column 7.
+  EXPECT_NEAR(
+      radiance(*placed, towards(4.5f / width, 2.f / height)), 3.5f, 1e-4f);
+  EXPECT_NEAR(radiance(*placed, towards(0.f, 1.5f / height)), 4.f, 1e-4f);
+  EXPECT_NEAR(radiance(*placed, towards(1.f, 1.5f / height)), 4.f, 1e-4f);
+  // Above row 0's centres the first row holds.
+  EXPECT_NEAR(radiance(*placed, towards(0.3f, 0.05f / height)), 1.f, 1e-4f);
+  // A NaN direction (a degenerate ray) reads some texel, finitely.
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_TRUE(std::isfinite(radiance(*placed, {nan, 0, 1})));
   // An instance rotating a quarter turn about z carries all of it along.
   const auto turned = place(light, rotation({0, 0, 1}, 0.5f * kPi));
-  EXPECT_EQ(radiance(*turned, {-1, 0.01f, -0.05f}), 7.f);
-  EXPECT_EQ(radiance(*turned, {1, -0.01f, -0.05f}), 0.f);
+  const float3 c = centre(4, 2);
+  EXPECT_NEAR(radiance(*turned, {-c.y, c.x, c.z}), 7.f, 1e-4f);
+  EXPECT_NEAR(radiance(*turned, {c.y, -c.x, c.z}), 0.f, 1e-4f);
 }
 
 // ---------------------------------------------------------------------------
