@@ -478,7 +478,6 @@ void Scene::addInstance(
   // address while it is placed. Moving instances leave it NULL.
   rtcSetGeometryUserData(g, child.m_scene);
   attach(g, id);
-  m_rayRange = std::min(m_rayRange, worldRayRange(inverse(worldFromObject)));
 }
 
 bool Scene::placesInstance(uint32_t id, const Scene &child) const
@@ -498,12 +497,6 @@ bool Scene::moveInstance(
   rtcGetGeometryTransform(g, 0.f, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, &current);
   if (std::memcmp(&current, &worldFromObject, sizeof(mat3x4)) == 0)
     return true; // not moved
-  // rayRange() is the smallest over all placements: a move that would
-  // lower it needs a rebuild; one that raises the moved instance's own
-  // leaves it where it was (at worst smaller than needed, never beyond
-  // what Embree can trace).
-  if (worldRayRange(inverse(worldFromObject)) < m_rayRange)
-    return false;
   rtcSetGeometryTransform(
       g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, &worldFromObject);
   rtcCommitGeometry(g);

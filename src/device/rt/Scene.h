@@ -7,8 +7,10 @@
 #include "Context.h"
 #include "Hit.h"
 #include "RayHitPacket.h"
+#include "RayValidity.h"
 #include "UserGeometry.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -87,6 +89,8 @@ class Scene
   // only; user geometry stays two-sided.
   void cullBackFaces(uint32_t id);
   // `child` placed by `worldFromObject`; `child` must be committed first.
+  // The caller keeps rayRange() within the placement's worldRayRange()
+  // (limitRayRange), which it knows from the inverse it has checked.
   void addInstance(
       uint32_t id, const Scene &child, const mat3x4 &worldFromObject);
   // `child` moving over the shutter (motion blur over Embree time steps).
@@ -98,7 +102,8 @@ class Scene
   // then rebuilds only this scene's BVH (true and nothing done when it is
   // there already). False, changing nothing, when
   // `id` is not such an instance of `child` as built now (the child was
-  // rebuilt since) or the move would lower rayRange().
+  // rebuilt since). As for addInstance, rayRange() must already lie within
+  // the new placement's range.
   bool moveInstance(
       uint32_t id, const Scene &child, const mat3x4 &worldFromObject);
   // Whether geometry `id` is a fixed-transform instance of `child` as
@@ -114,6 +119,11 @@ class Scene
   float rayRange() const
   {
     return m_rayRange;
+  }
+  // Lowers rayRange() to `range` if that is smaller.
+  void limitRayRange(float range)
+  {
+    m_rayRange = std::min(m_rayRange, range);
   }
 
   // The closest hit along the ray in (tMin, tMax) at `time` (in the

@@ -47,11 +47,11 @@ EmitterShape placedEmitterShape(
 // must lie within the range that Embree, moving rays into the group's space,
 // can trace there (rt::worldRayRange()). Transforms with huge or tiny
 // (but finite) entries fail this; rays would overflow inside Embree.
-bool isTraceablePlacement(const box3 &bounds,
-    const mat3x4 &worldFromObject,
-    const mat3x4 &objectFromWorld)
+// Whether `bounds` placed by `worldFromObject` lies within `range`, the
+// placement's rt::worldRayRange().
+bool isTraceablePlacement(
+    const box3 &bounds, const mat3x4 &worldFromObject, float range)
 {
-  const float range = rt::worldRayRange(objectFromWorld);
   if (!(range > 0.f))
     return false;
   for (int corner = 0; corner < 8; corner++) {
@@ -158,6 +158,7 @@ void World::finalize()
   m_declaredLightCount = m_placedLights.size();
   std::vector<Placement> previous;
   previous.swap(m_placements);
+  m_placementRayRange = rt::kLargestCoordinate;
   auto place = [&](const Group *group,
                    const Instance *instance,
                    uint32_t index) {
@@ -180,7 +181,8 @@ void World::finalize()
           "skipped");
       return;
     }
-    if (!isTraceablePlacement(group->bounds(), transform, objectFromWorld)) {
+    const float range = rt::worldRayRange(objectFromWorld);
+    if (!isTraceablePlacement(group->bounds(), transform, range)) {
       placer.report(ANARI_SEVERITY_WARNING,
           ANARI_STATUS_INVALID_ARGUMENT,
           "a transform moves its group (or rays into it) beyond the range "
@@ -189,6 +191,7 @@ void World::finalize()
           double(rt::kLargestCoordinate));
       return;
     }
+    m_placementRayRange = std::min(m_placementRayRange, range);
     if (!instance) {
       m_placements.emplace_back(group);
       return;
@@ -227,6 +230,11 @@ bool World::moveInstancesInPlace(const std::vector<Placement> &previous)
   // shutter: only transforms changed. (Ids are read at hits.)
   if (previous.size() != m_placements.size() || m_placements.empty())
     return false;
+  // The scene's ray range is the smallest over its placements: a move
+  // that would lower it needs a rebuild; one that raises it leaves it
+  // (at worst smaller than needed, never beyond what Embree can trace).
+  if (m_placementRayRange < m_scene->rayRange())
+    return false;
   for (size_t i = 0; i < m_placements.size(); i++) {
     if (!m_placements[i].samePlacer(previous[i]) || m_placements[i].motion())
       return false;
@@ -246,6 +254,7 @@ bool World::moveInstancesInPlace(const std::vector<Placement> &previous)
 void World::rebuildScene()
 {
   m_scene->clear();
+  m_scene->limitRayRange(m_placementRayRange);
   for (size_t i = 0; i < m_placements.size(); i++) {
     const Placement &p = m_placements[i];
     if (const MotionTransform *keys = p.motion())

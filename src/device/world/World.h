@@ -277,6 +277,8 @@ class World : public Object
   Group *m_implicitGroup; // an internal object, never seen by the API
   std::vector<Object *> m_lights;
   std::vector<Placement> m_placements;
+  // The smallest rt::worldRayRange() over the placements.
+  float m_placementRayRange{rt::kLargestCoordinate};
   std::vector<std::unique_ptr<PlacedLight>> m_placedLights;
   LightSelector m_lightSelector;
   // Per placement, per geometry id: see emitterLight(). Empty in a world
