@@ -144,4 +144,40 @@ TEST_F(WorldEdits, AnInstanceThatStopsMovingDrawsWhatAFreshWorldDraws)
   EXPECT_LT(after.at(8, 8).r, 0.05f);
 }
 
+// A move that flattens an instance to 1e-17 of its width lowers the range
+// rays are traced in (its inverse scales x by 1e17) to 18, short of a
+// camera 50 away. The world must draw what a fresh world draws (nothing: the
+// rays start beyond the range), not trace the old range through the new
+// transform; moved back, the range rises again and the squares return.
+TEST_F(WorldEdits, AMoveThatShrinksTheRayRangeDrawsWhatAFreshWorldDraws)
+{
+  ANARIGroup group = square(0.5f);
+  ANARIInstance shrinking = placed(group, {-1.2f, -1.2f, 0});
+  ANARIWorld world = newWorld({}, {shrinking, placed(group, {0.2f, 0.2f, 0})});
+  draw(world); // the renderer
+  ANARICamera far =
+      newOrthographicCamera({0, 0, 50}, {0, 0, -1}, {0, 1, 0}, 3.f, 1.f);
+  auto drawFromFar = [&](ANARIWorld w) {
+    return render(w, far, m_renderer, 48, 48);
+  };
+  const prism::image::Image before = drawFromFar(world);
+  EXPECT_GT(before.at(31, 31).r, 0.1f);
+
+  const Mat4 flat = scaling({1e-17f, 1, 1});
+  setMat4(shrinking, "transform", flat);
+  anariCommitParameters(device(), shrinking);
+  ANARIInstance fresh = newInstance(group);
+  setMat4(fresh, "transform", flat);
+  anariCommitParameters(device(), fresh);
+  const prism::image::Image freshImage =
+      drawFromFar(newWorld({}, {fresh, placed(group, {0.2f, 0.2f, 0})}));
+  EXPECT_LT(freshImage.at(31, 31).r, 0.05f); // beyond the range
+  expectSameImage(
+      drawFromFar(world), freshImage, "shrunk in place vs built afresh");
+
+  setMat4(shrinking, "transform", translation({-1.2f, -1.2f, 0}));
+  anariCommitParameters(device(), shrinking);
+  expectSameImage(drawFromFar(world), before, "moved back vs before");
+}
+
 } // namespace

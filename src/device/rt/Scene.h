@@ -90,7 +90,7 @@ class Scene
   void cullBackFaces(uint32_t id);
   // `child` placed by `worldFromObject`; `child` must be committed first.
   // The caller keeps rayRange() within the placement's worldRayRange()
-  // (limitRayRange), which it knows from the inverse it has checked.
+  // (setRayRange), which it knows from the inverse it has checked.
   void addInstance(
       uint32_t id, const Scene &child, const mat3x4 &worldFromObject);
   // `child` moving over the shutter (motion blur over Embree time steps).
@@ -102,8 +102,8 @@ class Scene
   // then rebuilds only this scene's BVH (true and nothing done when it is
   // there already). False, changing nothing, when
   // `id` is not such an instance of `child` as built now (the child was
-  // rebuilt since). As for addInstance, rayRange() must already lie within
-  // the new placement's range.
+  // rebuilt since). As for addInstance, the caller sets rayRange() for the
+  // placements as they are after the move.
   bool moveInstance(
       uint32_t id, const Scene &child, const mat3x4 &worldFromObject);
   // Whether geometry `id` is a fixed-transform instance of `child` as
@@ -120,10 +120,12 @@ class Scene
   {
     return m_rayRange;
   }
-  // Lowers rayRange() to `range` if that is smaller.
-  void limitRayRange(float range)
+  // A ray range for the placements: the smallest of their
+  // worldRayRange()s. Rays only: the BVH does not depend on it. (Moving
+  // instances added since lower it further.)
+  void setRayRange(float range)
   {
-    m_rayRange = std::min(m_rayRange, range);
+    m_rayRange = std::min(range, kLargestCoordinate);
   }
 
   // The closest hit along the ray in (tMin, tMax) at `time` (in the

@@ -230,11 +230,9 @@ bool World::moveInstancesInPlace(const std::vector<Placement> &previous)
   // shutter: only transforms changed. (Ids are read at hits.)
   if (previous.size() != m_placements.size() || m_placements.empty())
     return false;
-  // The scene's ray range is the smallest over its placements: a move
-  // that would lower it needs a rebuild; one that raises it leaves it
-  // (at worst smaller than needed, never beyond what Embree can trace).
-  if (m_placementRayRange < m_scene->rayRange())
-    return false;
+  // The rays' range follows the placements as they are now, lower or
+  // higher (it bounds rays, not the BVH).
+  m_scene->setRayRange(m_placementRayRange);
   for (size_t i = 0; i < m_placements.size(); i++) {
     if (!m_placements[i].samePlacer(previous[i]) || m_placements[i].motion())
       return false;
@@ -254,7 +252,7 @@ bool World::moveInstancesInPlace(const std::vector<Placement> &previous)
 void World::rebuildScene()
 {
   m_scene->clear();
-  m_scene->limitRayRange(m_placementRayRange);
+  m_scene->setRayRange(m_placementRayRange);
   for (size_t i = 0; i < m_placements.size(); i++) {
     const Placement &p = m_placements[i];
     if (const MotionTransform *keys = p.motion())
