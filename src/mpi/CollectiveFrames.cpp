@@ -242,8 +242,8 @@ void DataParallelDevice::renderReplicated(
       &active,
       sizeof(active),
       ANARI_WAIT);
+  politeBarrier(communicator); // the sum below then waits for no one
   MPI_Allreduce(MPI_IN_PLACE, &active, 1, MPI_UINT64_T, MPI_SUM, communicator);
-  politeBarrier(communicator);
   std::map<std::string, MappedChannel> assembled;
   for (int c = 0; c < kChannelCount; c++) {
     const ANARIDataType type = renderer.channelType(handle, c);

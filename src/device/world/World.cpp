@@ -43,12 +43,11 @@ EmitterShape placedEmitterShape(
   return out;
 }
 
-// Whether rays can find a group placed by `worldFromObject`: its surfaces
-// must lie within the range that Embree, moving rays into the group's space,
-// can trace there (rt::worldRayRange()). Transforms with huge or tiny
-// (but finite) entries fail this; rays would overflow inside Embree.
-// Whether `bounds` placed by `worldFromObject` lies within `range`, the
-// placement's rt::worldRayRange().
+// Whether rays can find a group placed by `worldFromObject`: its `bounds`
+// must lie within `range`, the placement's rt::worldRayRange() (the range
+// that Embree, moving rays into the group's space, can trace there).
+// Transforms with huge or tiny (but finite) entries fail this; rays would
+// overflow inside Embree.
 bool isTraceablePlacement(
     const box3 &bounds, const mat3x4 &worldFromObject, float range)
 {
