@@ -279,13 +279,14 @@ void Hdri::finalize()
 
     size_t unusable = 0;
     for (float3 &texel : image->texels) {
+      texel = texel * m_scale;
       for (int c = 0; c < 3; c++) {
+        // Scaled first: a finite texel the scale overflows is unusable too.
         if (!(std::isfinite(texel[c]) && texel[c] >= 0.f)) {
           texel[c] = 0.f;
           unusable++;
         }
       }
-      texel = texel * m_scale;
     }
     std::vector<float> weights(count);
     image->texelSolidAngle.resize(image->height);

@@ -1261,6 +1261,19 @@ TEST_F(LightTest, HdriNegativeTexelsAreReportedAndZeroed)
       place(light)->radianceAlong({0, 0, 0}, {0, 1, 0}, distance, pdf).y, 0.f);
   EXPECT_EQ(
       place(light)->radianceAlong({0, 0, 0}, {0, 1, 0}, distance, pdf).x, 1.f);
+
+  // A finite texel the scale takes past the largest float: the same.
+  const float3 huge[2] = {{3e38f, 1, 1}, {2, 2, 2}};
+  light::Hdri scaled(m_device);
+  setArray(scaled, "radiance", array(ANARI_FLOAT32_VEC3, huge, 2, 1));
+  setFloat(scaled, "scale", 10.f);
+  commit(scaled);
+  EXPECT_TRUE(reported({"'radiance'", "non-finite"}));
+  const auto placed = place(scaled);
+  for (const float3 w : {float3{0, 1, 0}, float3{0, -1, 0}, float3{1, 0, 0}}) {
+    const float3 r = placed->radianceAlong({0, 0, 0}, w, distance, pdf);
+    EXPECT_TRUE(std::isfinite(r.x) && std::isfinite(pdf));
+  }
 }
 
 TEST_F(LightTest, QuadWithDegenerateEdgesIsInvalid)
