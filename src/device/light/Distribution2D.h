@@ -56,6 +56,11 @@ class Distribution2D
   // A point of [0,1)^2 and its density.
   float2 sample(float2 u, float &pdf) const;
   float pdf(float2 p) const;
+  // The mean weight (0: all weights were 0 and sampling is uniform).
+  double integral() const
+  {
+    return m_marginal.integral();
+  }
 
  private:
   std::vector<Distribution1D> m_rows; // conditional densities along x

@@ -221,6 +221,7 @@ float2 HdriImage::sampleInTexel(int64_t i, int64_t j, float2 u) const
 
 float HdriImage::density(const float2 &st, const float3 &radiance) const
 {
+  const double meanWeight = distribution.integral();
   if (!(meanWeight > 0.0))
     return 1.f; // a black image: sampled uniformly
   const float y = st.y * float(height);
@@ -290,7 +291,6 @@ void Hdri::finalize()
     }
     std::vector<float> weights(count);
     image->texelSolidAngle.resize(image->height);
-    double weightSum = 0.0;
     double3 weightedSum{0.0, 0.0, 0.0};
     for (size_t j = 0; j < image->height; j++) {
       // Row j spans theta in [j, j + 1] * pi / height; its texels' solid
@@ -302,11 +302,7 @@ void Hdri::finalize()
       image->texelSolidAngle[j] = texelSolidAngle;
       for (size_t i = 0; i < image->width; i++) {
         const float3 average = image->texelAverage(int64_t(i), int64_t(j));
-        float &weight = weights[i + j * image->width];
-        weight = luminance(average) * texelSolidAngle;
-        if (!std::isfinite(weight))
-          weight = 0.f; // as the distribution would count it
-        weightSum += weight;
+        weights[i + j * image->width] = luminance(average) * texelSolidAngle;
         weightedSum =
             weightedSum + vecCast<double>(average) * double(texelSolidAngle);
       }
@@ -319,7 +315,6 @@ void Hdri::finalize()
     }
     image->distribution =
         Distribution2D(weights.data(), image->width, image->height);
-    image->meanWeight = weightSum / double(count);
     image->averageRadiance = vecCast<float>(weightedSum / (4.0 * kPiDouble));
     m_image = std::move(image);
   } catch (const std::exception &) {

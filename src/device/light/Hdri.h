@@ -24,9 +24,8 @@ struct HdriImage
 {
   std::vector<float3> texels; // (i, j) at i + j * width, scale applied
   size_t width{0}, height{0};
-  Distribution2D distribution;        // of luminance x solid angle per texel
-  std::vector<float> texelSolidAngle; // per row
-  double meanWeight{0.0};             // of the distribution's; 0: it is uniform
+  Distribution2D distribution;           // of luminance x solid angle per texel
+  std::vector<float> texelSolidAngle;    // per row
   float3 averageRadiance{0.f, 0.f, 0.f}; // over the sphere of directions
 
   // Texel (i, j), i wrapping around and j held to the image.
