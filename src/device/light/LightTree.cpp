@@ -88,7 +88,7 @@ uint32_t splitAtMedian(std::vector<uint32_t> &order,
 
 struct LightTree::Bounds
 {
-  float3 lower, upper;
+  float3 lower{0.f, 0.f, 0.f}, upper{0.f, 0.f, 0.f};
   Cone cone{{0.f, 0.f, 1.f}, 0.f};
   float power{0.f};
 

@@ -609,10 +609,16 @@ PathTracer::Scattering PathTracer::scatteringAt(
     }
     bsdf = &storage.emplace(inputs);
   }
+  const float3 ng = surface.geometricNormal;
+  const float3 receiver =
+      bsdf->hasTransmission() || bsdf->isVolumeBoundary()
+          ? float3{0.f, 0.f, 0.f}
+          : (dot(b.ray.direction, ng) < 0.f ? ng : ng * -1.f);
   return Scattering{frame,
       *bsdf,
       frame.toLocal(towardsViewer),
-      1e-4f * std::max(1.f, b.hit.t)};
+      1e-4f * std::max(1.f, b.hit.t),
+      receiver};
 }
 
 void PathTracer::nextEvent(const RenderContext &context,
@@ -634,7 +640,7 @@ void PathTracer::nextEvent(const RenderContext &context,
   const PlacedLight &light = *context.world->lights()[selector.pick(
       decisions.lightPick(b.rayIndex), pickProbability)];
   const LightSample ls = light.sampleFacing(b.surface.position,
-      receiverNormal(b, bsdf),
+      scattering.receiverNormal,
       decisions.lightPoint(b.rayIndex));
   if (!(ls.pdf > 0.f) || !(maxComponent(ls.radiance) > 0.f))
     return;
@@ -662,14 +668,6 @@ void PathTracer::nextEvent(const RenderContext &context,
       path.throughput * f * ls.radiance * (std::abs(wi.z) * weight / pdf));
 }
 
-float3 PathTracer::receiverNormal(const Bounce &b, const Bsdf &bsdf)
-{
-  if (bsdf.hasTransmission() || bsdf.isVolumeBoundary())
-    return float3{0.f, 0.f, 0.f};
-  const float3 ng = b.surface.geometricNormal;
-  return dot(b.ray.direction, ng) < 0.f ? ng : ng * -1.f;
-}
-
 void PathTracer::scatter(Bounce &b,
     const Scattering &scattering,
     const BounceDecisions &decisions,
@@ -686,7 +684,7 @@ void PathTracer::scatter(Bounce &b,
     return;
   path.throughput = path.throughput * bs.weight;
   path.previousPdf = bs.pdf;
-  path.previousNormal = receiverNormal(b, bsdf);
+  path.previousNormal = scattering.receiverNormal;
   path.previousDelta = bs.isDelta();
   path.ambientVisibility = b.shading->occlusion;
   const float3 normal = scattering.frame.z;

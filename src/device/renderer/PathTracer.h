@@ -117,13 +117,17 @@ class PathTracer : public Renderer
   };
   // Where the BSDF sits: its frame (normal maps applied), the BSDF (the
   // material's constant one, or the hit's in the caller's storage), the
-  // direction towards the viewer and how far new rays start off.
+  // direction towards the viewer, how far new rays start off and the side
+  // the surface receives light on, for light sampling: the geometric
+  // normal turned towards the viewer, or zero where light passes through
+  // (transmission, a volume's boundary).
   struct Scattering
   {
     LocalFrame frame;
     const Bsdf &bsdf;
     float3 wo;
     float offset;
+    float3 receiverNormal;
   };
   // Stages: what the ray hit and the material there; a collision in a
   // volume before it; light reached along
@@ -157,10 +161,6 @@ class PathTracer : public Renderer
       const Scattering &scattering,
       const BounceDecisions &decisions,
       rt::RayQueue &next) const;
-  // The side a surface receives light on, for light sampling: the
-  // geometric normal turned towards the viewer, or zero where light passes
-  // through (transmission, a volume's boundary).
-  static float3 receiverNormal(const Bounce &b, const Bsdf &bsdf);
   // `u`: the bounce's roulette decision.
   bool survivesRoulette(PathState &path, float u) const;
   // Radiance arriving along a ray from lights it reaches within (tMin,
