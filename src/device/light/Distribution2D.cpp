@@ -61,6 +61,27 @@ float Distribution1D::pdf(float x) const
   return float(m_weights[binOf(x)] / m_integral);
 }
 
+size_t Distribution1D::sampleBetween(float &u, size_t begin, size_t end) const
+{
+  const double low = m_cdf[begin], high = m_cdf[end];
+  if (!(high > low)) {
+    const float scaled = u * float(end - begin);
+    const size_t bin = begin + std::min(size_t(scaled), end - begin - 1);
+    u = std::clamp(scaled - float(bin - begin), 0.f, kOneMinusEpsilon);
+    return bin;
+  }
+  const double target = low + double(u) * (high - low);
+  const auto above = std::upper_bound(m_cdf.begin() + ptrdiff_t(begin) + 1,
+      m_cdf.begin() + ptrdiff_t(end),
+      target);
+  const size_t bin = size_t(above - m_cdf.begin()) - 1;
+  const double width = m_cdf[bin + 1] - m_cdf[bin];
+  u = width > 0.0 ? std::clamp(
+          float((target - m_cdf[bin]) / width), 0.f, kOneMinusEpsilon)
+                  : 0.5f;
+  return bin;
+}
+
 Distribution2D::Distribution2D(
     const float *weights, size_t width, size_t height)
 {

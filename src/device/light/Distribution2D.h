@@ -32,6 +32,9 @@ class Distribution1D
   float sample(float u, float &pdf, size_t &bin) const;
   // The density at `x` (of bin floor(x * size)).
   float pdf(float x) const;
+  // A bin of [begin, end) chosen in proportion to the weights there (a
+  // range of zero weights: uniformly), and in `u` what is left of it.
+  size_t sampleBetween(float &u, size_t begin, size_t end) const;
 
  private:
   size_t binOf(float x) const;
@@ -60,6 +63,11 @@ class Distribution2D
   double integral() const
   {
     return m_marginal.integral();
+  }
+  // Row j's density along x.
+  const Distribution1D &row(size_t j) const
+  {
+    return m_rows[j];
   }
 
  private:

@@ -43,30 +43,35 @@ class PlacedHdri : public PlacedLight
 
   LightSample sample(const float3 &, const float2 &u) const override
   {
-    float pdfImage = 0.f;
-    const float2 cell = m_image->distribution.sample(u, pdfImage);
-    // The texel the distribution chose and where in it, uniformly, which
-    // becomes a point in proportion to the filtered radiance.
-    const float x = cell.x * float(m_image->width);
-    const float y = cell.y * float(m_image->height);
-    const float i = std::min(std::floor(x), float(m_image->width - 1));
-    const float j = std::min(std::floor(y), float(m_image->height - 1));
-    const float2 st = m_image->sampleInTexel(int64_t(i),
-        int64_t(j),
-        {std::clamp(x - i, 0.f, kOneMinusEpsilon),
-            std::clamp(y - j, 0.f, kOneMinusEpsilon)});
-    const float theta = kPi * st.y;
-    const float phi = 2.f * kPi * (st.x - 0.5f);
-    const float sinTheta = std::sin(theta);
-    LightSample s;
-    s.direction = normalize(
-        (m_forward * std::cos(phi) + m_right * std::sin(phi)) * sinTheta
-        + m_up * std::cos(theta));
-    s.distance = kInfinity;
-    // Density and radiance from the direction itself, exactly as
-    // radianceAlong() finds them, even where rounding crosses a texel edge.
-    s.radiance = lookup(s.direction, s.pdf);
-    return s;
+    return sampleImage(u, kEverySide);
+  }
+
+  LightSample sampleFacing(
+      const float3 &, const float3 &normal, const float2 &u) const override
+  {
+    const Mixture mixture = mixtureFacing(normal);
+    // The component by u.x, which is then stretched over its share: the
+    // image's own first, then the axes (the last with a share also takes
+    // what rounding leaves above the sum).
+    if (u.x < mixture[0])
+      return sampleImage({u.x / mixture[0], u.y}, mixture);
+    int last = -1;
+    for (int axis = 0; axis < HdriHemispheres::kAxes; axis++)
+      last = mixture[size_t(1 + axis)] > 0.f ? axis : last;
+    float start = mixture[0];
+    for (int axis = 0; axis <= last; axis++) {
+      const float share = mixture[size_t(1 + axis)];
+      if (!(share > 0.f) || (u.x >= start + share && axis < last)) {
+        start += share;
+        continue;
+      }
+      float2 rest{
+          std::clamp((u.x - start) / share, 0.f, kOneMinusEpsilon), u.y};
+      size_t i = 0, j = 0;
+      m_image->hemispheres.sample(m_image->distribution, axis, rest, i, j);
+      return sampleTexel(i, j, rest, mixture);
+    }
+    return sampleImage(u, kEverySide); // no axis: the image alone
   }
 
   float3 radianceAlong(const float3 &,
@@ -75,7 +80,17 @@ class PlacedHdri : public PlacedLight
       float &pdf) const override
   {
     distance = kInfinity;
-    return lookup(direction, pdf);
+    return lookup(direction, kEverySide, pdf);
+  }
+
+  float3 radianceAlongFacing(const float3 &,
+      const float3 &normal,
+      const float3 &direction,
+      float &distance,
+      float &pdf) const override
+  {
+    distance = kInfinity;
+    return lookup(direction, mixtureFacing(normal), pdf);
   }
 
   bool isInfinite() const override
@@ -89,7 +104,54 @@ class PlacedHdri : public PlacedLight
   }
 
  private:
-  float3 lookup(const float3 &direction, float &pdf) const
+  using Mixture = HdriHemispheres::Mixture;
+  static constexpr Mixture kEverySide{1.f, 0.f, 0.f, 0.f, 0.f, 0.f, 0.f};
+
+  Mixture mixtureFacing(const float3 &normal) const
+  {
+    return m_image->hemispheres.mixture(
+        {dot(normal, m_forward), dot(normal, m_right), dot(normal, m_up)});
+  }
+
+  // By the image's own distribution.
+  LightSample sampleImage(const float2 &u, const Mixture &mixture) const
+  {
+    float pdfImage = 0.f;
+    const float2 cell = m_image->distribution.sample(u, pdfImage);
+    // The texel the distribution chose and where in it, uniformly, which
+    // becomes a point in proportion to the filtered radiance.
+    const float x = cell.x * float(m_image->width);
+    const float y = cell.y * float(m_image->height);
+    const float i = std::min(std::floor(x), float(m_image->width - 1));
+    const float j = std::min(std::floor(y), float(m_image->height - 1));
+    return sampleTexel(size_t(i),
+        size_t(j),
+        {std::clamp(x - i, 0.f, kOneMinusEpsilon),
+            std::clamp(y - j, 0.f, kOneMinusEpsilon)},
+        mixture);
+  }
+
+  // A point of texel (i, j) for uniform `u`, and the mixture's density.
+  LightSample sampleTexel(
+      size_t i, size_t j, const float2 &u, const Mixture &mixture) const
+  {
+    const float2 st = m_image->sampleInTexel(int64_t(i), int64_t(j), u);
+    const float theta = kPi * st.y;
+    const float phi = 2.f * kPi * (st.x - 0.5f);
+    const float sinTheta = std::sin(theta);
+    LightSample s;
+    s.direction = normalize(
+        (m_forward * std::cos(phi) + m_right * std::sin(phi)) * sinTheta
+        + m_up * std::cos(theta));
+    s.distance = kInfinity;
+    // Density and radiance from the direction itself, exactly as
+    // radianceAlong() finds them, even where rounding crosses a texel edge.
+    s.radiance = lookup(s.direction, mixture, s.pdf);
+    return s;
+  }
+
+  float3 lookup(
+      const float3 &direction, const Mixture &mixture, float &pdf) const
   {
     const float cosTheta = clamp(dot(direction, m_up), -1.f, 1.f);
     const float sinTheta = std::sqrt(max(0.f, 1.f - cosTheta * cosTheta));
@@ -101,6 +163,11 @@ class PlacedHdri : public PlacedLight
     pdf = sinTheta > 0.f
               ? m_image->density(st, radiance) / (2.f * kPi * kPi * sinTheta)
               : 0.f;
+    if (mixture[0] < 1.f) {
+      const size_t i = st.x > 0.f ? size_t(st.x * float(m_image->width)) : 0;
+      const size_t j = st.y > 0.f ? size_t(st.y * float(m_image->height)) : 0;
+      pdf *= m_image->hemispheres.factor(mixture, i, j);
+    }
     return m_color * radiance;
   }
 
@@ -315,6 +382,7 @@ void Hdri::finalize()
     }
     image->distribution =
         Distribution2D(weights.data(), image->width, image->height);
+    image->hemispheres = HdriHemispheres(weights, image->width, image->height);
     image->averageRadiance = vecCast<float>(weightedSum / (4.0 * kPiDouble));
     m_image = std::move(image);
   } catch (const std::exception &) {

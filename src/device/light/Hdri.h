@@ -10,9 +10,11 @@
 // filtered luminance itself (a quarter of the texel, then the bilinear
 // patch that quarter lies in): the density follows the radiance within a
 // texel too, so a sun of a few texels is sampled as sharply as it is lit.
+// A receiver facing one way samples towards its side (HdriHemispheres).
 #pragma once
 
 #include "Distribution2D.h"
+#include "HdriHemispheres.h"
 #include "Light.h"
 
 #include <cstdint>
@@ -25,6 +27,7 @@ struct HdriImage
   std::vector<float3> texels; // (i, j) at i + j * width, scale applied
   size_t width{0}, height{0};
   Distribution2D distribution;           // of luminance x solid angle per texel
+  HdriHemispheres hemispheres;           // the same, towards one side
   std::vector<float> texelSolidAngle;    // per row
   float3 averageRadiance{0.f, 0.f, 0.f}; // over the sphere of directions
 

@@ -58,6 +58,17 @@ class PlacedLight
       const float3 &direction,
       float &distance,
       float &pdf) const = 0;
+  // radianceAlong() for a ray leaving a receiver facing the unit `normal`
+  // (as sampleFacing() was given): the pdf is sampleFacing()'s.
+  virtual float3 radianceAlongFacing(const float3 &point,
+      const float3 &normal,
+      const float3 &direction,
+      float &distance,
+      float &pdf) const
+  {
+    (void)normal;
+    return radianceAlong(point, direction, distance, pdf);
+  }
   // Point, spot, zero-radius ring and zero-diameter directional lights.
   virtual bool isDelta() const
   {

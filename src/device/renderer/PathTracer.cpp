@@ -333,8 +333,8 @@ float3 PathTracer::lightsAlong(const RenderContext &context,
         || !mayReach(reachable, origin, direction, tMin, hitDistance))
       continue;
     float distance = 0.f, lightPdf = 0.f;
-    const float3 radiance =
-        light.radianceAlong(origin, direction, distance, lightPdf);
+    const float3 radiance = light.radianceAlongFacing(
+        origin, path.previousNormal, direction, distance, lightPdf);
     // Lights at infinity (distance +inf) are behind every surface and
     // reached by every ray that escapes (hitDistance +inf).
     const bool hidden = std::isfinite(hitDistance) && distance >= hitDistance;

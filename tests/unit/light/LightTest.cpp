@@ -49,13 +49,26 @@ mat3x4 scaling(float s, float3 translation = {0, 0, 0})
   return {{{s, 0, 0}, {0, s, 0}, {0, 0, s}, translation}};
 }
 
+// A sample of `light` from `point`: by sampleFacing() for a receiver
+// facing `facing`, or sample() where that is zero.
+LightSample sampleOf(const PlacedLight &light,
+    const float3 &point,
+    const float3 &facing,
+    const float2 &u)
+{
+  return lengthSquared(facing) > 0.f ? light.sampleFacing(point, facing, u)
+                                     : light.sample(point, u);
+}
+
 // Irradiance at `point` on a plane of unit `normal`, estimated from
-// n x n jittered strata of sample() (exact for delta lights).
+// n x n jittered strata of sample(), or sampleFacing() when `facing`
+// (exact for delta lights).
 double irradiance(const PlacedLight &light,
     float3 point,
     float3 normal,
     int n = 256,
-    unsigned seed = 7)
+    unsigned seed = 7,
+    float3 facing = {0, 0, 0})
 {
   if (light.isDelta()) {
     const LightSample s = light.sample(point, {0.5f, 0.5f});
@@ -68,7 +81,7 @@ double irradiance(const PlacedLight &light,
     for (int j = 0; j < n; j++) {
       const float2 u{std::min((i + jitter(rng)) / n, kOneMinusEpsilon),
           std::min((j + jitter(rng)) / n, kOneMinusEpsilon)};
-      const LightSample s = light.sample(point, u);
+      const LightSample s = sampleOf(light, point, facing, u);
       if (s.pdf > 0.f)
         sum += s.radiance.x * std::max(0.f, dot(normal, s.direction)) / s.pdf;
     }
@@ -106,14 +119,16 @@ double integratedIrradiance(const PlacedLight &light,
   return sum * 2.0 * kPiD * kPiD / (double(columns) * rows);
 }
 
-// Integral of radianceAlong()'s pdf over the cone around the unit `axis`
-// with 1 - cos(half angle) = capHeight (2: the whole sphere), by the
-// midpoint rule on an n x n grid uniform in solid angle.
+// Integral of radianceAlong()'s pdf (radianceAlongFacing()'s for a
+// receiver facing `facing`) over the cone around the unit `axis` with
+// 1 - cos(half angle) = capHeight (2: the whole sphere), by the midpoint
+// rule on an n x n grid uniform in solid angle.
 double pdfIntegral(const PlacedLight &light,
     float3 point,
     float3 axis,
     float capHeight,
-    int n = 1000)
+    int n = 1000,
+    float3 facing = {0, 0, 0})
 {
   const LocalFrame frame = LocalFrame::around(axis);
   double sum = 0.0;
@@ -127,18 +142,22 @@ double pdfIntegral(const PlacedLight &light,
       const float3 direction = normalize(frame.toWorld(
           {sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta}));
       float distance = 0.f, pdf = 0.f;
-      light.radianceAlong(point, direction, distance, pdf);
+      light.radianceAlongFacing(point, facing, direction, distance, pdf);
       sum += pdf;
     }
   }
   return sum * 2.0 * kPiD * capHeight / (double(n) * n);
 }
 
-// How many of n x n samples from `point` disagree with radianceAlong() in
+// How many of n x n samples from `point` (by sampleFacing() for a
+// receiver facing `facing`) disagree with radianceAlong() (Facing) in
 // pdf, radiance or distance (relative 1e-3), or land outside the light's
 // bounds (which rays use to skip it); `checked` counts the rest.
-int inconsistentSamples(
-    const PlacedLight &light, float3 point, int &checked, int n = 64)
+int inconsistentSamples(const PlacedLight &light,
+    float3 point,
+    int &checked,
+    int n = 64,
+    float3 facing = {0, 0, 0})
 {
   std::mt19937 rng(3);
   std::uniform_real_distribution<float> uniform(0.f, kOneMinusEpsilon);
@@ -149,12 +168,13 @@ int inconsistentSamples(
            || (std::isinf(a) && a == b);
   };
   for (int k = 0; k < n * n; k++) {
-    const LightSample s = light.sample(point, {uniform(rng), uniform(rng)});
+    const LightSample s =
+        sampleOf(light, point, facing, {uniform(rng), uniform(rng)});
     if (!(s.pdf > 0.f))
       continue;
     float distance = 0.f, pdf = 0.f;
     const float3 radiance =
-        light.radianceAlong(point, s.direction, distance, pdf);
+        light.radianceAlongFacing(point, facing, s.direction, distance, pdf);
     LightBounds bounds;
     const bool bounded = light.bounds(bounds);
     const float fromCenter =
@@ -173,6 +193,22 @@ int inconsistentSamples(
     checked++;
   }
   return bad;
+}
+
+// A width x height image brightening along its width, with one texel of
+// 500 right of the centre and a third of the way down: a density far
+// from uniform.
+std::vector<float3> gradientWithHotSpot(uint64_t width, uint64_t height)
+{
+  std::vector<float3> texels(width * height);
+  for (uint64_t j = 0; j < height; j++) {
+    for (uint64_t i = 0; i < width; i++) {
+      const float v = 0.1f + float(i) / float(width)
+                      + (i == width / 2 + 6 && j == height / 3 ? 500.f : 0.f);
+      texels[i + j * width] = {v, 0.5f * v, 0.2f};
+    }
+  }
+  return texels;
 }
 
 // Lambert's formula: irradiance from a uniform polygon of radiance L,
@@ -248,18 +284,28 @@ class LightTest : public ::testing::Test
     object.applyCommit();
     object.finalize();
   }
-  // `texels` (width x height) as an hdri's radiance, up +z, its center
-  // towards +y.
+  // `texels` (width x height) as an hdri's radiance, with `up` and the
+  // image's center towards `direction`; not committed.
+  void stageHdri(light::Hdri &light,
+      const std::vector<float3> &texels,
+      uint64_t width,
+      uint64_t height,
+      float3 up,
+      float3 direction)
+  {
+    setArray(light,
+        "radiance",
+        array(ANARI_FLOAT32_VEC3, texels.data(), width, height));
+    setVec3(light, "up", up);
+    setVec3(light, "direction", direction);
+  }
+  // The same, up +z, its center towards +y, committed.
   void commitHdri(light::Hdri &light,
       const std::vector<float3> &texels,
       uint64_t width,
       uint64_t height)
   {
-    setArray(light,
-        "radiance",
-        array(ANARI_FLOAT32_VEC3, texels.data(), width, height));
-    setVec3(light, "up", {0, 0, 1});
-    setVec3(light, "direction", {0, 1, 0});
+    stageHdri(light, texels, width, height, {0, 0, 1}, {0, 1, 0});
     commit(light);
   }
   // A managed array holding a copy of `values`.
@@ -1047,20 +1093,9 @@ TEST_F(LightTest, HdriPdfMatchesRadianceAlongAndIntegratesToOne)
 {
   // A gradient with a hot spot: a density far from uniform.
   const uint64_t width = 48, height = 24;
-  std::vector<float3> texels(width * height);
-  for (uint64_t j = 0; j < height; j++) {
-    for (uint64_t i = 0; i < width; i++) {
-      const float v =
-          0.1f + float(i) / width + (i == 30 && j == 8 ? 500.f : 0.f);
-      texels[i + j * width] = {v, 0.5f * v, 0.2f};
-    }
-  }
+  const std::vector<float3> texels = gradientWithHotSpot(width, height);
   light::Hdri light(m_device);
-  setArray(light,
-      "radiance",
-      array(ANARI_FLOAT32_VEC3, texels.data(), width, height));
-  setVec3(light, "up", {0, 1, 0});
-  setVec3(light, "direction", {0, 0, -1});
+  stageHdri(light, texels, width, height, {0, 1, 0}, {0, 0, -1});
   setFloat(light, "scale", 0.5f);
   commit(light);
   const mat3x4 turn = rotation(normalize(float3{1, 1, 0}), 0.7f);
@@ -1101,6 +1136,128 @@ TEST_F(LightTest, HdriSamplesTheLightItsFilterSpreads)
     EXPECT_GT(expected, 0.0);
     EXPECT_NEAR(
         irradiance(*placed, {0, 0, 0}, normal), expected, 1e-2 * expected);
+  }
+}
+
+// A receiver facing one way samples towards its side, and its samples
+// agree with radianceAlongFacing(), whose density integrates to one and
+// whose estimates integrate the image, on a density far from uniform and
+// an image smaller than the cells would be (so cells are texels).
+TEST_F(LightTest, HdriSamplesTowardsTheSideAReceiverFaces)
+{
+  for (const uint64_t width : {uint64_t(48), uint64_t(80)}) {
+    const uint64_t height = width / 2;
+    const std::vector<float3> texels = gradientWithHotSpot(width, height);
+    light::Hdri light(m_device);
+    stageHdri(light, texels, width, height, {0, 1, 0}, {0, 0, -1});
+    commit(light);
+    const mat3x4 turn = rotation(normalize(float3{1, 1, 0}), 0.7f);
+    const auto placed = place(light, turn);
+    const float3 up = transformDirection(turn, {0, 1, 0});
+    const float3 forward = transformDirection(turn, {0, 0, -1});
+    for (const float3 normal : {up,
+             up * -1.f,
+             normalize(float3{0.2f, 1, 0.4f}),
+             normalize(float3{-1, 0.3f, -0.5f})}) {
+      int checked = 0;
+      EXPECT_EQ(inconsistentSamples(*placed, {0, 0, 0}, checked, 64, normal), 0)
+          << width;
+      EXPECT_GT(checked, 4000);
+      EXPECT_NEAR(pdfIntegral(*placed, {0, 0, 0}, {0, 0, 1}, 2.f, 1000, normal),
+          1.0,
+          5e-3)
+          << width;
+      const double expected =
+          integratedIrradiance(*placed, up, forward, normal, width, height);
+      EXPECT_NEAR(irradiance(*placed, {0, 0, 0}, normal, 256, 7, normal),
+          expected,
+          1e-2 * expected)
+          << width;
+    }
+  }
+}
+
+// Under a uniform sky, half of what a receiver samples by the image alone
+// lies below its horizon. Facing an axis of the light's frame, only half
+// the quarter it still samples by the image does (1/8); facing between
+// axes, the axes' lobes reach below too (about 23 % here). With no side
+// (a zero normal) it samples as sample() does.
+TEST_F(LightTest, HdriFacingSamplesStayAboveTheHorizon)
+{
+  const uint64_t width = 64, height = 32;
+  std::vector<float3> texels(width * height, float3{1, 1, 1});
+  light::Hdri light(m_device);
+  commitHdri(light, texels, width, height);
+  const auto placed = place(light);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> uniform(0.f, kOneMinusEpsilon);
+  const std::pair<float3, double> cases[] = {{{0, 0, 1}, 0.135},
+      {{1, 0, 0}, 0.135},
+      {normalize(float3{1, -2, 0.5f}), 0.25}};
+  for (const auto &[normal, mostBelow] : cases) {
+    int below = 0, belowFacing = 0, differ = 0;
+    const int n = 20000;
+    for (int k = 0; k < n; k++) {
+      const float2 u{uniform(rng), uniform(rng)};
+      below += dot(placed->sample({0, 0, 0}, u).direction, normal) <= 0.f;
+      belowFacing +=
+          dot(placed->sampleFacing({0, 0, 0}, normal, u).direction, normal)
+          <= 0.f;
+      const LightSample a = placed->sample({0, 0, 0}, u);
+      const LightSample b = placed->sampleFacing({0, 0, 0}, {0, 0, 0}, u);
+      differ += a.pdf != b.pdf || a.direction.x != b.direction.x
+                || a.direction.y != b.direction.y;
+    }
+    EXPECT_NEAR(double(below) / n, 0.5, 0.02);
+    EXPECT_LT(double(belowFacing) / n, mostBelow) << normal.x << normal.y;
+    EXPECT_EQ(differ, 0);
+  }
+}
+
+// A one-texel image, and a sky black above the horizon (no axis facing
+// up has anything to sample): facing receivers still get samples that
+// agree with radianceAlongFacing() and integrate the image (and a density
+// that integrates to one: not checked on the one texel, whose density
+// per steradian is 1 / sin(theta), too steep at the poles for the grid).
+TEST_F(LightTest, HdriFacingHandlesTinyAndOneSidedImages)
+{
+  struct Image
+  {
+    uint64_t width, height;
+    std::vector<float3> texels;
+  };
+  std::vector<Image> images = {{1, 1, {float3{3, 2, 1}}}, {16, 8, {}}};
+  images[1].texels.assign(16 * 8, float3{0, 0, 0});
+  for (uint64_t i = 4 * 16; i < 8 * 16; i++)
+    images[1].texels[i] = {1.f + float(i % 5), 1, 1}; // the lower half
+  for (const Image &image : images) {
+    light::Hdri light(m_device);
+    commitHdri(light, image.texels, image.width, image.height);
+    const auto placed = place(light);
+    for (const float3 normal : {float3{0, 0, 1}, float3{0, 0, -1}}) {
+      int checked = 0;
+      EXPECT_EQ(
+          inconsistentSamples(*placed, {0, 0, 0}, checked, 32, normal), 0);
+      EXPECT_GT(checked, 500);
+      const double expected = integratedIrradiance(*placed,
+          {0, 0, 1},
+          {0, 1, 0},
+          normal,
+          image.width,
+          image.height,
+          512 / int(image.width)); // fine: the horizon's grazing light
+      EXPECT_NEAR(irradiance(*placed, {0, 0, 0}, normal, 256, 7, normal),
+          expected,
+          1e-2 * expected)
+          << image.width << " " << normal.z;
+      if (image.width > 1) {
+        EXPECT_NEAR(
+            pdfIntegral(*placed, {0, 0, 0}, {0, 0, 1}, 2.f, 1000, normal),
+            1.0,
+            5e-3)
+            << normal.z;
+      }
+    }
   }
 }
 
