@@ -10,7 +10,7 @@ namespace {
 
 constexpr size_t kMaxCellsX = 32, kMaxCellsY = 16;
 // The share of a facing receiver's samples that follow the image alone.
-constexpr float kImageShare = 0.25f;
+constexpr float kImageShare = 0.1f;
 constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
 
 float3 axisDirection(int axis)

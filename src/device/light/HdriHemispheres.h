@@ -4,12 +4,13 @@
 // sky-lit benchmark scene). The image is cut into cells (up to 32 x 16);
 // for each of the six axes of the light's frame, cells are weighed by
 // their luminance times the best cosine towards the axis. A receiver
-// samples a mixture: a quarter by luminance alone (so every direction
-// the image lights keeps its share, whatever the cells' cosines say), the
-// rest split between the three axes on its side by its normal's squared
-// components. Within a cell every component chooses texels as the image's
-// own distribution does, so the mixture's density is that distribution's
-// times a factor per cell: density() stays one lookup more.
+// samples a mixture: a tenth by luminance alone (so every direction the
+// image lights keeps a share, whatever the cells' cosines say, and no
+// sample weighs more than ten times what it would by luminance alone),
+// the rest split between the three axes on its side by its normal's
+// squared components. Within a cell every component chooses texels as the
+// image's own distribution does, so the mixture's density is that
+// distribution's times a factor per cell: density() stays one lookup more.
 #pragma once
 
 #include "../math/Vec.h"

@@ -1179,8 +1179,8 @@ TEST_F(LightTest, HdriSamplesTowardsTheSideAReceiverFaces)
 
 // Under a uniform sky, half of what a receiver samples by the image alone
 // lies below its horizon. Facing an axis of the light's frame, only half
-// the quarter it still samples by the image does (1/8); facing between
-// axes, the axes' lobes reach below too (about 23 % here). With no side
+// the tenth it still samples by the image does (5 %); facing between
+// axes, the axes' lobes reach below too (about 18 % here). With no side
 // (a zero normal) it samples as sample() does.
 TEST_F(LightTest, HdriFacingSamplesStayAboveTheHorizon)
 {
@@ -1191,9 +1191,9 @@ TEST_F(LightTest, HdriFacingSamplesStayAboveTheHorizon)
   const auto placed = place(light);
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> uniform(0.f, kOneMinusEpsilon);
-  const std::pair<float3, double> cases[] = {{{0, 0, 1}, 0.135},
-      {{1, 0, 0}, 0.135},
-      {normalize(float3{1, -2, 0.5f}), 0.25}};
+  const std::pair<float3, double> cases[] = {{{0, 0, 1}, 0.06},
+      {{1, 0, 0}, 0.06},
+      {normalize(float3{1, -2, 0.5f}), 0.2}};
   for (const auto &[normal, mostBelow] : cases) {
     int below = 0, belowFacing = 0, differ = 0;
     const int n = 20000;
@@ -1252,7 +1252,7 @@ TEST_F(LightTest, HdriFacingHandlesTinyAndOneSidedImages)
           << image.width << " " << normal.z;
       if (image.width > 1) {
         EXPECT_NEAR(
-            pdfIntegral(*placed, {0, 0, 0}, {0, 0, 1}, 2.f, 1000, normal),
+            pdfIntegral(*placed, {0, 0, 0}, {0, 0, 1}, 2.f, 2000, normal),
             1.0,
             5e-3)
             << normal.z;
