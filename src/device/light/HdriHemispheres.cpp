@@ -134,11 +134,14 @@ HdriHemispheres::Mixture HdriHemispheres::mixture(const float3 &normal) const
   m[0] = 1.f;
   if (empty() || !(lengthSquared(normal) > 0.f))
     return m;
+  // Squared components over the squared length: shares that sum to one
+  // whatever the normal's rounding.
+  const float scale = (1.f - kImageShare) / lengthSquared(normal);
   float facing = 0.f;
   for (int k = 0; k < 3; k++) {
     const int axis = 2 * k + (normal[k] < 0.f ? 1 : 0);
     if (m_usable[axis]) {
-      m[1 + axis] = (1.f - kImageShare) * normal[k] * normal[k];
+      m[1 + axis] = scale * normal[k] * normal[k];
       facing += m[1 + axis];
     }
   }
