@@ -35,7 +35,7 @@ struct QueuedRay
   float tMax;
   float time;
   uint32_t tag;
-  float3 contribution;
+  ShadowContribution contribution;
 };
 
 // How many of each this process sends at a bounce.
@@ -56,7 +56,8 @@ void append(std::vector<unsigned char> &bytes, const void *data, size_t size)
   bytes.insert(bytes.end(), begin, begin + size);
 }
 
-QueuedRay queued(const rt::RayQueue &queue, size_t i, const float3 &carried)
+QueuedRay queued(
+    const rt::RayQueue &queue, size_t i, const ShadowContribution &carried)
 {
   return QueuedRay{queue.origin(i),
       queue.direction(i),
@@ -88,6 +89,26 @@ int checkedCount(size_t count)
   if (count > size_t(INT_MAX))
     throw std::length_error("a wavefront too large for MPI's int counts");
   return int(count);
+}
+
+// Where each ray passed a single-sided surface, nearest over every
+// process's part of the world (a minimum is exact: every process agrees).
+void sharePassedOneSided(
+    rt::RayQueue &queue, MPI_Comm communicator, uint64_t &bytesSent)
+{
+  const size_t count = queue.size();
+  std::vector<float> nearest(count);
+  for (size_t i = 0; i < count; i++)
+    nearest[i] = queue.passedOneSidedAt(i);
+  MPI_Allreduce(MPI_IN_PLACE,
+      nearest.data(),
+      checkedCount(count),
+      MPI_FLOAT,
+      MPI_MIN,
+      communicator);
+  bytesSent += count * sizeof(float);
+  for (size_t i = 0; i < count; i++)
+    queue.setPassedOneSidedAt(i, nearest[i]);
 }
 
 } // namespace
@@ -127,6 +148,7 @@ void DistributedTransport::traceClosest(
         MPI_MINLOC,
         m_communicator);
     m_bytesSent += count * sizeof(Nearest);
+    sharePassedOneSided(queue, m_communicator, m_bytesSent);
   }
   m_shaded.resize(count);
   for (size_t i = 0; i < count; i++)
@@ -138,6 +160,7 @@ void DistributedTransport::traceOcclusion(rt::RayQueue &queue) const
   m_local.traceOcclusion(queue);
   if (m_ranks == 1)
     return;
+  sharePassedOneSided(queue, m_communicator, m_bytesSent);
   // Every process's transmittances, multiplied in rank order by each: a
   // reduction may round differently on each process, and paths that differ
   // by a bit would soon queue different rays and stop the lockstep.
@@ -166,7 +189,7 @@ void DistributedTransport::shareBounce(std::vector<PathState> &paths,
     const rt::RayQueue &rays,
     rt::RayQueue &next,
     rt::RayQueue &shadows,
-    std::vector<float3> &contributions) const
+    std::vector<ShadowContribution> &contributions) const
 {
   if (m_ranks == 1)
     return;
@@ -181,7 +204,7 @@ void DistributedTransport::shareBounce(std::vector<PathState> &paths,
     counts.paths++;
   }
   for (size_t i = 0; i < next.size(); i++) {
-    const QueuedRay ray = queued(next, i, float3{0.f, 0.f, 0.f});
+    const QueuedRay ray = queued(next, i, ShadowContribution{});
     append(payload, &ray, sizeof(ray));
   }
   for (size_t i = 0; i < shadows.size(); i++) {

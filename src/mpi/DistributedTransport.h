@@ -46,7 +46,7 @@ class DistributedTransport final : public RayTransport
       const rt::RayQueue &rays,
       rt::RayQueue &next,
       rt::RayQueue &shadows,
-      std::vector<float3> &contributions) const override;
+      std::vector<ShadowContribution> &contributions) const override;
 
  private:
   LocalTransport m_local;

@@ -22,15 +22,9 @@ class AdaptiveSampling : public AnalyticTest
     AnalyticTest::SetUp();
     // A lit box corner: soft shadows and bounces, noisy for a while.
     m_world = boxCorner();
-    ANARILight light = anariNewLight(m_device, "quad");
     const float position[3] = {-0.5f, -1.5f, 2.5f}, edge1[3] = {1, 0, 0},
-                edge2[3] = {0, 1, 0}, intensity = 20.f;
-    anariSetParameter(
-        m_device, light, "position", ANARI_FLOAT32_VEC3, position);
-    anariSetParameter(m_device, light, "edge1", ANARI_FLOAT32_VEC3, edge1);
-    anariSetParameter(m_device, light, "edge2", ANARI_FLOAT32_VEC3, edge2);
-    anariSetParameter(m_device, light, "intensity", ANARI_FLOAT32, &intensity);
-    setOnlyLight(m_world, light); // releases the light
+                edge2[3] = {0, 1, 0};
+    setOnlyLight(m_world, quadLight(position, edge1, edge2, "intensity", 20.f));
     const float eye[3] = {0, -2.5f, 2}, direction[3] = {0, 2.5f, -1.8f};
     m_camera = perspective(eye, direction, 0.8f);
   }

@@ -49,6 +49,23 @@ class AnalyticTest : public PrismDeviceTest
     anariSetParameter(m_device, object, name, ANARI_ARRAY1D, &array);
     anariRelease(m_device, array);
   }
+  // A quad light (not committed) at `position` spanning `edge1` and
+  // `edge2` (it emits towards edge2 x edge1, spec 5.7.4), its `brightness`
+  // ("intensity" or "radiance") `value`.
+  ANARILight quadLight(const float position[3],
+      const float edge1[3],
+      const float edge2[3],
+      const char *brightness,
+      float value)
+  {
+    ANARILight light = anariNewLight(m_device, "quad");
+    anariSetParameter(
+        m_device, light, "position", ANARI_FLOAT32_VEC3, position);
+    anariSetParameter(m_device, light, "edge1", ANARI_FLOAT32_VEC3, edge1);
+    anariSetParameter(m_device, light, "edge2", ANARI_FLOAT32_VEC3, edge2);
+    anariSetParameter(m_device, light, brightness, ANARI_FLOAT32, &value);
+    return light;
+  }
   // Commits `light` and makes it the only light of `w` (released), then
   // commits `w`.
   void setOnlyLight(ANARIWorld w, ANARILight light)

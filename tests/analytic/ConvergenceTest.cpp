@@ -40,14 +40,9 @@ class Convergence : public AnalyticTest
         {surface(geometry("quad", {-5, -5, 0, 5, -5, 0, 5, 5, 0, -5, 5, 0}),
              matte(0.8f, 0.8f, 0.8f)),
             surface(geometry("sphere", {0, 0, 1}), matte(0.9f, 0.3f, 0.2f))});
-    ANARILight light = anariNewLight(m_device, "quad");
     const float corner[3] = {-1, -1, 4}, edge1[3] = {2, 0, 0},
-                edge2[3] = {0, 2, 0}, L = 4.f;
-    anariSetParameter(m_device, light, "position", ANARI_FLOAT32_VEC3, corner);
-    anariSetParameter(m_device, light, "edge1", ANARI_FLOAT32_VEC3, edge1);
-    anariSetParameter(m_device, light, "edge2", ANARI_FLOAT32_VEC3, edge2);
-    anariSetParameter(m_device, light, "radiance", ANARI_FLOAT32, &L);
-    setOnlyLight(w, light);
+                edge2[3] = {0, 2, 0};
+    setOnlyLight(w, quadLight(corner, edge1, edge2, "radiance", 4.f));
     return w;
   }
   // The seed of references: sequences independent of the default's.

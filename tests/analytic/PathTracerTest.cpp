@@ -482,11 +482,7 @@ TEST_F(PathTracerTest, QuadLightIrradianceIsThePolygonFormFactor)
   // A 1 x 2 light 1.5 above the plane, off-centre, emitting downwards.
   const float corner[3] = {-0.3f, -0.8f, 1.5f}, edge1[3] = {1, 0, 0},
               edge2[3] = {0, 2, 0}, L = 3.f;
-  ANARILight light = anariNewLight(m_device, "quad");
-  anariSetParameter(m_device, light, "position", ANARI_FLOAT32_VEC3, corner);
-  anariSetParameter(m_device, light, "edge1", ANARI_FLOAT32_VEC3, edge1);
-  anariSetParameter(m_device, light, "edge2", ANARI_FLOAT32_VEC3, edge2);
-  anariSetParameter(m_device, light, "radiance", ANARI_FLOAT32, &L);
+  ANARILight light = quadLight(corner, edge1, edge2, "radiance", L);
   anariCommitParameters(m_device, light);
   ANARIWorld w = world({plane(matte(1, 1, 1))});
   addLight(w, light);

@@ -244,7 +244,10 @@ void PathTracer::Wavefront::traceShadows()
     const float3 &through = shadows.transmittance(k);
     if (maxComponent(through) > 0.f) {
       PathState &path = m_workspace->paths[shadows.tag(k)];
-      path.radiance = path.radiance + queued.contributions[k] * through;
+      const ShadowContribution &c = queued.contributions[k];
+      const float weight =
+          std::isinf(shadows.passedOneSidedAt(k)) ? c.weight : 1.f;
+      path.radiance = path.radiance + c.radiance * through * weight;
     }
   }
 }
@@ -273,19 +276,21 @@ void PathTracer::renderTile(const RenderContext &context,
   runTile(work, tile, cancel);
 }
 
-float PathTracer::emissionWeight(const RenderContext &context,
-    const PathState &path,
-    const Ray &ray,
-    const rt::Hit &hit,
-    const SurfaceHit &surface) const
+float PathTracer::emissionWeight(
+    const RenderContext &context, const PathState &path, const Bounce &b) const
 {
   // Camera rays and delta bounces could not have sampled the surface.
   if (path.bounce == 0 || path.previousDelta)
     return 1.f;
   const World &world = *context.world;
+  const rt::Hit &hit = b.hit;
+  const Ray &ray = b.ray;
   const int32_t index = world.emitterLight(hit.instanceId, hit.geometryId);
   if (index < 0)
     return 1.f; // no light samples this surface
+  if (b.passedOneSided < hit.t)
+    return 0.f; // its light meets a single-sided surface's front on the way
+  const SurfaceHit &surface = b.surface;
   const auto &emitter =
       static_cast<const EmissiveSurface &>(*world.lights()[size_t(index)]);
   const float cosine = std::abs(dot(surface.geometricNormal, ray.direction));
@@ -319,6 +324,7 @@ float3 PathTracer::lightsAlong(const RenderContext &context,
     const float3 &direction,
     float tMin,
     float hitDistance,
+    float passedOneSided,
     const PathState &path) const
 {
   const auto &lights = context.world->lights();
@@ -340,12 +346,17 @@ float3 PathTracer::lightsAlong(const RenderContext &context,
     const bool hidden = std::isfinite(hitDistance) && distance >= hitDistance;
     if (distance <= tMin || hidden || maxComponent(radiance) <= 0.f)
       continue;
-    // Camera rays and delta bounces could not have sampled the light.
-    const float weight =
-        cameraRay || path.previousDelta
-            ? 1.f
-            : powerHeuristic(
-                1, path.previousPdf, 1, lightPdf * selector.probability(i));
+    // Camera rays and delta bounces could not have sampled the light; a
+    // shadow ray would have found it blocked past a single-sided
+    // surface's back.
+    float weight = 1.f;
+    if (!cameraRay && !path.previousDelta) {
+      weight =
+          distance > passedOneSided
+              ? 0.f
+              : powerHeuristic(
+                  1, path.previousPdf, 1, lightPdf * selector.probability(i));
+    }
     sum = sum + radiance * weight;
   }
   return sum;
@@ -404,7 +415,7 @@ void PathTracer::shadeRays(const RenderContext &context,
     BounceQueues &out) const
 {
   rt::RayQueue &next = out.next, &shadows = out.shadows;
-  std::vector<float3> &contributions = out.contributions;
+  std::vector<ShadowContribution> &contributions = out.contributions;
   // Reused ray after ray: building them afresh zeroed half a kilobyte a
   // ray. resolveHit fills what each ray reads.
   SurfaceHit surface;
@@ -448,6 +459,7 @@ PathTracer::Bounce PathTracer::resolveHit(const RenderContext &context,
       Ray{rays.origin(r), rays.direction(r)},
       rays.tMin(r),
       rays.hit(r),
+      rays.passedOneSidedAt(r),
       false,
       surface};
   b.ray.time = path.time;
@@ -517,6 +529,7 @@ void PathTracer::emitAlongRay(const RenderContext &context, Bounce &b) const
                             b.ray.direction,
                             b.tMin,
                             hitDistance,
+                            b.passedOneSided,
                             path);
   if (b.found)
     return;
@@ -571,8 +584,7 @@ void PathTracer::emitFromSurface(const RenderContext &context, Bounce &b) const
   PathState &path = b.path;
   path.radiance =
       path.radiance
-      + path.throughput * emissive
-            * emissionWeight(context, path, b.ray, b.hit, b.surface);
+      + path.throughput * emissive * emissionWeight(context, path, b);
 }
 
 PathTracer::Scattering PathTracer::scatteringAt(
@@ -627,7 +639,7 @@ void PathTracer::nextEvent(const RenderContext &context,
     const BounceDecisions &decisions,
     bool last,
     rt::RayQueue &shadows,
-    std::vector<float3> &contributions) const
+    std::vector<ShadowContribution> &contributions) const
 {
   // One light, chosen by power; its shadow ray joins the bounce's shadow
   // queue, its contribution counts if nothing blocks it.
@@ -665,7 +677,7 @@ void PathTracer::nextEvent(const RenderContext &context,
       path.time,
       b.tag);
   contributions.push_back(
-      path.throughput * f * ls.radiance * (std::abs(wi.z) * weight / pdf));
+      {path.throughput * f * ls.radiance * (std::abs(wi.z) / pdf), weight});
 }
 
 void PathTracer::scatter(Bounce &b,

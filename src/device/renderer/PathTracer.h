@@ -72,7 +72,7 @@ class PathTracer : public Renderer
   struct BounceQueues
   {
     rt::RayQueue next, shadows;
-    std::vector<float3> contributions;
+    std::vector<ShadowContribution> contributions;
 
     void clear();
     // Appends `more`'s rays and contributions after these.
@@ -108,6 +108,9 @@ class PathTracer : public Renderer
     Ray ray;
     float tMin{0.f};
     rt::Hit hit;
+    // Where the ray passed a single-sided surface from behind (+inf: it
+    // did not), see rt::RayQueue::passedOneSidedAt.
+    float passedOneSided;
     bool found{false}; // a live surface was hit
     SurfaceHit &surface;
     // The material there: its own constant shading, or the hit's, shaded
@@ -156,7 +159,7 @@ class PathTracer : public Renderer
       const BounceDecisions &decisions,
       bool last,
       rt::RayQueue &shadows,
-      std::vector<float3> &contributions) const;
+      std::vector<ShadowContribution> &contributions) const;
   void scatter(Bounce &b,
       const Scattering &scattering,
       const BounceDecisions &decisions,
@@ -164,12 +167,16 @@ class PathTracer : public Renderer
   // `u`: the bounce's roulette decision.
   bool survivesRoulette(PathState &path, float u) const;
   // Radiance arriving along a ray from lights it reaches within (tMin,
-  // hitDistance), weighted against light sampling.
+  // hitDistance), weighted against light sampling. A light beyond
+  // `passedOneSided` (where the ray passed a single-sided surface from
+  // behind) is one a shadow ray finds blocked there: light sampling says
+  // it sends nothing, and so does this.
   float3 lightsAlong(const RenderContext &context,
       const float3 &origin,
       const float3 &direction,
       float tMin,
       float hitDistance,
+      float passedOneSided,
       const PathState &path) const;
 
   // What a tile's wavefront works in, reused tile after tile.
@@ -185,12 +192,12 @@ class PathTracer : public Renderer
   mutable WorkspacePool<TileWorkspace> m_workspaces;
   mutable std::atomic<uint64_t> m_raysTraced{0};
   // The multiple importance sampling weight of emission a ray found by
-  // hitting a surface, against next-event estimation sampling it.
+  // hitting a surface, against next-event estimation sampling it (0 when
+  // the ray passed a single-sided surface from behind before it, as
+  // lightsAlong()).
   float emissionWeight(const RenderContext &context,
       const PathState &path,
-      const Ray &ray,
-      const rt::Hit &hit,
-      const SurfaceHit &surface) const;
+      const Bounce &b) const;
 
   int m_maxPathLength{8};
   bool m_volumeMajorantGrid{true};

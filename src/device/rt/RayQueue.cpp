@@ -27,6 +27,11 @@ void RayQueue::grow(size_t capacity)
   for (auto *v : {&m_tag, &m_primitiveId, &m_geometryId, &m_instanceId})
     v->resize(capacity);
   m_transmittance.resize(capacity);
+  m_passedOneSided.resize(capacity);
+  const size_t indexed = m_index.size();
+  m_index.resize(capacity);
+  for (size_t i = indexed; i < capacity; i++)
+    m_index[i] = uint32_t(i);
   // Every ray is of every mask and flagless; tracing never changes either.
   m_mask.resize(capacity, ~0u);
   m_flags.resize(capacity, 0u);

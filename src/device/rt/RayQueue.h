@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace prism::rt {
@@ -85,6 +86,21 @@ class RayQueue
   {
     return m_tMax[i] < 0.f && m_tMin[i] >= 0.f;
   }
+  // After a trace: the nearest distance along ray i at which it passed a
+  // single-sided surface (Scene::cullBackFaces) by the trace's rule: a
+  // closest-hit ray passes faces it meets from behind, an occlusion ray
+  // those it meets from the front (light meets them from behind); +inf if
+  // none. Where the two rules differ, a light seen by one kind of ray is
+  // not by the other, which multiple importance sampling must know.
+  float passedOneSidedAt(size_t i) const
+  {
+    return m_passedOneSided[i];
+  }
+  // Replaces it (with the nearest over every process's part of the world).
+  void setPassedOneSidedAt(size_t i, float t)
+  {
+    m_passedOneSided[i] = t;
+  }
   // After an occlusion trace: how much light gets through along ray i, per
   // color channel (0 or 1 past opaque surfaces; media between give what
   // they let through).
@@ -138,6 +154,11 @@ class RayQueue
   std::vector<uint32_t> m_primitiveId, m_geometryId, m_instanceId;
   // Occlusion (set by the trace, then attenuated).
   std::vector<float3> m_transmittance;
+  // Single-sided surfaces passed (set by the trace), and each ray's own
+  // index, which Embree carries as the ray's id to the filters recording
+  // them.
+  std::vector<float> m_passedOneSided;
+  std::vector<uint32_t> m_index;
 };
 
 // Inline: the path tracer pushes a ray or two per path and bounce.
@@ -170,6 +191,7 @@ inline size_t RayQueue::push(const float3 &origin,
   m_geometryId[i] = kInvalidId;
   m_instanceId[i] = kInvalidId;
   m_transmittance[i] = float3{1.f, 1.f, 1.f}; // until traced
+  m_passedOneSided[i] = std::numeric_limits<float>::infinity();
   return i;
 }
 

@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 
 namespace prism::rt {
 namespace {
@@ -20,14 +21,45 @@ namespace {
 // Rays per Embree stream call: a tile's wavefront (32 x 32).
 constexpr size_t kStreamSize = 1024;
 
-// How Embree should trace a queue's rays (coherent: a tile's camera rays).
-RTCIntersectContext contextFor(const RayQueue &queue)
+// Embree's context for a trace, and where the filters of single-sided
+// surfaces record the nearest face each ray passed (indexed by the ray's
+// id; none for rays traced outside a queue). Every trace passes one, so
+// a filter may read it from any context Embree hands it.
+struct TraceContext
 {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  context.flags = queue.coherent() ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
-                                   : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+  RTCIntersectContext embree;
+  float *passedOneSided{nullptr};
+};
+static_assert(std::is_standard_layout_v<
+                  TraceContext> && offsetof(TraceContext, embree) == 0);
+
+TraceContext plainContext(RTCIntersectContextFlags flags)
+{
+  TraceContext context;
+  rtcInitIntersectContext(&context.embree);
+  context.embree.flags = flags;
   return context;
+}
+
+// How Embree should trace a queue's rays (coherent: a tile's camera rays).
+TraceContext contextFor(RayQueue &queue, float *passedOneSided)
+{
+  TraceContext context =
+      plainContext(queue.coherent() ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
+                                    : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT);
+  context.passedOneSided = passedOneSided;
+  return context;
+}
+
+// Notes that ray i of a filter's rays passed a face at its candidate
+// distance (Embree puts it in the ray's tfar while the filter decides).
+void notePassed(const RTCFilterFunctionNArguments *args, unsigned i)
+{
+  const auto *context = reinterpret_cast<const TraceContext *>(args->context);
+  if (!context->passedOneSided)
+    return;
+  float &nearest = context->passedOneSided[RTCRayN_id(args->ray, args->N, i)];
+  nearest = std::min(nearest, RTCRayN_tfar(args->ray, args->N, i));
 }
 
 void userBounds(const RTCBoundsFunctionArguments *args)
@@ -244,9 +276,12 @@ float facing(const RTCFilterFunctionNArguments *args, unsigned i)
 // back side (the ray along its geometric normal).
 void rejectBackFaces(const RTCFilterFunctionNArguments *args)
 {
-  for (unsigned i = 0; i < args->N; i++)
-    if (args->valid[i] == -1 && facing(args, i) > 0.f)
+  for (unsigned i = 0; i < args->N; i++) {
+    if (args->valid[i] == -1 && facing(args, i) > 0.f) {
       args->valid[i] = 0;
+      notePassed(args, i);
+    }
+  }
 }
 
 // Embree filter of shadow rays. Light runs against them, from the light to
@@ -256,9 +291,12 @@ void rejectBackFaces(const RTCFilterFunctionNArguments *args)
 // where the camera sees through back faces.
 void rejectFacesLitFromBehind(const RTCFilterFunctionNArguments *args)
 {
-  for (unsigned i = 0; i < args->N; i++)
-    if (args->valid[i] == -1 && facing(args, i) < 0.f)
+  for (unsigned i = 0; i < args->N; i++) {
+    if (args->valid[i] == -1 && facing(args, i) < 0.f) {
       args->valid[i] = 0;
+      notePassed(args, i);
+    }
+  }
 }
 
 Hit toHit(const RTCRayHit &rh)
@@ -597,8 +635,7 @@ bool Scene::intersect(const float3 &origin,
   hit = Hit{};
   if (!m_scene || !isTraceable(origin, direction, tMin, tMax, m_rayRange))
     return false;
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  TraceContext context = plainContext(RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT);
   RTCRayHit rh;
   rh.ray.org_x = origin.x;
   rh.ray.org_y = origin.y;
@@ -614,7 +651,7 @@ bool Scene::intersect(const float3 &origin,
   rh.ray.flags = 0;
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(m_scene, &context, &rh);
+  rtcIntersect1(m_scene, &context.embree, &rh);
   hit = toHit(rh);
   return hit.found();
 }
@@ -650,7 +687,7 @@ RTCRayNp Scene::streamAt(RayQueue &queue, size_t i)
   rays.time = queue.m_time.data() + i;
   rays.tfar = queue.m_tMax.data() + i;
   rays.mask = queue.m_mask.data() + i;
-  rays.id = queue.m_tag.data() + i;
+  rays.id = queue.m_index.data() + i; // the filters' index, not the tag
   rays.flags = queue.m_flags.data() + i;
   return rays;
 }
@@ -660,10 +697,13 @@ void Scene::intersect(RayQueue &queue) const
   if (!m_scene || queue.empty())
     return;
   confine(queue);
+  std::fill_n(queue.m_passedOneSided.begin(),
+      queue.size(),
+      std::numeric_limits<float>::infinity());
   // A tile's wavefront is one stream; a larger one (a lockstep render's
   // row of tiles) streams of a tile's size on several threads.
   forEachBlock(queue.size(), kStreamSize, [&](size_t i, size_t count) {
-    RTCIntersectContext context = contextFor(queue);
+    TraceContext context = contextFor(queue, queue.m_passedOneSided.data());
     RTCRayHitNp rays;
     rays.ray = streamAt(queue, i);
     rays.hit.Ng_x = queue.m_normalX.data() + i;
@@ -675,7 +715,7 @@ void Scene::intersect(RayQueue &queue) const
     rays.hit.geomID = queue.m_geometryId.data() + i;
     static_assert(RTC_MAX_INSTANCE_LEVEL_COUNT == 1);
     rays.hit.instID[0] = queue.m_instanceId.data() + i;
-    rtcIntersectNp(m_scene, &context, &rays, unsigned(count));
+    rtcIntersectNp(m_scene, &context.embree, &rays, unsigned(count));
   });
 }
 
@@ -684,10 +724,13 @@ void Scene::occluded(RayQueue &queue) const
   if (!m_scene || queue.empty())
     return;
   confine(queue);
+  std::fill_n(queue.m_passedOneSided.begin(),
+      queue.size(),
+      std::numeric_limits<float>::infinity());
   forEachBlock(queue.size(), kStreamSize, [&](size_t i, size_t count) {
-    RTCIntersectContext context = contextFor(queue);
+    TraceContext context = contextFor(queue, queue.m_passedOneSided.data());
     RTCRayNp rays = streamAt(queue, i);
-    rtcOccludedNp(m_scene, &context, &rays, unsigned(count));
+    rtcOccludedNp(m_scene, &context.embree, &rays, unsigned(count));
   });
   for (size_t i = 0; i < queue.size(); i++) {
     const float through = queue.occluded(i) ? 0.f : 1.f;
@@ -710,11 +753,9 @@ void Scene::intersect(RayHitPacket &packet, const int active[kPacketSize]) const
   }
   if (!m_scene)
     return;
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  TraceContext context = plainContext(RTC_INTERSECT_CONTEXT_FLAG_COHERENT);
   rtcIntersect8(
-      valid, m_scene, &context, reinterpret_cast<RTCRayHit8 *>(&packet));
+      valid, m_scene, &context.embree, reinterpret_cast<RTCRayHit8 *>(&packet));
 }
 
 } // namespace prism::rt

@@ -172,5 +172,51 @@ TEST_F(RayQueueTest, CoherentQueuesFindWhatIncoherentOnesFind)
   EXPECT_TRUE(m_errors.empty());
 }
 
+// A single-sided triangle: closest-hit rays pass it from behind,
+// occlusion rays from the front (light meets it from behind), and each
+// says where; a ray that passes nothing says +inf, and so does every ray
+// of a two-sided triangle.
+TEST_F(RayQueueTest, RaysSayWhereTheyPassedASingleSidedSurface)
+{
+  for (const bool singleSided : {true, false}) {
+    Scene scene(m_context);
+    scene.addTriangles(0, m_vertices.data(), 3, m_indices.data(), 1);
+    if (singleSided)
+      scene.cullBackFaces(0);
+    scene.commit();
+    auto both = [](RayQueue &queue) {
+      queue.push({0.2f, 0.2f, 1}, {0, 0, -1}, 0.f, kInf, 0.5f, 0);
+      queue.push({0.2f, 0.2f, -1}, {0, 0, 1}, 0.f, kInf, 0.5f, 1);
+      queue.push({3, 3, 1}, {0, 0, -1}, 0.f, kInf, 0.5f, 2); // misses
+    };
+    RayQueue closest, occlusion;
+    both(closest);
+    both(occlusion);
+    scene.intersect(closest);
+    scene.occluded(occlusion);
+    EXPECT_EQ(closest.passedOneSidedAt(2), kInf);
+    EXPECT_EQ(occlusion.passedOneSidedAt(2), kInf);
+    if (!singleSided) {
+      for (size_t i = 0; i < 2; i++) {
+        EXPECT_TRUE(closest.hit(i).found());
+        EXPECT_TRUE(occlusion.occluded(i));
+        EXPECT_EQ(closest.passedOneSidedAt(i), kInf);
+        EXPECT_EQ(occlusion.passedOneSidedAt(i), kInf);
+      }
+      continue;
+    }
+    // One side is the front: the ray from there hits it and is blocked...
+    const size_t front = closest.hit(0).found() ? 0 : 1, back = 1 - front;
+    ASSERT_TRUE(closest.hit(front).found());
+    EXPECT_FALSE(closest.hit(back).found());
+    EXPECT_EQ(closest.passedOneSidedAt(front), kInf);
+    EXPECT_NEAR(closest.passedOneSidedAt(back), 1.f, 1e-5f);
+    // ... except for light, which meets that face from behind.
+    EXPECT_FALSE(occlusion.occluded(front));
+    EXPECT_NEAR(occlusion.passedOneSidedAt(front), 1.f, 1e-5f);
+    EXPECT_TRUE(occlusion.occluded(back));
+  }
+}
+
 } // namespace
 } // namespace prism::rt

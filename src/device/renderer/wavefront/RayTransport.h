@@ -25,6 +25,17 @@ class MediaEvents
   virtual float collisionBefore(size_t r, float hitDistance) const = 0;
 };
 
+// What a shadow ray brings if nothing blocks it: the light sample's
+// `radiance` times its `weight` against the BSDF's sample of the same
+// light, or its radiance alone where the ray passed a single-sided surface
+// that a BSDF's ray would stop at (rt::RayQueue::passedOneSidedAt): there
+// the light sample is the only way to the light.
+struct ShadowContribution
+{
+  float3 radiance{0.f, 0.f, 0.f};
+  float weight{1.f};
+};
+
 class RayTransport
 {
  public:
@@ -61,7 +72,7 @@ class RayTransport
       const rt::RayQueue &rays,
       rt::RayQueue &next,
       rt::RayQueue &shadows,
-      std::vector<float3> &contributions) const
+      std::vector<ShadowContribution> &contributions) const
   {}
 };
 
