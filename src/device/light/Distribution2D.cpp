@@ -15,7 +15,7 @@ Distribution1D::Distribution1D(const float *weights, size_t count)
     : m_weights(weights, weights + count), m_cdf(count + 1, 0.0)
 {
   for (float &w : m_weights)
-    w = std::isfinite(w) && w > 0.f ? w : 0.f;
+    w = usableWeight(w);
   double sum = 0.0;
   for (size_t i = 0; i < count; i++) {
     sum += m_weights[i];
@@ -94,10 +94,8 @@ Distribution2D::Distribution2D(
     // A row of zeros became uniform inside its Distribution1D; its share
     // of the marginal stays 0, so it is never chosen.
     double sum = 0.0;
-    for (size_t i = 0; i < width; i++) {
-      const float w = weights[i + j * width];
-      sum += std::isfinite(w) && w > 0.f ? w : 0.f;
-    }
+    for (size_t i = 0; i < width; i++)
+      sum += usableWeight(weights[i + j * width]);
     rowIntegrals[j] = float(sum / double(width));
   }
   m_marginal = Distribution1D(rowIntegrals.data(), height);

@@ -6,9 +6,16 @@
 #include "../math/Vec.h"
 
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace prism::light {
+
+// A weight as the densities count it: negative and non-finite ones as 0.
+inline float usableWeight(float w)
+{
+  return w > 0.f && w <= std::numeric_limits<float>::max() ? w : 0.f;
+}
 
 // A density on [0,1) proportional to `weights` over equal bins.
 class Distribution1D

@@ -50,28 +50,13 @@ class PlacedHdri : public PlacedLight
       const float3 &, const float3 &normal, const float2 &u) const override
   {
     const Mixture mixture = mixtureFacing(normal);
-    // The component by u.x, which is then stretched over its share: the
-    // image's own first, then the axes (the last with a share also takes
-    // what rounding leaves above the sum).
-    if (u.x < mixture[0])
-      return sampleImage({u.x / mixture[0], u.y}, mixture);
-    int last = -1;
-    for (int axis = 0; axis < HdriHemispheres::kAxes; axis++)
-      last = mixture[size_t(1 + axis)] > 0.f ? axis : last;
-    float start = mixture[0];
-    for (int axis = 0; axis <= last; axis++) {
-      const float share = mixture[size_t(1 + axis)];
-      if (!(share > 0.f) || (u.x >= start + share && axis < last)) {
-        start += share;
-        continue;
-      }
-      float2 rest{
-          std::clamp((u.x - start) / share, 0.f, kOneMinusEpsilon), u.y};
-      size_t i = 0, j = 0;
-      m_image->hemispheres.sample(m_image->distribution, axis, rest, i, j);
-      return sampleTexel(i, j, rest, mixture);
-    }
-    return sampleImage(u, kEverySide); // no axis: the image alone
+    float2 rest = u;
+    const int axis = HdriHemispheres::component(mixture, rest.x);
+    if (axis < 0)
+      return sampleImage(rest, mixture);
+    size_t i = 0, j = 0;
+    m_image->hemispheres.sample(m_image->distribution, axis, rest, i, j);
+    return sampleTexel(i, j, rest, mixture);
   }
 
   float3 radianceAlong(const float3 &,
@@ -105,7 +90,7 @@ class PlacedHdri : public PlacedLight
 
  private:
   using Mixture = HdriHemispheres::Mixture;
-  static constexpr Mixture kEverySide{1.f, 0.f, 0.f, 0.f, 0.f, 0.f, 0.f};
+  static constexpr Mixture kEverySide = HdriHemispheres::kEverySide;
 
   Mixture mixtureFacing(const float3 &normal) const
   {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace prism::light {
 namespace {
@@ -12,6 +13,7 @@ constexpr size_t kMaxCellsX = 32, kMaxCellsY = 16;
 // The share of a facing receiver's samples that follow the image alone.
 constexpr float kImageShare = 0.1f;
 constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
+constexpr float kLargestFloat = std::numeric_limits<float>::max();
 
 float3 axisDirection(int axis)
 {
@@ -57,18 +59,13 @@ HdriHemispheres::HdriHemispheres(
   m_cellsY = std::min(height, kMaxCellsY);
   cut(width, m_cellsX, m_columnStart, m_cellOfColumn);
   cut(height, m_cellsY, m_rowStart, m_cellOfRow);
-  // Weights as the image's distribution counts them.
-  auto weight = [&](size_t i, size_t j) {
-    const float w = weights[i + j * width];
-    return std::isfinite(w) && w > 0.f ? double(w) : 0.0;
-  };
   m_columnSums.assign(m_cellsX, std::vector<double>(height + 1, 0.0));
   for (size_t cx = 0; cx < m_cellsX; cx++) {
     std::vector<double> &sums = m_columnSums[cx];
     for (size_t j = 0; j < height; j++) {
       double row = 0.0;
       for (size_t i = m_columnStart[cx]; i < m_columnStart[cx + 1]; i++)
-        row += weight(i, j);
+        row += usableWeight(weights[i + j * width]); // as the image counts
       sums[j + 1] = sums[j] + row;
     }
   }
@@ -130,13 +127,13 @@ float HdriHemispheres::bestCosine(
 
 HdriHemispheres::Mixture HdriHemispheres::mixture(const float3 &normal) const
 {
-  Mixture m{};
-  m[0] = 1.f;
-  if (empty() || !(lengthSquared(normal) > 0.f))
+  Mixture m = kEverySide;
+  const float length2 = lengthSquared(normal);
+  if (empty() || !(length2 > 0.f && length2 <= kLargestFloat))
     return m;
   // Squared components over the squared length: shares that sum to one
   // whatever the normal's rounding.
-  const float scale = (1.f - kImageShare) / lengthSquared(normal);
+  const float scale = (1.f - kImageShare) / length2;
   float facing = 0.f;
   for (int k = 0; k < 3; k++) {
     const int axis = 2 * k + (normal[k] < 0.f ? 1 : 0);
@@ -147,6 +144,33 @@ HdriHemispheres::Mixture HdriHemispheres::mixture(const float3 &normal) const
   }
   m[0] = 1.f - facing;
   return m;
+}
+
+int HdriHemispheres::component(const Mixture &mixture, float &u)
+{
+  if (u < mixture[0]) {
+    u = std::clamp(u / mixture[0], 0.f, kOneMinusEpsilon);
+    return -1;
+  }
+  // The axis whose stretch after the image's holds u; the last axis with
+  // a share also takes what rounding leaves above the sum.
+  int chosen = -1;
+  float start = mixture[0], chosenStart = 0.f;
+  for (int axis = 0; axis < kAxes; axis++) {
+    const float share = mixture[size_t(1 + axis)];
+    if (!(share > 0.f))
+      continue;
+    chosen = axis;
+    chosenStart = start;
+    if (u < start + share)
+      break;
+    start += share;
+  }
+  if (chosen < 0) // no axis: rounding put u past an image share below 1
+    return -1;
+  const float share = mixture[size_t(1 + chosen)];
+  u = std::clamp((u - chosenStart) / share, 0.f, kOneMinusEpsilon);
+  return chosen;
 }
 
 float HdriHemispheres::factor(const Mixture &mixture, size_t i, size_t j) const

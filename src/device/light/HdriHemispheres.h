@@ -31,6 +31,8 @@ class HdriHemispheres
   // How much of a receiver's samples each component takes: [0] the
   // image's own distribution, [1 + k] axis k's.
   using Mixture = std::array<float, 1 + kAxes>;
+  // A receiver without a side: the image's distribution alone.
+  static constexpr Mixture kEverySide{1.f, 0.f, 0.f, 0.f, 0.f, 0.f, 0.f};
 
   HdriHemispheres() = default;
   // Over the image's per-texel sampling weights (width x height, the
@@ -43,9 +45,12 @@ class HdriHemispheres
   {
     return m_cellsX == 0;
   }
-  // The components for a receiver facing `normal` (unit, in the light's
-  // frame; zero: every side, the image's distribution alone).
+  // The components for a receiver facing `normal` (in the light's frame;
+  // zero or not finite: kEverySide).
   Mixture mixture(const float3 &normal) const;
+  // The component `u` chooses (-1 the image's, else an axis), leaving in
+  // `u` a fresh uniform number: its place within the component's share.
+  static int component(const Mixture &mixture, float &u);
   // The mixture's density over the image's, in texel (i, j).
   float factor(const Mixture &mixture, size_t i, size_t j) const;
   // A texel chosen by axis `axis`'s component with `u`, and in `u` what is

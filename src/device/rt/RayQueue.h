@@ -154,7 +154,8 @@ class RayQueue
   std::vector<uint32_t> m_primitiveId, m_geometryId, m_instanceId;
   // Occlusion (set by the trace, then attenuated).
   std::vector<float3> m_transmittance;
-  // Single-sided surfaces passed (set by the trace), and each ray's own
+  // Single-sided surfaces passed (+inf from push(), lowered by the
+  // trace's filters), and each ray's own
   // index, which Embree carries as the ray's id to the filters recording
   // them.
   std::vector<float> m_passedOneSided;

@@ -697,9 +697,6 @@ void Scene::intersect(RayQueue &queue) const
   if (!m_scene || queue.empty())
     return;
   confine(queue);
-  std::fill_n(queue.m_passedOneSided.begin(),
-      queue.size(),
-      std::numeric_limits<float>::infinity());
   // A tile's wavefront is one stream; a larger one (a lockstep render's
   // row of tiles) streams of a tile's size on several threads.
   forEachBlock(queue.size(), kStreamSize, [&](size_t i, size_t count) {
@@ -724,9 +721,6 @@ void Scene::occluded(RayQueue &queue) const
   if (!m_scene || queue.empty())
     return;
   confine(queue);
-  std::fill_n(queue.m_passedOneSided.begin(),
-      queue.size(),
-      std::numeric_limits<float>::infinity());
   forEachBlock(queue.size(), kStreamSize, [&](size_t i, size_t count) {
     TraceContext context = contextFor(queue, queue.m_passedOneSided.data());
     RTCRayNp rays = streamAt(queue, i);

@@ -1181,7 +1181,8 @@ TEST_F(LightTest, HdriSamplesTowardsTheSideAReceiverFaces)
 // lies below its horizon. Facing an axis of the light's frame, only half
 // the tenth it still samples by the image does (5 %); facing between
 // axes, the axes' lobes reach below too (about 18 % here). With no side
-// (a zero normal) it samples as sample() does.
+// (a zero normal) it samples as sample() does, and so it does with a NaN
+// or infinite normal, and radianceAlongFacing() gives sample()'s pdf.
 TEST_F(LightTest, HdriFacingSamplesStayAboveTheHorizon)
 {
   const uint64_t width = 64, height = 32;
@@ -1204,9 +1205,17 @@ TEST_F(LightTest, HdriFacingSamplesStayAboveTheHorizon)
           dot(placed->sampleFacing({0, 0, 0}, normal, u).direction, normal)
           <= 0.f;
       const LightSample a = placed->sample({0, 0, 0}, u);
-      const LightSample b = placed->sampleFacing({0, 0, 0}, {0, 0, 0}, u);
-      differ += a.pdf != b.pdf || a.direction.x != b.direction.x
-                || a.direction.y != b.direction.y;
+      for (const float3 none : {float3{0, 0, 0},
+               float3{std::nanf(""), 0, 1},
+               float3{INFINITY, 0, 0},
+               float3{1e30f, 1e30f, 0}}) {
+        const LightSample b = placed->sampleFacing({0, 0, 0}, none, u);
+        float distance = 0.f, pdf = 0.f;
+        placed->radianceAlongFacing(
+            {0, 0, 0}, none, a.direction, distance, pdf);
+        differ += a.pdf != b.pdf || a.direction.x != b.direction.x
+                  || a.direction.y != b.direction.y || pdf != a.pdf;
+      }
     }
     EXPECT_NEAR(double(below) / n, 0.5, 0.02);
     EXPECT_LT(double(belowFacing) / n, mostBelow) << normal.x << normal.y;
