@@ -557,12 +557,15 @@ bool PathTracer::passThrough(Bounce &b, rt::RayQueue &next) const
     return false;
   }
   if (++path.layer < kMaxLayers) {
-    next.push(b.ray.origin,
+    const size_t r = next.push(b.ray.origin,
         b.ray.direction,
         b.hit.t + std::max(1e-4f, b.hit.t * 1e-5f),
         std::numeric_limits<float>::infinity(),
         path.time,
         b.tag);
+    // The same ray on: a single-sided face it passed before this layer
+    // still stands between its origin and what it finds next.
+    next.setPassedOneSidedAt(r, b.passedOneSided);
   }
   return true;
 }

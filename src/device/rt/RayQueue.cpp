@@ -49,12 +49,13 @@ void RayQueue::append(const RayQueue &other)
   // push() keeps what it stored the first time (a traceable ray as it is,
   // an untraceable one as its empty interval).
   for (size_t i = 0; i < other.m_size; i++) {
-    push(other.origin(i),
+    const size_t at = push(other.origin(i),
         other.direction(i),
         other.m_tMin[i],
         other.m_tMax[i],
         other.m_time[i],
         other.m_tag[i]);
+    m_passedOneSided[at] = other.m_passedOneSided[i];
   }
 }
 

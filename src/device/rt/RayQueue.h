@@ -33,7 +33,8 @@ class RayQueue
     m_coherent = false;
   }
   void reserve(size_t capacity);
-  // Appends `other`'s rays (not what tracing them found) after these.
+  // Appends `other`'s rays (not what tracing them found, but the
+  // single-sided surfaces they were given as passed) after these.
   void append(const RayQueue &other);
 
   // Appends a ray; `tag` is the caller's (e.g. which path it extends) and
@@ -154,10 +155,10 @@ class RayQueue
   std::vector<uint32_t> m_primitiveId, m_geometryId, m_instanceId;
   // Occlusion (set by the trace, then attenuated).
   std::vector<float3> m_transmittance;
-  // Single-sided surfaces passed (+inf from push(), lowered by the
-  // trace's filters), and each ray's own
-  // index, which Embree carries as the ray's id to the filters recording
-  // them.
+  // Single-sided surfaces passed (+inf from push(), or what the caller
+  // set: a ray carried on past a see-through layer; lowered by the
+  // trace's filters), and each ray's own index, which Embree carries as
+  // the ray's id to the filters recording them.
   std::vector<float> m_passedOneSided;
   std::vector<uint32_t> m_index;
 };

@@ -218,5 +218,42 @@ TEST_F(RayQueueTest, RaysSayWhereTheyPassedASingleSidedSurface)
   }
 }
 
+// A ray carried on past a see-through layer is given what it passed
+// before: appending keeps that, and a trace only lowers it.
+TEST_F(RayQueueTest, RaysCarriedOnKeepTheSingleSidedSurfacesTheyPassed)
+{
+  Scene scene(m_context);
+  scene.addTriangles(0, m_vertices.data(), 3, m_indices.data(), 1);
+  scene.cullBackFaces(0);
+  scene.commit();
+  // Which side of the triangle a closest-hit ray passes from behind.
+  RayQueue probe;
+  probe.push({0.2f, 0.2f, 1}, {0, 0, -1}, 0.f, kInf, 0.5f, 0);
+  scene.intersect(probe);
+  const float z = probe.hit(0).found() ? -1.f : 1.f;
+  RayQueue given;
+  given.push({0.2f, 0.2f, z}, {0, 0, -z}, 0.f, kInf, 0.5f, 0); // passes at 1
+  given.push({0.2f, 0.2f, z}, {0, 0, -z}, 0.f, kInf, 0.5f, 1);
+  given.push({3, 3, z}, {0, 0, -z}, 0.f, kInf, 0.5f, 2); // passes nothing
+  given.setPassedOneSidedAt(0, 3.f);
+  given.setPassedOneSidedAt(1, 0.25f);
+  given.setPassedOneSidedAt(2, 0.5f);
+  RayQueue queue;
+  queue.push({0, 0, 9}, {0, 0, 1}, 0.f, kInf, 0.5f, 9);
+  queue.append(given);
+  ASSERT_EQ(queue.size(), 4u);
+  EXPECT_EQ(queue.passedOneSidedAt(0), kInf);
+  EXPECT_EQ(queue.passedOneSidedAt(1), 3.f);
+  EXPECT_EQ(queue.passedOneSidedAt(2), 0.25f);
+  EXPECT_EQ(queue.passedOneSidedAt(3), 0.5f);
+  scene.intersect(queue);
+  EXPECT_EQ(queue.passedOneSidedAt(0), kInf);
+  EXPECT_NEAR(queue.passedOneSidedAt(1), 1.f, 1e-5f);
+  EXPECT_EQ(queue.passedOneSidedAt(2), 0.25f);
+  EXPECT_EQ(queue.passedOneSidedAt(3), 0.5f);
+  for (size_t i = 0; i < 4; i++)
+    EXPECT_FALSE(queue.hit(i).found()) << i;
+}
+
 } // namespace
 } // namespace prism::rt
