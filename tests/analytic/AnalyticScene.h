@@ -124,6 +124,31 @@ class AnalyticTest : public PrismDeviceTest
     anariCommitParameters(m_device, w);
     return w;
   }
+  // Gives `w` one instance, placing a group of `surface` (taken over) by
+  // `transform` (column-major 4x4).
+  void placeInstanced(
+      ANARIWorld w, ANARISurface surface, const float *transform)
+  {
+    ANARIGroup group = anariNewGroup(m_device);
+    setArray(group,
+        "surface",
+        anariNewArray1D(
+            m_device, &surface, nullptr, nullptr, ANARI_SURFACE, 1));
+    anariCommitParameters(m_device, group);
+    anariRelease(m_device, surface);
+    ANARIInstance instance = anariNewInstance(m_device, "transform");
+    anariSetParameter(m_device, instance, "group", ANARI_GROUP, &group);
+    anariSetParameter(
+        m_device, instance, "transform", ANARI_FLOAT32_MAT4, transform);
+    anariCommitParameters(m_device, instance);
+    anariRelease(m_device, group);
+    setArray(w,
+        "instance",
+        anariNewArray1D(
+            m_device, &instance, nullptr, nullptr, ANARI_INSTANCE, 1));
+    anariRelease(m_device, instance);
+    anariCommitParameters(m_device, w);
+  }
   // A box corner without lights: a grey floor, a green wall, a red ball
   // (bounces, shadows and occlusion once lit).
   ANARIWorld boxCorner()

@@ -70,27 +70,8 @@ class IsosurfaceAnalytic : public AnalyticTest
       setArray(g, "isovalue", array1D(isovalues, ANARI_FLOAT32));
     ANARISurface isosurface = surface(g, matte(1, 1, 1));
     ANARIWorld w = transform ? world({}) : world({isosurface});
-    if (transform) {
-      ANARIGroup group = anariNewGroup(m_device);
-      setArray(group,
-          "surface",
-          anariNewArray1D(
-              m_device, &isosurface, nullptr, nullptr, ANARI_SURFACE, 1));
-      anariCommitParameters(m_device, group);
-      anariRelease(m_device, isosurface);
-      ANARIInstance instance = anariNewInstance(m_device, "transform");
-      anariSetParameter(m_device, instance, "group", ANARI_GROUP, &group);
-      anariSetParameter(
-          m_device, instance, "transform", ANARI_FLOAT32_MAT4, transform);
-      anariCommitParameters(m_device, instance);
-      anariRelease(m_device, group);
-      setArray(w,
-          "instance",
-          anariNewArray1D(
-              m_device, &instance, nullptr, nullptr, ANARI_INSTANCE, 1));
-      anariRelease(m_device, instance);
-      anariCommitParameters(m_device, w);
-    }
+    if (transform)
+      placeInstanced(w, isosurface, transform);
     ANARICamera c = orthographic(kEyeZ5, kLookDown, 3.f);
     ANARIRenderer r = renderer("raycast");
     RenderedImage image = render(w, c, r, kPixels, kPixels);

@@ -29,6 +29,7 @@ struct TraceContext
 {
   RTCIntersectContext embree;
   float *passedOneSided{nullptr};
+  const ShadowStops *stops{nullptr}; // occlusion rays at see-through surfaces
 };
 static_assert(std::is_standard_layout_v<
                   TraceContext> && offsetof(TraceContext, embree) == 0);
@@ -284,18 +285,61 @@ void rejectBackFaces(const RTCFilterFunctionNArguments *args)
   }
 }
 
-// Embree filter of shadow rays. Light runs against them, from the light to
-// the shaded point: it passes a face whose back it meets, which is the face
-// the shadow ray meets from the front. So a single-sided surface shadows
-// only what lies behind it seen from the light, and light reaches exactly
-// where the camera sees through back faces.
-void rejectFacesLitFromBehind(const RTCFilterFunctionNArguments *args)
+// Whether shadow ray i passes a single-sided face. Light runs against
+// shadow rays, from the light to the shaded point: it passes a face whose
+// back it meets, which is the face the shadow ray meets from the front. So
+// a single-sided surface shadows only what lies behind it seen from the
+// light, and light reaches exactly where the camera sees through back
+// faces.
+bool passesFaceLitFromBehind(
+    const RTCFilterFunctionNArguments *args, unsigned i)
+{
+  if (!(facing(args, i) < 0.f))
+    return false;
+  notePassed(args, i);
+  return true;
+}
+
+// Whether shadow ray i passes a see-through surface: as the trace's
+// ShadowStops decides (none: it stops).
+bool passesSeeThrough(const RTCFilterFunctionNArguments *args, unsigned i)
+{
+  const auto *context = reinterpret_cast<const TraceContext *>(args->context);
+  if (!context->stops)
+    return false;
+  RTCRayN *ray = args->ray; // Embree's accessors take them non-const
+  RTCHitN *hit = args->hit;
+  const unsigned n = args->N;
+  Hit h;
+  h.t = RTCRayN_tfar(ray, n, i);
+  h.u = RTCHitN_u(hit, n, i);
+  h.v = RTCHitN_v(hit, n, i);
+  h.geometricNormal = {RTCHitN_Ng_x(hit, n, i),
+      RTCHitN_Ng_y(hit, n, i),
+      RTCHitN_Ng_z(hit, n, i)};
+  h.primitiveId = RTCHitN_primID(hit, n, i);
+  h.geometryId = RTCHitN_geomID(hit, n, i);
+  h.instanceId = RTCHitN_instID(hit, n, i, 0);
+  return !context->stops->at({RTCRayN_org_x(ray, n, i),
+                                 RTCRayN_org_y(ray, n, i),
+                                 RTCRayN_org_z(ray, n, i)},
+      {RTCRayN_dir_x(ray, n, i),
+          RTCRayN_dir_y(ray, n, i),
+          RTCRayN_dir_z(ray, n, i)},
+      RTCRayN_time(ray, n, i),
+      h);
+}
+
+// Embree filters of shadow rays, by what the geometry is.
+template <bool kOneSided, bool kSeeThrough>
+void filterShadowRays(const RTCFilterFunctionNArguments *args)
 {
   for (unsigned i = 0; i < args->N; i++) {
-    if (args->valid[i] == -1 && facing(args, i) < 0.f) {
+    if (args->valid[i] != -1)
+      continue;
+    if ((kOneSided && passesFaceLitFromBehind(args, i))
+        || (kSeeThrough && passesSeeThrough(args, i)))
       args->valid[i] = 0;
-      notePassed(args, i);
-    }
   }
 }
 
@@ -347,6 +391,8 @@ void Scene::clear()
   m_rayRange = kLargestCoordinate;
   m_interpolatedVertices.clear();
   m_attached.clear();
+  m_oneSided.clear();
+  m_seeThrough.clear();
   m_scene = m_context.isValid() ? rtcNewScene(m_context.handle()) : nullptr;
   if (m_scene) {
     rtcSetSceneBuildQuality(m_scene, embreeQuality(m_context.buildQuality()));
@@ -587,8 +633,11 @@ void Scene::attach(RTCGeometry geometry, uint32_t id)
   rtcCommitGeometry(geometry);
   rtcAttachGeometryByID(m_scene, geometry, id);
   rtcReleaseGeometry(geometry);
-  if (id >= m_attached.size())
+  if (id >= m_attached.size()) {
     m_attached.resize(size_t(id) + 1, false);
+    m_oneSided.resize(size_t(id) + 1, false);
+    m_seeThrough.resize(size_t(id) + 1, false);
+  }
   m_attached[id] = true;
 }
 
@@ -602,9 +651,28 @@ void Scene::cullBackFaces(uint32_t id)
   // Geometry that added nothing (empty, invalid) has no Embree geometry.
   if (!isAttached(id))
     return;
+  m_oneSided[id] = true;
+  setFilters(id);
+}
+
+void Scene::letShadowsThrough(uint32_t id)
+{
+  if (!isAttached(id))
+    return;
+  m_seeThrough[id] = true;
+  setFilters(id);
+}
+
+void Scene::setFilters(uint32_t id)
+{
   RTCGeometry geometry = rtcGetGeometry(m_scene, id);
-  rtcSetGeometryIntersectFilterFunction(geometry, rejectBackFaces);
-  rtcSetGeometryOccludedFilterFunction(geometry, rejectFacesLitFromBehind);
+  const bool oneSided = m_oneSided[id], seeThrough = m_seeThrough[id];
+  rtcSetGeometryIntersectFilterFunction(
+      geometry, oneSided ? rejectBackFaces : nullptr);
+  rtcSetGeometryOccludedFilterFunction(geometry,
+      oneSided && seeThrough ? filterShadowRays<true, true>
+      : oneSided             ? filterShadowRays<true, false>
+                             : filterShadowRays<false, true>);
   rtcCommitGeometry(geometry);
 }
 
@@ -716,13 +784,14 @@ void Scene::intersect(RayQueue &queue) const
   });
 }
 
-void Scene::occluded(RayQueue &queue) const
+void Scene::occluded(RayQueue &queue, const ShadowStops *stops) const
 {
   if (!m_scene || queue.empty())
     return;
   confine(queue);
   forEachBlock(queue.size(), kStreamSize, [&](size_t i, size_t count) {
     TraceContext context = contextFor(queue, queue.m_passedOneSided.data());
+    context.stops = stops;
     RTCRayNp rays = streamAt(queue, i);
     rtcOccludedNp(m_scene, &context.embree, &rays, unsigned(count));
   });

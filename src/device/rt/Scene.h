@@ -8,6 +8,7 @@
 #include "Hit.h"
 #include "RayHitPacket.h"
 #include "RayValidity.h"
+#include "ShadowStops.h"
 #include "UserGeometry.h"
 
 #include <algorithm>
@@ -88,6 +89,10 @@ class Scene
   // and quads, where the corners run clockwise). Embree-native geometry
   // only; user geometry stays two-sided.
   void cullBackFaces(uint32_t id);
+  // Makes geometry `id` (already added) see-through for occlusion rays:
+  // where one meets it, the ShadowStops the trace was given decides
+  // whether it stops (without one, it does). Embree-native geometry only.
+  void letShadowsThrough(uint32_t id);
   // `child` placed by `worldFromObject`; `child` must be committed first.
   // The caller keeps rayRange() within the placement's worldRayRange()
   // (setRayRange), which it knows from the inverse it has checked.
@@ -137,9 +142,10 @@ class Scene
       Hit &hit,
       float time) const;
   // Every ray of `queue` (incoherent rays, Embree's stream API): the
-  // closest hits, or only whether anything blocks each ray.
+  // closest hits, or only whether anything blocks each ray (`stops`
+  // deciding at see-through surfaces).
   void intersect(RayQueue &queue) const;
-  void occluded(RayQueue &queue) const;
+  void occluded(RayQueue &queue, const ShadowStops *stops = nullptr) const;
   // Traces the lanes of `packet` whose `active` entry is -1, in place, with
   // no copies: a lane's geometryId is kInvalidId unless it found a hit, and
   // its other hit fields mean something only then.
@@ -150,6 +156,8 @@ class Scene
   void attach(RTCGeometryTy *geometry, uint32_t id);
   // Whether geometry `id` added an Embree geometry.
   bool isAttached(uint32_t id) const;
+  // Sets geometry `id`'s filters for what m_oneSided and m_seeThrough say.
+  void setFilters(uint32_t id);
   // Marks the queue's rays beyond rayRange() untraceable.
   void confine(RayQueue &queue) const;
   // The queue's ray arrays from ray `i` on, as Embree's stream API takes
@@ -169,7 +177,8 @@ class Scene
   // Vertices interpolated between keys where Embree's time steps fall
   // between them; kept until clear().
   std::vector<std::vector<float3>> m_interpolatedVertices;
-  std::vector<bool> m_attached; // by geometry id
+  // By geometry id: added, single-sided, see-through.
+  std::vector<bool> m_attached, m_oneSided, m_seeThrough;
 };
 
 } // namespace prism::rt

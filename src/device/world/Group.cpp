@@ -79,6 +79,8 @@ void Group::finalize()
     surface->geometry()->addTo(*m_scene, uint32_t(i));
     if (!surface->material()->doubleSided())
       m_scene->cullBackFaces(uint32_t(i));
+    if (surface->material()->alphaMode() != AlphaMode::Opaque)
+      m_scene->letShadowsThrough(uint32_t(i));
   }
   m_scene->commit();
   m_bounds = m_scene->bounds();

@@ -512,10 +512,10 @@ void World::intersect(rt::RayQueue &queue) const
     queue.assignInstance(0);
 }
 
-void World::occluded(rt::RayQueue &queue) const
+void World::occluded(rt::RayQueue &queue, const rt::ShadowStops *stops) const
 {
   if (m_traced)
-    m_traced->occluded(queue);
+    m_traced->occluded(queue, stops);
 }
 
 void World::intersect(

@@ -118,9 +118,11 @@ class World : public Object
       rt::Hit &hit,
       float time) const;
   // Every ray of the queue: closest hits (instanceId as above), or only
-  // whether something blocks each.
+  // whether something blocks each (`stops` deciding at see-through
+  // surfaces; without it they block).
   void intersect(rt::RayQueue &queue) const;
-  void occluded(rt::RayQueue &queue) const;
+  void occluded(
+      rt::RayQueue &queue, const rt::ShadowStops *stops = nullptr) const;
   // The packet's active lanes traced in place (see rt::Scene); instance
   // ids name placements, as above.
   void intersect(

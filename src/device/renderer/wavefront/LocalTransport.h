@@ -6,6 +6,7 @@
 #include "../../world/World.h"
 #include "../VolumeTracing.h"
 #include "RayTransport.h"
+#include "SeeThroughShadows.h"
 
 #include <bit>
 
@@ -16,7 +17,7 @@ class LocalTransport final : public RayTransport
  public:
   // `streamSalt`: see RayTransport::mediaStreamSalt().
   explicit LocalTransport(const World &world, uint32_t streamSalt = 0)
-      : m_world(world), m_streamSalt(streamSalt)
+      : m_world(world), m_seeThrough(world), m_streamSalt(streamSalt)
   {}
 
   void traceClosest(rt::RayQueue &queue, const MediaEvents *) const override
@@ -25,7 +26,7 @@ class LocalTransport final : public RayTransport
   }
   void traceOcclusion(rt::RayQueue &queue) const override
   {
-    m_world.occluded(queue);
+    m_world.occluded(queue, &m_seeThrough);
     if (m_world.volumes().empty())
       return;
     // Each ray on its own: a larger wavefront than a tile's in blocks on
@@ -55,6 +56,7 @@ class LocalTransport final : public RayTransport
   }
 
   const World &m_world;
+  SeeThroughShadows m_seeThrough;
   uint32_t m_streamSalt;
 };
 
