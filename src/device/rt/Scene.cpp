@@ -77,6 +77,20 @@ void userBounds(const RTCBoundsFunctionArguments *args)
       0.f};
 }
 
+float3 originOf(RTCRayN *ray, unsigned n, unsigned i)
+{
+  return {RTCRayN_org_x(ray, n, i),
+      RTCRayN_org_y(ray, n, i),
+      RTCRayN_org_z(ray, n, i)};
+}
+
+float3 directionOf(RTCRayN *ray, unsigned n, unsigned i)
+{
+  return {RTCRayN_dir_x(ray, n, i),
+      RTCRayN_dir_y(ray, n, i),
+      RTCRayN_dir_z(ray, n, i)};
+}
+
 // Ray i of a stream Embree hands a user geometry, tested against
 // `primitive`: the nearest hit in the ray's (tnear, tfar), if any, and the
 // primitive id it reports.
@@ -91,16 +105,10 @@ bool intersectLane(const UserGeometry &geometry,
     float3 &normal,
     uint32_t &reportedPrimitive)
 {
-  const float3 origin{RTCRayN_org_x(ray, n, i),
-      RTCRayN_org_y(ray, n, i),
-      RTCRayN_org_z(ray, n, i)};
-  const float3 direction{RTCRayN_dir_x(ray, n, i),
-      RTCRayN_dir_y(ray, n, i),
-      RTCRayN_dir_z(ray, n, i)};
   reportedPrimitive = primitive;
   return geometry.intersectPrimitive(primitive,
-      origin,
-      direction,
+      originOf(ray, n, i),
+      directionOf(ray, n, i),
       RTCRayN_tnear(ray, n, i),
       RTCRayN_tfar(ray, n, i),
       t,
@@ -146,27 +154,54 @@ void userIntersect(const RTCIntersectFunctionNArguments *args)
   }
 }
 
+// Crossings of a see-through user geometry a shadow ray may pass before
+// it counts as blocked.
+constexpr int kMaxSeeThroughCrossings = 64;
+
+// Embree's occlusion test of a user geometry's primitive: the first
+// crossing blocks the ray, or, `kSeeThrough`, each crossing in turn as the
+// trace's ShadowStops decides (as the filters do for native geometry).
+template <bool kSeeThrough>
 void userOccluded(const RTCOccludedFunctionNArguments *args)
 {
   auto *geometry = (const UserGeometry *)args->geometryUserPtr;
+  const auto *context = reinterpret_cast<const TraceContext *>(args->context);
   RTCRayN *ray = args->ray;
-  for (unsigned i = 0; i < args->N; i++) {
+  const unsigned n = args->N;
+  for (unsigned i = 0; i < n; i++) {
     if (!args->valid[i])
       continue;
-    float t, u, v;
-    float3 normal;
-    uint32_t primitive;
-    if (intersectLane(*geometry,
-            args->primID,
-            ray,
-            args->N,
-            i,
-            t,
-            u,
-            v,
-            normal,
-            primitive))
-      RTCRayN_tfar(ray, args->N, i) = -std::numeric_limits<float>::infinity();
+    const float3 origin = originOf(ray, n, i),
+                 direction = directionOf(ray, n, i);
+    float tMin = RTCRayN_tnear(ray, n, i);
+    const float tMax = RTCRayN_tfar(ray, n, i);
+    for (int crossing = 0; crossing < kMaxSeeThroughCrossings; crossing++) {
+      Hit hit;
+      hit.primitiveId = args->primID;
+      if (!geometry->intersectPrimitive(args->primID,
+              origin,
+              direction,
+              tMin,
+              tMax,
+              hit.t,
+              hit.u,
+              hit.v,
+              hit.geometricNormal,
+              hit.primitiveId))
+        break;
+      hit.geometryId = args->geomID;
+      hit.instanceId = args->context->instID[0];
+      const bool passes = kSeeThrough && context->stops
+                          && crossing + 1 < kMaxSeeThroughCrossings
+                          && !context->stops->at(
+                              origin, direction, RTCRayN_time(ray, n, i), hit);
+      if (!passes) {
+        RTCRayN_tfar(ray, n, i) = -std::numeric_limits<float>::infinity();
+        break;
+      }
+      // On past it, as the path tracer carries a ray on past a layer.
+      tMin = hit.t + std::max(1e-4f, hit.t * 1e-5f);
+    }
   }
 }
 
@@ -320,14 +355,8 @@ bool passesSeeThrough(const RTCFilterFunctionNArguments *args, unsigned i)
   h.primitiveId = RTCHitN_primID(hit, n, i);
   h.geometryId = RTCHitN_geomID(hit, n, i);
   h.instanceId = RTCHitN_instID(hit, n, i, 0);
-  return !context->stops->at({RTCRayN_org_x(ray, n, i),
-                                 RTCRayN_org_y(ray, n, i),
-                                 RTCRayN_org_z(ray, n, i)},
-      {RTCRayN_dir_x(ray, n, i),
-          RTCRayN_dir_y(ray, n, i),
-          RTCRayN_dir_z(ray, n, i)},
-      RTCRayN_time(ray, n, i),
-      h);
+  return !context->stops->at(
+      originOf(ray, n, i), directionOf(ray, n, i), RTCRayN_time(ray, n, i), h);
 }
 
 // Embree filters of shadow rays, by what the geometry is.
@@ -393,6 +422,7 @@ void Scene::clear()
   m_attached.clear();
   m_oneSided.clear();
   m_seeThrough.clear();
+  m_user.clear();
   m_scene = m_context.isValid() ? rtcNewScene(m_context.handle()) : nullptr;
   if (m_scene) {
     rtcSetSceneBuildQuality(m_scene, embreeQuality(m_context.buildQuality()));
@@ -542,8 +572,9 @@ void Scene::addUser(uint32_t id, const UserGeometry *geometry, size_t count)
   rtcSetGeometryUserData(g, const_cast<UserGeometry *>(geometry));
   rtcSetGeometryBoundsFunction(g, userBounds, nullptr);
   rtcSetGeometryIntersectFunction(g, userIntersect);
-  rtcSetGeometryOccludedFunction(g, userOccluded);
+  rtcSetGeometryOccludedFunction(g, userOccluded<false>);
   attach(g, id);
+  m_user[id] = true;
 }
 
 void Scene::addInstance(
@@ -637,6 +668,7 @@ void Scene::attach(RTCGeometry geometry, uint32_t id)
     m_attached.resize(size_t(id) + 1, false);
     m_oneSided.resize(size_t(id) + 1, false);
     m_seeThrough.resize(size_t(id) + 1, false);
+    m_user.resize(size_t(id) + 1, false);
   }
   m_attached[id] = true;
 }
@@ -673,6 +705,10 @@ void Scene::setFilters(uint32_t id)
       oneSided && seeThrough ? filterShadowRays<true, true>
       : oneSided             ? filterShadowRays<true, false>
                              : filterShadowRays<false, true>);
+  // User geometry runs no filters: its occlusion test asks itself.
+  if (m_user[id])
+    rtcSetGeometryOccludedFunction(
+        geometry, seeThrough ? userOccluded<true> : userOccluded<false>);
   rtcCommitGeometry(geometry);
 }
 

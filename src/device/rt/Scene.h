@@ -91,7 +91,7 @@ class Scene
   void cullBackFaces(uint32_t id);
   // Makes geometry `id` (already added) see-through for occlusion rays:
   // where one meets it, the ShadowStops the trace was given decides
-  // whether it stops (without one, it does). Embree-native geometry only.
+  // whether it stops (without one, it does).
   void letShadowsThrough(uint32_t id);
   // `child` placed by `worldFromObject`; `child` must be committed first.
   // The caller keeps rayRange() within the placement's worldRayRange()
@@ -177,8 +177,8 @@ class Scene
   // Vertices interpolated between keys where Embree's time steps fall
   // between them; kept until clear().
   std::vector<std::vector<float3>> m_interpolatedVertices;
-  // By geometry id: added, single-sided, see-through.
-  std::vector<bool> m_attached, m_oneSided, m_seeThrough;
+  // By geometry id: added, single-sided, see-through, user geometry.
+  std::vector<bool> m_attached, m_oneSided, m_seeThrough, m_user;
 };
 
 } // namespace prism::rt

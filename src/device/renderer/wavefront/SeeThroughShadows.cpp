@@ -31,12 +31,19 @@ bool SeeThroughShadows::at(const float3 &origin,
     return true; // NaN too
   if (!(coverage > 0.f))
     return false;
-  // The ray's own numbers and the hit's: another ray, or the same ray at
-  // another layer, decides anew; the same ray at the same hit the same.
+  // The ray's own numbers and the hit's (its distance too: a ray leaves a
+  // sphere or an isosurface's cell through the primitive it entered):
+  // another ray, or the same ray at another crossing, decides anew; the
+  // same ray at the same hit the same.
   uint32_t key = mixBits(hit.primitiveId ^ mixBits(hit.geometryId))
                  ^ hit.instanceId * 0x9e3779b9u;
-  for (const float value :
-      {origin.x, origin.y, origin.z, direction.x, direction.y, direction.z})
+  for (const float value : {hit.t,
+           origin.x,
+           origin.y,
+           origin.z,
+           direction.x,
+           direction.y,
+           direction.z})
     key = mixBits(key ^ std::bit_cast<uint32_t>(value));
   return float(key >> 8) * (1.f / 16777216.f) < coverage;
 }
