@@ -35,6 +35,7 @@ struct QueuedRay
   float tMax;
   float time;
   uint32_t tag;
+  float passedOneSided; // as given (a ray carried on past a layer)
   ShadowContribution contribution;
 };
 
@@ -65,7 +66,16 @@ QueuedRay queued(
       queue.tMax(i),
       queue.time(i),
       queue.tag(i),
+      queue.passedOneSidedAt(i),
       carried};
+}
+
+// Queues `ray` as the process that shaded it had it queued.
+void repush(rt::RayQueue &queue, const QueuedRay &ray)
+{
+  const size_t i = queue.push(
+      ray.origin, ray.direction, ray.tMin, ray.tMax, ray.time, ray.tag);
+  queue.setPassedOneSidedAt(i, ray.passedOneSided);
 }
 
 // Rays of every process in tag order: the order one process shading every
@@ -264,12 +274,11 @@ void DistributedTransport::shareBounce(std::vector<PathState> &paths,
   sortByTag(shadowRays);
   next.clear();
   for (const QueuedRay &ray : nextRays)
-    next.push(ray.origin, ray.direction, ray.tMin, ray.tMax, ray.time, ray.tag);
+    repush(next, ray);
   shadows.clear();
   contributions.clear();
   for (const QueuedRay &ray : shadowRays) {
-    shadows.push(
-        ray.origin, ray.direction, ray.tMin, ray.tMax, ray.time, ray.tag);
+    repush(shadows, ray);
     contributions.push_back(ray.contribution);
   }
 }

@@ -6,6 +6,7 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -215,6 +216,21 @@ ANARIMaterial addEmissiveQuad(
   return material;
 }
 
+// A committed quad geometry of `corners`.
+ANARIGeometry newQuad(ANARIDevice device, const float corners[4][3])
+{
+  ANARIGeometry geometry = anariNewGeometry(device, "quad");
+  ANARIArray1D positions =
+      anariNewArray1D(device, nullptr, nullptr, nullptr, ANARI_FLOAT32_VEC3, 4);
+  std::memcpy(anariMapArray(device, positions), corners, 12 * sizeof(float));
+  anariUnmapArray(device, positions);
+  anariSetParameter(
+      device, geometry, "vertex.position", ANARI_ARRAY1D, &positions);
+  anariRelease(device, positions);
+  anariCommitParameters(device, geometry);
+  return geometry;
+}
+
 // A grey matte floor 12 units wide under the grid (y = -2.3), in a
 // group of its own placed by an untransformed instance.
 void addFloor(ANARIDevice device, ANARIWorld world)
@@ -223,20 +239,12 @@ void addFloor(ANARIDevice device, ANARIWorld world)
       {6.f, -2.3f, -6.f},
       {6.f, -2.3f, 6.f},
       {-6.f, -2.3f, 6.f}};
-  ANARIGeometry geometry = anariNewGeometry(device, "quad");
-  ANARIArray1D positions =
-      anariNewArray1D(device, nullptr, nullptr, nullptr, ANARI_FLOAT32_VEC3, 4);
-  std::memcpy(anariMapArray(device, positions), corners, sizeof(corners));
-  anariUnmapArray(device, positions);
-  anariSetParameter(
-      device, geometry, "vertex.position", ANARI_ARRAY1D, &positions);
-  anariCommitParameters(device, geometry);
+  ANARIGeometry geometry = newQuad(device, corners);
   ANARIMaterial material = anariNewMaterial(device, "matte");
   const float grey[3] = {0.7f, 0.7f, 0.7f};
   anariSetParameter(device, material, "color", ANARI_FLOAT32_VEC3, grey);
   anariCommitParameters(device, material);
   placeInOwnInstance(device, world, geometry, material);
-  anariRelease(device, positions);
 }
 
 // An hdri light of an 8x4 image, bright blue overhead fading to a dim
@@ -1835,6 +1843,117 @@ void scenarioParameters()
 
 } // namespace
 
+// A square of half size `half` at height z, normal up (+z) or down, of a
+// matte `grey` (black, two-sided or see-through as asked).
+ANARISurface newSquare(ANARIDevice device,
+    float half,
+    float z,
+    bool up,
+    float grey,
+    bool doubleSided,
+    float opacity = 1.f)
+{
+  float corners[4][3] = {
+      {-half, -half, z}, {half, -half, z}, {half, half, z}, {-half, half, z}};
+  if (!up)
+    std::swap(corners[1], corners[3]);
+  ANARIGeometry geometry = newQuad(device, corners);
+  ANARIMaterial material = anariNewMaterial(device, "matte");
+  const float color[3] = {grey, grey, grey};
+  const uint8_t sided = doubleSided;
+  anariSetParameter(device, material, "color", ANARI_FLOAT32_VEC3, color);
+  anariSetParameter(device, material, "doubleSided", ANARI_BOOL, &sided);
+  if (opacity < 1.f) {
+    anariSetParameter(device, material, "opacity", ANARI_FLOAT32, &opacity);
+    anariSetParameter(device, material, "alphaMode", ANARI_STRING, "blend");
+  }
+  anariCommitParameters(device, material);
+  ANARISurface surface = anariNewSurface(device);
+  anariSetParameter(device, surface, "geometry", ANARI_GEOMETRY, &geometry);
+  anariSetParameter(device, surface, "material", ANARI_MATERIAL, &material);
+  anariCommitParameters(device, surface);
+  anariRelease(device, geometry);
+  anariRelease(device, material);
+  return surface;
+}
+
+// Rank 0 holds a white receiver, over it a black single-sided occluder
+// facing up and over that a black see-through sheet (opacity 0.5); a quad
+// light above shines down on all, declared by every process. Light meets
+// the occluder's front: the receiver under it is black. A bounce ray
+// passes the occluder's back, then the sheet, and is carried on by the
+// process that shaded the sheet; every process must still know it passed
+// the occluder, or the light it finds counts (the shadow was lit from two
+// processes on when only that process knew).
+void scenarioSheetOverSingleSided()
+{
+  const int rank = worldRank();
+  Status status;
+  float brightest = -1.f;
+  {
+    Device mpi("prism_mpi", status);
+    if (!mpi.device)
+      return;
+    ANARIDevice d = mpi.device;
+    ANARIWorld world = anariNewWorld(d);
+    if (rank == 0) {
+      ANARISurface surfaces[3] = {newSquare(d, 20.f, 0.f, true, 0.6f, true),
+          newSquare(d, 3.f, 1.f, true, 0.f, false),
+          newSquare(d, 3.f, 1.5f, true, 0.f, true, 0.5f)};
+      ANARIArray1D array =
+          anariNewArray1D(d, surfaces, nullptr, nullptr, ANARI_SURFACE, 3);
+      anariSetParameter(d, world, "surface", ANARI_ARRAY1D, &array);
+      anariRelease(d, array);
+      for (ANARISurface surface : surfaces)
+        anariRelease(d, surface);
+    }
+    ANARILight light = anariNewLight(d, "quad");
+    const float position[3] = {-2.f, -2.f, 2.f}, edge1[3] = {4, 0, 0},
+                edge2[3] = {0, 4, 0}, intensity = 5.f;
+    anariSetParameter(d, light, "position", ANARI_FLOAT32_VEC3, position);
+    anariSetParameter(d, light, "edge1", ANARI_FLOAT32_VEC3, edge1);
+    anariSetParameter(d, light, "edge2", ANARI_FLOAT32_VEC3, edge2);
+    anariSetParameter(d, light, "intensity", ANARI_FLOAT32, &intensity);
+    anariCommitParameters(d, light);
+    setWorldObjects(d, world, "light", ANARI_LIGHT, light);
+    anariRelease(d, light);
+    // Straight down from under the occluder, on the receiver only.
+    ANARICamera camera = anariNewCamera(d, "orthographic");
+    const float eye[3] = {0.f, 0.f, 0.5f}, down[3] = {0.f, 0.f, -1.f},
+                up[3] = {0.f, 1.f, 0.f}, height = 0.5f;
+    anariSetParameter(d, camera, "position", ANARI_FLOAT32_VEC3, eye);
+    anariSetParameter(d, camera, "direction", ANARI_FLOAT32_VEC3, down);
+    anariSetParameter(d, camera, "up", ANARI_FLOAT32_VEC3, up);
+    anariSetParameter(d, camera, "height", ANARI_FLOAT32, &height);
+    anariCommitParameters(d, camera);
+    ANARIRenderer renderer = anariNewRenderer(d, "pathtracer");
+    const int32_t vertices = 4, samples = 64;
+    anariSetParameter(d, renderer, "maxPathLength", ANARI_INT32, &vertices);
+    anariSetParameter(d, renderer, "pixelSamples", ANARI_INT32, &samples);
+    anariCommitParameters(d, renderer);
+    ANARIFrame frame = newFrame(d, world, camera, renderer, 16, 16);
+    anariRenderFrame(d, frame);
+    anariFrameReady(d, frame, ANARI_WAIT);
+    const Image image = readFrame(d, frame);
+    for (size_t i = 0; i < image.color.size(); i++)
+      if (i % 4 != 3)
+        brightest = std::max(brightest, image.color[i]);
+    for (ANARIObject o : {(ANARIObject)frame,
+             (ANARIObject)renderer,
+             (ANARIObject)camera,
+             (ANARIObject)world})
+      anariRelease(d, o);
+  }
+  for (const std::string &e : status.take())
+    check(false, "sheet over single-sided: unexpected error: " + e);
+  if (rank != 0)
+    return;
+  std::printf("sheet over single-sided: brightest %g\n", brightest);
+  check(brightest == 0.f,
+      "sheet over single-sided: the shadow is black (brightest "
+          + std::to_string(brightest) + ")");
+}
+
 int main(int argc, char **argv)
 {
   // The application initialises MPI here; the device must leave it be.
@@ -1870,6 +1989,8 @@ int main(int argc, char **argv)
     scenarioWrappedErrors();
   else if (scenario == "wrapped-environment")
     scenarioWrappedEnvironment();
+  else if (scenario == "sheet-over-single-sided")
+    scenarioSheetOverSingleSided();
   else
     check(false, "unknown scenario '" + scenario + "'");
   int failures = g_failures, total = 0;
